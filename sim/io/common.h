@@ -1,0 +1,78 @@
+// Shared pieces of the groom readers and writers: the result type, byte access with
+// offsets for error messages, whole-file reads with a size cap, atomic writes.
+#pragma once
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sim/groom.h"
+
+namespace csm::io {
+
+// What a reader returns. Exactly one of the two is set: `groom` on success, `error` (one
+// line, "<name>: byte <offset>: <what was expected>") on failure. Readers never throw.
+struct GroomReadResult {
+  std::optional<Groom> groom;
+  std::string error;
+
+  explicit operator bool() const { return groom.has_value(); }
+};
+
+// Sanity limits, checked before anything is allocated. The paper's largest scene has 760k
+// particles; real grooms ship 10k-150k strands of 50-200 points. Ten million points is
+// ~120 MB of positions, beyond which a file is far more likely corrupt than real.
+inline constexpr uint64_t kMaxPoints = 10'000'000;
+// Every strand needs at least two points.
+inline constexpr uint64_t kMaxStrands = kMaxPoints / 2;
+// The largest legal cyHair file at kMaxPoints (all arrays present) is ~410 MB.
+inline constexpr uint64_t kMaxFileBytes = uint64_t{512} << 20;
+
+// Returns an empty string when `groom` is structurally sound (offsets start at 0, never
+// decrease, end at points.size(); every strand has >= 2 points; optional arrays are empty
+// or one entry per strand), otherwise what is wrong. Used by writers before touching disk.
+std::string checkGroomStructure(const Groom& groom);
+
+namespace detail {
+
+// The file formats are little-endian; reading them with memcpy is only correct on a
+// little-endian host, which is every platform this project builds on.
+static_assert(std::endian::native == std::endian::little,
+              "groom readers assume a little-endian host");
+
+template <class T>
+T loadLE(std::span<const std::byte> bytes, uint64_t offset) {
+  T value;
+  std::memcpy(&value, bytes.data() + offset, sizeof(T));
+  return value;
+}
+
+// "<name>: byte <offset>: <message>"
+std::string errorAt(std::string_view name, uint64_t offset, std::string_view message);
+
+// Formats a float for messages ("nan", "-inf", "0.25").
+std::string floatText(float value);
+
+// Checks every point of `groom` is finite and no strand has zero length (all its points
+// equal), reporting the byte offset of the offending value. Point i's x coordinate is at
+// byte base + stride * i of the file, y and z follow it.
+std::string checkPoints(const Groom& groom, std::string_view name, uint64_t base, uint64_t stride);
+
+// Reads a whole file, refusing files larger than maxBytes before allocating.
+// On failure returns nullopt and sets *error to a message that starts with the path.
+std::optional<std::vector<std::byte>> readFileBytes(const std::string& path, uint64_t maxBytes,
+                                                    std::string* error);
+
+// Writes `bytes` to path + ".tmp", then renames it over `path`, so a reader never sees a
+// half-written groom and a failed write leaves the old file intact.
+bool writeFileAtomically(const std::string& path, std::span<const std::byte> bytes,
+                         std::string* error);
+
+}  // namespace detail
+}  // namespace csm::io

@@ -1,0 +1,56 @@
+#include "sim/io/groom_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+
+#include "sim/io/cyhair.h"
+#include "sim/io/tressfx.h"
+
+namespace csm::io {
+namespace {
+
+bool hasExtension(std::string_view path, std::string_view ext) {
+  if (path.size() < ext.size()) return false;
+  return std::equal(ext.begin(), ext.end(), path.end() - ext.size(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) ==
+           std::tolower(static_cast<unsigned char>(b));
+  });
+}
+
+}  // namespace
+
+GroomFormat detectGroomFormat(std::string_view path, std::span<const std::byte> bytes) {
+  if (bytes.size() >= 4 && std::memcmp(bytes.data(), "HAIR", 4) == 0) return GroomFormat::CyHair;
+  if (hasExtension(path, ".tfx")) return GroomFormat::TressFx;
+  if (hasExtension(path, ".hair")) return GroomFormat::CyHair;
+  return GroomFormat::Unknown;
+}
+
+GroomReadResult readGroom(const std::string& path) {
+  GroomReadResult result;
+  auto bytes = detail::readFileBytes(path, kMaxFileBytes, &result.error);
+  if (!bytes) return result;
+  switch (detectGroomFormat(path, *bytes)) {
+    case GroomFormat::CyHair:
+      return readCyHair(*bytes, path);
+    case GroomFormat::TressFx:
+      return readTressFx(*bytes, path);
+    case GroomFormat::Unknown:
+      break;
+  }
+  result.error = path +
+                 ": unknown groom format; expected a cyHair file (signature \"HAIR\", .hair) "
+                 "or a TressFX file (.tfx)";
+  return result;
+}
+
+bool writeGroom(const std::string& path, const Groom& groom, std::string* error) {
+  if (!hasExtension(path, ".hair")) {
+    if (error) *error = path + ": can only write cyHair groom files (.hair)";
+    return false;
+  }
+  return writeCyHair(path, groom, error);
+}
+
+}  // namespace csm::io
