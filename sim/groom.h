@@ -16,8 +16,8 @@ struct Groom {
   // Rest positions in the head's local frame, metres, y up. Point first[s] is the root.
   std::vector<glm::vec3> points;
   // Optional per-strand data from a groom file; empty when the file has none.
-  std::vector<glm::vec3> color;   // linear RGB, 0..1
-  std::vector<float> thickness;   // metres
+  std::vector<glm::vec3> color;  // linear RGB, 0..1
+  std::vector<float> thickness;  // metres
 
   size_t strandCount() const { return first.size() - 1; }
   size_t pointCount() const { return points.size(); }

@@ -1,0 +1,127 @@
+#include "app/cli.h"
+
+#include <charconv>
+#include <cstring>
+
+namespace csm {
+namespace {
+
+bool parseLong(const std::string& s, long& out) {
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && p == s.data() + s.size();
+}
+
+}  // namespace
+
+std::string usageText() {
+  return R"(csmhair: every strand of a head of hair, simulated with Chain Shape Matching.
+
+usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx] [options]
+
+  --headless             no window: simulate (and render, when a renderer is built) off-screen
+  --frames N             frames to run (headless default 60)
+  --solver cpu|gpu       the CPU reference or the GPU solver (default gpu)
+  --set KEY=VALUE        override a parameter (repeatable); see --list-params
+  --metrics FILE.json    write timings and accuracy measures
+  --list-params          print every parameter: key, type and range, default, description
+  --validate PRESET...   check presets and exit (status 2 when one is invalid)
+  --save-preset FILE     write the resolved scene (preset + --set) as a preset and exit
+  --out DIR              headless: write frame_00001.png ... into DIR
+  --every K              keep every K-th frame (default 1)
+  --size WxH             image size (default 1280x720)
+  --no-render            headless: simulate only
+  --video FILE.mp4       headless: pipe frames to ffmpeg
+  --export-hair FILE     write the final strands as a cyHair .hair file
+  --screenshot FILE.png  window: save what the window shows after --exit-after frames
+  --exit-after N         window: run N frames, then exit
+  --quiet                no progress on stderr
+  --help                 this text
+
+Exit status: 0 success, 1 runtime failure (no GL context, NaN in the simulation, I/O),
+2 bad input (command line, preset, groom file).
+)";
+}
+
+std::optional<Options> parseCommandLine(int argc, char** argv, std::string* error) {
+  Options o;
+  auto fail = [&](const std::string& msg) -> std::optional<Options> {
+    if (error) *error = msg;
+    return std::nullopt;
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](std::string& out) -> bool {
+      if (i + 1 >= argc) return false;
+      out = argv[++i];
+      return true;
+    };
+    auto number = [&](long& out, long min) -> bool {
+      std::string s;
+      return value(s) && parseLong(s, out) && out >= min;
+    };
+    if (arg == "--help" || arg == "-h") {
+      o.help = true;
+    } else if (arg == "--headless") {
+      o.headless = true;
+    } else if (arg == "--frames") {
+      if (!number(o.frames, 0)) return fail("--frames needs a whole number >= 0");
+    } else if (arg == "--solver") {
+      if (!value(o.solver) || (o.solver != "cpu" && o.solver != "gpu"))
+        return fail("--solver needs cpu or gpu");
+    } else if (arg == "--set") {
+      std::string kv;
+      if (!value(kv)) return fail("--set needs KEY=VALUE");
+      const size_t eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0)
+        return fail("--set " + kv + ": expected KEY=VALUE, e.g. --set wind.strength=3");
+      o.sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+    } else if (arg == "--metrics") {
+      if (!value(o.metrics)) return fail("--metrics needs a file name");
+    } else if (arg == "--list-params") {
+      o.listParams = true;
+    } else if (arg == "--validate") {
+      o.validateMode = true;
+      while (i + 1 < argc && std::strncmp(argv[i + 1], "--", 2) != 0)
+        o.validate.push_back(argv[++i]);
+      if (o.validate.empty()) return fail("--validate needs at least one preset file");
+    } else if (arg == "--save-preset") {
+      if (!value(o.savePreset)) return fail("--save-preset needs a file name");
+    } else if (arg == "--out") {
+      if (!value(o.outDir)) return fail("--out needs a directory");
+    } else if (arg == "--every") {
+      long k;
+      if (!number(k, 1)) return fail("--every needs a whole number >= 1");
+      o.every = int(k);
+    } else if (arg == "--size") {
+      std::string s;
+      long w = 0, h = 0;
+      const size_t x = value(s) ? s.find('x') : std::string::npos;
+      if (x == std::string::npos || !parseLong(s.substr(0, x), w) ||
+          !parseLong(s.substr(x + 1), h) || w < 16 || h < 16 || w > 16384 || h > 16384)
+        return fail("--size needs WxH with each side in 16..16384, e.g. 1280x720");
+      o.width = int(w);
+      o.height = int(h);
+    } else if (arg == "--no-render") {
+      o.noRender = true;
+    } else if (arg == "--video") {
+      if (!value(o.video)) return fail("--video needs a file name");
+    } else if (arg == "--export-hair") {
+      if (!value(o.exportHair)) return fail("--export-hair needs a file name");
+    } else if (arg == "--screenshot") {
+      if (!value(o.screenshot)) return fail("--screenshot needs a file name");
+    } else if (arg == "--exit-after") {
+      if (!number(o.exitAfter, 0)) return fail("--exit-after needs a whole number >= 0");
+    } else if (arg == "--quiet") {
+      o.quiet = true;
+    } else if (arg.rfind("--", 0) == 0) {
+      return fail("unknown option " + arg + " (see --help)");
+    } else if (o.preset.empty()) {
+      o.preset = arg;
+    } else {
+      return fail("only one preset can be given; got " + o.preset + " and " + arg);
+    }
+  }
+  return o;
+}
+
+}  // namespace csm

@@ -1,0 +1,40 @@
+// The command line. Every later feature adds its options here.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace csm {
+
+struct Options {
+  std::string preset;  // a preset .json or a groom file; empty = built-in default
+  bool headless = false;
+  long frames = -1;  // -1: 60 headless, unbounded in the window
+  std::string solver = "gpu";
+  std::vector<std::pair<std::string, std::string>> sets;  // --set KEY=VALUE
+  std::string metrics;                                    // --metrics FILE.json
+  bool listParams = false;
+  std::vector<std::string> validate;
+  bool validateMode = false;
+  bool help = false;
+  bool quiet = false;
+  std::string savePreset;  // --save-preset FILE.json: write the resolved scene
+  // Capture.
+  std::string outDir;
+  int every = 1;
+  int width = 1280, height = 720;
+  bool noRender = false;
+  std::string video;
+  std::string exportHair;
+  // Window scripting.
+  std::string screenshot;
+  long exitAfter = -1;
+};
+
+// Parses argv. On a usage error returns nullopt and fills `error`.
+std::optional<Options> parseCommandLine(int argc, char** argv, std::string* error);
+std::string usageText();
+
+}  // namespace csm

@@ -1,0 +1,76 @@
+// csmhair: every strand of a head of hair simulated with Chain Shape Matching.
+#include <cstdio>
+
+#include "app/cli.h"
+#include "app/headless.h"
+#include "app/scene_setup.h"
+#include "sim/params.h"
+#include "sim/preset.h"
+
+namespace {
+
+int listParams() {
+  const csm::Config defaults = csm::defaultConfig();
+  std::string group;
+  for (const csm::Param& p : csm::params()) {
+    if (p.group != group) {
+      group = p.group;
+      std::printf("\n[%s]\n", group.c_str());
+    }
+    std::printf("  %-32s %s  default %s%s\n      %s\n", std::string(p.key).c_str(),
+                csm::describeType(p).c_str(), csm::valueText(p, defaults).c_str(),
+                p.effect == csm::Effect::Rebuild ? "  (regrows the hair)" : "",
+                std::string(p.description).c_str());
+  }
+  return 0;
+}
+
+int validate(const std::vector<std::string>& files) {
+  int status = 0;
+  for (const std::string& f : files) {
+    csm::Config c = csm::defaultConfig();
+    csm::PresetErrors errors;
+    if (csm::loadPreset(f, c, errors)) {
+      std::printf("%s: ok (%d strands)\n", f.c_str(), c.hairstyle.strands);
+    } else {
+      std::fputs(errors.text().c_str(), stderr);
+      status = 2;
+    }
+  }
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string error;
+  std::optional<csm::Options> options = csm::parseCommandLine(argc, argv, &error);
+  if (!options) {
+    std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+    return 2;
+  }
+  if (options->help) {
+    std::fputs(csm::usageText().c_str(), stdout);
+    return 0;
+  }
+  if (options->listParams) return listParams();
+  if (options->validateMode) return validate(options->validate);
+
+  csm::SceneSetup scene;
+  if (!csm::setupScene(*options, scene, &error)) {
+    std::fputs(error.c_str(), stderr);
+    return 2;
+  }
+  if (!options->savePreset.empty()) {
+    if (!csm::savePreset(options->savePreset, scene.config, &error)) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return 1;
+    }
+    return 0;
+  }
+  if (!options->headless) {
+    std::fprintf(stderr, "csmhair: the window is not part of this build; use --headless\n");
+    return 1;
+  }
+  return csm::runHeadless(*options, scene);
+}

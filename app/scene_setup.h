@@ -1,0 +1,24 @@
+// From the command line to a validated scene: the preset (or the built-in default, or a groom
+// file with default settings) with every --set applied.
+#pragma once
+
+#include <string>
+
+#include "app/cli.h"
+#include "sim/config.h"
+
+namespace csm {
+
+struct SceneSetup {
+  Config config;
+  std::string baseDir;  // where relative paths in the preset point
+  std::string source;   // what the scene came from, for messages
+};
+
+// Returns false with messages (one a line) naming the file and JSON path, or the --set.
+bool setupScene(const Options& options, SceneSetup& out, std::string* errors);
+
+// True when `path` names a groom file rather than a preset.
+bool isGroomFile(const std::string& path);
+
+}  // namespace csm

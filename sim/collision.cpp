@@ -1,0 +1,127 @@
+#include "sim/collision.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <glm/geometric.hpp>
+
+namespace csm {
+namespace {
+
+bool segmentExists(std::span<const uint32_t> strand, uint32_t i) {
+  return i + 1 < strand.size() && strand[i] == strand[i + 1];
+}
+
+bool mayTouch(std::span<const uint32_t> strand, uint32_t a, uint32_t b) {
+  if (strand[a] != strand[b]) return true;
+  return (a > b ? a - b : b - a) > kStrandGap;
+}
+
+void testPair(std::span<const glm::dvec3> x, uint32_t a, uint32_t b, double maxDistance,
+              std::vector<SegmentPair>& out) {
+  double s, t;
+  double d2 = closestSegmentPoints(x[a], x[a + 1], x[b], x[b + 1], s, t);
+  if (d2 < maxDistance * maxDistance) out.push_back({a, b, s, t, std::sqrt(d2)});
+}
+
+}  // namespace
+
+double closestSegmentPoints(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
+                            const glm::dvec3& q1, double& s, double& t) {
+  const glm::dvec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  const double eps = 1e-20;
+  if (a <= eps && e <= eps) {
+    s = t = 0.0;
+  } else if (a <= eps) {
+    s = 0.0;
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = glm::dot(d1, r);
+    if (e <= eps) {
+      t = 0.0;
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = glm::dot(d1, d2);
+      const double denom = a * e - b * b;
+      s = denom > eps * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0.0) {
+        t = 0.0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1.0) {
+        t = 1.0;
+        s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  const glm::dvec3 diff = (p0 + d1 * s) - (q0 + d2 * t);
+  return glm::dot(diff, diff);
+}
+
+std::vector<SegmentPair> findContactsBruteForce(std::span<const glm::dvec3> x,
+                                                std::span<const uint32_t> strand,
+                                                double maxDistance) {
+  std::vector<SegmentPair> out;
+  const uint32_t n = uint32_t(x.size());
+  for (uint32_t a = 0; a < n; ++a) {
+    if (!segmentExists(strand, a)) continue;
+    for (uint32_t b = a + 1; b < n; ++b)
+      if (segmentExists(strand, b) && mayTouch(strand, a, b)) testPair(x, a, b, maxDistance, out);
+  }
+  return out;
+}
+
+std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
+                                          std::span<const uint32_t> strand, double maxDistance) {
+  std::vector<SegmentPair> out;
+  const uint32_t n = uint32_t(x.size());
+  std::vector<uint32_t> segments;
+  double longest = 0.0;
+  for (uint32_t i = 0; i < n; ++i)
+    if (segmentExists(strand, i)) {
+      segments.push_back(i);
+      longest = std::max(longest, glm::length(x[i + 1] - x[i]));
+    }
+  if (segments.empty()) return out;
+  // Two segments closer than maxDistance have midpoints closer than the half lengths plus
+  // maxDistance <= cell: they sit in the same or neighbouring cells.
+  const double cell = longest + maxDistance;
+  auto cellOf = [&](uint32_t i) {
+    glm::dvec3 m = 0.5 * (x[i] + x[i + 1]) / cell;
+    return glm::i64vec3(std::floor(m.x), std::floor(m.y), std::floor(m.z));
+  };
+  struct Entry {
+    glm::i64vec3 c;
+    uint32_t seg;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(segments.size());
+  for (uint32_t i : segments) entries.push_back({cellOf(i), i});
+  auto less = [](const Entry& l, const Entry& r) {
+    if (l.c.x != r.c.x) return l.c.x < r.c.x;
+    if (l.c.y != r.c.y) return l.c.y < r.c.y;
+    if (l.c.z != r.c.z) return l.c.z < r.c.z;
+    return l.seg < r.seg;
+  };
+  std::sort(entries.begin(), entries.end(), less);
+  for (uint32_t a : segments) {
+    const glm::i64vec3 c = cellOf(a);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const Entry key{c + glm::i64vec3(dx, dy, dz), 0};
+          auto it = std::lower_bound(entries.begin(), entries.end(), key, less);
+          for (; it != entries.end() && it->c == key.c; ++it)
+            if (it->seg > a && mayTouch(strand, a, it->seg))
+              testPair(x, a, it->seg, maxDistance, out);
+        }
+  }
+  std::sort(out.begin(), out.end(), [](const SegmentPair& l, const SegmentPair& r) {
+    return l.a != r.a ? l.a < r.a : l.b < r.b;
+  });
+  return out;
+}
+
+}  // namespace csm

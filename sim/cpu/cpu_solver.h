@@ -1,0 +1,86 @@
+// The reference Chain Shape Matching solver: the whole step of DESIGN.md section 1 in double
+// precision on the CPU. The GPU solver is tested against it; the benchmarks use it as the
+// baseline.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <glm/vec3.hpp>
+
+#include "sim/collision.h"
+#include "sim/hair_state.h"
+#include "sim/solver.h"
+
+namespace csm {
+
+// Rotational part of A (Mueller, Bender, Chentanez, Macklin 2016, "A Robust Method to Extract
+// the Rotational Part of Deformations"): rotates q toward A's rotation a fixed number of times.
+// Robust when A is rank-deficient, which a straight strand's regions are.
+void extractRotation(const Eigen::Matrix3d& A, Eigen::Quaterniond& q, int iterations);
+
+class CpuSolver final : public Solver {
+ public:
+  // Region sums by prefix differences (O(1) per region, Rivers & James 2007), or summed
+  // directly over each region (O(w) per region), for the benchmarks' comparison.
+  enum class RegionSums { Prefix, Direct };
+
+  explicit CpuSolver(RegionSums sums = RegionSums::Prefix) : sums_(sums) {}
+
+  std::string_view name() const override { return "cpu"; }
+  void reset(const Groom& groom, const Config& config, const Pose& head) override;
+  void setConfig(const Config& config) override { config_ = config; }
+  void stepFrame(const Pose& from, const Pose& to) override;
+
+  size_t strandCount() const override { return first_.size() - 1; }
+  size_t particleCount() const override { return x_.size(); }
+  double time() const override { return time_; }
+
+  void readPositions(std::vector<glm::vec4>& out) override;
+  void readVelocities(std::vector<glm::vec4>& out) override;
+  std::vector<StageTime> stageTimes() override { return stages_; }
+  ContactStats contactStats() override { return contacts_; }
+
+  // One step of length h ending at head pose `head` (exposed for tests).
+  void step(double h, const Pose& head);
+  const std::vector<glm::dvec3>& positions() const { return x_; }
+  const std::vector<glm::dvec3>& velocities() const { return v_; }
+  std::vector<glm::dvec3>& mutablePositions() { return x_; }
+  std::vector<glm::dvec3>& mutableVelocities() { return v_; }
+  // Rest length of the segment from particle i to i+1.
+  double restLength(size_t i) const { return restLength_[i]; }
+
+ private:
+  void predict(double h, const std::vector<Sphere>& spheres, const Pose& head);
+  void shapeMatch();
+  void integrate(double h);
+  void limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
+                   const Pose& headBefore);
+  void collide();
+
+  RegionSums sums_;
+  Config config_;
+  double time_ = 0.0;
+  Pose head_;  // the head pose at the end of the last step
+
+  std::vector<uint32_t> first_{0};
+  std::vector<uint32_t> strandOf_;
+  std::vector<glm::dvec3> rest_;  // head frame
+  std::vector<double> mass_;
+  std::vector<double> restLength_;  // segment i -> i+1; 0 for a strand's last particle
+  std::vector<glm::dvec3> x_, v_, xOld_, xPred_, goal_;
+  std::vector<glm::dvec3> contactForce_;  // hair-hair penalty from the last collision pass
+  std::vector<Eigen::Quaterniond> q_;     // rotation of each region, warm start
+  ContactStats contacts_;
+  std::vector<StageTime> stages_;
+
+  // Per strand s, prefix arrays have strand size + 1 entries starting at first_[s] + s.
+  std::vector<double> prefMass_;
+  std::vector<Eigen::Vector3d> prefMassRest_, prefMassX_;
+  std::vector<Eigen::Matrix3d> prefA_, prefR_;
+  std::vector<Eigen::Vector3d> prefT_;
+  std::vector<Eigen::Vector3d> regionC_, regionCRest_;
+};
+
+}  // namespace csm

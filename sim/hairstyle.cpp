@@ -1,0 +1,217 @@
+#include "sim/hairstyle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include "sim/preset.h"
+
+namespace csm {
+namespace {
+
+// SplitMix64: a small, well-mixed hash; strand s's random numbers come from hash(seed, s, k).
+uint64_t mix(uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+double random01(uint64_t seed, uint64_t strand, uint64_t k) {
+  uint64_t h = mix(mix(mix(seed) ^ strand) ^ (k * 0x632be59bd9b4e019ull));
+  return double(h >> 11) * (1.0 / 9007199254740992.0);
+}
+
+// Roots follow the R2 low-discrepancy sequence (Roberts 2018) over the scalp cap: evenly spread
+// for any prefix, so 10,000 strands are the first 10,000 of 20,000 and still cover the scalp.
+struct RootSampler {
+  const HairstyleConfig& h;
+  uint64_t index = 0;
+  double offsetU, offsetV;
+
+  explicit RootSampler(const HairstyleConfig& cfg)
+      : h(cfg), offsetU(random01(cfg.seed, ~0ull, 1)), offsetV(random01(cfg.seed, ~0ull, 2)) {}
+
+  bool inScalp(const glm::dvec3& d) const {
+    const double theta = std::acos(std::clamp(d.y, -1.0, 1.0));
+    const double horizontal = std::hypot(d.x, d.z);
+    const double front = horizontal > 1e-9 ? std::max(0.0, d.z / horizontal) : 0.0;
+    // The hairline comes lower at the back and sides than at the forehead (+z is the face).
+    const double limit =
+        glm::radians(glm::mix(double(h.scalpAngle), double(std::min(h.scalpAngle, h.hairlineFront)),
+                              std::pow(front, 1.5)));
+    return theta <= limit;
+  }
+
+  glm::dvec3 next() {
+    const double g = 1.32471795724474602596;  // the plastic number
+    const double maxTheta = glm::radians(double(h.scalpAngle));
+    for (;;) {
+      ++index;
+      const double u = std::fmod(offsetU + index / g, 1.0);
+      const double v = std::fmod(offsetV + index / (g * g), 1.0);
+      const double cosTheta = 1.0 - u * (1.0 - std::cos(maxTheta));  // uniform over the cap
+      const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+      const double phi = 2.0 * glm::pi<double>() * v;
+      glm::dvec3 d(sinTheta * std::sin(phi), cosTheta, sinTheta * std::cos(phi));
+      if (inScalp(d)) return d;
+    }
+  }
+};
+
+// Moves p outside every sphere (inflated by margin). Returns true when it moved.
+bool pushOut(glm::dvec3& p, const std::vector<Sphere>& head, double margin) {
+  bool moved = false;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const Sphere& s : head) {
+      const glm::dvec3 c(s.center);
+      const glm::dvec3 d = p - c;
+      const double r = s.radius + margin;
+      const double len = glm::length(d);
+      if (len < r) {
+        p = c + (len > 1e-12 ? d / len : glm::dvec3(0, 1, 0)) * r;
+        moved = true;
+      }
+    }
+  return moved;
+}
+
+// Resamples a dense polyline to n points evenly spaced in arc length.
+std::vector<glm::dvec3> resample(const std::vector<glm::dvec3>& q, int n) {
+  std::vector<double> s(q.size(), 0.0);
+  for (size_t i = 1; i < q.size(); ++i) s[i] = s[i - 1] + glm::length(q[i] - q[i - 1]);
+  std::vector<glm::dvec3> out(n);
+  size_t j = 0;
+  for (int i = 0; i < n; ++i) {
+    const double target = s.back() * i / (n - 1);
+    while (j + 2 < q.size() && s[j + 1] < target) ++j;
+    const double span = s[j + 1] - s[j];
+    const double f = span > 0.0 ? std::clamp((target - s[j]) / span, 0.0, 1.0) : 0.0;
+    out[i] = glm::mix(q[j], q[j + 1], f);
+  }
+  return out;
+}
+
+std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const std::vector<Sphere>& head,
+                                   double margin, uint64_t s, const glm::dvec3& dir) {
+  const Sphere& scalp = head.front();
+  const glm::dvec3 root = glm::dvec3(scalp.center) + dir * double(scalp.radius);
+  const double length = glm::mix(double(h.lengthMin), double(h.lengthMax), random01(h.seed, s, 3));
+
+  // Centreline: leaves along the scalp normal, turns down at a rate set by `fall`, drapes over
+  // the head where it meets it.
+  const double ds = std::min(0.002, length / 64.0);
+  const int steps = std::max(2, int(std::ceil(length / ds)));
+  const double turn = 4.0 + 60.0 * h.fall * h.fall;  // 1/m
+  const glm::dvec3 down(0.0, -1.0, 0.0);
+  // A little per-strand disorder so the hair does not look combed by a machine.
+  const glm::dvec3 jitter(random01(h.seed, s, 4) - 0.5, 0.0, random01(h.seed, s, 5) - 0.5);
+  std::vector<glm::dvec3> centre{root};
+  glm::dvec3 p = root, t = dir;
+  for (int i = 1; i <= steps; ++i) {
+    const double along = i * ds;
+    const double blend = 1.0 - std::exp(-turn * along);
+    glm::dvec3 want = glm::normalize(glm::mix(dir, down + 0.3 * jitter, blend));
+    t = glm::normalize(glm::mix(t, want, 0.5));
+    glm::dvec3 next = p + t * (length / steps);
+    glm::dvec3 before = next;
+    if (i > 1 && pushOut(next, head, margin)) {
+      // Follow the surface: keep the tangential part of the direction.
+      glm::dvec3 n = glm::normalize(next - before + 1e-12 * t);
+      t = glm::normalize(t - glm::dot(t, n) * n + 1e-9 * down);
+      next = p + t * (length / steps);
+      pushOut(next, head, margin);
+    }
+    p = next;
+    centre.push_back(p);
+  }
+
+  // Curl: a helix about the centreline whose radius ramps up from curl_start toward the tip,
+  // in a frame carried along the curve by parallel transport.
+  if (h.curlRadius <= 0.0f) return centre;
+  const double phase = 2.0 * glm::pi<double>() * random01(h.seed, s, 6);
+  const double start = h.curlStart * length;
+  const double ramp = std::max(1e-6, std::min(2.0 * h.curlPitch, length - start));
+  glm::dvec3 tangent = glm::normalize(centre[1] - centre[0]);
+  glm::dvec3 normal = glm::normalize(glm::cross(tangent, glm::dvec3(0.31, 0.87, 0.38)));
+  std::vector<glm::dvec3> curled{centre[0]};
+  double along = 0.0;
+  for (size_t i = 1; i < centre.size(); ++i) {
+    glm::dvec3 tNew = glm::normalize(centre[i] - centre[i - 1]);
+    along += glm::length(centre[i] - centre[i - 1]);
+    glm::dvec3 axis = glm::cross(tangent, tNew);
+    double sinA = glm::length(axis);
+    if (sinA > 1e-12) {
+      axis /= sinA;
+      double angle = std::atan2(sinA, glm::dot(tangent, tNew));
+      normal = normal * std::cos(angle) + glm::cross(axis, normal) * std::sin(angle) +
+               axis * glm::dot(axis, normal) * (1.0 - std::cos(angle));
+    }
+    tangent = tNew;
+    normal = glm::normalize(normal - glm::dot(normal, tangent) * tangent);
+    const glm::dvec3 binormal = glm::cross(tangent, normal);
+    const double x = std::clamp((along - start) / ramp, 0.0, 1.0);
+    const double radius = h.curlRadius * x * x * (3.0 - 2.0 * x);
+    const double a = phase + 2.0 * glm::pi<double>() * along / h.curlPitch;
+    glm::dvec3 q = centre[i] + radius * (std::cos(a) * normal + std::sin(a) * binormal);
+    pushOut(q, head, margin);
+    curled.push_back(q);
+  }
+  return curled;
+}
+
+}  // namespace
+
+int particlesForLength(const HairstyleConfig& h, double arcLength) {
+  if (h.particlesPerStrand > 0) return h.particlesPerStrand;
+  const int n = int(std::lround(arcLength / h.segmentLength)) + 1;
+  return std::clamp(n, h.minParticles, h.maxParticles);
+}
+
+Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& head,
+                    float collisionRadius) {
+  Groom g;
+  if (head.empty() || h.strands <= 0) return g;
+  const double margin = 2.0 * collisionRadius;
+  RootSampler roots(h);
+  std::vector<glm::vec3> strand;
+  for (int s = 0; s < h.strands; ++s) {
+    const glm::dvec3 dir = roots.next();
+    std::vector<glm::dvec3> dense = growStrand(h, head, margin, uint64_t(s), dir);
+    double arc = 0.0;
+    for (size_t i = 1; i < dense.size(); ++i) arc += glm::length(dense[i] - dense[i - 1]);
+    std::vector<glm::dvec3> pts = resample(dense, particlesForLength(h, arc));
+    strand.clear();
+    for (size_t i = 0; i < pts.size(); ++i) {
+      if (i > 0) pushOut(pts[i], head, margin);
+      strand.emplace_back(pts[i]);
+    }
+    g.addStrand(strand);
+  }
+  return g;
+}
+
+}  // namespace csm
+
+namespace csm {
+
+bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::string* error) {
+  if (!c.hairstyle.file.empty()) {
+    if (error)
+      *error = resolveRelative(baseDir, c.hairstyle.file) +
+               ": groom files are not supported in this build";
+    return false;
+  }
+  if (c.head.spheres.empty()) {
+    if (error) *error = "head.spheres: at least one sphere is needed to grow hair from";
+    return false;
+  }
+  out = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  return true;
+}
+
+}  // namespace csm

@@ -1,0 +1,32 @@
+// Accuracy measures of a hair state, the same for every solver.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "sim/config.h"
+#include "sim/groom.h"
+
+namespace csm {
+
+struct Accuracy {
+  double maxStrain = 0.0;         // largest relative stretch |x_i+1 - x_i| / l_i - 1 (0 = rest)
+  double meanStrain = 0.0;        // mean of |relative stretch| over segments
+  uint64_t headPenetrations = 0;  // particles inside a head sphere (free ones)
+  double maxSpeed = 0.0;          // m/s
+  uint64_t nanCount = 0;          // particles with a non-finite position or velocity
+};
+
+// Rest length of every segment i -> i+1 of the groom (0 after a strand's last particle).
+std::vector<double> restLengths(const Groom& groom);
+
+// `pinned` root particles are kinematic and sit on the scalp: they are not counted as inside.
+Accuracy measureAccuracy(std::span<const glm::vec4> positions,
+                         std::span<const glm::vec4> velocities, const Groom& groom,
+                         std::span<const double> restLength, std::span<const Sphere> worldSpheres,
+                         int pinned);
+
+}  // namespace csm

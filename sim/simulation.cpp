@@ -1,0 +1,75 @@
+#include "sim/simulation.h"
+
+#include "sim/cpu/cpu_solver.h"
+#include "sim/hairstyle.h"
+#include "sim/params.h"
+#include "sim/preset.h"
+
+namespace csm {
+
+std::unique_ptr<Solver> makeGpuSolver(std::string* error);  // sim/gpu
+
+std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error) {
+  if (name == "cpu") return std::make_unique<CpuSolver>();
+  if (name == "gpu") return makeGpuSolver(error);
+  if (error) *error = "unknown solver \"" + name + "\" (solvers: cpu, gpu)";
+  return nullptr;
+}
+
+bool Simulation::load(const Config& config, const std::string& baseDir, std::string* error) {
+  std::string capacity = checkCapacity(config);
+  if (!capacity.empty()) {
+    if (error) *error = capacity;
+    return false;
+  }
+  Groom groom;
+  if (!buildGroom(config, baseDir, groom, error)) return false;
+  config_ = config;
+  baseDir_ = baseDir;
+  groom_ = std::move(groom);
+  ++generation_;
+  reset();
+  return true;
+}
+
+bool Simulation::setConfig(const Config& config, std::string* error) {
+  bool rebuild = false;
+  for (const Param& p : params())
+    if (p.effect == Effect::Rebuild && !sameValue(p, config_, config)) rebuild = true;
+  if (rebuild) {
+    // Keep the clock and the camera: only the hair starts again from rest.
+    const double t = time_;
+    const long frame = frame_;
+    if (!load(config, baseDir_, error)) return false;
+    time_ = t;
+    frame_ = frame;
+    lastPose_ = headPoseAt(time_);
+    solver_->reset(groom_, config_, lastPose_);
+    return true;
+  }
+  config_ = config;
+  solver_->setConfig(config_);
+  return true;
+}
+
+void Simulation::reset() {
+  time_ = 0.0;
+  frame_ = 0;
+  lastPose_ = headPoseAt(0.0);
+  solver_->reset(groom_, config_, lastPose_);
+}
+
+Pose Simulation::headPoseAt(double t) const {
+  return compose(userPose_, csm::headPose(config_.head, t));
+}
+
+void Simulation::stepFrame() {
+  const double next = time_ + config_.sim.dt;
+  const Pose to = headPoseAt(next);
+  solver_->stepFrame(lastPose_, to);
+  lastPose_ = to;
+  time_ = next;
+  ++frame_;
+}
+
+}  // namespace csm

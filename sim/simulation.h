@@ -1,0 +1,60 @@
+// A running scene: the config, the groom grown from it, a solver and the head's motion.
+// The headless loop and the viewer both drive one of these; a changed parameter either takes
+// effect on the next step or, when it changes the hair's shape, regrows the groom.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "sim/config.h"
+#include "sim/groom.h"
+#include "sim/head.h"
+#include "sim/solver.h"
+
+namespace csm {
+
+// "cpu" or "gpu" (the GPU solver needs a current GL 4.3 context). Null with a message when
+// the name is unknown or the solver cannot start.
+std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error);
+
+class Simulation {
+ public:
+  explicit Simulation(std::unique_ptr<Solver> solver) : solver_(std::move(solver)) {}
+
+  // Grows the groom and resets the solver. On failure keeps what it had and says why.
+  bool load(const Config& config, const std::string& baseDir, std::string* error);
+  // Applies a changed config: regrows when a Rebuild parameter changed, else goes live.
+  // Returns false (keeping the old scene) when the new groom cannot be built.
+  bool setConfig(const Config& config, std::string* error);
+  // Back to the rest shape, time 0.
+  void reset();
+
+  void stepFrame();
+  // An extra transform of the head on top of the preset's motion (the viewer's drag).
+  void setUserPose(const Pose& pose) { userPose_ = pose; }
+  const Pose& userPose() const { return userPose_; }
+  Pose headPoseAt(double t) const;
+  Pose headPose() const { return headPoseAt(time_); }
+
+  Solver& solver() { return *solver_; }
+  const Config& config() const { return config_; }
+  const Groom& groom() const { return groom_; }
+  const std::string& baseDir() const { return baseDir_; }
+  double time() const { return time_; }
+  long frame() const { return frame_; }
+  // Bumped whenever the groom is regrown, so renderers know to rebuild their buffers.
+  long generation() const { return generation_; }
+
+ private:
+  std::unique_ptr<Solver> solver_;
+  Config config_;
+  std::string baseDir_;
+  Groom groom_;
+  Pose userPose_;
+  Pose lastPose_;
+  double time_ = 0.0;
+  long frame_ = 0;
+  long generation_ = 0;
+};
+
+}  // namespace csm

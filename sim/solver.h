@@ -1,0 +1,57 @@
+// One interface for every solver: the CPU reference (sim/cpu), the GPU solver (sim/gpu) and
+// the baselines used by the benchmarks.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "sim/config.h"
+#include "sim/groom.h"
+#include "sim/head.h"
+
+namespace csm {
+
+struct StageTime {
+  std::string name;  // "integrate", "shape_matching", "strain_limiting", "grid", "contacts"
+  double ms = 0.0;   // per frame, all substeps
+};
+
+struct ContactStats {
+  uint64_t contacts = 0;      // segment pairs closer than 2r in the last collision pass
+  uint64_t penetrations = 0;  // segment pairs closer than r: real crossings
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  virtual std::string_view name() const = 0;
+
+  // Rebuilds everything from a groom: positions at rest under `head`, zero velocities.
+  virtual void reset(const Groom& groom, const Config& config, const Pose& head) = 0;
+  // Live parameters; takes effect on the next step.
+  virtual void setConfig(const Config& config) = 0;
+  // One frame of config.sim.dt seconds: sim.substeps steps, the head moving from `from` to `to`.
+  virtual void stepFrame(const Pose& from, const Pose& to) = 0;
+
+  virtual size_t strandCount() const = 0;
+  virtual size_t particleCount() const = 0;
+  virtual double time() const = 0;
+
+  // Blocks until the work already issued is done, so wall-clock timing is honest.
+  virtual void finish() {}
+
+  // Read-backs, for tests, metrics and export; never called inside a frame.
+  virtual void readPositions(std::vector<glm::vec4>& out) = 0;
+  virtual void readVelocities(std::vector<glm::vec4>& out) = 0;
+
+  // Time per stage of the last frame; solvers that cannot time stages return what they have.
+  virtual std::vector<StageTime> stageTimes() { return {}; }
+  // Hair-hair contacts found by the last collision pass (zeros when collisions are off).
+  virtual ContactStats contactStats() { return {}; }
+};
+
+}  // namespace csm

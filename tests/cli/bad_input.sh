@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Each kind of bad input gets its message (naming the file and JSON path) and exit status 2.
+set -u
+bin=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+
+expect() {  # expect STATUS PATTERN -- ARGS...
+  local want=$1 pattern=$2
+  shift 3
+  local out status
+  out=$("$bin" "$@" 2>&1)
+  status=$?
+  if [ "$status" -ne "$want" ]; then
+    echo "FAIL: csmhair $* exited $status, expected $want"; echo "$out"; fail=1
+  elif ! grep -qF -- "$pattern" <<<"$out"; then
+    echo "FAIL: csmhair $*: output lacks '$pattern'"; echo "$out"; fail=1
+  else
+    echo "ok: csmhair $* -> $status: $(head -n1 <<<"$out")"
+  fi
+}
+
+printf '{"sim": {"dt": "fast"}}' >"$tmp/type.json"
+printf '{"sim": {"substeps": 0}}' >"$tmp/range.json"
+printf '{"wind": {"strenght": 3}}' >"$tmp/unknown.json"
+printf '{\n  "sim": {\n    "dt": 0.01,\n  }\n' >"$tmp/broken.json"
+printf '{"hairstyle": {"strands": 1000000, "particles_per_strand": 64}}' >"$tmp/huge.json"
+
+expect 2 "type.json: sim.dt: expected a number, got a string" -- "$tmp/type.json" --headless --frames 1 --solver cpu
+expect 2 "range.json: sim.substeps: value 0 is out of range [1, 64]" -- "$tmp/range.json" --headless --frames 1 --solver cpu
+expect 2 'unknown.json: wind.strenght: unknown key (did you mean "strength"?)' -- "$tmp/unknown.json" --headless --solver cpu
+expect 2 "broken.json:4:3 (byte" -- "$tmp/broken.json" --headless --solver cpu
+expect 2 "invalid JSON" -- --validate "$tmp/broken.json"
+expect 2 "hairstyle.strands" -- "$tmp/huge.json" --headless --solver cpu
+expect 2 "cannot open" -- "$tmp/missing.json" --headless --solver cpu
+expect 2 "--set sim.substeps=abc: expected an integer" -- --headless --solver cpu --set sim.substeps=abc
+expect 2 "--set sim.nothing=1: unknown parameter" -- --headless --solver cpu --set sim.nothing=1
+expect 2 "unknown option --frobnicate" -- --frobnicate
+expect 2 "--frames needs" -- --frames -3
+expect 0 "ok" -- --validate "$src"/presets/*.json
+exit $fail

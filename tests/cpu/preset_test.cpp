@@ -1,0 +1,163 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <csignal>
+#include <fstream>
+
+#include <sys/resource.h>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/params.h"
+#include "sim/preset.h"
+
+using namespace csm;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> presetFiles() {
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(fs::path(CSM_SOURCE_DIR) / "presets"))
+    if (e.path().extension() == ".json") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string parseErrors(const std::string& text) {
+  Config c;
+  PresetErrors e;
+  CHECK_FALSE(parsePreset(text, "bad.json", c, e));
+  return e.text();
+}
+
+}  // namespace
+
+TEST_CASE("every parameter's default lies in its range and has a description") {
+  const Config c;
+  for (const Param& p : params()) {
+    INFO(p.key);
+    CHECK(!p.description.empty());
+    CHECK(!p.label.empty());
+    CHECK(findParam(p.key) == &p);
+    Config copy = c;
+    CHECK(paramFromJson(p, copy, paramToJson(p, c)) == "");
+  }
+}
+
+TEST_CASE("every preset in presets/ validates and round-trips through save and load") {
+  const auto files = presetFiles();
+  REQUIRE(files.size() >= 5);
+  for (const std::string& f : files) {
+    INFO(f);
+    Config c;
+    PresetErrors e;
+    REQUIRE(loadPreset(f, c, e));
+    const std::string tmp = (fs::temp_directory_path() / "csm_roundtrip.json").string();
+    std::string err;
+    REQUIRE(savePreset(tmp, c, &err));
+    Config back;
+    back.hairstyle.strands = 1;  // load must overwrite it
+    REQUIRE(loadPreset(tmp, back, e));
+    for (const Param& p : params()) {
+      INFO(p.key);
+      CHECK(sameValue(p, c, back));
+    }
+    fs::remove(tmp);
+  }
+}
+
+TEST_CASE("the built-in default preset is valid") {
+  Config c;
+  PresetErrors e;
+  CHECK(parsePreset(defaultPresetText(), "default", c, e));
+  CHECK(e.empty());
+}
+
+TEST_CASE("bad presets are refused with the file and the JSON path") {
+  CHECK_THAT(parseErrors(R"({"sim": {"dt": "fast"}})"),
+             Catch::Contains("bad.json: sim.dt: expected a number, got a string"));
+  CHECK_THAT(parseErrors(R"({"sim": {"substeps": 1000}})"),
+             Catch::Contains("bad.json: sim.substeps: value 1000 is out of range [1, 64]"));
+  CHECK_THAT(
+      parseErrors(R"({"sim": {"stifness_window": 3}})"),
+      Catch::Contains("sim.stifness_window: unknown key (did you mean \"stiffness_window\"?)"));
+  CHECK_THAT(parseErrors(R"({"sim": {"stifness_window": 3}})"), Catch::Contains("substeps"));
+  CHECK_THAT(parseErrors(R"({"collision": {"mode": "sometimes"}})"),
+             Catch::Contains("collision.mode: \"sometimes\" is not one of off|head|full"));
+  CHECK_THAT(parseErrors("{\n  \"sim\": {\"dt\": 0.01,,}\n}"), Catch::Contains("bad.json:2:"));
+  CHECK_THAT(parseErrors("{\n  \"sim\": {\"dt\": 0.01,,}\n}"), Catch::Contains("invalid JSON"));
+  CHECK_THAT(parseErrors(R"({"head": {"spheres": [{"center": [0,0,0], "radius": -1}]}})"),
+             Catch::Contains("head.spheres[0].radius: value -1 is out of range"));
+  CHECK_THAT(parseErrors(R"({"hairstyle": {"length_min": 0.5, "length_max": 0.3}})"),
+             Catch::Contains("hairstyle.length_min"));
+  CHECK_THAT(parseErrors(R"([1, 2])"), Catch::Contains("top level must be a JSON object"));
+}
+
+TEST_CASE("a strand count the machine cannot hold is refused before allocation") {
+  Config c;
+  c.hairstyle.strands = 1000000;
+  c.hairstyle.particlesPerStrand = 64;
+  // 64M particles at a few hundred bytes each: more than half of any test machine's memory
+  // or beyond the particle limit.
+  CHECK_FALSE(checkCapacity(c).empty());
+  c.hairstyle.strands = 10000;
+  c.hairstyle.particlesPerStrand = 16;
+  CHECK(checkCapacity(c).empty());
+}
+
+TEST_CASE("saving never leaves a truncated preset") {
+  const fs::path dir = fs::temp_directory_path() / "csm_atomic";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string path = (dir / "p.json").string();
+  Config c;
+  c.name = "original";
+  std::string err;
+  REQUIRE(savePreset(path, c, &err));
+  const auto sizeBefore = fs::file_size(path);
+
+  // A disk that fills up mid-write: cap the file size far below the preset's, so writes fail
+  // (SIGXFSZ ignored, the writes get EFBIG instead).
+  struct rlimit old;
+  getrlimit(RLIMIT_FSIZE, &old);
+  struct rlimit tiny = old;
+  tiny.rlim_cur = 200;
+  auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+  setrlimit(RLIMIT_FSIZE, &tiny);
+  c.name = "changed";
+  const bool saved = savePreset(path, c, &err);
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, oldHandler);
+
+  CHECK_FALSE(saved);
+  CHECK_THAT(err, Catch::Contains("p.json"));
+  CHECK(fs::file_size(path) == sizeBefore);
+  Config back;
+  PresetErrors e;
+  REQUIRE(loadPreset(path, back, e));
+  CHECK(back.name == "original");
+  for (const auto& entry : fs::directory_iterator(dir))
+    CHECK(entry.path().filename() == "p.json");  // no temporary left behind
+
+  // A target that cannot be replaced (a directory): refused, nothing left behind.
+  fs::create_directories(dir / "q.json" / "inside");
+  CHECK_FALSE(savePreset((dir / "q.json").string(), c, &err));
+  CHECK(fs::is_directory(dir / "q.json" / "inside"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("--set text is parsed per type") {
+  Config c;
+  CHECK(paramFromText(*findParam("wind.strength"), c, "3.5") == "");
+  CHECK(c.wind.strength == 3.5f);
+  CHECK(paramFromText(*findParam("collision.mode"), c, "head") == "");
+  CHECK(c.collision.mode == CollisionMode::Head);
+  CHECK(paramFromText(*findParam("wind.direction"), c, "0,0,1") == "");
+  CHECK(c.wind.direction == glm::vec3(0, 0, 1));
+  CHECK(paramFromText(*findParam("render.shadows"), c, "false") == "");
+  CHECK_FALSE(c.render.shadows);
+  CHECK(paramFromText(*findParam("sim.substeps"), c, "2.5") != "");
+  CHECK(paramFromText(*findParam("name"), c, "42") == "");
+  CHECK(c.name == "42");
+}
