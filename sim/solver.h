@@ -48,6 +48,10 @@ class Solver {
   virtual void readPositions(std::vector<glm::vec4>& out) = 0;
   virtual void readVelocities(std::vector<glm::vec4>& out) = 0;
 
+  // The GL name of an SSBO holding the current positions (vec4 per particle, in particle
+  // order) when the solver keeps them on the GPU; 0 when the caller must upload readPositions.
+  virtual unsigned positionBuffer() { return 0; }
+
   // Time per stage of the last frame; solvers that cannot time stages return what they have.
   virtual std::vector<StageTime> stageTimes() { return {}; }
   // Hair-hair contacts found by the last collision pass (zeros when collisions are off).

@@ -1,0 +1,48 @@
+// The picture: deep opacity maps (Yuksel & Keyser 2008), Kajiya-Kay hair (1989), the head.
+// Hair is drawn straight from a positions SSBO (the GPU solver's own buffer): no CPU copy.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "sim/config.h"
+#include "sim/groom.h"
+#include "sim/head.h"
+#include "sim/solver.h"
+
+namespace csm {
+
+struct FrameView {
+  const Config* config = nullptr;  // render.*, camera.*, light.*, head.spheres, hairstyle.follow_*
+  const Groom* groom = nullptr;    // topology (strand offsets) and per-strand colours
+  long generation = 0;             // changes when the groom is regrown: rebuild topology buffers
+  Pose head;                       // where the head is this frame
+  unsigned positionBuffer = 0;     // SSBO: vec4 per particle, world positions
+  int width = 1280, height = 720;  // target size in pixels
+  unsigned targetFramebuffer = 0;  // GL framebuffer to draw into (0 = the window's)
+  // Camera: when `useCameraMatrices` is false, derived from config->camera.
+  bool useCameraMatrices = false;
+  glm::mat4 view{1.0f}, projection{1.0f};
+};
+
+class Renderer {
+public:
+  virtual ~Renderer() = default;
+  // Needs a current GL 4.3 core context. Null with a message when shaders fail.
+  static std::unique_ptr<Renderer> create(std::string* error);
+
+  virtual void render(const FrameView& frame) = 0;
+  // GPU time per pass of recent frames: "shadow", "hair", "head" (timer queries).
+  virtual std::vector<StageTime> stageTimes() = 0;
+  // Recompiles the shaders from disk; on failure keeps the old programs, `log` says why.
+  virtual bool reloadShaders(std::string* log) = 0;
+};
+
+// View and projection matrices of the preset's orbit camera.
+glm::mat4 cameraView(const CameraConfig& camera);
+glm::mat4 cameraProjection(const CameraConfig& camera, float aspect);
+
+}  // namespace csm
