@@ -1,0 +1,1 @@
+#include "test/cycle_a.glsl"

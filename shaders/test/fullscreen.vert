@@ -1,0 +1,6 @@
+// One triangle covering the viewport, from gl_VertexID alone: no vertex attributes, so an
+// empty vertex array is enough.
+void main() {
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
