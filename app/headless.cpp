@@ -5,6 +5,7 @@
 
 #include "app/metrics.h"
 #include "sim/head.h"
+#include "sim/io/cyhair.h"
 #include "sim/metrics.h"
 #include "sim/simulation.h"
 
@@ -65,6 +66,23 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
       lastReport = now;
     }
   }
+  if (!options.exportHair.empty()) {
+    // The final strands in world space, as a cyHair file for other tools.
+    sim.solver().readPositions(x);
+    Groom out;
+    out.first = groom.first;
+    out.points.reserve(x.size());
+    for (const glm::vec4& p : x) out.points.emplace_back(p);
+    out.color = groom.color;
+    out.thickness = groom.thickness;
+    if (!io::writeCyHair(options.exportHair, out, &error)) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return 1;
+    }
+    if (!options.quiet)
+      std::fprintf(stderr, "csmhair: wrote %zu strands to %s\n", out.strandCount(),
+                   options.exportHair.c_str());
+  }
   if (!options.metrics.empty()) {
     const Config& c = sim.config();
     nlohmann::json meta = {
@@ -79,6 +97,11 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                            : c.collision.mode == CollisionMode::Head ? "head"
                                                                      : "full"},
         {"solver", std::string(sim.solver().name())},
+        {"groom",
+         {{"file_strands", sim.groomReport().fileStrands},
+          {"file_points", sim.groomReport().filePoints},
+          {"simulated_particles", sim.groomReport().simulatedPoints},
+          {"resample_saved_particles", sim.groomReport().savedPoints()}}},
         {"device", options.solver == "cpu" ? "cpu" : "gpu"},
     };
     if (!recorder.write(options.metrics, meta, &error)) {

@@ -22,6 +22,8 @@ bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {
       // A groom opened directly: the default scene with the groom instead of the generator.
       out.config.name = fs::path(options.preset).stem().string();
       out.config.hairstyle.file = fs::absolute(options.preset).lexically_normal().string();
+      out.config.hairstyle.strands = 1000000;  // every strand of the file
+      out.config.hairstyle.maxParticles = 32;
       out.source = options.preset;
     } else {
       PresetErrors pe;

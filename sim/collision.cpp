@@ -78,27 +78,37 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
   std::vector<SegmentPair> out;
   const uint32_t n = uint32_t(x.size());
   std::vector<uint32_t> segments;
-  double longest = 0.0;
+  double total = 0.0;
   for (uint32_t i = 0; i < n; ++i)
     if (segmentExists(strand, i)) {
       segments.push_back(i);
-      longest = std::max(longest, glm::length(x[i + 1] - x[i]));
+      total += glm::length(x[i + 1] - x[i]);
     }
   if (segments.empty()) return out;
-  // Two segments closer than maxDistance have midpoints closer than the half lengths plus
-  // maxDistance <= cell: they sit in the same or neighbouring cells.
-  const double cell = longest + maxDistance;
-  auto cellOf = [&](uint32_t i) {
-    glm::dvec3 m = 0.5 * (x[i] + x[i + 1]) / cell;
-    return glm::i64vec3(std::floor(m.x), std::floor(m.y), std::floor(m.z));
+  // Each segment goes into every cell its box (inflated by half the contact distance) touches,
+  // so cells can be much smaller than a segment: in dense hair a cell as long as a segment
+  // holds hundreds of them, and the 27-cell search around a midpoint tests thousands of pairs
+  // per segment. A pair is tested only in the cell holding the lowest corner of the overlap of
+  // the two boxes, so it is found exactly once.
+  const double cell = std::max(2.0 * maxDistance, 0.5 * total / double(segments.size()));
+  const double pad = 0.5 * maxDistance;
+  auto lower = [&](uint32_t i) { return glm::min(x[i], x[i + 1]) - pad; };
+  auto upper = [&](uint32_t i) { return glm::max(x[i], x[i + 1]) + pad; };
+  auto cellOf = [&](const glm::dvec3& p) {
+    return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
   };
   struct Entry {
     glm::i64vec3 c;
     uint32_t seg;
   };
   std::vector<Entry> entries;
-  entries.reserve(segments.size());
-  for (uint32_t i : segments) entries.push_back({cellOf(i), i});
+  entries.reserve(segments.size() * 4);
+  for (uint32_t i : segments) {
+    const glm::i64vec3 lo = cellOf(lower(i)), hi = cellOf(upper(i));
+    for (int64_t cx = lo.x; cx <= hi.x; ++cx)
+      for (int64_t cy = lo.y; cy <= hi.y; ++cy)
+        for (int64_t cz = lo.z; cz <= hi.z; ++cz) entries.push_back({{cx, cy, cz}, i});
+  }
   auto less = [](const Entry& l, const Entry& r) {
     if (l.c.x != r.c.x) return l.c.x < r.c.x;
     if (l.c.y != r.c.y) return l.c.y < r.c.y;
@@ -106,17 +116,17 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
     return l.seg < r.seg;
   };
   std::sort(entries.begin(), entries.end(), less);
-  for (uint32_t a : segments) {
-    const glm::i64vec3 c = cellOf(a);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const Entry key{c + glm::i64vec3(dx, dy, dz), 0};
-          auto it = std::lower_bound(entries.begin(), entries.end(), key, less);
-          for (; it != entries.end() && it->c == key.c; ++it)
-            if (it->seg > a && mayTouch(strand, a, it->seg))
-              testPair(x, a, it->seg, maxDistance, out);
-        }
+  for (size_t begin = 0; begin < entries.size();) {
+    size_t end = begin + 1;
+    while (end < entries.size() && entries[end].c == entries[begin].c) ++end;
+    for (size_t i = begin; i < end; ++i)
+      for (size_t j = i + 1; j < end; ++j) {
+        const uint32_t a = entries[i].seg, b = entries[j].seg;
+        if (!mayTouch(strand, a, b)) continue;
+        if (cellOf(glm::max(lower(a), lower(b))) != entries[begin].c) continue;
+        testPair(x, a, b, maxDistance, out);
+      }
+    begin = end;
   }
   std::sort(out.begin(), out.end(), [](const SegmentPair& l, const SegmentPair& r) {
     return l.a != r.a ? l.a < r.a : l.b < r.b;

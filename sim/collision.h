@@ -32,8 +32,8 @@ inline constexpr uint32_t kStrandGap = 2;
 std::vector<SegmentPair> findContactsBruteForce(std::span<const glm::dvec3> x,
                                                 std::span<const uint32_t> particleStrand,
                                                 double maxDistance);
-// The same pairs, found through a uniform hash grid of cells no smaller than the longest
-// segment plus maxDistance.
+// The same pairs, found through a uniform grid whose cells (half a mean segment, at least twice
+// the contact distance) hold every segment whose padded box touches them.
 std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
                                           std::span<const uint32_t> particleStrand,
                                           double maxDistance);

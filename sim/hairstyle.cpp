@@ -8,6 +8,9 @@
 #include <glm/trigonometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "sim/io/fit.h"
+#include "sim/io/groom_file.h"
+#include "sim/io/resample.h"
 #include "sim/preset.h"
 
 namespace csm {
@@ -199,18 +202,73 @@ Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& head,
 
 namespace csm {
 
-bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::string* error) {
-  if (!c.hairstyle.file.empty()) {
-    if (error)
-      *error = resolveRelative(baseDir, c.hairstyle.file) +
-               ": groom files are not supported in this build";
-    return false;
+namespace {
+
+// Keeps `count` strands spread evenly over the file's order (all when count covers them).
+void keepStrands(Groom& g, size_t count) {
+  const size_t total = g.strandCount();
+  if (count >= total) return;
+  Groom out;
+  std::vector<glm::vec3> pts;
+  for (size_t k = 0; k < count; ++k) {
+    const size_t s = k * total / count;
+    pts.assign(g.points.begin() + g.first[s], g.points.begin() + g.first[s + 1]);
+    out.addStrand(pts);
+    if (!g.color.empty()) out.color.push_back(g.color[s]);
+    if (!g.thickness.empty()) out.thickness.push_back(g.thickness[s]);
   }
+  g = std::move(out);
+}
+
+}  // namespace
+
+bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::string* error,
+                GroomReport* report) {
+  GroomReport local;
+  GroomReport& r = report ? *report : local;
+  r = {};
   if (c.head.spheres.empty()) {
     if (error) *error = "head.spheres: at least one sphere is needed to grow hair from";
     return false;
   }
-  out = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  const HairstyleConfig& h = c.hairstyle;
+  if (h.file.empty()) {
+    out = growHairstyle(h, c.head.spheres, c.collision.radius);
+    r.filePoints = r.simulatedPoints = out.pointCount();
+    return true;
+  }
+  const std::string path = resolveRelative(baseDir, h.file);
+  io::GroomReadResult read = io::readGroom(path);
+  if (!read.groom) {
+    if (error) *error = read.error;
+    return false;
+  }
+  Groom g = std::move(*read.groom);
+  r.fileStrands = g.strandCount();
+  keepStrands(g, size_t(h.strands));
+  io::FitOptions fit;
+  fit.scale = h.importScale;
+  fit.autoFit = h.importScale <= 0.0f;
+  fit.rotationDeg = h.importRotation;
+  fit.offset = h.importOffset;
+  fit.headSpheres = c.head.spheres;
+  fit.snapRoots = true;
+  io::fitToHead(g, fit);
+  r.filePoints = g.pointCount();
+  if (h.resampleTolerance > 0.0f) {
+    io::ResampleOptions opt;
+    opt.minParticles = uint32_t(h.minParticles);
+    opt.maxParticles = uint32_t(h.maxParticles);
+    opt.tolerance = h.resampleTolerance;
+    io::resampleGroom(g, opt);
+  }
+  const std::string problem = io::checkGroomStructure(g);
+  if (!problem.empty()) {
+    if (error) *error = path + ": " + problem;
+    return false;
+  }
+  r.simulatedPoints = g.pointCount();
+  out = std::move(g);
   return true;
 }
 

@@ -17,8 +17,20 @@ int particlesForLength(const HairstyleConfig& h, double arcLength);
 Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& head,
                     float collisionRadius);
 
-// The groom a preset asks for: the generator, or a file (resolved against baseDir), fitted to
-// the head and resampled. Returns false with a message naming the file on failure.
-bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::string* error);
+struct GroomReport {
+  size_t fileStrands = 0;      // strands in the groom file (0 for the generator)
+  size_t filePoints = 0;       // points of the kept strands before resampling
+  size_t simulatedPoints = 0;  // particles simulated
+  size_t savedPoints() const {
+    return filePoints > simulatedPoints ? filePoints - simulatedPoints : 0;
+  }
+};
+
+// The groom a preset asks for: the generator, or a file (resolved against baseDir) of which
+// hairstyle.strands strands are kept (spread over the file), fitted to the head, roots
+// snapped to the scalp, and resampled to the particles the tolerance needs. Returns false
+// with a message naming the file (and byte offset) on failure.
+bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::string* error,
+                GroomReport* report = nullptr);
 
 }  // namespace csm

@@ -187,6 +187,8 @@ std::vector<std::string> crossCheck(const Config& c) {
 
 std::string checkCapacity(const Config& c) {
   const HairstyleConfig& h = c.hairstyle;
+  // A groom file's size is checked by its reader (sim/io) before anything is allocated.
+  if (!h.file.empty()) return {};
   const uint64_t perStrand = h.particlesPerStrand > 0 ? h.particlesPerStrand : h.maxParticles;
   const uint64_t particles = uint64_t(h.strands) * perStrand;
   // The CPU reference holds about 400 bytes a particle (double state, prefix sums, grid);

@@ -23,7 +23,9 @@ bool Simulation::load(const Config& config, const std::string& baseDir, std::str
     return false;
   }
   Groom groom;
-  if (!buildGroom(config, baseDir, groom, error)) return false;
+  GroomReport report;
+  if (!buildGroom(config, baseDir, groom, error, &report)) return false;
+  groomReport_ = report;
   config_ = config;
   baseDir_ = baseDir;
   groom_ = std::move(groom);

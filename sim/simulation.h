@@ -8,6 +8,7 @@
 
 #include "sim/config.h"
 #include "sim/groom.h"
+#include "sim/hairstyle.h"
 #include "sim/head.h"
 #include "sim/solver.h"
 
@@ -39,6 +40,7 @@ class Simulation {
   Solver& solver() { return *solver_; }
   const Config& config() const { return config_; }
   const Groom& groom() const { return groom_; }
+  const GroomReport& groomReport() const { return groomReport_; }
   const std::string& baseDir() const { return baseDir_; }
   double time() const { return time_; }
   long frame() const { return frame_; }
@@ -50,6 +52,7 @@ class Simulation {
   Config config_;
   std::string baseDir_;
   Groom groom_;
+  GroomReport groomReport_;
   Pose userPose_;
   Pose lastPose_;
   double time_ = 0.0;

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs what csmhair needs from Debian 12's packages (only what is missing), then
+# configures and builds it. Quick when everything is already there.
+#   scripts/setup.sh [BUILD_DIR]      (default: build)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-"$root/build"}
+
+packages=(
+  cmake g++ make pkg-config
+  libeigen3-dev libglm-dev nlohmann-json3-dev catch2
+  libglfw3-dev libepoxy-dev libegl-dev libgl-dev libimgui-dev libpng-dev
+  libegl-mesa0 libgl1-mesa-dri   # Mesa: llvmpipe where there is no GPU
+  xvfb xauth                     # the window under a virtual display (tests, no-display runs)
+  python3 python3-matplotlib     # test scripts and benchmark charts
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$build" -j "$jobs"
