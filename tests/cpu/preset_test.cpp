@@ -147,7 +147,7 @@ TEST_CASE("saving never leaves a truncated preset") {
   fs::remove_all(dir);
 }
 
-TEST_CASE("--set text is parsed per type") {
+TEST_CASE("command-line values are parsed per type") {
   Config c;
   CHECK(paramFromText(*findParam("wind.strength"), c, "3.5") == "");
   CHECK(c.wind.strength == 3.5f);
