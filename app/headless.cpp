@@ -2,8 +2,13 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
+#include "app/capture.h"
 #include "app/metrics.h"
+#include "render/gl/context.h"
+#include "render/hair_renderer.h"
+#include "render/position_source.h"
 #include "sim/head.h"
 #include "sim/io/cyhair.h"
 #include "sim/metrics.h"
@@ -18,6 +23,44 @@ using Clock = std::chrono::steady_clock;
 
 int runHeadless(const Options& options, const SceneSetup& scene) {
   std::string error;
+  // Frames are drawn when something will see them: files, a video, or the metrics' render
+  // times. --no-render turns all of it off.
+  const bool render = !options.noRender && (!options.outDir.empty() || !options.video.empty() ||
+                                            !options.metrics.empty());
+  if (options.noRender && !options.video.empty()) {
+    std::fprintf(stderr, "csmhair: --video needs frames; drop --no-render\n");
+    return 2;
+  }
+  // Before anything is simulated: a missing ffmpeg or an unwritable directory fails at once.
+  std::unique_ptr<VideoPipe> video;
+  if (render && !options.video.empty()) {
+    const double fps = 1.0 / (double(scene.config.sim.dt) * options.every);
+    video = VideoPipe::open(options.video, options.width, options.height, fps, &error);
+    if (!video) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return 1;
+    }
+  }
+  if (render && !options.outDir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(options.outDir, ec);
+    if (ec || !std::filesystem::is_directory(options.outDir)) {
+      std::fprintf(stderr, "csmhair: --out %s: cannot create the directory%s%s\n",
+                   options.outDir.c_str(), ec ? ": " : "", ec ? ec.message().c_str() : "");
+      return 1;
+    }
+  }
+  // One offscreen GL context for both the GPU solver and the renderer.
+  std::unique_ptr<gl::HeadlessContext> context;
+  if (render || options.solver == "gpu") {
+    context = gl::HeadlessContext::create(&error);
+    if (!context) {
+      std::fprintf(stderr, "csmhair: no OpenGL 4.3 context for %s: %s\n",
+                   render ? "rendering (use --no-render to simulate only)" : "the GPU solver",
+                   error.c_str());
+      return 1;
+    }
+  }
   std::unique_ptr<Solver> solver = makeSolver(options.solver, &error);
   if (!solver) {
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
@@ -40,6 +83,26 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     std::fprintf(stderr, "csmhair: %s: %zu strands, %zu particles, solver %s, %ld frames\n",
                  scene.source.c_str(), sim.solver().strandCount(), sim.solver().particleCount(),
                  std::string(sim.solver().name()).c_str(), frames);
+
+  std::unique_ptr<HairRenderer> renderer;
+  std::unique_ptr<CaptureTarget> target;
+  PositionSource positions;
+  long written = 0;
+  double lastRenderMs = 0.0;
+  if (render) {
+    renderer = HairRenderer::create(&error);
+    if (!renderer) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return 1;
+    }
+    target = std::make_unique<CaptureTarget>(options.width, options.height);
+    if (!options.quiet)
+      std::fprintf(stderr, "csmhair: rendering %zu strands (%zu simulated) at %dx%d on %s%s%s\n",
+                   drawnStrandCount(sim.solver().strandCount(), sim.config()),
+                   sim.solver().strandCount(), options.width, options.height,
+                   context->renderer().c_str(), options.outDir.empty() ? "" : " into ",
+                   options.outDir.c_str());
+  }
   for (long f = 0; f < frames; ++f) {
     const auto t0 = Clock::now();
     sim.stepFrame();
@@ -58,11 +121,41 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                    firstNanFrame, (unsigned long long)acc.nanCount);
       break;
     }
+    if (renderer && (f + 1) % options.every == 0) {
+      const unsigned buffer = positions.update(sim.solver());
+      const auto r0 = Clock::now();
+      renderer->render(
+          frameViewOf(sim, buffer, target->width(), target->height(), target->framebuffer()));
+      CaptureTarget::waitForGpu();
+      lastRenderMs = std::chrono::duration<double, std::milli>(Clock::now() - r0).count();
+      recorder.addRender(lastRenderMs, renderer->stageTimes());
+      if (!options.outDir.empty() || video) {
+        const std::vector<std::uint8_t> rgb = target->readRgb();
+        ++written;
+        if (!options.outDir.empty()) {
+          char name[32];
+          std::snprintf(name, sizeof name, "frame_%05ld.png", written);
+          const std::string path = (std::filesystem::path(options.outDir) / name).string();
+          if (!writePng(path, target->width(), target->height(), rgb, &error)) {
+            std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+            return 1;
+          }
+        }
+        if (video && !video->write(rgb)) {
+          video->close(&error);
+          std::fprintf(stderr, "csmhair: %s: ffmpeg stopped taking frames%s%s\n",
+                       options.video.c_str(), error.empty() ? "" : ": ", error.c_str());
+          return 1;
+        }
+      }
+    }
     const auto now = Clock::now();
     if (!options.quiet && (now - lastReport > std::chrono::seconds(2) || f + 1 == frames)) {
       const double elapsed = std::chrono::duration<double>(now - start).count();
-      std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame  max strain %.4f  %.0f s elapsed\n",
-                   f + 1, frames, recorder.simMean(), acc.maxStrain, elapsed);
+      std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame  max strain %.4f  %.0f s elapsed", f + 1,
+                   frames, recorder.simMean(), acc.maxStrain, elapsed);
+      if (renderer) std::fprintf(stderr, "  render %.1f ms  %ld written", lastRenderMs, written);
+      std::fputc('\n', stderr);
       lastReport = now;
     }
   }
@@ -82,6 +175,14 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     if (!options.quiet)
       std::fprintf(stderr, "csmhair: wrote %zu strands to %s\n", out.strandCount(),
                    options.exportHair.c_str());
+  }
+  if (video) {
+    if (!video->close(&error)) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return 1;
+    }
+    if (!options.quiet)
+      std::fprintf(stderr, "csmhair: wrote %ld frames to %s\n", written, options.video.c_str());
   }
   if (!options.metrics.empty()) {
     const Config& c = sim.config();
@@ -104,6 +205,12 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
           {"resample_saved_particles", sim.groomReport().savedPoints()}}},
         {"device", options.solver == "cpu" ? "cpu" : "gpu"},
     };
+    if (renderer) {
+      meta["drawn_strands"] = drawnStrandCount(sim.solver().strandCount(), c);
+      meta["render_size"] = {options.width, options.height};
+      meta["render_samples"] = renderer->samples();
+      meta["gl_renderer"] = context->renderer();
+    }
     if (!recorder.write(options.metrics, meta, &error)) {
       std::fprintf(stderr, "csmhair: %s\n", error.c_str());
       return 1;

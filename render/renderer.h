@@ -2,6 +2,7 @@
 // Hair is drawn straight from a positions SSBO (the GPU solver's own buffer): no CPU copy.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,7 +30,7 @@ struct FrameView {
 };
 
 class Renderer {
-public:
+ public:
   virtual ~Renderer() = default;
   // Needs a current GL 4.3 core context. Null with a message when shaders fail.
   static std::unique_ptr<Renderer> create(std::string* error);
@@ -44,5 +45,9 @@ public:
 // View and projection matrices of the preset's orbit camera.
 glm::mat4 cameraView(const CameraConfig& camera);
 glm::mat4 cameraProjection(const CameraConfig& camera, float aspect);
+
+// Strands on screen for `simulatedStrands` guides: each one plus its hairstyle.follow_count
+// render-only follow hairs. For the stats next to the simulated count.
+std::size_t drawnStrandCount(std::size_t simulatedStrands, const Config& config);
 
 }  // namespace csm

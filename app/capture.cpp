@@ -1,0 +1,228 @@
+#include "app/capture.h"
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+#include <fcntl.h>
+#include <png.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace csm {
+
+CaptureTarget::CaptureTarget(int width, int height)
+    : width_(width), height_(height), color_(GL_RGBA8, width, height) {
+  framebuffer_.attach(GL_COLOR_ATTACHMENT0, color_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
+}
+
+std::vector<std::uint8_t> CaptureTarget::readRgb() const {
+  std::vector<std::uint8_t> bottomUp = framebuffer_.read<std::uint8_t>(
+      GL_COLOR_ATTACHMENT0, {0, 0, width_, height_}, GL_RGB, GL_UNSIGNED_BYTE, 3);
+  // GL's rows run bottom to top; images run top to bottom.
+  std::vector<std::uint8_t> rgb(bottomUp.size());
+  const std::size_t row = std::size_t(width_) * 3;
+  for (int y = 0; y < height_; ++y)
+    std::memcpy(&rgb[std::size_t(y) * row], &bottomUp[std::size_t(height_ - 1 - y) * row], row);
+  return rgb;
+}
+
+void CaptureTarget::waitForGpu() {
+  glFinish();
+}
+
+namespace {
+
+struct PngWriteContext {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  ~PngWriteContext() { png_destroy_write_struct(&png, &info); }
+};
+
+struct PngReadContext {
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  ~PngReadContext() { png_destroy_read_struct(&png, &info, nullptr); }
+};
+
+struct File {
+  FILE* f = nullptr;
+  ~File() {
+    if (f) std::fclose(f);
+  }
+};
+
+}  // namespace
+
+bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb,
+              std::string* error) {
+  auto fail = [&](const std::string& why) {
+    if (error) *error = path + ": " + why;
+    return false;
+  };
+  if (width <= 0 || height <= 0 || rgb.size() != std::size_t(width) * height * 3)
+    return fail("internal error: image size and pixel count disagree");
+  File file;
+  file.f = std::fopen(path.c_str(), "wb");
+  if (!file.f) return fail(std::string("cannot write: ") + std::strerror(errno));
+  PngWriteContext ctx;
+  ctx.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!ctx.png) return fail("libpng failed to start");
+  ctx.info = png_create_info_struct(ctx.png);
+  if (!ctx.info) return fail("libpng failed to start");
+  if (setjmp(png_jmpbuf(ctx.png))) return fail("libpng failed while writing");
+  png_init_io(ctx.png, file.f);
+  // Fast compression: frames are written every step of a headless run.
+  png_set_compression_level(ctx.png, 3);
+  png_set_IHDR(ctx.png, ctx.info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(ctx.png, ctx.info);
+  for (int y = 0; y < height; ++y)
+    png_write_row(ctx.png, const_cast<png_bytep>(&rgb[std::size_t(y) * width * 3]));
+  png_write_end(ctx.png, nullptr);
+  if (std::fflush(file.f) != 0) return fail(std::string("cannot write: ") + std::strerror(errno));
+  return true;
+}
+
+bool readPng(const std::string& path, int& width, int& height, std::vector<std::uint8_t>& rgb,
+             std::string* error) {
+  auto fail = [&](const std::string& why) {
+    if (error) *error = path + ": " + why;
+    return false;
+  };
+  File file;
+  file.f = std::fopen(path.c_str(), "rb");
+  if (!file.f) return fail(std::string("cannot open: ") + std::strerror(errno));
+  PngReadContext ctx;
+  ctx.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!ctx.png) return fail("libpng failed to start");
+  ctx.info = png_create_info_struct(ctx.png);
+  if (!ctx.info) return fail("libpng failed to start");
+  if (setjmp(png_jmpbuf(ctx.png))) return fail("not a readable PNG");
+  png_init_io(ctx.png, file.f);
+  png_read_info(ctx.png, ctx.info);
+  const png_uint_32 w = png_get_image_width(ctx.png, ctx.info);
+  const png_uint_32 h = png_get_image_height(ctx.png, ctx.info);
+  const int depth = png_get_bit_depth(ctx.png, ctx.info);
+  const int type = png_get_color_type(ctx.png, ctx.info);
+  if (depth != 8 || (type != PNG_COLOR_TYPE_RGB && type != PNG_COLOR_TYPE_RGBA))
+    return fail("expected an 8-bit RGB or RGBA PNG");
+  if (type == PNG_COLOR_TYPE_RGBA) png_set_strip_alpha(ctx.png);
+  png_read_update_info(ctx.png, ctx.info);
+  width = int(w);
+  height = int(h);
+  rgb.assign(std::size_t(w) * h * 3, 0);
+  for (png_uint_32 y = 0; y < h; ++y) png_read_row(ctx.png, &rgb[std::size_t(y) * w * 3], nullptr);
+  png_read_end(ctx.png, nullptr);
+  return true;
+}
+
+std::string findOnPath(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (!path) return {};
+  std::string all = path;
+  std::size_t start = 0;
+  while (start <= all.size()) {
+    std::size_t end = all.find(':', start);
+    if (end == std::string::npos) end = all.size();
+    const std::string dir = end > start ? all.substr(start, end - start) : ".";
+    const std::string candidate = dir + "/" + name;
+    struct stat st {};
+    if (::stat(candidate.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+        ::access(candidate.c_str(), X_OK) == 0)
+      return candidate;
+    start = end + 1;
+  }
+  return {};
+}
+
+std::unique_ptr<VideoPipe> VideoPipe::open(const std::string& path, int width, int height,
+                                           double fps, std::string* error) {
+  const std::string ffmpeg = findOnPath("ffmpeg");
+  if (ffmpeg.empty()) {
+    if (error)
+      *error =
+          "--video needs ffmpeg, which is not installed (not found on PATH); install it "
+          "(e.g. apt install ffmpeg) or write PNG frames with --out DIR";
+    return nullptr;
+  }
+  int fds[2];
+  if (::pipe(fds) != 0) {
+    if (error) *error = std::string("cannot make a pipe for ffmpeg: ") + std::strerror(errno);
+    return nullptr;
+  }
+  // A broken pipe (ffmpeg quit) must be an error from write(), not a silent exit.
+  std::signal(SIGPIPE, SIG_IGN);
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%.6g", fps > 0 ? fps : 60.0);
+  // yuv420p needs even sides; the scale filter rounds down where they are odd.
+  std::vector<std::string> args = {
+      ffmpeg,     "-y",       "-loglevel", "error",
+      "-f",       "rawvideo", "-pix_fmt",  "rgb24",
+      "-s",       size,       "-r",        rate,
+      "-i",       "-",        "-vf",       "scale=trunc(iw/2)*2:trunc(ih/2)*2",
+      "-pix_fmt", "yuv420p",  "-c:v",      "libx264",
+      "-crf",     "18",       path};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
+  posix_spawn_file_actions_addclose(&actions, fds[1]);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(fds[0]);
+  if (rc != 0) {
+    ::close(fds[1]);
+    if (error) *error = "cannot start " + ffmpeg + ": " + std::strerror(rc);
+    return nullptr;
+  }
+  std::unique_ptr<VideoPipe> v(new VideoPipe());
+  v->fd_ = fds[1];
+  v->pid_ = pid;
+  v->path_ = path;
+  return v;
+}
+
+VideoPipe::~VideoPipe() {
+  close(nullptr);
+}
+
+bool VideoPipe::write(const std::vector<std::uint8_t>& rgb) {
+  if (fd_ < 0) return false;
+  std::size_t done = 0;
+  while (done < rgb.size()) {
+    const ssize_t n = ::write(fd_, rgb.data() + done, rgb.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    done += std::size_t(n);
+  }
+  return true;
+}
+
+bool VideoPipe::close(std::string* error) {
+  if (fd_ < 0) return true;
+  ::close(fd_);
+  fd_ = -1;
+  int status = 0;
+  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
+  if (error)
+    *error = path_ + ": ffmpeg failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
+  return false;
+}
+
+}  // namespace csm

@@ -1,0 +1,28 @@
+#include "render/position_source.h"
+
+namespace csm {
+
+unsigned PositionSource::update(Solver& solver) {
+  if (unsigned gpu = solver.positionBuffer(); gpu != 0) return gpu;
+  solver.readPositions(scratch_);
+  if (buffer_.id() == 0) buffer_ = gl::Buffer();
+  if (scratch_.empty()) return buffer_.id();
+  buffer_.upload(scratch_);
+  return buffer_.id();
+}
+
+FrameView frameViewOf(const Simulation& sim, unsigned positionBuffer, int width, int height,
+                      unsigned framebuffer) {
+  FrameView v;
+  v.config = &sim.config();
+  v.groom = &sim.groom();
+  v.generation = sim.generation();
+  v.head = sim.headPose();
+  v.positionBuffer = positionBuffer;
+  v.width = width;
+  v.height = height;
+  v.targetFramebuffer = framebuffer;
+  return v;
+}
+
+}  // namespace csm

@@ -1,0 +1,273 @@
+// The picture on the real driver: the Fig. 1 preset draws hair over a plausible share of the
+// frame with real shading variation, the same frame twice is the same image bit for bit,
+// follow hairs add strands, groom colours reach the screen, and the GL state the UI relies
+// on is put back.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "render/gl/shader_source.h"
+#include "tests/gpu/render_test_scene.h"
+
+using namespace csm;
+
+namespace {
+
+struct Stats {
+  double share = 0;       // of the frame's pixels
+  double meanLuma = 0;    // over hair pixels
+  double stddevLuma = 0;  // over hair pixels
+  double p05 = 0, p95 = 0;
+  double meanRgb[3] = {0, 0, 0};
+};
+
+Stats hairStats(const test::Image& img, const std::vector<bool>& mask) {
+  Stats s;
+  std::vector<double> l;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      if (mask[std::size_t(y) * img.width + x]) {
+        l.push_back(img.luma(x, y));
+        for (int c = 0; c < 3; ++c) s.meanRgb[c] += img.at(x, y)[c];
+      }
+  if (l.empty()) return s;
+  s.share = double(l.size()) / double(mask.size());
+  for (double v : l) s.meanLuma += v;
+  s.meanLuma /= double(l.size());
+  for (double v : l) s.stddevLuma += (v - s.meanLuma) * (v - s.meanLuma);
+  s.stddevLuma = std::sqrt(s.stddevLuma / double(l.size()));
+  for (double& c : s.meanRgb) c /= double(l.size());
+  std::sort(l.begin(), l.end());
+  s.p05 = l[l.size() / 20];
+  s.p95 = l[l.size() * 19 / 20];
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("Render: a Fig. 1 frame shows hair over a plausible share, not flat", "[render][image]") {
+  test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 3000));
+  const test::Image hair = scene.render(640, 360);
+  CHECK(scene.renderer().drawnStrands() == 3000);
+  const test::Image bare = scene.render(640, 360, nullptr, false);
+  test::dumpImage(hair, "fig1_hair");
+  test::dumpImage(bare, "fig1_bare");
+  const Stats s = hairStats(hair, test::hairMask(hair, bare));
+  INFO("hair share " << s.share << ", luma mean " << s.meanLuma << " sd " << s.stddevLuma << " p5 "
+                     << s.p05 << " p95 " << s.p95);
+  // The default camera frames the head and its shoulder-length hair: a good part of the frame
+  // but far from all of it.
+  CHECK(s.share > 0.08);
+  CHECK(s.share < 0.6);
+  // Strands, highlights and shadows: a wide spread of brightness, not one flat colour.
+  CHECK(s.stddevLuma > 10.0);
+  CHECK(s.p95 - s.p05 > 30.0);
+  // Brown hair (the preset's colours): red above blue.
+  CHECK(s.meanRgb[0] > s.meanRgb[2] + 10.0);
+
+  // Every pass was timed.
+  std::vector<std::string> names;
+  for (const StageTime& t : scene.renderer().stageTimes()) {
+    names.push_back(t.name);
+    CHECK(t.ms >= 0.0);
+  }
+  for (const char* pass : {"shadow", "head", "hair"})
+    CHECK(std::find(names.begin(), names.end(), pass) != names.end());
+}
+
+TEST_CASE("Render: the same preset and frame give the same image twice", "[render][image]") {
+  const Config c = test::presetConfig("paper_fig1_straight.json", 1500);
+  std::vector<std::uint8_t> first, second;
+  {
+    test::RenderScene scene(c, 3);
+    first = scene.render(320, 180).rgb;
+    // And the same renderer drawing the frame again.
+    CHECK(scene.render(320, 180).rgb == first);
+  }
+  {
+    test::RenderScene scene(c, 3);
+    second = scene.render(320, 180).rgb;
+  }
+  REQUIRE(first.size() == second.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < first.size(); ++i) differ += first[i] != second[i];
+  CHECK(differ == 0);
+}
+
+TEST_CASE("Render: follow hairs multiply the strands drawn around their guides",
+          "[render][image][follow]") {
+  // Few guides, so their strands do not yet cover the hair's outline; no shadows, so only
+  // strands differ from the bare frame.
+  Config c = test::presetConfig("paper_fig1_straight.json", 100);
+  c.render.shadows = false;
+  test::RenderScene scene(c);
+  const test::Image bare = scene.render(480, 270, nullptr, false);
+  const test::Image guides = scene.render(480, 270);
+  CHECK(scene.renderer().drawnStrands() == 100);
+  const std::vector<bool> guideMask = test::hairMask(guides, bare);
+  const Stats g = hairStats(guides, guideMask);
+
+  Config follow = scene.sim().config();
+  follow.hairstyle.followCount = 9;
+  follow.hairstyle.followSpread = 0.006f;
+  const test::Image withFollow = scene.render(480, 270, &follow);
+  test::dumpImage(guides, "follow_0");
+  test::dumpImage(withFollow, "follow_9");
+  CHECK(scene.renderer().drawnStrands() == 1000);
+  CHECK(drawnStrandCount(100, follow) == 1000);
+  const std::vector<bool> followMask = test::hairMask(withFollow, bare);
+  const Stats f = hairStats(withFollow, followMask);
+
+  // Near their guides: hardly any follow-hair pixel lies further than 8 pixels (about 16 mm
+  // here, the spread widened toward the tips) from a guide's pixel.
+  const int w = guides.width, h = guides.height, r = 8;
+  std::vector<bool> near(guideMask.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (guideMask[std::size_t(y) * w + x])
+        for (int dy = -r; dy <= r; ++dy)
+          for (int dx = -r; dx <= r; ++dx) {
+            const int xx = x + dx, yy = y + dy;
+            if (xx >= 0 && yy >= 0 && xx < w && yy < h) near[std::size_t(yy) * w + xx] = true;
+          }
+  std::size_t hair = 0, far = 0;
+  for (std::size_t i = 0; i < followMask.size(); ++i)
+    if (followMask[i]) ++hair, far += !near[i];
+  INFO("hair share: guides " << g.share << ", with follow hairs " << f.share << "; " << far
+                             << " of " << hair << " far from every guide");
+  CHECK(f.share > 1.5 * g.share);
+  CHECK(far < hair / 50);
+
+  // Spread zero: every follow hair lies on its guide.
+  follow.hairstyle.followSpread = 0.0f;
+  const test::Image stacked = scene.render(480, 270, &follow);
+  const Stats z = hairStats(stacked, test::hairMask(stacked, bare));
+  INFO("spread 0: " << z.share);
+  CHECK(z.share < 1.3 * g.share);
+  CHECK(f.share > 1.4 * z.share);
+}
+
+TEST_CASE("Render: groom colours reach the screen", "[render][image]") {
+  test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 1500));
+  const test::Image bare = scene.render(320, 180, nullptr, false);
+  Groom green = scene.sim().groom();
+  green.color.assign(green.strandCount(), glm::vec3(0.05f, 0.6f, 0.05f));
+  const test::Image img = [&] {
+    CaptureTarget target(320, 180);
+    PositionSource positions;
+    FrameView view = frameViewOf(scene.sim(), positions.update(scene.sim().solver()), 320, 180,
+                                 target.framebuffer());
+    view.groom = &green;
+    view.generation += 1000;  // a different groom: topology buffers are rebuilt
+    scene.renderer().render(view);
+    return test::Image{320, 180, target.readRgb()};
+  }();
+  test::dumpImage(img, "groom_green");
+  const Stats s = hairStats(img, test::hairMask(img, bare));
+  INFO("mean hair colour " << s.meanRgb[0] << " " << s.meanRgb[1] << " " << s.meanRgb[2]);
+  CHECK(s.meanRgb[1] > s.meanRgb[0] + 10.0);
+  CHECK(s.meanRgb[1] > s.meanRgb[2] + 10.0);
+}
+
+TEST_CASE("Render: no strands, or no positions, still draws the head and backdrop",
+          "[render][image]") {
+  test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 200), 0);
+  Groom empty;
+  CaptureTarget target(160, 90);
+  FrameView view = frameViewOf(scene.sim(), 0, 160, 90, target.framebuffer());
+  view.groom = &empty;
+  scene.renderer().render(view);
+  CHECK(scene.renderer().drawnStrands() == 0);
+  const std::vector<std::uint8_t> rgb = target.readRgb();
+  // The head sits in the middle of the default framing, skin-coloured (red over blue), and
+  // the corner shows the cool backdrop (blue over red).
+  const std::uint8_t* centre = &rgb[(45 * 160 + 80) * 3];
+  const std::uint8_t* corner = &rgb[(2 * 160 + 2) * 3];
+  CHECK(int(centre[0]) > int(centre[2]) + 10);
+  CHECK(int(corner[2]) > int(corner[0]));
+  CHECK(gl::checkErrors("empty groom"));
+}
+
+TEST_CASE("Render: the GL state the UI depends on is put back", "[render][state]") {
+  test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 200), 1);
+  CaptureTarget target(160, 90);
+  gl::Framebuffer other;
+  gl::Renderbuffer otherColor(GL_RGBA8, 8, 8);
+  other.attach(GL_COLOR_ATTACHMENT0, otherColor);
+  other.bind();
+  glViewport(3, 4, 50, 60);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(1, 1, 2, 2);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+  glDepthMask(GL_FALSE);
+  glActiveTexture(GL_TEXTURE0);
+  gl::Texture uiFont = gl::Texture::create2D(GL_RGBA8, 4, 4);
+  uiFont.bind(0);
+
+  PositionSource positions;
+  scene.renderer().render(frameViewOf(scene.sim(), positions.update(scene.sim().solver()), 160, 90,
+                                      target.framebuffer()));
+
+  GLint fb = 0, viewport[4] = {}, src = 0, dst = 0, texture = 0, active = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fb);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_BLEND_SRC_RGB, &src);
+  glGetIntegerv(GL_BLEND_DST_RGB, &dst);
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+  GLboolean depthMask = GL_TRUE;
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+  CHECK(GLuint(fb) == other.id());
+  CHECK(viewport[0] == 3);
+  CHECK(viewport[1] == 4);
+  CHECK(viewport[2] == 50);
+  CHECK(viewport[3] == 60);
+  CHECK(glIsEnabled(GL_BLEND));
+  CHECK(src == GL_SRC_ALPHA);
+  CHECK(dst == GL_ONE_MINUS_SRC_ALPHA);
+  CHECK(glIsEnabled(GL_SCISSOR_TEST));
+  CHECK_FALSE(glIsEnabled(GL_DEPTH_TEST));
+  CHECK(glIsEnabled(GL_CULL_FACE));
+  CHECK_FALSE(glIsEnabled(GL_PRIMITIVE_RESTART_FIXED_INDEX));
+  CHECK(depthMask == GL_FALSE);
+  CHECK(active == GL_TEXTURE0);
+  CHECK(GLuint(texture) == uiFont.id());
+  // The scissor box was on, yet the whole target was drawn: the renderer turned it off.
+  const std::vector<std::uint8_t> rgb = target.readRgb();
+  CHECK(rgb[(80 * 160 + 150) * 3 + 2] > 0);
+
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  glDepthMask(GL_TRUE);
+  gl::Framebuffer::bindDefault();
+}
+
+TEST_CASE("Render: a failed shader reload keeps the working programs", "[render][reload]") {
+  test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 500), 1);
+  const test::Image before = scene.render(160, 90);
+
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "csm_render_reload_test";
+  std::filesystem::create_directories(dir / "render");
+  std::ofstream(dir / "render" / "hair.frag") << "void main() { this is not GLSL }\n";
+  gl::setShaderDirectory(dir);
+  std::string log;
+  const bool reloaded = scene.renderer().reloadShaders(&log);
+  gl::setShaderDirectory({});
+  std::filesystem::remove_all(dir);
+  INFO(log);
+  CHECK_FALSE(reloaded);
+  CHECK(log.find("hair.frag") != std::string::npos);
+  CHECK(scene.render(160, 90).rgb == before.rgb);
+
+  // From the embedded files again: succeeds, same picture.
+  CHECK(scene.renderer().reloadShaders(&log));
+  CHECK(scene.render(160, 90).rgb == before.rgb);
+}

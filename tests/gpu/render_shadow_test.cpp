@@ -1,0 +1,92 @@
+// Deep opacity maps (Yuksel & Keyser 2008) on the real driver: the layers read back hold
+// opacity that grows with depth, and the hair on the side away from the light is darker
+// with shadows on than with them off.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "tests/gpu/render_test_scene.h"
+
+using namespace csm;
+
+TEST_CASE("Render: deep opacity layers hold opacity that grows with depth", "[render][shadow]") {
+  test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 2000));
+  scene.render(320, 180);
+  const HairRenderer& r = scene.renderer();
+  const gl::Texture& layers = r.opacityLayers();
+  const gl::Texture& depth = r.lightDepth();
+  REQUIRE(layers.width() == scene.sim().config().render.shadowMapSize);
+  const std::vector<float> o = layers.read<float>(GL_RGBA, GL_FLOAT, 4);
+  const std::vector<float> z = depth.read<float>(GL_DEPTH_COMPONENT, GL_FLOAT, 1);
+  REQUIRE(o.size() == z.size() * 4);
+
+  std::size_t hairTexels = 0, deeper = 0, misordered = 0, mismatched = 0;
+  double sum[4] = {0, 0, 0, 0};
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    const float* l = &o[i * 4];
+    const bool hair = z[i] < 1.0f;
+    if (hair != (l[3] > 0.0f)) ++mismatched;  // opacity exactly where there is hair
+    if (!hair) continue;
+    ++hairTexels;
+    for (int k = 0; k < 4; ++k) sum[k] += l[k];
+    // Cumulative layers: each holds at least what the one before it holds.
+    for (int k = 1; k < 4; ++k)
+      if (l[k] + 1e-3f < l[k - 1]) ++misordered;
+    if (l[3] > l[0] + 0.5f) ++deeper;
+  }
+  INFO("hair texels " << hairTexels << ", layer means " << sum[0] / hairTexels << " "
+                      << sum[1] / hairTexels << " " << sum[2] / hairTexels << " "
+                      << sum[3] / hairTexels);
+  // The hair covers a good part of the light's view (its box holds the longest strand).
+  CHECK(hairTexels > z.size() / 20);
+  CHECK(mismatched == 0);
+  CHECK(misordered == 0);
+  // Increasing with depth, strictly on average, and the first layer holds hair too (the
+  // nearest strand itself lies in it).
+  CHECK(sum[0] > 0.0);
+  CHECK(sum[0] < sum[1]);
+  CHECK(sum[1] < sum[2]);
+  CHECK(sum[2] < sum[3]);
+  // Most hair columns are deeper than one layer.
+  CHECK(deeper > hairTexels / 2);
+}
+
+TEST_CASE("Render: hair away from the light is darker with shadows on", "[render][shadow]") {
+  Config c = test::presetConfig("paper_fig1_straight.json", 2000);
+  // Camera in front (+z), light from the right (+x): the left of the image faces away.
+  c.camera.yaw = 0.0f;
+  c.camera.pitch = 5.0f;
+  c.light.direction = {-1.0f, -0.3f, 0.0f};
+  test::RenderScene scene(c);
+  Config off = scene.sim().config();
+  off.render.shadows = false;
+  const test::Image on = scene.render(480, 270);
+  const test::Image noShadow = scene.render(480, 270, &off);
+  const test::Image bare = scene.render(480, 270, &off, false);
+  test::dumpImage(on, "shadow_on");
+  test::dumpImage(noShadow, "shadow_off");
+  const std::vector<bool> mask = test::hairMask(noShadow, bare);
+
+  // Columns of the hair's bounding box: the third farthest from the light.
+  int x0 = on.width, x1 = 0;
+  for (int y = 0; y < on.height; ++y)
+    for (int x = 0; x < on.width; ++x)
+      if (mask[std::size_t(y) * on.width + x]) x0 = std::min(x0, x), x1 = std::max(x1, x);
+  REQUIRE(x1 > x0 + 30);
+  auto meanLuma = [&](const test::Image& img, int from, int to) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = from; x < to; ++x)
+        if (mask[std::size_t(y) * img.width + x]) sum += img.luma(x, y), ++n;
+    return n ? sum / double(n) : 0.0;
+  };
+  const int third = (x1 - x0) / 3;
+  const double awayOn = meanLuma(on, x0, x0 + third), awayOff = meanLuma(noShadow, x0, x0 + third);
+  const double litOn = meanLuma(on, x1 - third, x1), litOff = meanLuma(noShadow, x1 - third, x1);
+  INFO("away from the light: " << awayOn << " with shadows, " << awayOff << " without; lit side "
+                               << litOn << " / " << litOff);
+  CHECK(awayOn < 0.8 * awayOff);
+  // Self-shadowing darkens the far side more than the side facing the light.
+  CHECK(awayOn / awayOff < litOn / litOff);
+}
