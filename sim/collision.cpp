@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/parallel.h"
+
 namespace csm {
 namespace {
 
@@ -116,18 +118,25 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
     return l.seg < r.seg;
   };
   std::sort(entries.begin(), entries.end(), less);
-  for (size_t begin = 0; begin < entries.size();) {
-    size_t end = begin + 1;
-    while (end < entries.size() && entries[end].c == entries[begin].c) ++end;
-    for (size_t i = begin; i < end; ++i)
-      for (size_t j = i + 1; j < end; ++j) {
-        const uint32_t a = entries[i].seg, b = entries[j].seg;
-        if (!mayTouch(strand, a, b)) continue;
-        if (cellOf(glm::max(lower(a), lower(b))) != entries[begin].c) continue;
-        testPair(x, a, b, maxDistance, out);
-      }
-    begin = end;
-  }
+  std::vector<size_t> runs;  // where each cell's entries begin
+  for (size_t i = 0; i < entries.size(); ++i)
+    if (i == 0 || entries[i].c != entries[i - 1].c) runs.push_back(i);
+  runs.push_back(entries.size());
+  std::vector<std::vector<SegmentPair>> found(coreCount());
+  parallelChunks(runs.size() - 1, 256, [&](size_t first, size_t last, size_t chunk) {
+    std::vector<SegmentPair>& mine = found[chunk];
+    for (size_t r = first; r < last; ++r) {
+      const size_t begin = runs[r], end = runs[r + 1];
+      for (size_t i = begin; i < end; ++i)
+        for (size_t j = i + 1; j < end; ++j) {
+          const uint32_t a = entries[i].seg, b = entries[j].seg;
+          if (!mayTouch(strand, a, b)) continue;
+          if (cellOf(glm::max(lower(a), lower(b))) != entries[begin].c) continue;
+          testPair(x, a, b, maxDistance, mine);
+        }
+    }
+  });
+  for (const auto& part : found) out.insert(out.end(), part.begin(), part.end());
   std::sort(out.begin(), out.end(), [](const SegmentPair& l, const SegmentPair& r) {
     return l.a != r.a ? l.a < r.a : l.b < r.b;
   });

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/parallel.h"
 #include "sim/wind.h"
 
 namespace csm {
@@ -167,115 +168,121 @@ void CpuSolver::predict(double h, const std::vector<Sphere>&, const Pose& head) 
   const SimConfig& sim = config_.sim;
   const glm::dvec3 gravity(sim.gravity);
   const bool wind = config_.wind.strength > 0.0f && config_.wind.drag > 0.0f;
-  for (size_t s = 0; s + 1 < first_.size(); ++s) {
-    const uint32_t a = first_[s], b = first_[s + 1];
-    for (uint32_t i = a; i < b; ++i) {
-      xOld_[i] = x_[i];
-      if (int(i - a) < sim.pinned) {
-        // Kinematic roots follow the head.
-        xPred_[i] = head.apply(rest_[i]);
-        continue;
+  parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
+    for (size_t s = first; s < last; ++s) {
+      const uint32_t a = first_[s], b = first_[s + 1];
+      for (uint32_t i = a; i < b; ++i) {
+        xOld_[i] = x_[i];
+        if (int(i - a) < sim.pinned) {
+          // Kinematic roots follow the head.
+          xPred_[i] = head.apply(rest_[i]);
+          continue;
+        }
+        glm::dvec3 acc = gravity + contactForce_[i] / mass_[i];
+        if (wind) {
+          // Drag acts on the wind across the strand, not along it.
+          const glm::dvec3 t = glm::normalize(x_[std::min(i + 1, b - 1)] - x_[i - 1]);
+          const glm::dvec3 rel = windVelocity(config_.wind, x_[i], time_) - v_[i];
+          acc += double(config_.wind.drag) * (rel - glm::dot(rel, t) * t);
+        }
+        v_[i] += h * acc;
+        xPred_[i] = x_[i] + h * v_[i];
       }
-      glm::dvec3 acc = gravity + contactForce_[i] / mass_[i];
-      if (wind) {
-        // Drag acts on the wind across the strand, not along it.
-        const glm::dvec3 t = glm::normalize(x_[std::min(i + 1, b - 1)] - x_[i - 1]);
-        const glm::dvec3 rel = windVelocity(config_.wind, x_[i], time_) - v_[i];
-        acc += double(config_.wind.drag) * (rel - glm::dot(rel, t) * t);
-      }
-      v_[i] += h * acc;
-      xPred_[i] = x_[i] + h * v_[i];
     }
-  }
+  });
 }
 
 void CpuSolver::shapeMatch() {
   const int w = std::max(1, config_.sim.stiffnessWindow);
   const int iterations = std::max(1, config_.sim.rotationIterations);
-  for (size_t s = 0; s + 1 < first_.size(); ++s) {
-    const uint32_t a = first_[s], b = first_[s + 1];
-    const int n = int(b - a);
-    const size_t pb = a + s;
-    // Root-relative coordinates keep the prefix sums' differences exact enough in float on the
-    // GPU; the CPU uses the same formulation so the two compare term by term.
-    const glm::dvec3 origin = xPred_[a];
-    for (int j = 0; j < n; ++j) {
-      const double m = mass_[a + j];
-      const Eigen::Vector3d y = toEigen(xPred_[a + j] - origin);
-      const Eigen::Vector3d yr = toEigen(rest_[a + j] - rest_[a]);
-      prefMassX_[pb + j + 1] = prefMassX_[pb + j] + m * y;
-      prefA_[pb + j + 1] = prefA_[pb + j] + m * y * yr.transpose();
-    }
-    for (int k = 0; k < n; ++k) {
-      const int lo = std::max(0, k - w), hi = std::min(n - 1, k + w);
-      double M;
-      Eigen::Vector3d sumX, sumRest;
-      Eigen::Matrix3d sumA;
-      if (sums_ == RegionSums::Prefix) {
-        M = prefMass_[pb + hi + 1] - prefMass_[pb + lo];
-        sumX = prefMassX_[pb + hi + 1] - prefMassX_[pb + lo];
-        sumRest = prefMassRest_[pb + hi + 1] - prefMassRest_[pb + lo];
-        sumA = prefA_[pb + hi + 1] - prefA_[pb + lo];
-      } else {
-        M = 0.0;
-        sumX.setZero();
-        sumRest.setZero();
-        sumA.setZero();
-        for (int j = lo; j <= hi; ++j) {
-          const double m = mass_[a + j];
-          const Eigen::Vector3d y = toEigen(xPred_[a + j] - origin);
-          const Eigen::Vector3d yr = toEigen(rest_[a + j] - rest_[a]);
-          M += m;
-          sumX += m * y;
-          sumRest += m * yr;
-          sumA += m * y * yr.transpose();
-        }
+  parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
+    for (size_t s = first; s < last; ++s) {
+      const uint32_t a = first_[s], b = first_[s + 1];
+      const int n = int(b - a);
+      const size_t pb = a + s;
+      // Root-relative coordinates keep the prefix sums' differences exact enough in float on the
+      // GPU; the CPU uses the same formulation so the two compare term by term.
+      const glm::dvec3 origin = xPred_[a];
+      for (int j = 0; j < n; ++j) {
+        const double m = mass_[a + j];
+        const Eigen::Vector3d y = toEigen(xPred_[a + j] - origin);
+        const Eigen::Vector3d yr = toEigen(rest_[a + j] - rest_[a]);
+        prefMassX_[pb + j + 1] = prefMassX_[pb + j] + m * y;
+        prefA_[pb + j + 1] = prefA_[pb + j] + m * y * yr.transpose();
       }
-      const Eigen::Vector3d c = sumX / M, cRest = sumRest / M;
-      const Eigen::Matrix3d A = sumA - M * c * cRest.transpose();
-      extractRotation(A, q_[a + k], iterations);
-      const Eigen::Matrix3d R = q_[a + k].matrix();
-      regionC_[a + k] = c;
-      regionCRest_[a + k] = cRest;
-      prefR_[pb + k + 1] = prefR_[pb + k] + R;
-      prefT_[pb + k + 1] = prefT_[pb + k] + (c - R * cRest);
-    }
-    // Goals (paper eq. 1) averaged over the regions that contain each particle:
-    // g_i = ((sum R_k) xr_i + sum (c_k - R_k cr_k)) / |K_i|, both sums prefix differences.
-    for (int i = 0; i < n; ++i) {
-      const int lo = std::max(0, i - w), hi = std::min(n - 1, i + w);
-      const Eigen::Vector3d yr = toEigen(rest_[a + i] - rest_[a]);
-      Eigen::Matrix3d sumR;
-      Eigen::Vector3d sumT;
-      if (sums_ == RegionSums::Prefix) {
-        sumR = prefR_[pb + hi + 1] - prefR_[pb + lo];
-        sumT = prefT_[pb + hi + 1] - prefT_[pb + lo];
-      } else {
-        sumR.setZero();
-        sumT.setZero();
-        for (int k = lo; k <= hi; ++k) {
-          const Eigen::Matrix3d R = q_[a + k].matrix();
-          sumR += R;
-          sumT += regionC_[a + k] - R * regionCRest_[a + k];
+      for (int k = 0; k < n; ++k) {
+        const int lo = std::max(0, k - w), hi = std::min(n - 1, k + w);
+        double M;
+        Eigen::Vector3d sumX, sumRest;
+        Eigen::Matrix3d sumA;
+        if (sums_ == RegionSums::Prefix) {
+          M = prefMass_[pb + hi + 1] - prefMass_[pb + lo];
+          sumX = prefMassX_[pb + hi + 1] - prefMassX_[pb + lo];
+          sumRest = prefMassRest_[pb + hi + 1] - prefMassRest_[pb + lo];
+          sumA = prefA_[pb + hi + 1] - prefA_[pb + lo];
+        } else {
+          M = 0.0;
+          sumX.setZero();
+          sumRest.setZero();
+          sumA.setZero();
+          for (int j = lo; j <= hi; ++j) {
+            const double m = mass_[a + j];
+            const Eigen::Vector3d y = toEigen(xPred_[a + j] - origin);
+            const Eigen::Vector3d yr = toEigen(rest_[a + j] - rest_[a]);
+            M += m;
+            sumX += m * y;
+            sumRest += m * yr;
+            sumA += m * y * yr.transpose();
+          }
         }
+        const Eigen::Vector3d c = sumX / M, cRest = sumRest / M;
+        const Eigen::Matrix3d A = sumA - M * c * cRest.transpose();
+        extractRotation(A, q_[a + k], iterations);
+        const Eigen::Matrix3d R = q_[a + k].matrix();
+        regionC_[a + k] = c;
+        regionCRest_[a + k] = cRest;
+        prefR_[pb + k + 1] = prefR_[pb + k] + R;
+        prefT_[pb + k + 1] = prefT_[pb + k] + (c - R * cRest);
       }
-      goal_[a + i] = origin + toGlm((sumR * yr + sumT) / double(hi - lo + 1));
+      // Goals (paper eq. 1) averaged over the regions that contain each particle:
+      // g_i = ((sum R_k) xr_i + sum (c_k - R_k cr_k)) / |K_i|, both sums prefix differences.
+      for (int i = 0; i < n; ++i) {
+        const int lo = std::max(0, i - w), hi = std::min(n - 1, i + w);
+        const Eigen::Vector3d yr = toEigen(rest_[a + i] - rest_[a]);
+        Eigen::Matrix3d sumR;
+        Eigen::Vector3d sumT;
+        if (sums_ == RegionSums::Prefix) {
+          sumR = prefR_[pb + hi + 1] - prefR_[pb + lo];
+          sumT = prefT_[pb + hi + 1] - prefT_[pb + lo];
+        } else {
+          sumR.setZero();
+          sumT.setZero();
+          for (int k = lo; k <= hi; ++k) {
+            const Eigen::Matrix3d R = q_[a + k].matrix();
+            sumR += R;
+            sumT += regionC_[a + k] - R * regionCRest_[a + k];
+          }
+        }
+        goal_[a + i] = origin + toGlm((sumR * yr + sumT) / double(hi - lo + 1));
+      }
     }
-  }
+  });
 }
 
 void CpuSolver::integrate(double h) {
   const double alpha = config_.sim.stiffness;
   const double keep = std::max(0.0, 1.0 - double(config_.sim.damping) * h);
-  for (size_t s = 0; s + 1 < first_.size(); ++s) {
-    const uint32_t a = first_[s], b = first_[s + 1];
-    for (uint32_t i = a; i < b; ++i) {
-      const bool pinned = int(i - a) < config_.sim.pinned;
-      x_[i] = pinned ? xPred_[i] : xPred_[i] + alpha * (goal_[i] - xPred_[i]);
-      v_[i] = (x_[i] - xOld_[i]) / h;
-      if (!pinned) v_[i] *= keep;
+  parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
+    for (size_t s = first; s < last; ++s) {
+      const uint32_t a = first_[s], b = first_[s + 1];
+      for (uint32_t i = a; i < b; ++i) {
+        const bool pinned = int(i - a) < config_.sim.pinned;
+        x_[i] = pinned ? xPred_[i] : xPred_[i] + alpha * (goal_[i] - xPred_[i]);
+        v_[i] = (x_[i] - xOld_[i]) / h;
+        if (!pinned) v_[i] *= keep;
+      }
     }
-  }
+  });
 }
 
 void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
@@ -286,53 +293,55 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
   const double r = config_.collision.radius;
   const double friction = config_.collision.headFriction;
   const double dftl = sim.dftl;
-  for (size_t s = 0; s + 1 < first_.size(); ++s) {
-    const uint32_t a = first_[s], b = first_[s + 1];
-    // One sweep from root to tip: each segment is fixed against an already final parent, so
-    // no iteration is needed (paper section 3.2).
-    for (uint32_t i = a + std::max(1, sim.pinned); i < b; ++i) {
-      const glm::dvec3 start = x_[i];
-      const double maxLength = limit ? (1.0 + sim.strainLimit) * restLength_[i - 1] : 0.0;
-      if (limit) {
-        const glm::dvec3 d = x_[i] - x_[i - 1];
-        const double len = glm::length(d);
-        if (len > maxLength) x_[i] = x_[i - 1] + d * (maxLength / len);
-      }
-      bool touching = false;
-      if (headCollide) {
-        // Overlapping spheres can push a particle into each other: repeat until it is clear.
-        for (int pass = 0; pass < 4; ++pass) {
-          bool moved = false;
-          for (const Sphere& sp : spheres)
-            moved |=
-                pushOutOfSphere(x_[i], x_[i - 1], glm::dvec3(sp.center), sp.radius + r, maxLength);
-          touching |= moved;
-          if (!moved) break;
+  parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
+    for (size_t s = first; s < last; ++s) {
+      const uint32_t a = first_[s], b = first_[s + 1];
+      // One sweep from root to tip: each segment is fixed against an already final parent, so
+      // no iteration is needed (paper section 3.2).
+      for (uint32_t i = a + std::max(1, sim.pinned); i < b; ++i) {
+        const glm::dvec3 start = x_[i];
+        const double maxLength = limit ? (1.0 + sim.strainLimit) * restLength_[i - 1] : 0.0;
+        if (limit) {
+          const glm::dvec3 d = x_[i] - x_[i - 1];
+          const double len = glm::length(d);
+          if (len > maxLength) x_[i] = x_[i - 1] + d * (maxLength / len);
         }
-      }
-      const glm::dvec3 correction = x_[i] - start;
-      v_[i] += correction / h;
-      if (touching && friction > 0.0) {
-        // Friction against the moving head: damp the sliding part of the relative velocity.
-        const glm::dvec3 local = glm::inverse(head.rotation) * (x_[i] - head.translation);
-        const glm::dvec3 surfaceVel = (x_[i] - before.apply(local)) / h;
-        glm::dvec3 rel = v_[i] - surfaceVel;
-        const Sphere* nearest = &spheres.front();
-        double best = 1e300;
-        for (const Sphere& sp : spheres) {
-          double dist = glm::length(x_[i] - glm::dvec3(sp.center)) - sp.radius;
-          if (dist < best) best = dist, nearest = &sp;
+        bool touching = false;
+        if (headCollide) {
+          // Overlapping spheres can push a particle into each other: repeat until it is clear.
+          for (int pass = 0; pass < 4; ++pass) {
+            bool moved = false;
+            for (const Sphere& sp : spheres)
+              moved |= pushOutOfSphere(x_[i], x_[i - 1], glm::dvec3(sp.center), sp.radius + r,
+                                       maxLength);
+            touching |= moved;
+            if (!moved) break;
+          }
         }
-        const glm::dvec3 n = glm::normalize(x_[i] - glm::dvec3(nearest->center));
-        const double vn = glm::dot(rel, n);
-        const glm::dvec3 vt = rel - vn * n;
-        v_[i] = surfaceVel + std::max(0.0, vn) * n + (1.0 - friction) * vt;
+        const glm::dvec3 correction = x_[i] - start;
+        v_[i] += correction / h;
+        if (touching && friction > 0.0) {
+          // Friction against the moving head: damp the sliding part of the relative velocity.
+          const glm::dvec3 local = glm::inverse(head.rotation) * (x_[i] - head.translation);
+          const glm::dvec3 surfaceVel = (x_[i] - before.apply(local)) / h;
+          glm::dvec3 rel = v_[i] - surfaceVel;
+          const Sphere* nearest = &spheres.front();
+          double best = 1e300;
+          for (const Sphere& sp : spheres) {
+            double dist = glm::length(x_[i] - glm::dvec3(sp.center)) - sp.radius;
+            if (dist < best) best = dist, nearest = &sp;
+          }
+          const glm::dvec3 n = glm::normalize(x_[i] - glm::dvec3(nearest->center));
+          const double vn = glm::dot(rel, n);
+          const glm::dvec3 vt = rel - vn * n;
+          v_[i] = surfaceVel + std::max(0.0, vn) * n + (1.0 - friction) * vt;
+        }
+        // Dynamic follow-the-leader (Mueller et al. 2012): the parent takes back part of the
+        // velocity its child got from the correction, against the heavy-tip look.
+        if (dftl > 0.0 && int(i - 1 - a) >= sim.pinned) v_[i - 1] -= dftl * correction / h;
       }
-      // Dynamic follow-the-leader (Mueller et al. 2012): the parent takes back part of the
-      // velocity its child got from the correction, against the heavy-tip look.
-      if (dftl > 0.0 && int(i - 1 - a) >= sim.pinned) v_[i - 1] -= dftl * correction / h;
     }
-  }
+  });
 }
 
 void CpuSolver::collide() {
