@@ -1,0 +1,58 @@
+// Shader storage binding points of the GPU solver, shared by C++ (sim/gpu/gpu_solver.cpp
+// includes this file) and GLSL (shaders/sim/common.glsl): only #defines, valid in both.
+// Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
+// bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
+// (no pass here declares more) but only 8 binding points; every driver we run on has more
+// than the 21 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+#ifndef CSM_SIM_BINDINGS_GLSL
+#define CSM_SIM_BINDINGS_GLSL
+
+// The hair state, in HairState's layout (sim/hair_state.h).
+#define CSM_BIND_REST 0             // vec4: rest xyz in the head frame, w mass
+#define CSM_BIND_POSITION 1         // vec4: world position (the renderer draws from it)
+#define CSM_BIND_VELOCITY 2         // vec4
+#define CSM_BIND_STRAND_FIRST 3     // uint: strand s owns [first[s], first[s+1])
+#define CSM_BIND_PARTICLE_STRAND 4  // uint: strand of each particle
+// Solver state.
+#define CSM_BIND_PREDICTED 5     // vec4: x* of the current step
+#define CSM_BIND_ROTATION 6      // vec4: quaternion (xyz, w) of each particle's region, warm start
+#define CSM_BIND_STRAND_ORDER 7  // uint: strands by length, for the per-strand passes
+#define CSM_BIND_PARAMS 8        // SimParams + one Substep per substep
+#define CSM_BIND_SPHERES 9       // vec4: world head spheres (centre, radius) per substep
+// Hair-hair collision.
+#define CSM_BIND_SEGMENT_FORCE 10  // vec4 x2 per segment: forces on its two particles
+#define CSM_BIND_SEGMENT_DATA 11   // vec4 per segment: midpoint xyz, half length w
+#define CSM_BIND_SEGMENT_BUCKET 12 // uint per segment: hash bucket of its cell
+#define CSM_BIND_GRID_COUNT 13     // uint per bucket: segments in it (back to 0 after scatter)
+#define CSM_BIND_GRID_START 14     // uint per bucket + 1: exclusive scan of the counts
+#define CSM_BIND_SCAN_BLOCKS 15    // uint per scan block: block sums, then their scan
+#define CSM_BIND_UNSORTED 16       // uint per entry: segments scattered into their buckets
+#define CSM_BIND_SORTED_DATA 17    // vec4 per entry, sorted by segment index within a bucket:
+                                   // midpoint xyz, w the segment index (encodeIndex)
+#define CSM_BIND_COUNTERS 18       // uint[4]: longest segment (float bits), contacts,
+                                   // penetrations, recorded pairs
+#define CSM_BIND_PAIRS 19          // uvec2: recorded contact pairs (tests)
+#define CSM_BIND_SEGMENT_CONTACTS 20  // uint per segment: its contacts, both sides counted
+
+// Texture units of buffer textures (samplerBuffer views of the buffers above), for the
+// contact pass's random reads: on llvmpipe a texel fetch is a vector gather where a storage
+// load is a loop over the SIMD lanes (sim/gpu/buffer_texture.h).
+#define CSM_TEX_POSITION 0
+#define CSM_TEX_VELOCITY 1
+#define CSM_TEX_REST 2
+#define CSM_TEX_SORTED_DATA 3
+#define CSM_TEX_GRID_START 4
+
+// Slots of the COUNTERS buffer.
+#define CSM_COUNTER_LONGEST 0
+#define CSM_COUNTER_CONTACTS 1
+#define CSM_COUNTER_PENETRATIONS 2
+#define CSM_COUNTER_PAIRS 3
+
+// Work group sizes.
+#define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes
+#define CSM_STRAND_GROUP 64     // per-strand passes
+#define CSM_SCAN_GROUP 256      // invocations of a scan group; each scans 2 elements
+#define CSM_SCAN_BLOCK 512      // elements per scan block (2 x CSM_SCAN_GROUP)
+
+#endif

@@ -1,0 +1,53 @@
+// Step 1-2 of DESIGN.md section 1, one invocation per particle: kinematic roots follow the
+// head; free particles get gravity, wind drag and the hair-hair penalty of the last collision
+// pass, and move to x* = x + h (v + h f / m). The velocity itself is not written: integration
+// (at the end of shape_match.comp) recomputes it from the positions, as the CPU solver does.
+#include "sim/common.glsl"
+#include "sim/wind.glsl"
+
+layout(local_size_x = CSM_PARTICLE_GROUP) in;
+
+layout(std430, binding = CSM_BIND_REST) readonly buffer Rest { vec4 rest[]; };
+layout(std430, binding = CSM_BIND_POSITION) readonly buffer Position { vec4 pos[]; };
+layout(std430, binding = CSM_BIND_VELOCITY) readonly buffer Velocity { vec4 vel[]; };
+layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
+layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
+  uint particleStrand[];
+};
+layout(std430, binding = CSM_BIND_PREDICTED) writeonly buffer Predicted { vec4 pred[]; };
+layout(std430, binding = CSM_BIND_SEGMENT_FORCE) readonly buffer SegmentForce { vec4 segForce[]; };
+
+uniform uint substep;
+
+void main() {
+  uint i = globalIndex();
+  if (i >= P.counts.x) return;
+  uint s = particleStrand[i];
+  uint a = strandFirst[s], b = strandFirst[s + 1u];
+  Substep st = S[substep];
+  vec4 r = rest[i];
+  if (int(i - a) < P.ints.x) {
+    pred[i] = vec4((st.head * vec4(r.xyz, 1.0)).xyz, 1.0);
+    return;
+  }
+  float h = st.time.y;
+  vec3 x = pos[i].xyz;
+  vec3 v = vel[i].xyz;
+  vec3 acc = P.gravity.xyz;
+  if (P.flags.w != 0u) {
+    // Deterministic gather: the particle's share of the forces its (at most two) segments
+    // collected, segment i's on its first particle and segment i-1's on its second.
+    vec3 f = vec3(0.0);
+    if (i + 1u < b) f += segForce[2u * i].xyz;
+    if (i > a) f += segForce[2u * (i - 1u) + 1u].xyz;
+    acc += f / r.w;
+  }
+  if (P.flags.z != 0u) {
+    // Drag acts on the wind across the strand, not along it.
+    vec3 t = normalize(pos[min(i + 1u, b - 1u)].xyz - pos[max(i, a + 1u) - 1u].xyz);
+    vec3 rel = windVelocity(x, st.time.x) - v;
+    acc += P.misc.y * (rel - dot(rel, t) * t);
+  }
+  v += h * acc;
+  pred[i] = vec4(x + h * v, 1.0);
+}

@@ -1,0 +1,130 @@
+// Step 6 of DESIGN.md section 1, one invocation per strand: strain limiting in one sweep from
+// root to tip (paper section 3.2: each segment is fixed against an already final parent, so
+// no iteration), pushing out of the head spheres, head friction and DFTL (Mueller et al.
+// 2012), as CpuSolver::limitStrain. The sweep is sequential by nature; a strand is one
+// invocation and the particle's parent stays in registers.
+#include "sim/common.glsl"
+
+layout(local_size_x = CSM_STRAND_GROUP) in;
+
+layout(std430, binding = CSM_BIND_REST) readonly buffer Rest { vec4 rest[]; };
+layout(std430, binding = CSM_BIND_POSITION) buffer Position { vec4 pos[]; };
+layout(std430, binding = CSM_BIND_VELOCITY) buffer Velocity { vec4 vel[]; };
+layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
+layout(std430, binding = CSM_BIND_STRAND_ORDER) readonly buffer StrandOrder { uint strandOrder[]; };
+layout(std430, binding = CSM_BIND_SPHERES) readonly buffer Spheres { vec4 spheres[]; };
+
+uniform uint substep;
+
+// Pushes p out of one sphere onto its surface. With a strain limit, the push keeps the segment
+// from `prev` no longer than maxLength: when the radial projection is out of reach, take the
+// nearest point of the circle where the sphere meets the ball of reach around prev. (Moving
+// along the chord toward prev instead would jump: a chord between two points on the sphere
+// always cuts through it.) The float twin of pushOutOfSphere in sim/cpu/cpu_solver.cpp.
+bool pushOutOfSphere(inout vec3 p, vec3 prev, vec3 c, float radius, float maxLength) {
+  vec3 d = p - c;
+  float len2 = dot(d, d);
+  if (len2 >= radius * radius) return false;
+  float len = sqrt(len2);
+  vec3 target = c + (len > 1e-15 ? d / len : vec3(0.0, 1.0, 0.0)) * radius;
+  p = target;
+  if (maxLength <= 0.0 || length(target - prev) <= maxLength) return true;
+  vec3 toPrev = prev - c;
+  float dist = length(toPrev);
+  // No circle when prev is inside the sphere, or out of reach of it; keep the projection.
+  if (dist < 1e-15 || dist + maxLength < radius || dist - radius > maxLength) return true;
+  vec3 u = toPrev / dist;
+  float a = (radius * radius - maxLength * maxLength + dist * dist) / (2.0 * dist);
+  float rho = sqrt(max(0.0, radius * radius - a * a));
+  vec3 centre = c + a * u;
+  vec3 side = target - centre;
+  side -= dot(side, u) * u;
+  float sideLen = length(side);
+  if (sideLen < 1e-15) return true;
+  p = centre + side * (rho / sideLen);
+  return true;
+}
+
+void main() {
+  uint id = globalIndex();
+  if (id >= P.counts.y) return;
+  uint s = strandOrder[id];
+  uint a = strandFirst[s];
+  int n = int(strandFirst[s + 1u] - a);
+  int pinned = P.ints.x;
+  int first = max(1, pinned);
+  if (n <= first) return;
+
+  Substep st = S[substep];
+  float h = st.time.y;
+  bool limit = P.flags.x != 0u;
+  bool headCollide = P.flags.y != 0u;
+  float epsilon = P.stepping.y;
+  float r = P.stepping.z;
+  float friction = P.stepping.w;
+  float dftl = P.misc.x;
+  int sphereCount = P.ints.w;
+  uint sphereBase = substep * uint(sphereCount);
+
+  vec3 restPrev = rest[a + uint(first - 1)].xyz;
+  vec3 xPrev = pos[a + uint(first - 1)].xyz;
+  vec3 vPrev = vel[a + uint(first - 1)].xyz;
+  bool prevFree = first - 1 >= pinned;  // DFTL only corrects free particles
+  for (int i = first; i < n; ++i) {
+    uint p = a + uint(i);
+    vec3 restHere = rest[p].xyz;
+    vec3 x = pos[p].xyz;
+    vec3 v = vel[p].xyz;
+    vec3 start = x;
+    float maxLength = limit ? (1.0 + epsilon) * length(restHere - restPrev) : 0.0;
+    if (limit) {
+      vec3 d = x - xPrev;
+      float len = length(d);
+      if (len > maxLength) x = xPrev + d * (maxLength / len);
+    }
+    bool touching = false;
+    if (headCollide) {
+      // Overlapping spheres can push a particle into each other: repeat until it is clear.
+      for (int pass = 0; pass < 4; ++pass) {
+        bool moved = false;
+        for (int k = 0; k < sphereCount; ++k) {
+          vec4 sp = spheres[sphereBase + uint(k)];
+          moved = pushOutOfSphere(x, xPrev, sp.xyz, sp.w + r, maxLength) || moved;
+        }
+        touching = touching || moved;
+        if (!moved) break;
+      }
+    }
+    vec3 correction = x - start;
+    v += correction / h;
+    if (touching && friction > 0.0) {
+      // Friction against the moving head: damp the sliding part of the relative velocity.
+      vec3 surfaceVel = (x - (st.headDelta * vec4(x, 1.0)).xyz) / h;
+      vec3 rel = v - surfaceVel;
+      vec4 nearest = spheres[sphereBase];
+      float best = length(x - nearest.xyz) - nearest.w;
+      for (int k = 1; k < sphereCount; ++k) {
+        vec4 sp = spheres[sphereBase + uint(k)];
+        float dist = length(x - sp.xyz) - sp.w;
+        if (dist < best) {
+          best = dist;
+          nearest = sp;
+        }
+      }
+      vec3 nrm = normalize(x - nearest.xyz);
+      float vn = dot(rel, nrm);
+      vec3 vt = rel - vn * nrm;
+      v = surfaceVel + max(0.0, vn) * nrm + (1.0 - friction) * vt;
+    }
+    // Dynamic follow-the-leader: the parent takes back part of the velocity its child got
+    // from the correction, against the heavy-tip look.
+    if (dftl > 0.0 && prevFree) vPrev -= dftl * correction / h;
+    vel[p - 1u] = vec4(vPrev, 0.0);
+    pos[p] = vec4(x, 1.0);
+    restPrev = restHere;
+    xPrev = x;
+    vPrev = v;
+    prevFree = i >= pinned;
+  }
+  vel[a + uint(n - 1)] = vec4(vPrev, 0.0);
+}

@@ -1,0 +1,42 @@
+#include "sim/gpu/buffer_texture.h"
+
+#include <utility>
+
+#include "render/gl/debug.h"
+
+namespace csm::gpu {
+
+BufferTexture::BufferTexture(const gl::Buffer& buffer, GLenum internalFormat) {
+  glGenTextures(1, &id_);
+  attach(buffer, internalFormat);
+}
+
+BufferTexture::~BufferTexture() {
+  if (id_) glDeleteTextures(1, &id_);
+}
+
+BufferTexture::BufferTexture(BufferTexture&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+BufferTexture& BufferTexture::operator=(BufferTexture&& other) noexcept {
+  if (this != &other) {
+    if (id_) glDeleteTextures(1, &id_);
+    id_ = std::exchange(other.id_, 0);
+  }
+  return *this;
+}
+
+void BufferTexture::attach(const gl::Buffer& buffer, GLenum internalFormat) {
+  // Texture unit 0 is borrowed for the edit; bind() sets the unit it needs.
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, id_);
+  glTexBuffer(GL_TEXTURE_BUFFER, internalFormat, buffer.id());
+  gl::maybeCheckErrors("BufferTexture::attach");
+}
+
+void BufferTexture::bind(GLuint unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_BUFFER, id_);
+  gl::maybeCheckErrors("BufferTexture::bind");
+}
+
+}  // namespace csm::gpu

@@ -1,0 +1,38 @@
+// The GPU solver's parameter block: the C++ twin of SimParams and Substep in
+// shaders/sim/common.glsl (std430: every member a 16-byte vec4, ivec4, uvec4 or mat4, so
+// the layouts agree without padding rules). tests/gpu/gpu_solver_test.cpp checks the offsets
+// against the linked program's.
+#pragma once
+
+#include <cstddef>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+namespace csm::gpu {
+
+struct SimParams {
+  glm::vec4 gravity;    // xyz, w unused
+  glm::vec4 windDir;    // xyz unit direction, w strength (m/s)
+  glm::vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
+  glm::vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
+  glm::vec4 contact;    // x penalty stiffness (1/s^2), y normal damping (1/s), z friction, w dt
+  glm::vec4 misc;       // x DFTL, y wind drag (1/s), z cell slack, w prefilter slack
+  glm::ivec4 ints;      // x pinned, y stiffness window w, z rotation iterations, w head spheres
+  glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w contact forces valid
+  glm::uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = off)
+  glm::uvec4 grid;      // x bucket mask, y P1, z P2, w unused
+  glm::uvec4 runs[3];   // bucket offsets of the 9 (dy, dz) runs
+};
+
+struct Substep {
+  glm::mat4 head;       // head pose at the end of the step
+  glm::mat4 headDelta;  // start-of-step pose after the inverse of the end pose
+  glm::vec4 time;       // x time at the start, y h, z unused, w velocity kept by damping
+};
+
+static_assert(sizeof(SimParams) == 13 * 16);
+static_assert(offsetof(SimParams, runs) == 10 * 16);
+static_assert(sizeof(Substep) == 144);
+
+}  // namespace csm::gpu

@@ -1,0 +1,128 @@
+// Chain Shape Matching on the GPU: the step of DESIGN.md section 1 in GLSL compute shaders
+// (shaders/sim/), the same math in the same order as CpuSolver, in float. Everything stays
+// on the GPU; nothing is read back inside a frame.
+//
+// Per step (substep): predict.comp (per particle), shape_match.comp (per strand: region
+// sums, rotations, goals, integration), strain_limit.comp (per strand). Per frame, when
+// collision.mode is full: the hash grid by counting sort (segment_prep, grid_count, a
+// three-level parallel scan, grid_scatter, grid_rank) and contacts.comp, whose per-segment
+// forces the next frame's predict passes gather. 3 dispatches per step + 8 per frame.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/gl/buffer.h"
+#include "render/gl/program.h"
+#include "render/gl/query.h"
+#include "sim/gpu/buffer_texture.h"
+#include "sim/gpu/gpu_params.h"
+#include "sim/solver.h"
+
+namespace csm {
+
+class GpuSolver final : public Solver {
+ public:
+  // Needs a current GL 4.3 context; compiles the shaders. Null, with the compiler's log in
+  // `error`, when they do not build.
+  static std::unique_ptr<GpuSolver> create(std::string* error);
+  ~GpuSolver() override;
+
+  std::string_view name() const override { return "gpu"; }
+  void reset(const Groom& groom, const Config& config, const Pose& head) override;
+  void setConfig(const Config& config) override { config_ = config; }
+  void stepFrame(const Pose& from, const Pose& to) override;
+
+  size_t strandCount() const override { return strands_; }
+  size_t particleCount() const override { return particles_; }
+  double time() const override { return time_; }
+
+  void finish() override;
+  void readPositions(std::vector<glm::vec4>& out) override;
+  void readVelocities(std::vector<glm::vec4>& out) override;
+  unsigned positionBuffer() override { return position_.id(); }
+  std::vector<StageTime> stageTimes() override;
+  ContactStats contactStats() override;
+
+  // --- For tests and tools. ---
+  // Runs the collision pass on the current state now (stepFrame does it at the end of each
+  // frame when collision.mode is full); its forces act during the next frame.
+  void detectContacts();
+  // Records the contact pairs (a < b) the collision pass finds, up to `capacity` (0: off).
+  void setPairCapacity(size_t capacity);
+  // The pairs of the last collision pass, in no particular order; `overflow` when there were
+  // more than the capacity.
+  std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr);
+  // Per segment (by its first particle): the contacts it summed, both sides counted.
+  std::vector<uint32_t> readSegmentContactCounts();
+  // Hash table size of the grid (a power of two).
+  uint32_t bucketCount() const { return buckets_; }
+
+ private:
+  GpuSolver() = default;
+  bool build(int maxStrandSize, std::string* error);
+  void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
+  void bindAll();
+  void collide();
+  void dispatchItems(const gl::Program& program, uint32_t items, uint32_t groupSize);
+  void timeStage(int stage);
+  void endStage();
+  void beginTimerFrame();
+
+  Config config_;
+  double time_ = 0.0;
+  Pose head_;
+  size_t particles_ = 0, strands_ = 0;
+  uint32_t segments_ = 0;
+  uint32_t buckets_ = 0, scanBlocks_ = 0;
+  size_t pairCapacity_ = 0;
+  bool forcesValid_ = false;
+  bool collidedThisFrame_ = false;
+  int builtMaxN_ = 0;
+  gpu::SimParams params_{};
+
+  struct Programs {
+    gl::Program predict{gl::NoCreate}, shapeMatch{gl::NoCreate}, strainLimit{gl::NoCreate};
+    gl::Program segmentPrep{gl::NoCreate}, gridCount{gl::NoCreate}, scanBlocks{gl::NoCreate},
+        scanSums{gl::NoCreate}, scanAdd{gl::NoCreate}, gridScatter{gl::NoCreate},
+        gridRank{gl::NoCreate}, contacts{gl::NoCreate};
+  } programs_;
+
+  gl::Buffer rest_{gl::NoCreate}, position_{gl::NoCreate}, velocity_{gl::NoCreate},
+      strandFirst_{gl::NoCreate}, particleStrand_{gl::NoCreate}, predicted_{gl::NoCreate},
+      rotation_{gl::NoCreate}, strandOrder_{gl::NoCreate}, paramsBuffer_{gl::NoCreate},
+      spheres_{gl::NoCreate}, segmentForce_{gl::NoCreate}, segmentData_{gl::NoCreate},
+      segmentBucket_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
+      scanBlockSums_{gl::NoCreate}, unsorted_{gl::NoCreate}, sortedData_{gl::NoCreate},
+      counters_{gl::NoCreate}, pairs_{gl::NoCreate}, segmentContacts_{gl::NoCreate};
+  // texelFetch views for the contact pass (see buffer_texture.h).
+  gpu::BufferTexture positionTex_{gl::NoCreate}, velocityTex_{gl::NoCreate}, restTex_{gl::NoCreate},
+      sortedDataTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};
+
+  // GPU time per stage: one GL_TIME_ELAPSED query around each dispatch group, for the last
+  // few frames; stageTimes() reads the newest frame whose results are in. Software drivers
+  // (llvmpipe) run a dispatch before glDispatchCompute returns and report no time for it in
+  // their timer queries, so there the stages are timed by the CPU clock instead.
+  static constexpr int kStages = 5;  // integrate, shape_matching, strain_limiting, grid, contacts
+  struct FrameTimers {
+    std::vector<std::pair<int, gl::Query>> queries;
+    size_t used = 0;
+    bool issued = false;
+    std::array<double, kStages> cpuMs{};  // software drivers
+  };
+  bool cpuTiming_ = false;
+  int openStage_ = -1;
+  std::chrono::steady_clock::time_point stageStart_;
+  std::array<FrameTimers, 3> timers_;
+  int timerFrame_ = 0;
+  std::vector<StageTime> lastStages_;
+
+  std::optional<ContactStats> contactStats_;
+};
+
+}  // namespace csm

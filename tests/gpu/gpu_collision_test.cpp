@@ -1,0 +1,204 @@
+// The GPU collision pass against the CPU reference, on the real GL driver (llvmpipe where
+// there is no GPU): the hash grid finds exactly the pairs brute force finds, and collisions
+// keep strands apart.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "sim/collision.h"
+#include "sim/gpu/gpu_solver.h"
+#include "sim/hairstyle.h"
+#include "tests/gpu/gl_fixture.h"
+
+using namespace csm;
+
+namespace {
+
+// Tangled strands in a 10 cm box: random walks with steps up to `step` (the longest segment
+// sets the cell size, so a few long steps also exercise big cells).
+Groom tangle(int strands, double step, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-0.05f, 0.05f), d(-1.0f, 1.0f);
+  Groom g;
+  for (int s = 0; s < strands; ++s) {
+    std::vector<glm::vec3> points;
+    glm::vec3 p(u(rng), u(rng), u(rng));
+    const int n = 3 + s % 11;
+    for (int i = 0; i < n; ++i) {
+      points.push_back(p);
+      p += glm::vec3(d(rng), d(rng), d(rng)) * float(step);
+    }
+    g.addStrand(points);
+  }
+  return g;
+}
+
+std::vector<uint32_t> strandOf(const Groom& g) {
+  std::vector<uint32_t> out(g.pointCount());
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) out[i] = uint32_t(s);
+  return out;
+}
+
+std::vector<glm::dvec3> toDouble(const std::vector<glm::vec4>& x) {
+  std::vector<glm::dvec3> out;
+  out.reserve(x.size());
+  for (const glm::vec4& p : x) out.emplace_back(glm::vec3(p));
+  return out;
+}
+
+struct Compared {
+  size_t brute = 0, gpu = 0, missing = 0, extra = 0, ambiguous = 0;
+};
+
+// Compares the GPU's pair list with brute force on the positions the GPU holds. The GPU
+// decides d < 2r in float, brute force in double: a pair whose distance lies within float
+// rounding of 2r (relative 1e-5 here, ~100 float ulps of the closest-point arithmetic on
+// coordinates up to 0.1 m) may fall either way and is not counted as a difference.
+Compared compare(GpuSolver& gpu, const Groom& g, double r) {
+  std::vector<glm::vec4> x;
+  gpu.readPositions(x);
+  const std::vector<glm::dvec3> xd = toDouble(x);
+  const std::vector<uint32_t> strand = strandOf(g);
+  const auto brute = findContactsBruteForce(xd, strand, 2.0 * r * (1.0 + 1e-5));
+  bool overflow = true;
+  std::vector<std::pair<uint32_t, uint32_t>> found = gpu.readContactPairs(&overflow);
+  REQUIRE_FALSE(overflow);
+  std::set<std::pair<uint32_t, uint32_t>> gpuSet(found.begin(), found.end());
+  Compared c;
+  c.gpu = found.size();
+  CHECK(gpuSet.size() == found.size());  // no pair reported twice
+  std::set<std::pair<uint32_t, uint32_t>> certain;
+  for (const SegmentPair& p : brute) {
+    const bool inside = p.distance < 2.0 * r * (1.0 - 1e-5);
+    if (!inside) {
+      ++c.ambiguous;
+      gpuSet.erase({p.a, p.b});
+      continue;
+    }
+    ++c.brute;
+    certain.insert({p.a, p.b});
+    if (!gpuSet.count({p.a, p.b})) ++c.missing;
+  }
+  for (const auto& p : gpuSet)
+    if (!certain.count(p)) ++c.extra;
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collision]") {
+  test::glContext();
+  std::string error;
+  auto gpu = GpuSolver::create(&error);
+  REQUIRE(gpu);
+  for (double step : {0.004, 0.012}) {
+    const Groom g = tangle(400, step, 7);
+    for (double r : {0.0005, 0.002, 0.008}) {
+      Config c;
+      c.collision.mode = CollisionMode::Full;
+      c.collision.radius = float(r);
+      gpu->setPairCapacity(200000);
+      gpu->reset(g, c, Pose{});
+      gpu->detectContacts();
+      const Compared cmp = compare(*gpu, g, r);
+      INFO("step " << step << " r " << r << ": brute force " << cmp.brute << ", GPU " << cmp.gpu
+                   << ", missing " << cmp.missing << ", extra " << cmp.extra
+                   << ", within rounding of 2r " << cmp.ambiguous);
+      CHECK(cmp.brute > 50);
+      CHECK(cmp.missing == 0);
+      CHECK(cmp.extra == 0);
+      // The stats count the same pairs.
+      CHECK(gpu->contactStats().contacts == cmp.gpu);
+
+      // Each segment summed every contact it is part of: both sides of every pair.
+      std::vector<uint32_t> expected(g.pointCount(), 0);
+      for (const auto& [a, b] : gpu->readContactPairs()) ++expected[a], ++expected[b];
+      const std::vector<uint32_t> counts = gpu->readSegmentContactCounts();
+      size_t wrong = 0;
+      uint32_t most = 0;
+      const std::vector<uint32_t> strand = strandOf(g);
+      for (size_t i = 0; i + 1 < g.pointCount(); ++i)
+        if (strand[i] == strand[i + 1]) {
+          if (counts[i] != expected[i]) ++wrong;
+          most = std::max(most, counts[i]);
+        }
+      CHECK(wrong == 0);
+      // The contact pass lists 64 contacts per round; the widest radius needs several rounds.
+      if (r > 0.005) CHECK(most > 64);
+    }
+  }
+}
+
+TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu][collision]") {
+  // Hair fallen under gravity and wind: dense near the scalp, where most pairs are.
+  test::glContext();
+  std::string error;
+  auto gpu = GpuSolver::create(&error);
+  REQUIRE(gpu);
+  Config c;
+  c.hairstyle.strands = 1500;
+  c.hairstyle.particlesPerStrand = 12;
+  c.wind.strength = 3.0f;
+  c.collision.mode = CollisionMode::Full;
+  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  gpu->setPairCapacity(400000);
+  gpu->reset(g, c, Pose{});
+  for (int f = 0; f < 10; ++f) gpu->stepFrame(Pose{}, Pose{});
+  gpu->detectContacts();
+  const Compared cmp = compare(*gpu, g, c.collision.radius);
+  INFO("brute force " << cmp.brute << ", GPU " << cmp.gpu << ", missing " << cmp.missing
+                      << ", extra " << cmp.extra << ", within rounding of 2r " << cmp.ambiguous);
+  CHECK(cmp.brute > 1000);
+  CHECK(cmp.missing == 0);
+  CHECK(cmp.extra == 0);
+}
+
+TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
+  // The CPU test's scene (tests/cpu/cpu_solver_test.cpp): strands shaken through each other.
+  // Penetrations are segment pairs closer than the hair radius, counted by brute force on
+  // the read-back positions.
+  test::glContext();
+  std::string error;
+  Config c;
+  c.hairstyle.strands = 600;
+  c.hairstyle.particlesPerStrand = 0;
+  c.hairstyle.minParticles = 6;
+  c.hairstyle.maxParticles = 14;
+  c.hairstyle.lengthMin = 0.2f;
+  c.hairstyle.lengthMax = 0.3f;
+  c.wind.strength = 3.0f;
+  c.head.motion = HeadMotion::Shake;
+  c.head.amplitude = 40.0f;
+  c.collision.radius = 0.002f;
+  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  const std::vector<uint32_t> strand = strandOf(g);
+  auto penetrations = [&](CollisionMode mode, ContactStats* stats) {
+    Config m = c;
+    m.collision.mode = mode;
+    auto gpu = GpuSolver::create(&error);
+    REQUIRE(gpu);
+    gpu->reset(g, m, headPose(m.head, 0.0));
+    double t = 0.0;
+    for (int f = 0; f < 90; ++f, t += m.sim.dt)
+      gpu->stepFrame(headPose(m.head, t), headPose(m.head, t + m.sim.dt));
+    *stats = gpu->contactStats();
+    std::vector<glm::vec4> x;
+    gpu->readPositions(x);
+    return findContactsBruteForce(toDouble(x), strand, m.collision.radius).size();
+  };
+  ContactStats off, on;
+  const size_t without = penetrations(CollisionMode::Head, &off);
+  const size_t with = penetrations(CollisionMode::Full, &on);
+  INFO("penetrating pairs without " << without << ", with " << with << "; GPU counted "
+                                    << on.penetrations << " of " << on.contacts << " contacts");
+  CHECK(without > 20);
+  CHECK(with * 2 < without);
+  CHECK(off.contacts == 0);
+  CHECK(on.contacts > 0);
+}
