@@ -6,6 +6,9 @@
 #include "app/scene_setup.h"
 #include "sim/params.h"
 #include "sim/preset.h"
+#ifdef CSM_HAVE_VIEWER
+#include "app/viewer.h"
+#endif
 
 namespace {
 
@@ -59,6 +62,15 @@ int main(int argc, char** argv) {
   csm::SceneSetup scene;
   if (!csm::setupScene(*options, scene, &error)) {
     std::fputs(error.c_str(), stderr);
+#ifdef CSM_HAVE_VIEWER
+    // The window opens anyway, on the built-in scene, and shows the messages.
+    if (!options->headless && options->savePreset.empty()) {
+      csm::SceneSetup builtIn;
+      builtIn.config = csm::defaultConfig();
+      builtIn.source = "<built-in default preset>";
+      return csm::runViewer(*options, builtIn, error);
+    }
+#endif
     return 2;
   }
   if (!options->savePreset.empty()) {
@@ -69,8 +81,14 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (!options->headless) {
-    std::fprintf(stderr, "csmhair: the window is not part of this build; use --headless\n");
+#ifdef CSM_HAVE_VIEWER
+    return csm::runViewer(*options, scene, "");
+#else
+    std::fprintf(stderr,
+                 "csmhair: the window is not part of this build (CSM_BUILD_VIEWER=OFF); use "
+                 "--headless\n");
     return 1;
+#endif
   }
   return csm::runHeadless(*options, scene);
 }

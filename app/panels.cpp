@@ -1,0 +1,341 @@
+#include "app/panels.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "app/viewer.h"
+
+namespace csm {
+namespace {
+
+constexpr float kPanelWidth = 410.0f;
+const ImVec4 kRed{1.0f, 0.35f, 0.3f, 1.0f};
+const ImVec4 kYellow{1.0f, 0.8f, 0.3f, 1.0f};
+
+std::string str(std::string_view s) {
+  return std::string(s);
+}
+
+ParamGroup& child(ParamGroup& parent, std::string_view name) {
+  for (ParamGroup& g : parent.children)
+    if (g.name == name) return g;
+  parent.children.push_back(ParamGroup{str(name), {}, {}});
+  return parent.children.back();
+}
+
+std::vector<ParamGroup> buildGroups() {
+  ParamGroup root;
+  for (const Param& p : params()) {
+    ParamGroup* g = &root;
+    std::string_view rest = p.group;
+    while (!rest.empty()) {
+      const size_t bar = rest.find('|');
+      g = &child(*g, rest.substr(0, bar));
+      rest = bar == std::string_view::npos ? std::string_view() : rest.substr(bar + 1);
+    }
+    g->params.push_back(&p);
+  }
+  return root.children;
+}
+
+const char* effectText(Effect e) {
+  switch (e) {
+    case Effect::Live:
+      return "takes effect on the next step";
+    case Effect::Rebuild:
+      return "regrows the hair (on release)";
+    case Effect::Render:
+      return "changes only the picture";
+    case Effect::Info:
+      return "describes the preset";
+  }
+  return "";
+}
+
+void paramTooltip(const Param& p) {
+  if (!ImGui::IsItemHovered()) return;
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+  ImGui::TextUnformatted(p.description.data(), p.description.data() + p.description.size());
+  ImGui::TextDisabled("%s: %s; %s", str(p.key).c_str(), describeType(p).c_str(),
+                      effectText(p.effect));
+  ImGui::PopTextWrapPos();
+  ImGui::EndTooltip();
+}
+
+// Collects, over the items of one parameter's widget, whether it changed and whether the
+// edit is finished (a click, Enter, or the release of a drag).
+struct EditTracker {
+  bool changed = false, finished = false;
+  void item(bool itemChanged) {
+    changed |= itemChanged;
+    if (itemChanged && !ImGui::IsItemActive()) finished = true;
+    if (ImGui::IsItemDeactivatedAfterEdit()) finished = true;
+  }
+};
+
+ImGuiSliderFlags sliderFlags(const Param& p) {
+  return ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+}
+
+float dragSpeed(const Param& p) {
+  return float(std::max(1e-4, (p.max - p.min) * 5e-4));
+}
+
+void sphereWidgets(const Param& p, Config& config, const std::string& label, EditTracker& edit) {
+  std::vector<Sphere>& spheres = p.ref<std::vector<Sphere>>(config);
+  const bool open = ImGui::TreeNode(label.c_str());
+  paramTooltip(p);
+  if (!open) return;
+  const float lo = float(p.min), hi = float(p.max);
+  int remove = -1;
+  for (size_t i = 0; i < spheres.size(); ++i) {
+    ImGui::PushID(int(i));
+    ImGui::Text("sphere %zu%s", i, i == 0 ? " (scalp)" : "");
+    edit.item(ImGui::DragFloat3("centre", &spheres[i].center.x, 0.001f, lo, hi, "%.3f",
+                                ImGuiSliderFlags_AlwaysClamp));
+    edit.item(ImGui::DragFloat("radius", &spheres[i].radius, 0.001f, 0.001f, hi, "%.3f",
+                               ImGuiSliderFlags_AlwaysClamp));
+    if (i > 0) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("remove")) remove = int(i);
+    }
+    ImGui::PopID();
+  }
+  if (remove >= 0) {
+    spheres.erase(spheres.begin() + remove);
+    edit.changed = edit.finished = true;
+  }
+  if (ImGui::Button("add sphere")) {
+    spheres.push_back(Sphere{{0.0f, -0.2f, 0.0f}, 0.05f});
+    edit.changed = edit.finished = true;
+  }
+  ImGui::TreePop();
+}
+
+void drawGroupContents(const ParamGroup& group, Viewer& viewer) {
+  Config& edited = viewer.editedConfig();
+  bool apply = false;
+  for (const Param* p : group.params) {
+    const ParamEdit e = paramWidget(*p, edited);
+    if (e == ParamEdit::Apply) apply = true;
+  }
+  // Apply once, after the loop: applyConfig refreshes the edited copy.
+  if (apply) viewer.applyConfig(Config(edited));
+  for (const ParamGroup& sub : group.children) {
+    if (ImGui::TreeNode(sub.name.c_str())) {
+      drawGroupContents(sub, viewer);
+      ImGui::TreePop();
+    }
+  }
+}
+
+void drawMessages(const Viewer& viewer, size_t count) {
+  const auto& messages = viewer.messages();
+  const size_t first = messages.size() > count ? messages.size() - count : 0;
+  for (size_t i = first; i < messages.size(); ++i) {
+    const ViewerMessage& m = messages[i];
+    const ImVec4 colour = m.level == MessageLevel::Error ? kRed
+                          : m.level == MessageLevel::Warning
+                              ? kYellow
+                              : ImGui::GetStyleColorVec4(ImGuiCol_Text);
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextWrapped("%s", m.text.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+}  // namespace
+
+const std::vector<ParamGroup>& paramGroups() {
+  static const std::vector<ParamGroup> groups = buildGroups();
+  return groups;
+}
+
+ParamEdit paramWidget(const Param& p, Config& config) {
+  ImGui::PushID(p.key.data(), p.key.data() + p.key.size());
+  const std::string label = str(p.label);
+  EditTracker edit;
+  switch (p.type) {
+    case ParamType::Bool:
+      edit.item(ImGui::Checkbox(label.c_str(), &p.ref<bool>(config)));
+      break;
+    case ParamType::Int: {
+      int& v = p.ref<int>(config);
+      const int lo = int(p.min), hi = int(p.max);
+      // Sliders need a range they can map to pixels; a seed's range is not one.
+      if (p.logarithmic || p.max - p.min <= 100000.0)
+        edit.item(ImGui::SliderInt(label.c_str(), &v, lo, hi, "%d", sliderFlags(p)));
+      else
+        edit.item(
+            ImGui::DragInt(label.c_str(), &v, 1.0f, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp));
+      break;
+    }
+    case ParamType::Float:
+      edit.item(ImGui::SliderFloat(label.c_str(), &p.ref<float>(config), float(p.min), float(p.max),
+                                   "%.4g", sliderFlags(p)));
+      break;
+    case ParamType::Vec3:
+      edit.item(ImGui::DragFloat3(label.c_str(), &p.ref<glm::vec3>(config).x, dragSpeed(p),
+                                  float(p.min), float(p.max), "%.3f",
+                                  ImGuiSliderFlags_AlwaysClamp));
+      break;
+    case ParamType::Color:
+      edit.item(
+          ImGui::ColorEdit3(label.c_str(), &p.ref<glm::vec3>(config).x, ImGuiColorEditFlags_Float));
+      break;
+    case ParamType::Enum: {
+      int& v = p.ref<int>(config);
+      const std::string current =
+          v >= 0 && v < int(p.options.size()) ? str(p.options[size_t(v)]) : std::to_string(v);
+      bool picked = false;
+      if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+        for (size_t i = 0; i < p.options.size(); ++i) {
+          if (ImGui::Selectable(str(p.options[i]).c_str(), int(i) == v)) {
+            picked = int(i) != v;
+            v = int(i);
+          }
+        }
+        ImGui::EndCombo();
+      }
+      edit.item(picked);
+      if (picked) edit.finished = true;
+      break;
+    }
+    case ParamType::String:
+      edit.item(ImGui::InputText(label.c_str(), &p.ref<std::string>(config)));
+      break;
+    case ParamType::Spheres:
+      sphereWidgets(p, config, label, edit);
+      break;
+  }
+  if (p.type != ParamType::Spheres) paramTooltip(p);
+  ImGui::PopID();
+  if (p.effect == Effect::Rebuild) {
+    if (edit.finished) return ParamEdit::Apply;
+    return edit.changed ? ParamEdit::Pending : ParamEdit::None;
+  }
+  return edit.changed || edit.finished ? ParamEdit::Apply : ParamEdit::None;
+}
+
+void drawParameterPanel(Viewer& viewer, PanelState& state) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(vp->WorkPos, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, vp->WorkSize.y), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Parameters")) {
+    ImGui::End();
+    return;
+  }
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.5f);  // room for the labels
+  drawPresetSection(viewer, state);
+  for (const ParamGroup& group : paramGroups()) {
+    const bool open = group.name == "Hairstyle" || group.name == "Wind";
+    if (ImGui::CollapsingHeader(group.name.c_str(), open ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+      drawGroupContents(group, viewer);
+  }
+  if (ImGui::CollapsingHeader("Messages")) drawMessages(viewer, 30);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void drawBanners(Viewer& viewer) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const ImVec2 topCentre(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + 8.0f);
+  const ImGuiWindowFlags bannerFlags = ImGuiWindowFlags_NoDecoration |
+                                       ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                                       ImGuiWindowFlags_NoSavedSettings |
+                                       ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+  float y = topCentre.y;
+  auto banner = [&](const char* id, const std::string& text) {
+    ImGui::SetNextWindowPos(ImVec2(topCentre.x, y), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.7f, 0.05f, 0.05f, 0.95f));
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 1.0f, 1.0f, 1.0f));
+    if (ImGui::Begin(id, nullptr, bannerFlags)) {
+      ImGui::PushTextWrapPos(vp->WorkSize.x * 0.45f);
+      ImGui::TextUnformatted(text.c_str());
+      ImGui::PopTextWrapPos();
+      y += ImGui::GetWindowHeight() + 6.0f;
+    }
+    ImGui::End();
+    ImGui::PopStyleColor(2);
+  };
+  if (viewer.nanStopped())
+    banner("##nan", "The simulation produced NaN at frame " + std::to_string(viewer.nanFrame()) +
+                        " (" + std::to_string(viewer.nanParticles()) +
+                        " particles) and is paused; strands in the picture may be broken.\n"
+                        "Press R to reset the hair to rest, or change the parameters "
+                        "(smaller time step, more substeps, less stiffness) or revert the preset.");
+  if (!viewer.hasRenderer())
+    banner("##renderer", "The renderer did not start, so the hair is simulated but not drawn:\n" +
+                             viewer.rendererError());
+
+  // The latest message, for a few seconds at the bottom: a refused edit or a saved file
+  // should not need the Messages section opened to be seen.
+  if (!viewer.messages().empty()) {
+    const ViewerMessage& m = viewer.messages().back();
+    const double age =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - m.when).count();
+    if (age < (m.level == MessageLevel::Info ? 3.0 : 8.0)) {
+      ImGui::SetNextWindowPos(
+          ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y - 12.0f),
+          ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+      ImGui::SetNextWindowBgAlpha(0.85f);
+      if (ImGui::Begin("##notice", nullptr, bannerFlags)) {
+        ImGui::PushTextWrapPos(vp->WorkSize.x * 0.45f);
+        ImGui::PushStyleColor(ImGuiCol_Text, m.level == MessageLevel::Error ? kRed
+                                             : m.level == MessageLevel::Warning
+                                                 ? kYellow
+                                                 : ImGui::GetStyleColorVec4(ImGuiCol_Text));
+        ImGui::TextUnformatted(m.text.c_str());
+        ImGui::PopStyleColor();
+        ImGui::PopTextWrapPos();
+      }
+      ImGui::End();
+    }
+  }
+
+  if (!viewer.presetErrors().empty()) {
+    ImGui::SetNextWindowPos(
+        ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.3f),
+        ImGuiCond_Appearing, ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(720.0f, vp->WorkSize.x * 0.6f), 0.0f),
+                             ImGuiCond_Appearing);
+    ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.6f, 0.05f, 0.05f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.75f, 0.08f, 0.08f, 1.0f));
+    const std::string title = "Preset problems: " + viewer.presetErrorsNote() + "###presetproblems";
+    if (ImGui::Begin(title.c_str())) {
+      ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+      for (const std::string& m : viewer.presetErrors()) ImGui::TextWrapped("%s", m.c_str());
+      ImGui::PopStyleColor();
+      if (ImGui::Button("Dismiss")) viewer.dismissPresetErrors();
+    }
+    ImGui::End();
+    ImGui::PopStyleColor(2);
+  }
+  if (viewer.shaderReloadFailed()) {
+    ImGui::SetNextWindowSize(ImVec2(640.0f, 300.0f), ImGuiCond_Appearing);
+    if (ImGui::Begin("Shader reload failed: the old shaders are still in use")) {
+      if (ImGui::Button("Dismiss")) viewer.dismissShaderLog();
+      ImGui::SameLine();
+      if (ImGui::Button("Try again (F5)")) viewer.reloadShaders();
+      ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
+      ImGui::PushStyleColor(ImGuiCol_Text, kRed);
+      ImGui::TextUnformatted(viewer.shaderLog().c_str());
+      ImGui::PopStyleColor();
+      ImGui::EndChild();
+    }
+    ImGui::End();
+  }
+}
+
+void drawPanels(Viewer& viewer, PanelState& state) {
+  drawParameterPanel(viewer, state);
+  if (state.showStats) drawStatsPanel(viewer, state);
+  if (state.showHelp) drawHelpPanel(state);
+  drawBanners(viewer);
+}
+
+}  // namespace csm

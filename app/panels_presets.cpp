@@ -1,0 +1,125 @@
+// The Presets section: list, load, save, save as, revert, reload shaders.
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "app/panels.h"
+#include "app/viewer.h"
+#include "app/viewer_presets.h"
+
+namespace csm {
+namespace {
+
+const ImVec4 kYellow{1.0f, 0.8f, 0.3f, 1.0f};
+constexpr double kRescanSeconds = 2.0;
+
+void rescan(const Viewer& viewer, PanelState& state) {
+  const double now = ImGui::GetTime();
+  if (now - state.presetsScannedAt < kRescanSeconds) return;
+  state.presetsScannedAt = now;
+  const std::filesystem::path selected =
+      state.selectedPreset >= 0 && state.selectedPreset < int(state.presetFiles.size())
+          ? state.presetFiles[size_t(state.selectedPreset)]
+          : std::filesystem::path();
+  state.presetDirs = presetDirectories(viewer.presetPath());
+  state.presetFiles = listPresets(state.presetDirs);
+  state.selectedPreset = -1;
+  for (size_t i = 0; i < state.presetFiles.size(); ++i)
+    if (state.presetFiles[i] == selected) state.selectedPreset = int(i);
+}
+
+// "default.json", or "other/dir/default.json" when it is not in the first folder.
+std::string shortName(const std::filesystem::path& file, const PanelState& state) {
+  if (!state.presetDirs.empty() && file.parent_path() == state.presetDirs.front())
+    return file.filename().string();
+  return file.parent_path().filename().string() + "/" + file.filename().string();
+}
+
+}  // namespace
+
+void drawPresetSection(Viewer& viewer, PanelState& state) {
+  if (!ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  rescan(viewer, state);
+  const Config& c = viewer.simulation().config();
+  ImGui::Text("%s", c.name.c_str());
+  const std::vector<std::string_view> changed = viewer.modifiedKeys();
+  if (!changed.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(kYellow, "modified (%zu)", changed.size());
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::TextUnformatted("Differs from the preset as loaded:");
+      for (std::string_view k : changed) ImGui::BulletText("%.*s", int(k.size()), k.data());
+      ImGui::EndTooltip();
+    }
+  }
+  ImGui::TextDisabled(
+      "%s", viewer.presetPath().empty() ? "built-in preset" : viewer.presetPath().c_str());
+
+  if (state.presetFiles.empty()) {
+    ImGui::TextWrapped(
+        "No presets found: looked beside the opened preset, in ./presets, beside the program "
+        "and in the source tree.");
+  } else if (ImGui::BeginListBox("##presets",
+                                 ImVec2(-1.0f, ImGui::GetTextLineHeightWithSpacing() * 5.5f))) {
+    std::error_code ec;
+    const std::filesystem::path open =
+        viewer.presetPath().empty() ? std::filesystem::path()
+                                    : std::filesystem::weakly_canonical(viewer.presetPath(), ec);
+    for (size_t i = 0; i < state.presetFiles.size(); ++i) {
+      const bool current = !open.empty() && open == state.presetFiles[i];
+      const std::string name = shortName(state.presetFiles[i], state) + (current ? "  (open)" : "");
+      if (ImGui::Selectable(name.c_str(), state.selectedPreset == int(i),
+                            ImGuiSelectableFlags_AllowDoubleClick)) {
+        state.selectedPreset = int(i);
+        if (ImGui::IsMouseDoubleClicked(0)) viewer.loadPreset(state.presetFiles[i].string());
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", state.presetFiles[i].c_str());
+    }
+    ImGui::EndListBox();
+  }
+
+  const bool picked =
+      state.selectedPreset >= 0 && state.selectedPreset < int(state.presetFiles.size());
+  ImGui::BeginDisabled(!picked);
+  if (ImGui::Button("Load"))
+    viewer.loadPreset(state.presetFiles[size_t(state.selectedPreset)].string());
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Load the selected preset (or double-click it).");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(viewer.presetPath().empty());
+  if (ImGui::Button("Save")) viewer.save();
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "Write the scene over the opened preset (Ctrl+S). Written to a temporary "
+        "file and renamed, so a crash never leaves half a preset.");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(changed.empty());
+  if (ImGui::Button("Revert")) viewer.revert();
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Back to the preset as loaded or last saved.");
+  ImGui::SameLine();
+  if (ImGui::Button("Reload shaders")) viewer.reloadShaders();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Recompile the shaders from disk (F5); a shader that fails keeps the old "
+        "program and shows the log.");
+
+  ImGui::InputTextWithHint("##saveas", "new_preset.json", &state.saveAsName);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(state.saveAsName.empty());
+  if (ImGui::Button("Save as")) {
+    const std::filesystem::path path =
+        saveAsPath(state.saveAsName, viewer.presetPath(), state.presetDirs);
+    if (viewer.saveAs(path.string())) {
+      state.saveAsName.clear();
+      state.presetsScannedAt = -1e9;
+    }
+  }
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("A bare name goes beside the opened preset (or into the presets folder).");
+}
+
+}  // namespace csm

@@ -1,0 +1,131 @@
+// The Stats and Help panels.
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "app/panels.h"
+#include "app/viewer.h"
+#include "app/window.h"
+
+namespace csm {
+namespace {
+
+constexpr float kStatsWidth = 380.0f;
+
+void stageRows(const char* what, const std::vector<StageTime>& stages) {
+  for (const StageTime& s : stages) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::Text("%s %s", what, s.name.c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%7.2f ms", s.ms);
+  }
+}
+
+// A fixed width: the panel sizes itself to its contents, so "fill the width" would be 0.
+void plot(const char* id, const History& h, const char* overlay, float floor) {
+  const float top = std::max(floor, h.max() * 1.15f);
+  ImGui::PlotLines(id, h.values(), h.size(), h.offset(), overlay, 0.0f, top,
+                   ImVec2(ImGui::GetFontSize() * 22.0f, ImGui::GetFontSize() * 3.5f));
+}
+
+}  // namespace
+
+const std::vector<Shortcut>& shortcuts() {
+  static const std::vector<Shortcut> list = {
+      {"Space", "pause / run"},
+      {"N or .", "step one frame (pauses)"},
+      {"R", "reset the hair to rest"},
+      {"F12 or P", "screenshot (csmhair_<time>.png, panels included)"},
+      {"F", "frame the head"},
+      {"Home", "reset the view to the preset's camera"},
+      {"G", "undo the head drag"},
+      {"F5", "reload shaders from disk"},
+      {"Ctrl+S", "save the preset"},
+      {"F1", "show / hide this help"},
+      {"Left drag", "orbit the camera"},
+      {"Shift+left or middle drag", "pan"},
+      {"Wheel", "zoom"},
+      {"Right or Ctrl+left drag", "turn the head about the neck"},
+  };
+  return list;
+}
+
+void drawStatsPanel(Viewer& viewer, PanelState& state) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x - kStatsWidth, vp->WorkPos.y),
+                          ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(kStatsWidth, 0.0f), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Stats", &state.showStats, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::End();
+    return;
+  }
+  const ViewerStats& s = viewer.stats();
+  Simulation& sim = viewer.simulation();
+  ImGui::Text("%.1f fps   %.1f ms a frame", s.fps, s.frameMs.mean());
+  ImGui::Text("solver %s, %s", std::string(sim.solver().name()).c_str(),
+              viewer.window().renderer().c_str());
+  ImGui::Text("t = %.2f s, frame %ld%s", sim.time(), sim.frame(),
+              viewer.paused() ? "  (paused)" : "");
+
+  char overlay[96];
+  std::snprintf(overlay, sizeof overlay, "frame time, ms (max %.1f)", s.frameMs.max());
+  plot("##frame", s.frameMs, overlay, 1.0f);
+  std::snprintf(overlay, sizeof overlay, "max strain (now %.4f)", s.maxStrain.latest());
+  plot("##strain", s.maxStrain, overlay, 0.01f);
+  ImGui::TextDisabled("strain and NaN: read back every %d frames", s.sampleEvery);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Positions are read back from the solver only every %d frames, not every "
+        "frame,\nso the GPU path never waits for the GPU just to draw a plot.",
+        s.sampleEvery);
+
+  if (ImGui::BeginTable("stages", 2, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("simulation step (wall)");
+    ImGui::TableNextColumn();
+    ImGui::Text("%7.2f ms", s.simMs);
+    stageRows("sim", s.simStages);
+    stageRows("render", s.renderStages);
+    ImGui::EndTable();
+  }
+  ImGui::Separator();
+  ImGui::Text("hair contacts %llu, penetrations %llu", (unsigned long long)s.contacts.contacts,
+              (unsigned long long)s.contacts.penetrations);
+  ImGui::Text("head penetrations %llu, max speed %.2f m/s",
+              (unsigned long long)s.accuracy.headPenetrations, s.accuracy.maxSpeed);
+  ImGui::Text("particles %zu", s.particles);
+  ImGui::Text("strands simulated %zu, drawn %zu", s.strands, s.drawnStrands);
+  bool vsync = viewer.vsync();
+  if (ImGui::Checkbox("vsync", &vsync)) viewer.setVsync(vsync);
+  ImGui::End();
+}
+
+void drawHelpPanel(PanelState& state) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(
+      ImVec2(vp->WorkPos.x + vp->WorkSize.x - 8.0f, vp->WorkPos.y + vp->WorkSize.y - 8.0f),
+      ImGuiCond_FirstUseEver, ImVec2(1.0f, 1.0f));
+  // Folded on small windows, where it would cover the Stats panel; its title stays.
+  ImGui::SetNextWindowCollapsed(vp->WorkSize.y < 850.0f, ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Help (F1)", &state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit)) {
+    for (const Shortcut& k : shortcuts()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(k.keys);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(k.action);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("Hover a parameter for what it does.");
+  ImGui::End();
+}
+
+}  // namespace csm

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# csmhair PRESET --screenshot FILE --exit-after N in a window, end to end: the PNG is written
+# with the window's size, and a missing display is reported with a pointer to --headless.
+set -u
+bin=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+
+# No display: says so, points to --headless, exit 1.
+out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$bin" "$src/presets/short_shake.json" 2>&1)
+status=$?
+if [ $status -ne 1 ] || ! grep -q -- "--headless" <<<"$out"; then
+  echo "FAIL: without a display: exit $status, output: $out"; fail=1
+else
+  echo "ok: without a display -> 1: $out"
+fi
+
+run() { bash "$src/tests/window/run_xvfb.sh" "$@"; }
+
+run "$bin" "$src/presets/short_shake.json" --size 800x600 --set hairstyle.strands=800 \
+    --screenshot "$tmp/shot.png" --exit-after 5 >"$tmp/log" 2>&1
+status=$?
+cat "$tmp/log"
+[ $status -eq 77 ] && exit 77
+if [ $status -ne 0 ]; then echo "FAIL: --screenshot run exited $status"; fail=1; fi
+size=$(python3 -c "import struct,sys; d=open(sys.argv[1],'rb').read(24); print(*struct.unpack('>II', d[16:24]))" "$tmp/shot.png" 2>/dev/null)
+if [ "$size" != "800 600" ]; then echo "FAIL: screenshot size '$size', expected '800 600'"; fail=1
+else echo "ok: screenshot 800x600"; fi
+grep -q "5 frames" "$tmp/log" || { echo "FAIL: no frame summary"; fail=1; }
+
+# A broken preset opens the window anyway, shows the messages, and exits 2 when scripted.
+printf '{"sim": {"substeps": 0}}' >"$tmp/bad.json"
+run "$bin" "$tmp/bad.json" --screenshot "$tmp/bad.png" --exit-after 2 >"$tmp/log" 2>&1
+status=$?
+if [ $status -ne 2 ] || [ ! -s "$tmp/bad.png" ] || ! grep -q "sim.substeps" "$tmp/log"; then
+  echo "FAIL: broken preset: exit $status"; cat "$tmp/log"; fail=1
+else
+  echo "ok: broken preset -> 2, window shown with its messages"
+fi
+exit $fail

@@ -1,0 +1,375 @@
+// The viewer in a real window (run under Xvfb by run_xvfb.sh): presets, live edits through the
+// same setter the panels call, screenshots of what the window shows, broken presets, NaN.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+
+#include <unistd.h>
+
+#include <imgui.h>
+#include <png.h>
+
+#include "app/camera_control.h"
+#include "app/panels.h"
+#include "app/viewer.h"
+#include "app/viewer_presets.h"
+#include "sim/cpu/cpu_solver.h"
+#include "sim/params.h"
+#include "sim/preset.h"
+
+using namespace csm;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSource = CSM_SOURCE_DIR;
+
+// CSM_WINDOW_TEST_OUT=DIR keeps the screenshots there (for a look, or as CI artifacts).
+fs::path tempDir() {
+  const char* keep = std::getenv("CSM_WINDOW_TEST_OUT");
+  const fs::path dir =
+      keep && *keep ? fs::path(keep)
+                    : fs::temp_directory_path() / ("csm_window_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+void removeTemp(const fs::path& dir) {
+  const char* keep = std::getenv("CSM_WINDOW_TEST_OUT");
+  if (!keep || !*keep) fs::remove_all(dir);
+}
+
+std::unique_ptr<Viewer> makeViewer(SolverFactory factory = {}) {
+  ViewerOptions o;
+  o.width = 1280;
+  o.height = 720;
+  o.vsync = false;
+  o.quiet = true;
+  o.makeSolver = std::move(factory);
+  std::string error;
+  std::unique_ptr<Viewer> v = Viewer::create(o, &error);
+  INFO(error);
+  REQUIRE(v);
+  return v;
+}
+
+void runFrames(Viewer& v, int n) {
+  for (int i = 0; i < n; ++i) v.runFrame();
+}
+
+Image screenshot(Viewer& v, const fs::path& path) {
+  v.requestScreenshot(path.string());
+  v.runFrame();
+  REQUIRE(v.lastScreenshotPath() == path.string());
+  return v.lastScreenshot();
+}
+
+std::array<int, 3> rgb8(const ImVec4& c) {
+  return {int(std::lround(c.x * 255.0f)), int(std::lround(c.y * 255.0f)),
+          int(std::lround(c.z * 255.0f))};
+}
+
+bool near(const uint8_t* p, const std::array<int, 3>& c, int tolerance) {
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(int(p[i]) - c[i]) > tolerance) return false;
+  return true;
+}
+
+// Share of pixels in [x0, x1) x [y0, y1) that match `pred`.
+template <class Pred>
+double share(const Image& img, int x0, int y0, int x1, int y1, Pred pred) {
+  long hits = 0, all = 0;
+  for (int y = std::max(0, y0); y < std::min(img.height, y1); ++y)
+    for (int x = std::max(0, x0); x < std::min(img.width, x1); ++x, ++all)
+      if (pred(img.pixel(x, y))) ++hits;
+  return all ? double(hits) / double(all) : 0.0;
+}
+
+// The most common colour of a region: the background, where the region shows no scene.
+std::array<int, 3> dominant(const Image& img, int x0, int y0, int x1, int y1) {
+  std::map<std::array<int, 3>, long> count;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const uint8_t* p = img.pixel(x, y);
+      ++count[{p[0], p[1], p[2]}];
+    }
+  return std::max_element(count.begin(), count.end(),
+                          [](auto& a, auto& b) { return a.second < b.second; })
+      ->first;
+}
+
+// Reads a PNG back with libpng: width and height, 0 on failure.
+std::pair<int, int> pngSize(const fs::path& path) {
+  FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return {0, 0};
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  std::pair<int, int> size{0, 0};
+  if (!setjmp(png_jmpbuf(png))) {
+    png_init_io(png, f);
+    png_read_info(png, info);
+    size = {int(png_get_image_width(png, info)), int(png_get_image_height(png, info))};
+  }
+  png_destroy_read_struct(&png, &info, nullptr);
+  std::fclose(f);
+  return size;
+}
+
+// A CPU solver whose positions turn to NaN after `badFrame` frames: what a blown-up
+// simulation looks like to the viewer.
+class NanAfter final : public Solver {
+ public:
+  explicit NanAfter(long badFrame) : badFrame_(badFrame) {}
+  std::string_view name() const override { return "nan-after"; }
+  void reset(const Groom& g, const Config& c, const Pose& h) override {
+    frames_ = 0;
+    inner_.reset(g, c, h);
+  }
+  void setConfig(const Config& c) override { inner_.setConfig(c); }
+  void stepFrame(const Pose& from, const Pose& to) override {
+    ++frames_;
+    inner_.stepFrame(from, to);
+  }
+  size_t strandCount() const override { return inner_.strandCount(); }
+  size_t particleCount() const override { return inner_.particleCount(); }
+  double time() const override { return inner_.time(); }
+  void readPositions(std::vector<glm::vec4>& out) override {
+    inner_.readPositions(out);
+    if (frames_ >= badFrame_ && out.size() > 10) out[10].x = std::nanf("");
+  }
+  void readVelocities(std::vector<glm::vec4>& out) override { inner_.readVelocities(out); }
+
+ private:
+  CpuSolver inner_;
+  long badFrame_;
+  long frames_ = 0;
+};
+
+}  // namespace
+
+TEST_CASE(
+    "window: a preset runs, strand count and wind change live, the screenshot shows "
+    "hair and panels",
+    "[window]") {
+  const fs::path dir = tempDir();
+  std::unique_ptr<Viewer> v = makeViewer();
+  REQUIRE(v->loadPreset((kSource / "presets/short_shake.json").string()));
+  REQUIRE(v->presetErrors().empty());
+  runFrames(*v, 3);
+  const size_t before = v->simulation().solver().strandCount();
+  CHECK(before == 6000);
+  const CameraConfig camera = v->simulation().config().camera;
+  const double t = v->simulation().time();
+
+  // The same setter the panels call (Viewer::applyConfig), by parameter name.
+  REQUIRE(v->setParam("hairstyle.strands", "1500"));
+  REQUIRE(v->setParam("wind.strength", "8"));
+  REQUIRE(v->setParam("wind.direction", "0,0,1"));
+  // Strand count is live within a frame: no restart, same camera, same clock.
+  CHECK(v->simulation().solver().strandCount() == 1500);
+  CHECK(v->simulation().config().hairstyle.strands == 1500);
+  CHECK(v->simulation().config().wind.strength == 8.0f);
+  const CameraConfig& now = v->simulation().config().camera;
+  CHECK((now.target == camera.target && now.distance == camera.distance && now.yaw == camera.yaw &&
+         now.pitch == camera.pitch && now.fov == camera.fov));
+  CHECK(v->simulation().time() == Approx(t));
+  const auto changed = v->modifiedKeys();
+  CHECK(std::find(changed.begin(), changed.end(), "hairstyle.strands") != changed.end());
+  CHECK(std::find(changed.begin(), changed.end(), "wind.strength") != changed.end());
+
+  runFrames(*v, 10);
+  CHECK(v->stats().strands == 1500);
+  CHECK(v->stats().particles == v->simulation().solver().particleCount());
+  CHECK(v->stats().sampledFrame >= 0);
+  CHECK(std::isfinite(v->stats().accuracy.maxStrain));
+  CHECK_FALSE(v->nanStopped());
+
+  const fs::path shot = dir / "viewer.png";
+  const Image img = screenshot(*v, shot);
+  REQUIRE(img.width == 1280);
+  REQUIRE(img.height == 720);
+  CHECK(pngSize(shot) == std::make_pair(1280, 720));
+
+  // Hair: the middle of the window differs from the background (the most common colour of a
+  // strip above the head, between the panels).
+  const auto background = dominant(img, 500, 2, 800, 20);
+  const double hair =
+      share(img, 540, 260, 740, 460, [&](const uint8_t* p) { return !near(p, background, 24); });
+  INFO("background " << background[0] << "," << background[1] << "," << background[2]
+                     << "; share of non-background pixels in the middle " << hair);
+  CHECK(hair > 0.05);
+
+  // Hair, not just the head: paused, the same frame with one strand instead of 1500 differs
+  // in the scene area between the panels.
+  v->setPaused(true);
+  runFrames(*v, 1);
+  const Image withHair = screenshot(*v, dir / "with_hair.png");
+  REQUIRE(v->setParam("hairstyle.strands", "1"));
+  const Image bald = screenshot(*v, dir / "one_strand.png");
+  const double diff = share(withHair, 430, 60, 880, 640, [&](const uint8_t* p) {
+    const size_t at = size_t(p - withHair.rgb.data());
+    const uint8_t* q = bald.rgb.data() + at;
+    return std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]) > 30;
+  });
+  INFO("share of the scene area that changes when the hair goes: " << diff);
+  CHECK(diff > 0.03);
+
+  // Panels: the title bars of Parameters (top left) and Stats (top right) in ImGui's colours.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const auto title = rgb8(style.Colors[ImGuiCol_TitleBg]);
+  const auto titleActive = rgb8(style.Colors[ImGuiCol_TitleBgActive]);
+  auto isTitle = [&](const uint8_t* p) { return near(p, title, 3) || near(p, titleActive, 3); };
+  const double left = share(img, 200, 2, 380, 14, isTitle);
+  const double right = share(img, img.width - 120, 2, img.width - 30, 14, isTitle);
+  INFO("title bar share: left " << left << ", right " << right);
+  CHECK(left > 0.9);
+  CHECK(right > 0.9);
+  // The parameter panel's body is ImGui's dark window background, not the scene.
+  const auto body = rgb8(style.Colors[ImGuiCol_WindowBg]);
+  CHECK(share(img, 2, 20, 400, 700, [&](const uint8_t* p) { return near(p, body, 12); }) > 0.3);
+
+  removeTemp(dir);
+}
+
+TEST_CASE("window: a broken preset shows its messages and the scene keeps running", "[window]") {
+  const fs::path dir = tempDir();
+  std::unique_ptr<Viewer> v = makeViewer();
+  REQUIRE(v->loadPreset((kSource / "presets/short_shake.json").string()));
+  REQUIRE(v->setParam("hairstyle.strands", "500"));
+  const std::string opened = v->presetPath();
+  const fs::path broken = dir / "broken.json";
+  std::ofstream(broken) << R"({"sim": {"substeps": 0}, "wind": {"strenght": 3}})";
+
+  CHECK_FALSE(v->loadPreset(broken.string()));
+  REQUIRE(v->presetErrors().size() >= 2);
+  std::string all;
+  for (const std::string& m : v->presetErrors()) all += m + "\n";
+  INFO(all);
+  CHECK(all.find("sim.substeps") != std::string::npos);
+  CHECK(all.find("strenght") != std::string::npos);
+  CHECK(all.find("broken.json") != std::string::npos);
+  CHECK(v->presetPath() == opened);
+  CHECK(v->simulation().solver().strandCount() == 500);
+
+  runFrames(*v, 2);
+  const Image img = screenshot(*v, dir / "broken.png");
+  // The "Preset problems" window has a red title bar.
+  const std::array<int, 3> red = {int(0.75f * 255 + 0.5f), int(0.08f * 255 + 0.5f),
+                                  int(0.08f * 255 + 0.5f)};
+  const std::array<int, 3> redInactive = {int(0.6f * 255 + 0.5f), int(0.05f * 255 + 0.5f),
+                                          int(0.05f * 255 + 0.5f)};
+  CHECK(share(img, 0, 0, img.width, img.height, [&](const uint8_t* p) {
+          return near(p, red, 3) || near(p, redInactive, 3);
+        }) > 0.002);
+
+  // A value the panel could hold but the scene cannot: refused with a message, nothing lost.
+  CHECK_FALSE(v->setParam("hairstyle.min_particles", "40"));
+  CHECK(v->simulation().config().hairstyle.minParticles == 5);
+  v->dismissPresetErrors();
+  CHECK(v->presetErrors().empty());
+  removeTemp(dir);
+}
+
+TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[window]") {
+  const fs::path dir = tempDir();
+  std::unique_ptr<Viewer> v = makeViewer(
+      [](const std::string&, std::string*) { return std::unique_ptr<Solver>(new NanAfter(4)); });
+  Config c = defaultConfig();
+  c.hairstyle.strands = 300;
+  std::string error;
+  REQUIRE(v->open(c, "", "", &error));
+  runFrames(*v, 8);
+  REQUIRE(v->nanStopped());
+  CHECK(v->paused());
+  const long frame = v->simulation().frame();
+  runFrames(*v, 3);
+  CHECK(v->simulation().frame() == frame);  // stopped: no garbage steps
+
+  const Image img = screenshot(*v, dir / "nan.png");
+  // The red banner at the top centre.
+  const std::array<int, 3> bannerish = {178, 13, 13};
+  CHECK(share(img, img.width / 2 - 200, 0, img.width / 2 + 200, 120,
+              [&](const uint8_t* p) { return near(p, bannerish, 25); }) > 0.05);
+
+  v->resetHair();
+  CHECK_FALSE(v->nanStopped());
+  removeTemp(dir);
+}
+
+TEST_CASE("window: save as writes the preset and clears the modified marker", "[window]") {
+  const fs::path dir = tempDir();
+  std::unique_ptr<Viewer> v = makeViewer();
+  Config c = defaultConfig();
+  c.hairstyle.strands = 200;
+  std::string error;
+  REQUIRE(v->open(c, "", "", &error));
+  REQUIRE(v->setParam("wind.gusts", "1.25"));
+  CHECK(v->modified());
+  const fs::path out = saveAsPath("mine", (dir / "x.json").string(), {});
+  CHECK(out == dir / "mine.json");
+  REQUIRE(v->saveAs(out.string()));
+  CHECK_FALSE(v->modified());
+  Config back = defaultConfig();
+  PresetErrors errors;
+  REQUIRE(loadPreset(out.string(), back, errors));
+  CHECK(back.wind.gusts == 1.25f);
+  CHECK(back.hairstyle.strands == 200);
+  // Revert goes back to what was saved.
+  REQUIRE(v->setParam("sim.damping", "3"));
+  v->revert();
+  CHECK(v->simulation().config().sim.damping == back.sim.damping);
+  removeTemp(dir);
+}
+
+TEST_CASE("panels: the parameter tree holds every parameter once", "[window][panels]") {
+  size_t count = 0;
+  std::function<void(const ParamGroup&)> walk = [&](const ParamGroup& g) {
+    count += g.params.size();
+    for (const ParamGroup& c : g.children) walk(c);
+  };
+  for (const ParamGroup& g : paramGroups()) walk(g);
+  CHECK(count == params().size());
+  const auto sim = std::find_if(paramGroups().begin(), paramGroups().end(),
+                                [](const ParamGroup& g) { return g.name == "Simulation"; });
+  REQUIRE(sim != paramGroups().end());
+  CHECK(std::any_of(sim->children.begin(), sim->children.end(),
+                    [](const ParamGroup& g) { return g.name == "Collision"; }));
+}
+
+TEST_CASE("panels: presets are found from the source tree", "[window][panels]") {
+  const auto dirs = presetDirectories((kSource / "presets/default.json").string());
+  REQUIRE_FALSE(dirs.empty());
+  const auto files = listPresets(dirs);
+  CHECK(std::any_of(files.begin(), files.end(),
+                    [](const fs::path& p) { return p.filename() == "paper_fig1_straight.json"; }));
+}
+
+TEST_CASE("camera control: orbit, zoom and head drag stay in range and keep the pivot",
+          "[window][camera]") {
+  CameraConfig cam;
+  orbitCamera(cam, 0.0f, 10000.0f);
+  CHECK(cam.pitch == Approx(findParam("camera.pitch")->max));
+  orbitCamera(cam, 100.0f, 0.0f);
+  CHECK(cam.yaw == Approx(CameraConfig{}.yaw - 100.0f * kOrbitDegreesPerPixel));
+  zoomCamera(cam, 1000.0f);
+  CHECK(cam.distance == Approx(findParam("camera.distance")->min));
+
+  Config c = defaultConfig();
+  frameHead(cam, c, Pose{});
+  CHECK(glm::length(cam.target - glm::vec3(0.0f, -0.35f * c.hairstyle.lengthMax, 0.0f)) < 1e-4f);
+  CHECK(cam.distance > 0.3f);
+
+  const Pose turned = dragHead(Pose{}, cam, c.head, 80.0f, -40.0f);
+  const glm::dvec3 pivot(c.head.pivot);
+  CHECK(glm::length(turned.apply(pivot) - pivot) < 1e-9);
+  CHECK(glm::length(turned.apply(glm::dvec3(0.0, 0.1, 0.0)) - glm::dvec3(0.0, 0.1, 0.0)) > 0.01);
+}
