@@ -19,5 +19,6 @@ inline constexpr int kLightDepthUnit = 0;     // nearest hair from the light (z0
 inline constexpr int kOpacityLayersUnit = 1;  // deep opacity layers, RGBA = layers 0..3
 inline constexpr int kHeadShadowUnit = 2;     // head depth from the light (comparison sampler)
 inline constexpr int kResolvedUnit = 3;       // the resolved HDR frame, for the final pass
+inline constexpr int kScalpUnit = 4;          // where hair grows on each head sphere
 
 }  // namespace csm::bindings

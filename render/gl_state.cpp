@@ -35,6 +35,7 @@ GlStateBackup::GlStateBackup() {
     glActiveTexture(GLenum(GL_TEXTURE0 + i));
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture2D_[i]);
     glGetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &texture2DMultisample_[i]);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &texture2DArray_[i]);
   }
   glActiveTexture(GLenum(activeTexture_));
   glGetIntegerv(GL_BLEND_SRC_RGB, &blendSrcRgb_);
@@ -63,6 +64,7 @@ GlStateBackup::~GlStateBackup() {
     glActiveTexture(GLenum(GL_TEXTURE0 + i));
     glBindTexture(GL_TEXTURE_2D, GLuint(texture2D_[i]));
     glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, GLuint(texture2DMultisample_[i]));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(texture2DArray_[i]));
   }
   glActiveTexture(GLenum(activeTexture_));
   glBlendFuncSeparate(GLenum(blendSrcRgb_), GLenum(blendDstRgb_), GLenum(blendSrcAlpha_),

@@ -17,11 +17,11 @@ class GlStateBackup {
   GlStateBackup& operator=(const GlStateBackup&) = delete;
 
  private:
-  static constexpr int kUnits = 4;  // texture units the passes bind (render/bindings.h)
+  static constexpr int kUnits = 5;  // texture units the passes bind (render/bindings.h)
   GLint drawFramebuffer_ = 0, readFramebuffer_ = 0;
   std::array<GLint, 4> viewport_{};
   GLint program_ = 0, vertexArray_ = 0, arrayBuffer_ = 0, activeTexture_ = 0;
-  std::array<GLint, kUnits> texture2D_{}, texture2DMultisample_{};
+  std::array<GLint, kUnits> texture2D_{}, texture2DMultisample_{}, texture2DArray_{};
   GLint blendSrcRgb_ = 0, blendDstRgb_ = 0, blendSrcAlpha_ = 0, blendDstAlpha_ = 0;
   GLint blendEquationRgb_ = 0, blendEquationAlpha_ = 0;
   GLint depthFunc_ = 0, cullFaceMode_ = 0, frontFace_ = 0;

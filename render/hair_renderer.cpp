@@ -57,6 +57,7 @@ std::vector<gl::Define> sharedDefines(int samples) {
           d("OPACITY_LAYERS_UNIT", bindings::kOpacityLayersUnit),
           d("HEAD_SHADOW_UNIT", bindings::kHeadShadowUnit),
           d("RESOLVED_UNIT", bindings::kResolvedUnit),
+          d("SCALP_UNIT", bindings::kScalpUnit),
           d("SAMPLES", samples)};
 }
 
@@ -74,6 +75,17 @@ float srgbToLinear(float c) {
 }
 glm::vec3 srgbToLinear(const glm::vec3& c) {
   return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b)};
+}
+
+// Octahedral mapping of a unit vector to [0,1]^2 (Cigolle et al. 2014): no poles, so the
+// crown and the back of the head get texels like everywhere else. head.frag mirrors it.
+glm::vec2 octahedral(glm::vec3 d) {
+  d /= std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+  glm::vec2 p(d.x, d.y);
+  if (d.z < 0.0f)
+    p = glm::vec2((1.0f - std::abs(d.y)) * (d.x >= 0.0f ? 1.0f : -1.0f),
+                  (1.0f - std::abs(d.x)) * (d.y >= 0.0f ? 1.0f : -1.0f));
+  return p * 0.5f + 0.5f;
 }
 
 void bindStorage(GLuint index, GLuint buffer) {
@@ -295,6 +307,71 @@ void HairRenderer::updateTopology(const FrameView& frame) {
       radius = std::max(radius, glm::length(groom.points[f] - boundCenter_) + 1.1f * length);
   }
   boundRadius_ = radius + 0.01f;
+  updateScalp(groom, config.head.spheres);
+}
+
+void HairRenderer::updateScalp(const Groom& groom, const std::vector<Sphere>& spheres) {
+  // Where the roots are, per head sphere, blurred into a density. The head shader paints the
+  // scalp in the hair's root colour there, so the gaps between strands show hair-coloured
+  // scalp rather than bare skin, as on a real head.
+  constexpr int kSize = 128;
+  const int layers = std::max<int>(1, int(std::min<std::size_t>(spheres.size(), 64)));
+  std::vector<float> count(std::size_t(layers) * kSize * kSize, 0.0f);
+  std::vector<glm::vec3> colour(count.size(), glm::vec3(0.0f));
+  const bool groomColours = groom.color.size() == groom.strandCount();
+  for (std::size_t s = 0; s < groom.strandCount(); ++s) {
+    if (groom.strandSize(s) == 0) continue;
+    const glm::vec3 root = groom.points[groom.first[s]];
+    int best = -1;
+    float bestGap = 0.0f;
+    for (int k = 0; k < layers && k < int(spheres.size()); ++k) {
+      const float gap = std::abs(glm::length(root - spheres[k].center) - spheres[k].radius);
+      if (best < 0 || gap < bestGap) best = k, bestGap = gap;
+    }
+    if (best < 0 || bestGap > 0.02f) continue;  // not on any sphere
+    const glm::vec3 d = root - spheres[best].center;
+    if (glm::length(d) < 1e-9f) continue;
+    const glm::vec2 uv = octahedral(glm::normalize(d));
+    const int x = std::clamp(int(uv.x * kSize), 0, kSize - 1);
+    const int y = std::clamp(int(uv.y * kSize), 0, kSize - 1);
+    const std::size_t i = (std::size_t(best) * kSize + std::size_t(y)) * kSize + std::size_t(x);
+    count[i] += 1.0f;
+    if (groomColours) colour[i] += groom.color[s];
+  }
+  // Two passes of a 5x5 box: roots a few millimetres apart merge into one scalp.
+  auto blur = [&](auto& v) {
+    auto tmp = v;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int axis = 0; axis < 2; ++axis) {
+        for (int l = 0; l < layers; ++l)
+          for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+              auto sum = v[0] * 0.0f;
+              for (int o = -2; o <= 2; ++o) {
+                const int xx = axis == 0 ? std::clamp(x + o, 0, kSize - 1) : x;
+                const int yy = axis == 1 ? std::clamp(y + o, 0, kSize - 1) : y;
+                sum += v[(std::size_t(l) * kSize + std::size_t(yy)) * kSize + std::size_t(xx)];
+              }
+              tmp[(std::size_t(l) * kSize + std::size_t(y)) * kSize + std::size_t(x)] = sum / 5.0f;
+            }
+        std::swap(v, tmp);
+      }
+  };
+  blur(count);
+  if (groomColours) blur(colour);
+  std::vector<std::uint8_t> texels(count.size() * 4);
+  for (std::size_t i = 0; i < count.size(); ++i) {
+    // One root per ten texels already reads as a covered scalp.
+    const float coverage = std::clamp(count[i] / 0.1f, 0.0f, 1.0f);
+    const glm::vec3 c = groomColours && count[i] > 0.0f ? colour[i] / count[i] : glm::vec3(0.0f);
+    texels[i * 4 + 0] = std::uint8_t(std::lround(std::clamp(c.r, 0.0f, 1.0f) * 255.0f));
+    texels[i * 4 + 1] = std::uint8_t(std::lround(std::clamp(c.g, 0.0f, 1.0f) * 255.0f));
+    texels[i * 4 + 2] = std::uint8_t(std::lround(std::clamp(c.b, 0.0f, 1.0f) * 255.0f));
+    texels[i * 4 + 3] = std::uint8_t(std::lround(coverage * 255.0f));
+  }
+  scalp_ = gl::Texture::create2DArray(GL_RGBA8, kSize, kSize, layers);
+  scalp_.setFilter(GL_LINEAR, GL_LINEAR).setWrap(GL_CLAMP_TO_EDGE);
+  scalp_.setSubImage(0, 0, 0, 0, kSize, kSize, layers, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
 }
 
 void HairRenderer::updateShadowMaps(int size) {
@@ -503,6 +580,7 @@ void HairRenderer::render(const FrameView& frame) {
   lightDepth_.bind(bindings::kLightDepthUnit);
   opacityLayers_.bind(bindings::kOpacityLayersUnit);
   headShadow_.bind(bindings::kHeadShadowUnit);
+  scalp_.bind(bindings::kScalpUnit);
   glDisable(GL_DEPTH_TEST);
   p.background.use();
   emptyVao_.bind();

@@ -72,6 +72,7 @@ class HairRenderer final : public Renderer {
   HairRenderer();
   bool buildPrograms(int samples, std::string* log);
   void updateTopology(const FrameView& frame);
+  void updateScalp(const Groom& groom, const std::vector<Sphere>& spheres);
   void updateTargets(int width, int height, int samples);
   void updateShadowMaps(int size);
   void updateUniforms(const FrameView& frame);
@@ -112,6 +113,7 @@ class HairRenderer final : public Renderer {
   gl::Buffer sphereVertices_{gl::NoCreate}, sphereIndices_{gl::NoCreate};
   gl::Buffer headSpheres_{gl::NoCreate};
   gl::VertexArray headVao_{gl::NoCreate}, emptyVao_{gl::NoCreate};
+  gl::Texture scalp_{gl::NoCreate};  // RGBA8 octahedral map per sphere: root colour, coverage
   GLsizei sphereIndexCount_ = 0, headSphereCount_ = 0;
 
   gl::Buffer frameUniforms_{gl::NoCreate};

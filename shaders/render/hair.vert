@@ -63,7 +63,7 @@ vec3 shadeHair(vec3 P, vec3 tangent, vec3 albedo, float light, float s, uint h) 
   // Ambient is dimmed inside the hair volume too: the deep layers see less of the sky.
   float ambient = uLightColor.a * mix(0.4, 1.0, light);
   return albedo * ambient +
-         lightColor * (albedo * diffuse / kPi + 0.5 * (spec1 + spec2 * normalize(albedo + 1e-4)));
+         lightColor * (albedo * diffuse + spec1 + spec2 * normalize(albedo + 1e-4)) / kPi;
 }
 
 void main() {
@@ -94,7 +94,7 @@ void main() {
   vec2 dir = (dc.xy * c.w - c.xy * dc.w) * uViewport.xy;  // d(pixels)/d(parameter), scaled
   dir = dot(dir, dir) > 1e-20 ? normalize(dir) : vec2(1.0, 0.0);
   // Thinner toward the tip, as a hair is.
-  float width = uSpecStrength.z * thickness * mix(1.0, 0.35, smoothstep(0.75, 1.0, v.s));
+  float width = uSpecStrength.z * thickness * mix(1.0, 0.5, smoothstep(0.7, 1.0, v.s));
   // A ribbon narrower than about a pixel and a half misses a fixed sample position in some
   // pixels along its length and breaks into dots: draw it that wide and cover
   // proportionally fewer samples instead (width-based fading).

@@ -1,9 +1,20 @@
 // Smooth-shaded head that receives the hair's shadow (the deep opacity maps) and its own.
 #include "render/dom.glsl"
 
+layout(binding = SCALP_UNIT) uniform sampler2DArray uScalp;
+
 in vec3 vPosition;
 in vec3 vNormal;
+flat in int vSphere;
 out vec4 fragColor;
+
+// Mirrors octahedral() in render/hair_renderer.cpp (Cigolle et al. 2014).
+vec2 octahedral(vec3 d) {
+  d /= abs(d.x) + abs(d.y) + abs(d.z);
+  vec2 p = d.xy;
+  if (d.z < 0.0) p = (1.0 - abs(d.yx)) * vec2(d.x >= 0.0 ? 1.0 : -1.0, d.y >= 0.0 ? 1.0 : -1.0);
+  return p * 0.5 + 0.5;
+}
 
 void main() {
   vec3 N = normalize(vNormal);
@@ -17,7 +28,13 @@ void main() {
   float spec = 0.04 * pow(max(dot(N, H), 0.0), 40.0);
   // Hemispherical ambient: more from above than from the ground.
   float sky = 0.75 + 0.25 * N.y;
-  vec3 albedo = uHeadColor.rgb;
+  // Where hair grows (in the head's own frame), the scalp takes the roots' colour: gaps
+  // between strands then read as dense hair rather than bare skin.
+  vec3 local = transpose(mat3(uHeadRotation)) * N;
+  vec4 scalp = texture(uScalp, vec3(octahedral(local), float(vSphere)));
+  vec3 rootColour = (uCounts.w & 1) != 0 ? scalp.rgb : uRootColor.rgb;
+  vec3 albedo = mix(uHeadColor.rgb, rootColour * 0.7, scalp.a);
+  spec *= 1.0 - scalp.a;
   vec3 light = uLightColor.rgb * uLightDir.w * visibility;
   vec3 color = albedo * uLightColor.a * sky + light * (albedo * diffuse / kPi + spec);
   fragColor = vec4(color, 1.0);

@@ -15,10 +15,12 @@ void main() {
 #else
 out vec3 vPosition;
 out vec3 vNormal;
+flat out int vSphere;
 void main() {
   vec4 s = spheres[gl_InstanceID];
   vPosition = s.xyz + s.w * aPosition;
-  vNormal = aPosition;
+  vNormal = aPosition;  // a sphere's normal is its direction from the centre, in any frame
+  vSphere = gl_InstanceID;
   gl_Position = uViewProj * vec4(vPosition, 1.0);
 }
 #endif

@@ -48,7 +48,7 @@ Stats hairStats(const test::Image& img, const std::vector<bool>& mask) {
 
 }  // namespace
 
-TEST_CASE("Render: a Fig. 1 frame shows hair over a plausible share, not flat", "[render][image]") {
+TEST_CASE("Render: a Fig. 1 frame shows hair over a plausible share and is not flat", "[render][image]") {
   test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 3000));
   const test::Image hair = scene.render(640, 360);
   CHECK(scene.renderer().drawnStrands() == 3000);
@@ -172,7 +172,7 @@ TEST_CASE("Render: groom colours reach the screen", "[render][image]") {
   CHECK(s.meanRgb[1] > s.meanRgb[2] + 10.0);
 }
 
-TEST_CASE("Render: no strands, or no positions, still draws the head and backdrop",
+TEST_CASE("Render: without strands or positions the head and backdrop are still drawn",
           "[render][image]") {
   test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 200), 0);
   Groom empty;
