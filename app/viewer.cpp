@@ -291,23 +291,24 @@ bool Viewer::reloadShaders() {
     log(MessageLevel::Error, "no renderer to reload: " + rendererError_);
     return false;
   }
-  // From the source tree when the environment names no other folder, so edits show at once.
-  if (!std::getenv("CSM_SHADER_DIR")) {
+  // From the source tree, unless a folder was chosen (CSM_SHADER_DIR, setShaderDirectory),
+  // so edits to shaders/ show at once.
+  if (!std::getenv("CSM_SHADER_DIR") && gl::shaderDirectory().empty()) {
 #ifdef CSM_SOURCE_DIR
     const std::filesystem::path dir = std::filesystem::path(CSM_SOURCE_DIR) / "shaders";
     if (std::filesystem::is_directory(dir)) gl::setShaderDirectory(dir);
 #endif
   }
-  std::string log_;
-  if (renderer_->reloadShaders(&log_)) {
+  std::string buildLog;
+  if (renderer_->reloadShaders(&buildLog)) {
     shaderReloadFailed_ = false;
-    shaderLog_ = log_;
+    shaderLog_ = buildLog;
     log(MessageLevel::Info, "shaders reloaded from " + gl::shaderDirectory().string() +
-                                (log_.empty() ? "" : " (with warnings)"));
+                                (buildLog.empty() ? "" : " (with warnings)"));
     return true;
   }
   shaderReloadFailed_ = true;
-  shaderLog_ = log_;
+  shaderLog_ = buildLog;
   log(MessageLevel::Error, "shader reload failed; the old shaders are still in use");
   return false;
 }

@@ -22,6 +22,7 @@
 #include "app/panels.h"
 #include "app/viewer.h"
 #include "app/viewer_presets.h"
+#include "render/gl/shader_source.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/params.h"
 #include "sim/preset.h"
@@ -302,6 +303,45 @@ TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[win
 
   v->resetHair();
   CHECK_FALSE(v->nanStopped());
+  removeTemp(dir);
+}
+
+TEST_CASE("window: a shader that fails to reload keeps the old program and shows the log",
+          "[window]") {
+  const fs::path dir = tempDir();
+  const fs::path shaders = dir / "shaders";
+  fs::remove_all(shaders);
+  fs::copy(kSource / "shaders", shaders, fs::copy_options::recursive);
+  gl::setShaderDirectory(shaders);
+  std::unique_ptr<Viewer> v = makeViewer();
+  Config c = defaultConfig();
+  c.hairstyle.strands = 400;
+  std::string error;
+  REQUIRE(v->open(c, "", "", &error));
+  REQUIRE(v->hasRenderer());
+  v->setPaused(true);
+  runFrames(*v, 2);
+  const Image before = screenshot(*v, dir / "before_reload.png");
+
+  std::ofstream(shaders / "render/hair.frag", std::ios::app) << "\nthis is not GLSL\n";
+  CHECK_FALSE(v->reloadShaders());
+  CHECK(v->shaderReloadFailed());
+  CHECK(v->shaderLog().find("hair.frag") != std::string::npos);
+  // The old programs still draw: the scene area below the log window is as it was.
+  const Image after = screenshot(*v, dir / "after_failed_reload.png");
+  const double changed = share(before, 430, 380, 880, 640, [&](const uint8_t* p) {
+    const uint8_t* q = after.rgb.data() + (p - before.rgb.data());
+    return std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]) > 30;
+  });
+  INFO("share of the scene area changed by the failed reload " << changed);
+  CHECK(changed < 0.02);
+
+  fs::copy_file(kSource / "shaders/render/hair.frag", shaders / "render/hair.frag",
+                fs::copy_options::overwrite_existing);
+  CHECK(v->reloadShaders());
+  CHECK_FALSE(v->shaderReloadFailed());
+  v.reset();
+  gl::setShaderDirectory({});
   removeTemp(dir);
 }
 
