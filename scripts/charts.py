@@ -1,0 +1,351 @@
+#!/usr/bin/python3
+"""Charts for docs/BENCHMARKS.md ("Speed against accuracy") from the CSV csmhair-bench writes.
+
+usage: /usr/bin/python3 scripts/charts.py DIR
+
+Reads DIR/{methods,stability,resolution,region_sums,scaling,scene_choices}.csv (whichever are
+there) and writes PNG and SVG charts next to them. Needs only Debian's python3-matplotlib.
+"""
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.colors import ListedColormap  # noqa: E402
+
+plt.rcParams.update({
+    "figure.dpi": 110,
+    "font.size": 9,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "svg.hashsalt": "csmhair",  # stable SVG ids, so regenerated files diff cleanly
+})
+
+FAMILY_STYLE = {
+    "CSM": ("#1f77b4", "o"),
+    "CSM, no strain limit": ("#17becf", "v"),
+    "CSM + DFTL 0.9": ("#2ca02c", "^"),
+    "CSM, hair-hair collisions": ("#9467bd", "P"),
+    "GPU CSM": ("#000000", "*"),
+    "MS explicit": ("#d62728", "s"),
+    "MS implicit": ("#ff7f0e", "D"),
+    "MS implicit, stiff": ("#8c564b", "d"),
+    "PBD": ("#e377c2", "X"),
+    "FTL (DFTL 0.9)": ("#7f7f7f", "h"),
+}
+
+
+def style(family):
+    return FAMILY_STYLE.get(family, ("#bcbd22", "o"))
+
+
+def read(path):
+    if not os.path.exists(path):
+        return None
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def num(row, key):
+    v = row.get(key, "")
+    if v in ("", None):
+        return math.nan
+    try:
+        return float(v)
+    except ValueError:
+        return math.nan
+
+
+def save(fig, out, name):
+    fig.tight_layout()
+    for ext in ("png", "svg"):
+        path = os.path.join(out, f"{name}.{ext}")
+        fig.savefig(path, metadata={"Date": None} if ext == "svg" else None)
+    plt.close(fig)
+    print(f"charts.py: {name}.png, {name}.svg")
+
+
+def families(rows):
+    seen = []
+    for r in rows:
+        if r["family"] not in seen:
+            seen.append(r["family"])
+    return seen
+
+
+# ---- cost against error --------------------------------------------------------------------
+
+MEASURES = [
+    # key, file name, axis label, transform, log x
+    ("max_strain", "cost_vs_stretch", "largest segment stretch over the run (0.05 = 5%)",
+     lambda v: v, True),
+    ("timestep_rms_mm", "cost_vs_timestep_error",
+     "time-step error: RMS distance to the same scene with 16x substeps (mm)", lambda v: v, True),
+    ("resolution_rms_mm", "cost_vs_resolution_error",
+     "resolution error: tip path of 8 and 16 particles vs 32, RMS over 1 s of swing (mm)",
+     lambda v: v, True),
+    ("pendulum_error_pct", "cost_vs_pendulum_error",
+     "pendulum: |period error| of a rigid strand against 2 pi sqrt(2L/3g) (%)", abs, True),
+    ("hair_pairs_closer_than_r", "cost_vs_hair_penetration",
+     "hair-hair penetration: segment pairs closer than the hair radius (mean of samples)",
+     lambda v: v, False),
+]
+
+
+def cost_charts(rows, out, scene_note):
+    for key, name, label, transform, logx in MEASURES:
+        fig, ax = plt.subplots(figsize=(7.5, 5.0))
+        finite_x = [transform(num(r, key)) for r in rows
+                    if r["diverged"] != "1" and math.isfinite(num(r, key))]
+        floor = min([x for x in finite_x if x > 0], default=1e-3) / 3 if logx else 0.0
+        right = max(finite_x, default=1.0)
+        for fam in families(rows):
+            colour, marker = style(fam)
+            groups = {}  # one line per setting that differs only in substeps
+            for r in rows:
+                if r["family"] != fam:
+                    continue
+                y = num(r, "ms_per_sim_s")
+                x = transform(num(r, key))
+                if r["diverged"] == "1" or not math.isfinite(x):
+                    # Blew up: drawn at the right edge with a cross.
+                    xb = right * (3 if logx else 1.1)
+                    ax.scatter([xb], [y], marker="x", color=colour, s=40)
+                    ax.annotate(r["label"] + " (blew up)", (xb, y), fontsize=6, color=colour,
+                                xytext=(3, 2), textcoords="offset points")
+                    continue
+                if logx and x <= 0:
+                    x = floor
+                group = r["label"].rsplit(" s", 1)[0] if " s" in r["label"] else ""
+                groups.setdefault(group, []).append((x, y, r["label"]))
+            first = True
+            for pts in groups.values():
+                pts.sort(key=lambda p: p[1])
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], color=colour, marker=marker,
+                        linestyle="-", linewidth=0.7, markersize=5,
+                        label=fam if first else None)
+                first = False
+                for x, y, lab in pts:
+                    ax.annotate(lab, (x, y), fontsize=5.5, color=colour, xytext=(3, 2),
+                                textcoords="offset points")
+            if first:
+                ax.scatter([], [], color=colour, marker=marker, label=fam + " (all blew up)")
+        if logx:
+            ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(label + ("  (x = blew up)" if any(r["diverged"] == "1" for r in rows)
+                               else ""))
+        ax.set_ylabel("cost: ms per simulated second (CPU, one thread)")
+        ax.set_title(f"Cost against error — {scene_note}", fontsize=9)
+        ax.legend(fontsize=7, loc="best")
+        save(fig, out, name)
+
+
+# ---- stability maps --------------------------------------------------------------------------
+
+CATEGORIES = ["stable", "energy gain", "energy", "stretch", "nan"]
+CAT_COLOURS = ["#b7e4b0", "#fff2a8", "#fdae61", "#e34a33", "#7f0000"]
+CAT_LABELS = ["stable", "bounded, energy gain > 10%", "blew up: energy > 1.5x",
+              "blew up: stretch > 100%", "blew up: NaN"]
+
+
+def stability_chart(rows, out):
+    fams = families(rows)
+    cols = 4 if len(fams) > 6 else 3
+    nrows = math.ceil(len(fams) / cols)
+    fig, axes = plt.subplots(nrows, cols, figsize=(4.1 * cols, 3.4 * nrows + 0.6),
+                             squeeze=False)
+    cmap = ListedColormap(CAT_COLOURS)
+    for idx, fam in enumerate(fams):
+        ax = axes[idx // cols][idx % cols]
+        fr = [r for r in rows if r["family"] == fam]
+        subs = sorted({int(num(r, "substeps")) for r in fr})
+        stiff = sorted({num(r, "stiffness") for r in fr})
+        grid = [[0] * len(subs) for _ in stiff]
+        for r in fr:
+            i = stiff.index(num(r, "stiffness"))
+            j = subs.index(int(num(r, "substeps")))
+            cat = r["blowup"]
+            if cat == "stable" and num(r, "energy_ratio") > 1.1:
+                cat = "energy gain"
+            grid[i][j] = CATEGORIES.index(cat)
+            text = ""
+            if r["blowup"] == "stable":
+                ms = num(r, "max_strain")
+                text = f"{100 * ms:.0f}%" if ms >= 0.01 else ""
+                if num(r, "energy_ratio") > 1.1:
+                    text = f"{num(r, 'energy_ratio'):.1f}x"
+            ax.text(j, i, text, ha="center", va="center", fontsize=5.5)
+        ax.imshow(grid, cmap=cmap, vmin=-0.5, vmax=len(CATEGORIES) - 0.5, origin="lower",
+                  aspect="auto")
+        ax.set_xticks(range(len(subs)))
+        ax.set_xticklabels([f"1/{60 * s}" for s in subs], rotation=45, fontsize=6)
+        ax.set_yticks(range(len(stiff)))
+        ax.set_yticklabels([f"{v:g}" for v in stiff], fontsize=7)
+        ax.set_xlabel("time step h (s)")
+        ax.set_ylabel(fr[0]["stiffness_name"], fontsize=7)
+        ax.set_title(fam, fontsize=9)
+        ax.grid(False)
+    for idx in range(len(fams), nrows * cols):
+        axes[idx // cols][idx % cols].axis("off")
+    handles = [plt.Rectangle((0, 0), 1, 1, color=c) for c in CAT_COLOURS]
+    fig.legend(handles, CAT_LABELS, loc="lower center", ncol=5, fontsize=7, frameon=False)
+    fig.suptitle("Stability: four 25 cm strands released horizontally, 2 s; cell text = largest "
+                 "stretch (or energy gain)", fontsize=9)
+    fig.tight_layout(rect=(0, 0.05, 1, 0.96))
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(out, f"stability.{ext}"),
+                    metadata={"Date": None} if ext == "svg" else None)
+    plt.close(fig)
+    print("charts.py: stability.png, stability.svg")
+
+
+# ---- the rest ----------------------------------------------------------------------------------
+
+
+def scaling_chart(rows, out):
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    series = []
+    for r in rows:
+        if r["series"] not in series:
+            series.append(r["series"])
+    for s in series:
+        pts = [(num(r, "strands"), num(r, "ms_per_step"), num(r, "particles")) for r in rows
+               if r["series"] == s]
+        dashed = "hair-hair" in s
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o",
+                linestyle="--" if dashed else "-", label=s)
+        last = pts[-1]
+        ax.annotate(f"{last[1]:.0f} ms", (last[0], last[1]), fontsize=7, xytext=(4, 0),
+                    textcoords="offset points")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("strands (default preset's hairstyle, 8-16 particles each)")
+    ax.set_ylabel("ms per step (1 substep per frame)")
+    ax.axhline(1000 / 60, color="k", linewidth=0.6, linestyle=":")
+    ax.annotate("60 fps", (ax.get_xlim()[0], 1000 / 60), fontsize=7, xytext=(2, 2),
+                textcoords="offset points")
+    ax.set_title("Scaling: ms per step against strand count", fontsize=9)
+    ax.legend(fontsize=7)
+    save(fig, out, "scaling")
+
+
+def region_chart(rows, out):
+    fig, ax = plt.subplots(figsize=(5.5, 3.8))
+    for sums, colour in (("prefix", "#1f77b4"), ("direct", "#d62728")):
+        pts = [(num(r, "window"), num(r, "ms_per_step")) for r in rows if r["sums"] == sums]
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", color=colour,
+                label=f"{sums} sums")
+    ax.set_xlabel("stiffness window w (particles)")
+    ax.set_ylabel("ms per step")
+    ax.set_ylim(bottom=0)
+    r0 = rows[0]
+    ax.set_title(f"Region sums: prefix differences against direct sums "
+                 f"({int(num(r0, 'strands'))} strands x 32 particles)", fontsize=9)
+    ax.legend(fontsize=8)
+    save(fig, out, "region_sums")
+
+
+def resolution_chart(rows, out):
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4.2))
+    lines = []
+    for r in rows:
+        key = (r["family"], r["label"])
+        if key not in lines:
+            lines.append(key)
+    for fam, lab in lines:
+        pts = [(num(r, "particles"), num(r, "sag_mm"), num(r, "swing_tip_rms_vs_finest_mm"),
+                r["window"]) for r in rows if r["family"] == fam and r["label"] == lab]
+        colour, marker = style(fam)
+        ls = "-"
+        if fam == "CSM":
+            colour = {"w = 2 particles": "#1f77b4", "w = 4 particles": "#aec7e8"}.get(
+                lab, "#2ca02c" if "3.3" in lab else "#98df8a")
+            ls = "--" if "cm" in lab else "-"
+        name = f"{fam}: {lab}"
+        a1.plot([p[0] for p in pts], [p[1] for p in pts], marker=marker, color=colour,
+                linestyle=ls, label=name)
+        a2.plot([p[0] for p in pts[:-1]], [p[2] for p in pts[:-1]], marker=marker,
+                color=colour, linestyle=ls, label=name)
+        if fam == "CSM":
+            for p in pts:
+                a1.annotate(f"w{p[3]}", (p[0], p[1]), fontsize=6, color=colour,
+                            xytext=(3, -8), textcoords="offset points")
+    for a in (a1, a2):
+        a.set_xlabel("particles per strand")
+        a.set_xticks(sorted({num(r, "particles") for r in rows}))
+    a1.set_ylabel("sag of the tip (mm), settled, gravity 1 m/s^2")
+    a1.set_title("Stiffness against resolution: sag of a 12 cm cantilever", fontsize=9)
+    a2.set_ylabel("tip path RMS against the finest (mm)")
+    a2.set_title("Swing: 1 s after release, g = 9.81, against 32 particles", fontsize=9)
+    a1.legend(fontsize=6)
+    save(fig, out, "resolution")
+
+
+def scene_chart(rows, out):
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
+    groups = [("particles", "centreline RMS vs 32 particles (mm)"),
+              ("substeps", "position RMS vs 32 substeps (mm)")]
+    for ax, (g, xlabel) in zip((axes[0], axes[2]), groups):
+        gr = [r for r in rows if r["group"] == g]
+        for r in gr:
+            x, y = num(r, "error_rms_mm"), num(r, "ms_per_frame")
+            ax.scatter([x], [y], color="#1f77b4")
+            ax.annotate(f"{r['variant']} ({int(num(r, 'particles'))} p)", (x, y), fontsize=6,
+                        xytext=(3, 2), textcoords="offset points")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("ms per frame (CPU)")
+        ax.set_title(g, fontsize=9)
+    ax = axes[1]
+    gr = [r for r in rows if r["group"] == "collisions"]
+    names = [r["variant"] for r in gr]
+    ms = [num(r, "ms_per_frame") for r in gr]
+    bars = ax.bar(names, ms, color="#1f77b4")
+    for b, r in zip(bars, gr):
+        ax.annotate(f"{num(r, 'head_penetrations'):.0f} particles in head\n"
+                    f"{num(r, 'hair_pairs_closer_than_r'):.0f} hair pairs < r\n"
+                    f"({num(r, 'hair_pairs_at_start'):.0f} at start)",
+                    (b.get_x() + b.get_width() / 2, b.get_height()), ha="center", fontsize=6,
+                    xytext=(0, 2), textcoords="offset points")
+    ax.set_ylabel("ms per frame (CPU)")
+    ax.set_title("collisions: cost, and penetrations left", fontsize=9)
+    ax.margins(y=0.25)
+    s = rows[0]
+    fig.suptitle(f"Model no more than a scene needs: presets/default.json, "
+                 f"{int(num(s, 'strands'))} strands", fontsize=9)
+    save(fig, out, "scene_choices")
+
+
+def main():
+    if len(sys.argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    out = sys.argv[1]
+    meta = {}
+    if os.path.exists(os.path.join(out, "meta.json")):
+        with open(os.path.join(out, "meta.json")) as f:
+            meta = json.load(f)
+    methods = read(os.path.join(out, "methods.csv"))
+    if methods:
+        note = (f"{int(num(methods[0], 'strands'))} strands, "
+                f"{int(num(methods[0], 'particles'))} particles, nodding head")
+        cost_charts(methods, out, note)
+    for name, fn in (("stability", stability_chart), ("scaling", scaling_chart),
+                     ("region_sums", region_chart), ("resolution", resolution_chart),
+                     ("scene_choices", scene_chart)):
+        rows = read(os.path.join(out, f"{name}.csv"))
+        if rows:
+            fn(rows, out)
+    if meta:
+        print(f"charts.py: from {meta.get('command', '?')} on {meta.get('cores', '?')} cores, "
+              f"{meta.get('cpu', '?')}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
