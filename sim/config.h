@@ -35,6 +35,7 @@ struct HairstyleConfig {
   float scalpAngle = 105.0f;    // degrees from the crown that the scalp covers
   float hairlineFront = 50.0f;  // degrees from the crown where the forehead begins
   float fall = 0.6f;            // 0 = strands stick out along the normal, 1 = fall straight down
+  float sweep = 0.7f;           // how far hair from the front is swept back from the face
   int seed = 1;
   // Imported grooms.
   float importScale = 0.0f;  // 0 = fit to the head automatically

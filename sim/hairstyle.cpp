@@ -113,12 +113,16 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const std::vector<S
   const glm::dvec3 down(0.0, -1.0, 0.0);
   // A little per-strand disorder so the hair does not look combed by a machine.
   const glm::dvec3 jitter(random01(h.seed, s, 4) - 0.5, 0.0, random01(h.seed, s, 5) - 0.5);
+  // Hair growing toward the face is swept back and to the side, away from the eyes.
+  const double front = std::max(0.0, dir.z);
+  const glm::dvec3 fallTo =
+      down + h.sweep * front * glm::dvec3(dir.x >= 0.0 ? 1.2 : -1.2, 0.6, -2.0);
   std::vector<glm::dvec3> centre{root};
   glm::dvec3 p = root, t = dir;
   for (int i = 1; i <= steps; ++i) {
     const double along = i * ds;
     const double blend = 1.0 - std::exp(-turn * along);
-    glm::dvec3 want = glm::normalize(glm::mix(dir, down + 0.3 * jitter, blend));
+    glm::dvec3 want = glm::normalize(glm::mix(dir, fallTo + 0.3 * jitter, blend));
     t = glm::normalize(glm::mix(t, want, 0.5));
     glm::dvec3 next = p + t * (length / steps);
     glm::dvec3 before = next;

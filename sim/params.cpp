@@ -72,6 +72,10 @@ std::vector<Param> buildParams() {
        "How quickly strands turn from the scalp normal to hang down: 0 stands up, 1 falls at "
        "once.",
        E::Rebuild, FIELD(hairstyle.fall)},
+      {"hairstyle.sweep", "Sweep back", "Hairstyle", P::Float, 0.0, 2.0,
+       "How far hair growing toward the face is swept back and to the sides (0 = it falls over "
+       "the face).",
+       E::Rebuild, FIELD(hairstyle.sweep)},
       {"hairstyle.seed", "Seed", "Hairstyle", P::Int, 0, 2147483647,
        "Random seed of the groom. The same seed gives the same hair.", E::Rebuild,
        FIELD(hairstyle.seed)},
