@@ -24,24 +24,27 @@
 #define CSM_BIND_SEGMENT_DATA 11   // vec4 per segment: midpoint xyz, half length w
 #define CSM_BIND_SEGMENT_BUCKET 12 // uint per segment: hash bucket of its cell
 #define CSM_BIND_GRID_COUNT 13     // uint per bucket: segments in it (back to 0 after scatter)
-#define CSM_BIND_GRID_START 14     // uint per bucket + 1: exclusive scan of the counts
-#define CSM_BIND_SCAN_BLOCKS 15    // uint per scan block: block sums, then their scan
-#define CSM_BIND_UNSORTED 16       // uint per entry: segments scattered into their buckets
-#define CSM_BIND_SORTED_DATA 17    // vec4 per entry, sorted by segment index within a bucket:
-                                   // midpoint xyz, w the segment index (encodeIndex)
+#define CSM_BIND_GRID_START 14     // uint per bucket + 4: exclusive scan of the counts
+#define CSM_BIND_SCAN_BLOCKS 15    // uint per CSM_SCAN_LEAF buckets: block sums, then their scan
+#define CSM_BIND_UNSORTED 16       // vec4 per entry: segments scattered into their buckets
+                                   // (midpoint xyz, w the segment index, encodeIndex)
+#define CSM_BIND_SORTED_DATA 17    // vec4 per entry: the same, sorted within each bucket by
+                                   // midpoint x, then segment index
 #define CSM_BIND_COUNTERS 18       // uint[4]: longest segment (float bits), contacts,
                                    // penetrations, recorded pairs
 #define CSM_BIND_PAIRS 19          // uvec2: recorded contact pairs (tests)
 #define CSM_BIND_SEGMENT_CONTACTS 20  // uint per segment: its contacts, both sides counted
 
-// Texture units of buffer textures (samplerBuffer views of the buffers above), for the
-// contact pass's random reads: on llvmpipe a texel fetch is a vector gather where a storage
+// Texture units of buffer textures (samplerBuffer views of the buffers above), for reads
+// that differ per invocation: on llvmpipe a texel fetch is a vector gather where a storage
 // load is a loop over the SIMD lanes (sim/gpu/buffer_texture.h).
 #define CSM_TEX_POSITION 0
 #define CSM_TEX_VELOCITY 1
 #define CSM_TEX_REST 2
 #define CSM_TEX_SORTED_DATA 3
 #define CSM_TEX_GRID_START 4
+#define CSM_TEX_UNSORTED 5
+#define CSM_TEX_PREDICTED 6
 
 // Slots of the COUNTERS buffer.
 #define CSM_COUNTER_LONGEST 0
@@ -52,7 +55,8 @@
 // Work group sizes.
 #define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes
 #define CSM_STRAND_GROUP 64     // per-strand passes
-#define CSM_SCAN_GROUP 256      // invocations of a scan group; each scans 2 elements
-#define CSM_SCAN_BLOCK 512      // elements per scan block (2 x CSM_SCAN_GROUP)
+#define CSM_SCAN_GROUP 256      // invocations of the block-sum scan group; each scans 2 sums
+#define CSM_SCAN_BLOCK 512      // block sums per round of that scan (2 x CSM_SCAN_GROUP)
+#define CSM_SCAN_LEAF 64        // bucket counts summed by one invocation (a power of two)
 
 #endif

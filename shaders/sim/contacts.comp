@@ -1,7 +1,9 @@
 // Collision pass, contacts (DESIGN.md section 1 step 7, paper section 3.3): one invocation
 // per grid entry, in grid order, so the invocations of a SIMD group usually share a cell and
 // walk the same candidates. Each segment visits the 27 cells around its own (9 runs of 3
-// buckets; distinct buckets, see bucketOf), tests every candidate, and sums the penalty,
+// buckets; distinct buckets, see bucketOf), cut along x to the window it can reach (buckets
+// are sorted by x: a binary search in the first and last bucket of a run, which saves a
+// third of the candidates), tests every candidate, and sums the penalty,
 // normal damping and Coulomb-limited friction of all its contacts into its own slot: every
 // pair is met from both sides, and both sides evaluate it with the lower segment index
 // first, so the two forces are exact opposites. No float atomics: the slot is written once,
@@ -10,12 +12,13 @@
 // their segments' slots in predict.comp. Formulas: CpuSolver::collide.
 //
 // Three phases, because a SIMD lane that skips work still waits for the others (and on
-// llvmpipe a branch is only a mask: both sides always run), so rare work must not sit in
-// the loop over candidates:
-//  1. every candidate of a chunk of 32: a cheap, conservative test of its midpoint against
+// llvmpipe a branch is only a mask: both sides always run, and a loop body runs at least
+// once), so rare work must not sit in the loop over candidates:
+//  1. every candidate of a chunk of 128: a cheap, conservative test of its midpoint against
 //     this segment (a bit per candidate that may touch);
 //  2. the chunk's flagged candidates: closest points of the two segments (Ericson); the
-//     contacts go to a private list;
+//     contacts go to a list in shared memory (a private array indexed by a per-lane count
+//     becomes a chain of selects on llvmpipe);
 //  3. the list: forces. Should a segment have more than kMaxContacts contacts, the scan
 //     runs again for the next ones (rounds), keeping the order.
 #include "sim/common.glsl"
@@ -40,12 +43,23 @@ layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; }
 layout(std430, binding = CSM_BIND_PAIRS) writeonly buffer Pairs { uvec2 pairs[]; };
 
 const uint kStrandGap = 2u;     // csm::kStrandGap: neighbours along one strand are not contacts
-const uint kChunk = 32u;        // candidates per phase-1 bit mask
-const uint kMaxContacts = 64u;  // contacts per round
+const uint kChunk = 128u;       // candidates per phase-1 bit mask (a uvec4)
+const uint kMaxContacts = 32u;  // contacts per round
 
 shared uint groupContacts, groupPenetrations;
+shared uint contactList[kMaxContacts * CSM_PARTICLE_GROUP];  // [k * group size + lane]
 
 vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
+
+// The first entry of [lo, hi) whose midpoint x is not below x.
+uint lowerBoundX(uint lo, uint hi, float x) {
+  while (lo < hi) {
+    uint mid = (lo + hi) >> 1u;
+    if (texelFetch(sortedTex, int(mid)).x < x) lo = mid + 1u;
+    else hi = mid;
+  }
+  return lo;
+}
 
 void main() {
   uint j = globalIndex();
@@ -76,7 +90,11 @@ void main() {
     // |b| <= the longest segment. The slack covers rounding.
     float reach = (0.5 * longest + twoR) * P.misc.w + 1e-7;
     float reach2 = reach * reach;
+    // Candidates' midpoints lie within reach of a's segment, so within reach + |a|/2 of its
+    // midpoint along x.
+    float window = reach + 0.5 * sqrt(add) * P.misc.w + 1e-7;
     uint home = bucketOf(cellOf(me.xyz, cellSize(floatBitsToUint(longest))));
+    uint buckets = P.grid.x + 1u;
 
     vec3 f0 = vec3(0.0), f1 = vec3(0.0);
     uint count = 0u;
@@ -85,44 +103,59 @@ void main() {
     while (more) {
       more = false;
       uint seen = 0u, listed = 0u;
-      uint list[kMaxContacts];
-      for (int k = 0; k < 27; ++k) {
-        uint bucket = (home + P.runs[k / 12][(k / 3) % 4] + uint(k % 3) - 1u) & P.grid.x;
-        uint lo = texelFetch(gridStartTex, int(bucket)).x;
-        uint hi = texelFetch(gridStartTex, int(bucket + 1u)).x;
-        for (uint base = lo; base < hi; base += kChunk) {
-          uint n = min(kChunk, hi - base);
-          // Phase 1.
-          uint maybe = 0u;
-          for (uint c = 0u; c < n; ++c) {
-            vec3 m = texelFetch(sortedTex, int(base + c)).xyz;
-            float t = clamp(dot(m - a0, ad) * invAdd, 0.0, 1.0);
-            vec3 off = a0 + t * ad - m;
-            maybe |= dot(off, off) < reach2 ? (1u << c) : 0u;
-          }
-          // Phase 2.
-          for (; maybe != 0u; maybe &= maybe - 1u) {
-            uint e = base + uint(findLSB(maybe));
-            uint b = decodeIndex(texelFetch(sortedTex, int(e)).w);
-            bool sameStrandNear = b >= sFirst && b < sLast && (b > a ? b - a : a - b) <= kStrandGap;
-            vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
-            bool lower = a < b;
-            float s, t;
-            float d2 = lower ? closestSegmentPoints(a0, a1, b0, b1, s, t)
-                             : closestSegmentPoints(b0, b1, a0, a1, s, t);
-            if (b != a && !sameStrandNear && d2 < twoR * twoR) {
-              if (seen >= skip) {
-                if (listed < kMaxContacts) list[listed++] = b;
-                else more = true;
+      for (int run = 0; run < 9; ++run) {
+        // Buckets first, first+1, first+2 hold the cells at dx = -1, 0, +1: one range of
+        // entries, cut to the window by binary search in the outer two, unless the run wraps
+        // around the end of the table (then three).
+        uint first = (home + P.runs[run >> 2][run & 3] - 1u) & P.grid.x;
+        uint pieces = first + 3u <= buckets ? 1u : 3u;
+        for (uint piece = 0u; piece < pieces; ++piece) {
+          uint b0 = (first + piece) & P.grid.x;
+          uint b1 = pieces == 1u ? first + 2u : b0;
+          uint lo = texelFetch(gridStartTex, int(b0)).x;
+          uint hi = texelFetch(gridStartTex, int(b1 + 1u)).x;
+          if (piece == 0u) lo = lowerBoundX(lo, texelFetch(gridStartTex, int(b0 + 1u)).x, me.x - window);
+          if (piece + 1u == pieces)
+            hi = lowerBoundX(texelFetch(gridStartTex, int(b1)).x, hi, me.x + window);
+          for (uint base = lo; base < hi; base += kChunk) {
+            uint n = min(kChunk, hi - base);
+            // Phase 1: a bit per candidate that may touch.
+            uvec4 maybe = uvec4(0u);
+            for (uint c = 0u; c < n; ++c) {
+              vec3 m = texelFetch(sortedTex, int(base + c)).xyz;
+              float t = clamp(dot(m - a0, ad) * invAdd, 0.0, 1.0);
+              vec3 off = a0 + t * ad - m;
+              if (dot(off, off) < reach2) maybe[c >> 5u] |= 1u << (c & 31u);
+            }
+            // Phase 2: closest points of the flagged ones.
+            while (any(notEqual(maybe, uvec4(0u)))) {
+              uint word = maybe.x != 0u ? 0u : maybe.y != 0u ? 1u : maybe.z != 0u ? 2u : 3u;
+              uint bit = uint(findLSB(maybe[word]));
+              maybe[word] &= maybe[word] - 1u;
+              uint e = base + 32u * word + bit;
+              uint b = decodeIndex(texelFetch(sortedTex, int(e)).w);
+              bool sameStrandNear =
+                  b >= sFirst && b < sLast && (b > a ? b - a : a - b) <= kStrandGap;
+              vec3 b0p = fetchPos(b), b1p = fetchPos(b + 1u);
+              float s, t;
+              float d2 = a < b ? closestSegmentPoints(a0, a1, b0p, b1p, s, t)
+                               : closestSegmentPoints(b0p, b1p, a0, a1, s, t);
+              if (b != a && !sameStrandNear && d2 < twoR * twoR) {
+                if (seen >= skip) {
+                  if (listed < kMaxContacts)
+                    contactList[(listed++) * CSM_PARTICLE_GROUP + lid] = b;
+                  else
+                    more = true;
+                }
+                ++seen;
               }
-              ++seen;
             }
           }
         }
       }
       // Phase 3.
       for (uint k = 0u; k < listed; ++k) {
-        uint b = list[k];
+        uint b = contactList[k * CSM_PARTICLE_GROUP + lid];
         vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
         // The pair as CpuSolver sees it: lower index first (s on it, t on the other).
         bool lower = a < b;

@@ -7,9 +7,10 @@
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
-layout(std430, binding = CSM_BIND_REST) readonly buffer Rest { vec4 rest[]; };
-layout(std430, binding = CSM_BIND_POSITION) readonly buffer Position { vec4 pos[]; };
-layout(std430, binding = CSM_BIND_VELOCITY) readonly buffer Velocity { vec4 vel[]; };
+// Read through texel fetches: on llvmpipe a vector gather instead of a loop over the lanes.
+layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
+layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
+layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
 layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
   uint particleStrand[];
@@ -25,14 +26,14 @@ void main() {
   uint s = particleStrand[i];
   uint a = strandFirst[s], b = strandFirst[s + 1u];
   Substep st = S[substep];
-  vec4 r = rest[i];
+  vec4 r = texelFetch(restTex, int(i));
   if (int(i - a) < P.ints.x) {
     pred[i] = vec4((st.head * vec4(r.xyz, 1.0)).xyz, 1.0);
     return;
   }
   float h = st.time.y;
-  vec3 x = pos[i].xyz;
-  vec3 v = vel[i].xyz;
+  vec3 x = texelFetch(posTex, int(i)).xyz;
+  vec3 v = texelFetch(velTex, int(i)).xyz;
   vec3 acc = P.gravity.xyz;
   if (P.flags.w != 0u) {
     // Deterministic gather: the particle's share of the forces its (at most two) segments
@@ -44,7 +45,8 @@ void main() {
   }
   if (P.flags.z != 0u) {
     // Drag acts on the wind across the strand, not along it.
-    vec3 t = normalize(pos[min(i + 1u, b - 1u)].xyz - pos[max(i, a + 1u) - 1u].xyz);
+    vec3 t = normalize(texelFetch(posTex, int(min(i + 1u, b - 1u))).xyz -
+                       texelFetch(posTex, int(max(i, a + 1u) - 1u)).xyz);
     vec3 rel = windVelocity(x, st.time.x) - v;
     acc += P.misc.y * (rel - dot(rel, t) * t);
   }

@@ -1,18 +1,27 @@
-// Collision pass, grid build 5/6 (exclusive scan, level 3): adds each block's offset to its
-// elements, giving every bucket its first entry; entry `count` is the total, so bucket b's
-// entries are [gridStart[b], gridStart[b+1]).
+// Collision pass, grid build 5/6 (exclusive scan, level 3 of 3): each invocation rescans its
+// block of counts from the block's offset, giving every bucket its first entry; entry
+// `count` is the total, so bucket b's entries are [gridStart[b], gridStart[b+1]).
 #include "sim/common.glsl"
 
-layout(local_size_x = CSM_SCAN_GROUP) in;
+layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
-layout(std430, binding = CSM_BIND_GRID_START) buffer GridStart { uint gridStart[]; };
+layout(std430, binding = CSM_BIND_GRID_COUNT) readonly buffer GridCount { uvec4 gridCount[]; };
+layout(std430, binding = CSM_BIND_GRID_START) writeonly buffer GridStart { uvec4 gridStart[]; };
 layout(std430, binding = CSM_BIND_SCAN_BLOCKS) readonly buffer ScanBlocks { uint blockSums[]; };
 
-uniform uint count;   // elements
-uniform uint blocks;  // scan blocks
+uniform uint blocks;
 
 void main() {
-  uint i = globalIndex();
-  if (i < count) gridStart[i] += blockSums[i / uint(CSM_SCAN_BLOCK)];
-  if (i == 0u) gridStart[count] = blockSums[blocks];
+  uint block = globalIndex();
+  if (block >= blocks) return;
+  uint first = block * uint(CSM_SCAN_LEAF / 4);
+  uint running = blockSums[block];
+  for (uint k = 0u; k < uint(CSM_SCAN_LEAF / 4); ++k) {
+    uvec4 c = gridCount[first + k];
+    uvec4 start = uvec4(running, running + c.x, running + c.x + c.y, running + c.x + c.y + c.z);
+    gridStart[first + k] = start;
+    running = start.w + c.w;
+  }
+  // The total after the last bucket (gridStart has one uvec4 more than the counts).
+  if (block + 1u == blocks) gridStart[first + uint(CSM_SCAN_LEAF / 4)] = uvec4(running);
 }

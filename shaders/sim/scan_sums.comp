@@ -1,7 +1,8 @@
-// Collision pass, grid build 4/6 (exclusive scan, level 2): one work group scans the block
-// sums in place, CSM_SCAN_BLOCK at a time with a running carry (256 blocks cover 131072
-// buckets per round, so even 100k strands need a few rounds), and stores the grand total
-// after them.
+// Collision pass, grid build 4/6 (exclusive scan, level 2 of 3): one work group scans the
+// block sums in place with a work-efficient parallel scan in shared memory (Blelloch 1990;
+// GPU Gems 3, ch. 39), CSM_SCAN_BLOCK at a time with a running carry (one round covers
+// CSM_SCAN_BLOCK x CSM_SCAN_LEAF = 32768 buckets; 100k strands need a few), and stores the
+// grand total after them.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_SCAN_GROUP) in;

@@ -22,12 +22,16 @@
 
 layout(local_size_x = CSM_STRAND_GROUP) in;
 
-layout(std430, binding = CSM_BIND_REST) readonly buffer Rest { vec4 rest[]; };
-layout(std430, binding = CSM_BIND_POSITION) buffer Position { vec4 pos[]; };
+// Inputs through texel fetches (on llvmpipe a vector gather, not a loop over the lanes).
+// Each invocation reads its own particles' old positions before it writes them, and no
+// other invocation writes them, so the fetches see the values of the previous pass.
+layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
+layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
+layout(binding = CSM_TEX_PREDICTED) uniform samplerBuffer predTex;
+layout(std430, binding = CSM_BIND_POSITION) writeonly buffer Position { vec4 pos[]; };
 layout(std430, binding = CSM_BIND_VELOCITY) writeonly buffer Velocity { vec4 vel[]; };
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
 layout(std430, binding = CSM_BIND_STRAND_ORDER) readonly buffer StrandOrder { uint strandOrder[]; };
-layout(std430, binding = CSM_BIND_PREDICTED) readonly buffer Predicted { vec4 pred[]; };
 layout(std430, binding = CSM_BIND_ROTATION) buffer Rotation { vec4 rotation[]; };
 
 uniform uint substep;
@@ -41,8 +45,8 @@ void main() {
   if (n <= 0) return;
   int w = max(1, P.ints.y);
   int iterations = max(1, P.ints.z);
-  vec3 origin = pred[a].xyz;
-  vec3 rest0 = rest[a].xyz;
+  vec3 origin = texelFetch(predTex, int(a)).xyz;
+  vec3 rest0 = texelFetch(restTex, int(a)).xyz;
 
   // Prefix sums over the strand's particles: mass, m y, m ȳ, m y ȳᵀ (y = x* - x*_root,
   // ȳ = x̄ - x̄_root). Entry j holds the sum over particles [0, j).
@@ -54,9 +58,9 @@ void main() {
   prefRest[0] = vec3(0.0);
   prefA[0] = mat3(0.0);
   for (int j = 0; j < n; ++j) {
-    vec4 r = rest[a + uint(j)];
+    vec4 r = texelFetch(restTex, int(a) + j);
     float m = r.w;
-    vec3 y = pred[a + uint(j)].xyz - origin;
+    vec3 y = texelFetch(predTex, int(a) + j).xyz - origin;
     vec3 yr = r.xyz - rest0;
     prefM[j + 1] = prefM[j] + m;
     prefX[j + 1] = prefX[j] + m * y;
@@ -94,13 +98,13 @@ void main() {
   for (int i = 0; i < n; ++i) {
     uint p = a + uint(i);
     int lo = max(0, i - w), hi = min(n - 1, i + w);
-    vec3 yr = rest[p].xyz - rest0;
+    vec3 yr = texelFetch(restTex, int(p)).xyz - rest0;
     vec3 goal = origin + ((prefR[hi + 1] - prefR[lo]) * yr + (prefT[hi + 1] - prefT[lo])) /
                              float(hi - lo + 1);
-    vec3 xp = pred[p].xyz;
+    vec3 xp = texelFetch(predTex, int(p)).xyz;
     bool fixed_ = i < pinned;
     vec3 x = fixed_ ? xp : xp + alpha * (goal - xp);
-    vec3 v = (x - pos[p].xyz) / h;
+    vec3 v = (x - texelFetch(posTex, int(p)).xyz) / h;
     if (!fixed_) v *= keep;
     pos[p] = vec4(x, 1.0);
     vel[p] = vec4(v, 0.0);

@@ -7,7 +7,7 @@
 
 layout(local_size_x = CSM_STRAND_GROUP) in;
 
-layout(std430, binding = CSM_BIND_REST) readonly buffer Rest { vec4 rest[]; };
+layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
 layout(std430, binding = CSM_BIND_POSITION) buffer Position { vec4 pos[]; };
 layout(std430, binding = CSM_BIND_VELOCITY) buffer Velocity { vec4 vel[]; };
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
@@ -66,13 +66,13 @@ void main() {
   int sphereCount = P.ints.w;
   uint sphereBase = substep * uint(sphereCount);
 
-  vec3 restPrev = rest[a + uint(first - 1)].xyz;
+  vec3 restPrev = texelFetch(restTex, int(a) + first - 1).xyz;
   vec3 xPrev = pos[a + uint(first - 1)].xyz;
   vec3 vPrev = vel[a + uint(first - 1)].xyz;
   bool prevFree = first - 1 >= pinned;  // DFTL only corrects free particles
   for (int i = first; i < n; ++i) {
     uint p = a + uint(i);
-    vec3 restHere = rest[p].xyz;
+    vec3 restHere = texelFetch(restTex, int(p)).xyz;
     vec3 x = pos[p].xyz;
     vec3 v = vel[p].xyz;
     vec3 start = x;

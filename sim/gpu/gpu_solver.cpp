@@ -145,7 +145,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
 
   // One bucket per segment at least (a power of two, so the hash wraps with the integers).
   buckets_ = std::max<uint32_t>(64, std::bit_ceil(std::max<uint32_t>(segments_, 1)));
-  scanBlocks_ = (buckets_ + CSM_SCAN_BLOCK - 1) / CSM_SCAN_BLOCK;
+  scanBlocks_ = buckets_ / CSM_SCAN_LEAF;
   uint32_t runs[9] = {};
   uint32_t p1 = uint32_t(double(buckets_) * 0.6180339887) | 1u;
   uint32_t p2 = uint32_t(double(buckets_) * 0.7548776662) | 1u;
@@ -169,9 +169,9 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   zeroed<glm::vec4>(segmentData_, particles_);
   zeroed<uint32_t>(segmentBucket_, particles_);
   zeroed<uint32_t>(gridCount_, buckets_);
-  zeroed<uint32_t>(gridStart_, buckets_ + 1);
+  zeroed<uint32_t>(gridStart_, buckets_ + 4);  // + the total, as a uvec4
   zeroed<uint32_t>(scanBlockSums_, scanBlocks_ + 1);
-  zeroed<uint32_t>(unsorted_, segments_);
+  zeroed<glm::vec4>(unsorted_, segments_);
   zeroed<glm::vec4>(sortedData_, segments_);
   zeroed<uint32_t>(counters_, 4);
   zeroed<glm::uvec2>(pairs_, pairCapacity_);
@@ -187,6 +187,8 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   view(restTex_, rest_, GL_RGBA32F);
   view(sortedDataTex_, sortedData_, GL_RGBA32F);
   view(gridStartTex_, gridStart_, GL_R32UI);
+  view(unsortedTex_, unsorted_, GL_RGBA32F);
+  view(predictedTex_, predicted_, GL_RGBA32F);
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
 
@@ -274,6 +276,8 @@ void GpuSolver::bindAll() {
   restTex_.bind(CSM_TEX_REST);
   sortedDataTex_.bind(CSM_TEX_SORTED_DATA);
   gridStartTex_.bind(CSM_TEX_GRID_START);
+  unsortedTex_.bind(CSM_TEX_UNSORTED);
+  predictedTex_.bind(CSM_TEX_PREDICTED);
 }
 
 void GpuSolver::dispatchItems(const gl::Program& program, uint32_t items, uint32_t groupSize) {
@@ -390,21 +394,20 @@ void GpuSolver::collide() {
   }
   timeStage(kGrid);
   counters_.clearToZero();
-  dispatchItems(programs_.segmentPrep, uint32_t(particles_), CSM_PARTICLE_GROUP);
+  dispatchItems(programs_.segmentPrep, uint32_t(strands_), CSM_STRAND_GROUP);
   gl::memoryBarrier(kPassBarrier);
   dispatchItems(programs_.gridCount, uint32_t(particles_), CSM_PARTICLE_GROUP);
   gl::memoryBarrier(kPassBarrier);
-  // Counting sort, exclusive scan of the bucket counts: block scans, a scan of the block
-  // sums, block offsets added.
-  programs_.scanBlocks.setUniform("count", buckets_);
-  dispatchItems(programs_.scanBlocks, scanBlocks_, 1);
+  // Counting sort, exclusive scan of the bucket counts: block sums, their scan, each block
+  // rescanned from its offset.
+  programs_.scanBlocks.setUniform("blocks", scanBlocks_);
+  dispatchItems(programs_.scanBlocks, scanBlocks_, CSM_PARTICLE_GROUP);
   gl::memoryBarrier(kPassBarrier);
   programs_.scanSums.setUniform("count", scanBlocks_);
   programs_.scanSums.dispatch(1);
   gl::memoryBarrier(kPassBarrier);
-  programs_.scanAdd.setUniform("count", buckets_);
   programs_.scanAdd.setUniform("blocks", scanBlocks_);
-  dispatchItems(programs_.scanAdd, buckets_, CSM_SCAN_GROUP);
+  dispatchItems(programs_.scanAdd, scanBlocks_, CSM_PARTICLE_GROUP);
   gl::memoryBarrier(kPassBarrier);
   dispatchItems(programs_.gridScatter, uint32_t(particles_), CSM_PARTICLE_GROUP);
   gl::memoryBarrier(kPassBarrier);

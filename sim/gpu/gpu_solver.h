@@ -100,9 +100,10 @@ class GpuSolver final : public Solver {
       segmentBucket_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
       scanBlockSums_{gl::NoCreate}, unsorted_{gl::NoCreate}, sortedData_{gl::NoCreate},
       counters_{gl::NoCreate}, pairs_{gl::NoCreate}, segmentContacts_{gl::NoCreate};
-  // texelFetch views for the contact pass (see buffer_texture.h).
+  // texelFetch views for reads that differ per invocation (see buffer_texture.h).
   gpu::BufferTexture positionTex_{gl::NoCreate}, velocityTex_{gl::NoCreate}, restTex_{gl::NoCreate},
-      sortedDataTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};
+      sortedDataTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate}, unsortedTex_{gl::NoCreate},
+      predictedTex_{gl::NoCreate};
 
   // GPU time per stage: one GL_TIME_ELAPSED query around each dispatch group, for the last
   // few frames; stageTimes() reads the newest frame whose results are in. Software drivers
