@@ -148,6 +148,27 @@ void drawMessages(const Viewer& viewer, size_t count) {
   }
 }
 
+// The keys' actions as buttons, for the mouse.
+void drawControls(Viewer& viewer) {
+  if (ImGui::Button(viewer.paused() ? "Run" : "Pause")) viewer.setPaused(!viewer.paused());
+  ImGui::SameLine();
+  if (ImGui::Button("Step")) {
+    viewer.setPaused(true);
+    viewer.stepOnce();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Reset hair")) viewer.resetHair();
+  ImGui::SameLine();
+  if (ImGui::Button("Frame head")) viewer.frameHead();
+  ImGui::SameLine();
+  if (ImGui::Button("Reset view")) viewer.resetView();
+  if (ImGui::Button("Undo head drag")) viewer.resetHead();
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot")) viewer.requestScreenshot(viewer.defaultScreenshotName());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Saves what the window shows, panels included, in the current folder.");
+}
+
 }  // namespace
 
 const std::vector<ParamGroup>& paramGroups() {
@@ -230,6 +251,7 @@ void drawParameterPanel(Viewer& viewer, PanelState& state) {
     return;
   }
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.5f);  // room for the labels
+  drawControls(viewer);
   drawPresetSection(viewer, state);
   for (const ParamGroup& group : paramGroups()) {
     const bool open = group.name == "Hairstyle" || group.name == "Wind";
