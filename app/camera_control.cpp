@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/common.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "render/renderer.h"
@@ -53,20 +55,24 @@ void zoomCamera(CameraConfig& camera, float steps) {
 }
 
 void frameHead(CameraConfig& camera, const Config& config, const Pose& head) {
-  glm::dvec3 centre(0.0);
-  double radius = 0.1;
-  if (!config.head.spheres.empty()) {
-    centre = glm::dvec3(config.head.spheres.front().center);
-    radius = config.head.spheres.front().radius;
-  }
-  // Hair hangs below the scalp: aim a little under the head's centre, and fit a sphere that
-  // holds the head and the longest strands hanging from its crown.
-  const double hair = config.hairstyle.file.empty() ? config.hairstyle.lengthMax : 2.0 * radius;
-  const glm::dvec3 aim = head.apply(centre - glm::dvec3(0.0, 0.35 * hair, 0.0));
-  const double fit = radius + 0.75 * hair;
+  // A box around the head spheres, the scalp's grown by the longest strand (hair can reach
+  // that far from it in any direction); the camera aims at its centre and backs off until
+  // its largest half-extent fits the vertical field of view.
+  glm::dvec3 lo(1e30), hi(-1e30);
+  auto add = [&](const glm::dvec3& c, double r) {
+    lo = glm::min(lo, c - r);
+    hi = glm::max(hi, c + r);
+  };
+  const std::vector<Sphere>& spheres = config.head.spheres;
+  for (const Sphere& s : spheres) add(glm::dvec3(s.center), s.radius);
+  const double scalp = spheres.empty() ? 0.1 : spheres.front().radius;
+  const double hair = config.hairstyle.file.empty() ? config.hairstyle.lengthMax : 2.0 * scalp;
+  add(spheres.empty() ? glm::dvec3(0.0) : glm::dvec3(spheres.front().center), scalp + hair);
+  const glm::dvec3 half = 0.5 * (hi - lo);
+  const double extent = std::max({half.x, half.y, half.z});
   const double halfFov = glm::radians(double(camera.fov)) * 0.5;
-  camera.target = glm::vec3(aim);
-  camera.distance = clampToParam("camera.distance", float(1.15 * fit / std::sin(halfFov)));
+  camera.target = glm::vec3(head.apply(0.5 * (lo + hi)));
+  camera.distance = clampToParam("camera.distance", float(1.1 * extent / std::sin(halfFov)));
 }
 
 Pose dragHead(const Pose& user, const CameraConfig& camera, const HeadConfig& head, float dxPixels,

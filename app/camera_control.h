@@ -20,7 +20,8 @@ void orbitCamera(CameraConfig& camera, float dxPixels, float dyPixels);
 void panCamera(CameraConfig& camera, float dxPixels, float dyPixels, int viewportHeight);
 // Positive steps (wheel up) move closer; each step is 10 %. Clamped to the distance's range.
 void zoomCamera(CameraConfig& camera, float steps);
-// Aims at the head as it is now and backs off until the head and the longest strands fit.
+// Aims at the head as it is now and backs off until the head spheres and the longest
+// strands around the scalp fit the view.
 void frameHead(CameraConfig& camera, const Config& config, const Pose& head);
 
 // The user's extra head pose after a drag of (dx, dy) pixels: horizontal motion turns the

@@ -15,6 +15,8 @@
 
 #include <unistd.h>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <imgui.h>
 #include <png.h>
 
@@ -405,8 +407,17 @@ TEST_CASE("camera control: orbit, zoom and head drag stay in range and keep the 
 
   Config c = defaultConfig();
   frameHead(cam, c, Pose{});
-  CHECK(glm::length(cam.target - glm::vec3(0.0f, -0.35f * c.hairstyle.lengthMax, 0.0f)) < 1e-4f);
-  CHECK(cam.distance > 0.3f);
+  // The scalp grown by the longest strand is centred and fits the vertical field of view.
+  const float reach = c.head.spheres[0].radius + c.hairstyle.lengthMax;
+  CHECK(glm::length(cam.target - c.head.spheres[0].center) < 0.05f);
+  CHECK(cam.distance * std::sin(glm::radians(cam.fov) * 0.5f) >= reach);
+  CHECK(cam.distance * std::sin(glm::radians(cam.fov) * 0.5f) < 1.5f * reach);
+  // Where the head is now: a head moved up 1 m moves the target with it.
+  Pose up;
+  up.translation = glm::dvec3(0.0, 1.0, 0.0);
+  CameraConfig moved = cam;
+  frameHead(moved, c, up);
+  CHECK(moved.target.y == Approx(cam.target.y + 1.0f));
 
   const Pose turned = dragHead(Pose{}, cam, c.head, 80.0f, -40.0f);
   const glm::dvec3 pivot(c.head.pivot);
