@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # The GPU solver (llvmpipe where there is no GPU) against the CPU reference on the paper's two
 # scenes, then how a GPU frame grows with the strand count and with the stiffness window w.
+# Strand counts: the step alone (head collisions) to 100k strands; with hair-hair collisions
+# to 30k, because every count grows on the same scalp, so the hair gets denser and the
+# contact pass grows with the square of the count.
 # Prints a Markdown table: ms per frame (all substeps and the collision pass), split by stage.
 #   scripts/bench_solver.sh [BIN] [FRAMES]
 # FRAMES (default 4) per row; big rows run fewer. Means include the first frame, which on
@@ -44,7 +47,13 @@ row "Fig. 3, full collisions"        cpu "$fig3" 2
 for strands in 1000 3000 10000 30000 100000; do
   n=$frames
   [ "$strands" -ge 30000 ] && n=2
-  row "Fig. 1 style, $strands strands" gpu "$fig1" "$n" --set hairstyle.strands=$strands
+  row "Fig. 1, head only, ${strands} str." gpu "$fig1" "$n" --set collision.mode=head \
+    --set hairstyle.strands=$strands
+done
+for strands in 1000 3000 30000; do
+  n=$frames
+  [ "$strands" -ge 30000 ] && n=2
+  row "Fig. 1, full, ${strands} str." gpu "$fig1" "$n" --set hairstyle.strands=$strands
 done
 for w in 1 2 4 8 15; do
   row "Fig. 1, head only, w=$w" gpu "$fig1" "$frames" --set collision.mode=head \

@@ -55,6 +55,7 @@
 // Work group sizes.
 #define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes
 #define CSM_STRAND_GROUP 64     // per-strand passes
+#define CSM_CONTACT_GROUP 64    // the contact pass (its contact lists fill shared memory)
 #define CSM_SCAN_GROUP 256      // invocations of the block-sum scan group; each scans 2 sums
 #define CSM_SCAN_BLOCK 512      // block sums per round of that scan (2 x CSM_SCAN_GROUP)
 #define CSM_SCAN_LEAF 64        // bucket counts summed by one invocation (a power of two)

@@ -2,28 +2,29 @@
 // per grid entry, in grid order, so the invocations of a SIMD group usually share a cell and
 // walk the same candidates. Each segment visits the 27 cells around its own (9 runs of 3
 // buckets; distinct buckets, see bucketOf), cut along x to the window it can reach (buckets
-// are sorted by x: a binary search in the first and last bucket of a run, which saves a
-// third of the candidates), tests every candidate, and sums the penalty,
-// normal damping and Coulomb-limited friction of all its contacts into its own slot: every
-// pair is met from both sides, and both sides evaluate it with the lower segment index
-// first, so the two forces are exact opposites. No float atomics: the slot is written once,
-// and the candidates come in a fixed order (buckets by offset, segments by index within a
-// bucket), so the sums are deterministic whatever the schedule. The particles gather from
-// their segments' slots in predict.comp. Formulas: CpuSolver::collide.
+// are sorted by x: a binary search in the first and last bucket of a run saves a third of
+// the candidates), tests every candidate, and sums the penalty, normal damping and
+// Coulomb-limited friction of all its contacts into its own slot: every pair is met from
+// both sides, and both sides evaluate it with the lower segment index first, so the two
+// forces are exact opposites. No float atomics: the slot is written once, and the candidates
+// come in a fixed order (runs by offset; within a bucket by x, then segment index), so the
+// sums are deterministic whatever the schedule. The particles gather from their segments'
+// slots in predict.comp. Formulas: CpuSolver::collide. Closest points: Ericson, Real-Time
+// Collision Detection, 5.1.9.
 //
 // Three phases, because a SIMD lane that skips work still waits for the others (and on
 // llvmpipe a branch is only a mask: both sides always run, and a loop body runs at least
 // once), so rare work must not sit in the loop over candidates:
 //  1. every candidate of a chunk of 128: a cheap, conservative test of its midpoint against
 //     this segment (a bit per candidate that may touch);
-//  2. the chunk's flagged candidates: closest points of the two segments (Ericson); the
-//     contacts go to a list in shared memory (a private array indexed by a per-lane count
-//     becomes a chain of selects on llvmpipe);
+//  2. the chunk's flagged candidates: closest points of the two segments; the contacts go to
+//     a per-invocation list in shared memory (a private array indexed by a per-lane count
+//     measured 40% slower on llvmpipe);
 //  3. the list: forces. Should a segment have more than kMaxContacts contacts, the scan
 //     runs again for the next ones (rounds), keeping the order.
 #include "sim/common.glsl"
 
-layout(local_size_x = CSM_PARTICLE_GROUP) in;
+layout(local_size_x = CSM_CONTACT_GROUP) in;
 
 layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
@@ -44,10 +45,10 @@ layout(std430, binding = CSM_BIND_PAIRS) writeonly buffer Pairs { uvec2 pairs[];
 
 const uint kStrandGap = 2u;     // csm::kStrandGap: neighbours along one strand are not contacts
 const uint kChunk = 128u;       // candidates per phase-1 bit mask (a uvec4)
-const uint kMaxContacts = 32u;  // contacts per round
+const uint kMaxContacts = 96u;  // contacts per round (Fig. 1: at most ~110 per segment)
 
 shared uint groupContacts, groupPenetrations;
-shared uint contactList[kMaxContacts * CSM_PARTICLE_GROUP];  // [k * group size + lane]
+shared uint contactList[kMaxContacts * CSM_CONTACT_GROUP];  // [k * group size + lane], 24 KiB
 
 vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
 
@@ -143,7 +144,7 @@ void main() {
               if (b != a && !sameStrandNear && d2 < twoR * twoR) {
                 if (seen >= skip) {
                   if (listed < kMaxContacts)
-                    contactList[(listed++) * CSM_PARTICLE_GROUP + lid] = b;
+                    contactList[(listed++) * CSM_CONTACT_GROUP + lid] = b;
                   else
                     more = true;
                 }
@@ -155,7 +156,7 @@ void main() {
       }
       // Phase 3.
       for (uint k = 0u; k < listed; ++k) {
-        uint b = contactList[k * CSM_PARTICLE_GROUP + lid];
+        uint b = contactList[k * CSM_CONTACT_GROUP + lid];
         vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
         // The pair as CpuSolver sees it: lower index first (s on it, t on the other).
         bool lower = a < b;

@@ -42,7 +42,9 @@ void main() {
   uint s = strandOrder[id];
   uint a = strandFirst[s];
   int n = int(strandFirst[s + 1u] - a);
-  if (n <= 0) return;
+  // MAX_N is the groom's longest strand (GpuSolver::reset rebuilds this pass when it grows);
+  // the guard only keeps a failed rebuild from writing past the arrays.
+  if (n <= 0 || n > MAX_N) return;
   int w = max(1, P.ints.y);
   int iterations = max(1, P.ints.z);
   vec3 origin = texelFetch(predTex, int(a)).xyz;

@@ -414,7 +414,7 @@ void GpuSolver::collide() {
   dispatchItems(programs_.gridRank, segments_, CSM_PARTICLE_GROUP);
   gl::memoryBarrier(kPassBarrier);
   timeStage(kContacts);
-  dispatchItems(programs_.contacts, segments_, CSM_PARTICLE_GROUP);
+  dispatchItems(programs_.contacts, segments_, CSM_CONTACT_GROUP);
   gl::memoryBarrier(kPassBarrier);
 }
 
