@@ -17,9 +17,9 @@
 // once), so rare work must not sit in the loop over candidates:
 //  1. every candidate of a chunk of 128: a cheap, conservative test of its midpoint against
 //     this segment (a bit per candidate that may touch);
-//  2. the chunk's flagged candidates: closest points of the two segments; the contacts go to
-//     a per-invocation list in shared memory (a private array indexed by a per-lane count
-//     measured 40% slower on llvmpipe);
+//  2. the chunk's flagged candidates: closest points of the two segments, contacts as bits,
+//     then appended to a per-invocation list in shared memory (a private array indexed by a
+//     per-lane count measured 40% slower on llvmpipe);
 //  3. the list: forces. Should a segment have more than kMaxContacts contacts, the scan
 //     runs again for the next ones (rounds), keeping the order.
 #include "sim/common.glsl"
@@ -128,28 +128,37 @@ void main() {
               vec3 off = a0 + t * ad - m;
               if (dot(off, off) < reach2) maybe[c >> 5u] |= 1u << (c & 31u);
             }
-            // Phase 2: closest points of the flagged ones.
+            // Phase 2: closest points of the flagged ones; contacts as bits again.
+            uvec4 touching = uvec4(0u);
             while (any(notEqual(maybe, uvec4(0u)))) {
               uint word = maybe.x != 0u ? 0u : maybe.y != 0u ? 1u : maybe.z != 0u ? 2u : 3u;
               uint bit = uint(findLSB(maybe[word]));
               maybe[word] &= maybe[word] - 1u;
-              uint e = base + 32u * word + bit;
-              uint b = decodeIndex(texelFetch(sortedTex, int(e)).w);
+              uint b = decodeIndex(texelFetch(sortedTex, int(base + 32u * word + bit)).w);
               bool sameStrandNear =
                   b >= sFirst && b < sLast && (b > a ? b - a : a - b) <= kStrandGap;
-              vec3 b0p = fetchPos(b), b1p = fetchPos(b + 1u);
+              vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
+              // The pair as CpuSolver sees it, lower index first. The operands are chosen
+              // before the call: under a SIMD mask both sides of a ?: would run it.
+              bool lower = a < b;
               float s, t;
-              float d2 = a < b ? closestSegmentPoints(a0, a1, b0p, b1p, s, t)
-                               : closestSegmentPoints(b0p, b1p, a0, a1, s, t);
-              if (b != a && !sameStrandNear && d2 < twoR * twoR) {
-                if (seen >= skip) {
-                  if (listed < kMaxContacts)
-                    contactList[(listed++) * CSM_CONTACT_GROUP + lid] = b;
-                  else
-                    more = true;
-                }
-                ++seen;
+              float d2 = closestSegmentPoints(lower ? a0 : b0, lower ? a1 : b1, lower ? b0 : a0,
+                                              lower ? b1 : a1, s, t);
+              if (b != a && !sameStrandNear && d2 < twoR * twoR) touching[word] |= 1u << bit;
+            }
+            // The chunk's contacts, in candidate order, to the list (rounds: see above).
+            while (any(notEqual(touching, uvec4(0u)))) {
+              uint word = touching.x != 0u ? 0u : touching.y != 0u ? 1u : touching.z != 0u ? 2u : 3u;
+              uint bit = uint(findLSB(touching[word]));
+              touching[word] &= touching[word] - 1u;
+              if (seen >= skip) {
+                if (listed < kMaxContacts)
+                  contactList[(listed++) * CSM_CONTACT_GROUP + lid] =
+                      decodeIndex(texelFetch(sortedTex, int(base + 32u * word + bit)).w);
+                else
+                  more = true;
               }
+              ++seen;
             }
           }
         }
