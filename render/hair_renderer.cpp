@@ -103,7 +103,8 @@ struct HairRenderer::Programs {
 std::unique_ptr<HairRenderer> HairRenderer::create(std::string* error) {
   std::unique_ptr<HairRenderer> r(new HairRenderer());
   std::string log;
-  if (!r->buildPrograms(1, &log)) {
+  // Built for the default render.samples; render() rebuilds if a preset asks otherwise.
+  if (!r->buildPrograms(std::min(RenderConfig{}.samples, r->maxSamples_), &log)) {
     if (error) *error = "the renderer's shaders failed to build:\n" + log;
     return nullptr;
   }

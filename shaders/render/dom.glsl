@@ -21,13 +21,10 @@ float layeredOpacity(vec4 layers, float t) {
   return mix(layers.z, layers.w, min(t - 3.0, 1.0));
 }
 
-// Light reaching `worldPos` through the hair, 0..1. The four texels around the point are
-// each evaluated against their own z0 and blended bilinearly: filtering z0 itself would
-// average depths across silhouettes and light the hair behind them.
-float hairTransmittance(vec3 worldPos) {
-  if (uHeadColor.a < 0.5) return 1.0;
-  vec3 lp = (uLightViewProj * vec4(worldPos, 1.0)).xyz * 0.5 + 0.5;
-  if (any(lessThan(lp, vec3(0.0))) || any(greaterThan(lp, vec3(1.0)))) return 1.0;
+// Opacity in front of light-space point `lp` (xy in [0,1], z the light depth). The four
+// texels around the point are each evaluated against their own z0 and blended bilinearly:
+// filtering z0 itself would average depths across silhouettes and light the hair behind them.
+float deepOpacity(vec3 lp) {
   float size = uLightRange.y;
   vec2 st = lp.xy * size - 0.5;
   ivec2 base = ivec2(floor(st));
@@ -44,7 +41,31 @@ float hairTransmittance(vec3 worldPos) {
     float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
     opacity += w * a;
   }
-  return exp(-opacity);
+  return opacity;
+}
+
+bool inLightBox(vec3 lp) {
+  return all(greaterThanEqual(lp, vec3(0.0))) && all(lessThanEqual(lp, vec3(1.0)));
+}
+
+// Light reaching `worldPos` through the hair, 0..1.
+float hairTransmittance(vec3 worldPos) {
+  if (uHeadColor.a < 0.5) return 1.0;
+  vec3 lp = (uLightViewProj * vec4(worldPos, 1.0)).xyz * 0.5 + 0.5;
+  return inLightBox(lp) ? exp(-deepOpacity(lp)) : 1.0;
+}
+
+// The same over a wider footprint (four bilinear lookups 1.5 texels apart), for surfaces
+// that catch the shadow of single strands: the head. The maps draw a strand one texel
+// wide, and its shadow on a smooth surface would otherwise show the texel staircase.
+float hairTransmittanceSoft(vec3 worldPos) {
+  if (uHeadColor.a < 0.5) return 1.0;
+  vec3 lp = (uLightViewProj * vec4(worldPos, 1.0)).xyz * 0.5 + 0.5;
+  if (!inLightBox(lp)) return 1.0;
+  float d = 0.75 * uLightRange.z;
+  float opacity = deepOpacity(lp + vec3(-d, -d, 0.0)) + deepOpacity(lp + vec3(d, -d, 0.0)) +
+                  deepOpacity(lp + vec3(-d, d, 0.0)) + deepOpacity(lp + vec3(d, d, 0.0));
+  return exp(-0.25 * opacity);
 }
 
 // The head's shadow on the hair and on itself: a depth map of the spheres' back faces
@@ -52,7 +73,6 @@ float hairTransmittance(vec3 worldPos) {
 float headVisibility(vec3 worldPos) {
   if (uHeadColor.a < 0.5) return 1.0;
   vec3 lp = (uLightViewProj * vec4(worldPos, 1.0)).xyz * 0.5 + 0.5;
-  if (any(lessThan(lp, vec3(0.0))) || any(greaterThan(lp, vec3(1.0)))) return 1.0;
-  return texture(uHeadShadow, lp);
+  return inLightBox(lp) ? texture(uHeadShadow, lp) : 1.0;
 }
 #endif  // DOM_GLSL
