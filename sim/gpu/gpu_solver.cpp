@@ -176,9 +176,9 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   zeroed<uint32_t>(counters_, 4);
   zeroed<glm::uvec2>(pairs_, pairCapacity_);
   zeroed<uint32_t>(segmentContacts_, particles_);
-  auto view = [](gpu::BufferTexture& tex, const gl::Buffer& buffer, GLenum format) {
+  auto view = [](gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format) {
     if (tex.id() == 0)
-      tex = gpu::BufferTexture(buffer, format);
+      tex = gl::BufferTexture(buffer, format);
     else
       tex.attach(buffer, format);
   };

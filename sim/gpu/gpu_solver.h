@@ -20,7 +20,7 @@
 #include "render/gl/buffer.h"
 #include "render/gl/program.h"
 #include "render/gl/query.h"
-#include "sim/gpu/buffer_texture.h"
+#include "render/gl/buffer_texture.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/solver.h"
 
@@ -100,8 +100,8 @@ class GpuSolver final : public Solver {
       segmentBucket_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
       scanBlockSums_{gl::NoCreate}, unsorted_{gl::NoCreate}, sortedData_{gl::NoCreate},
       counters_{gl::NoCreate}, pairs_{gl::NoCreate}, segmentContacts_{gl::NoCreate};
-  // texelFetch views for reads that differ per invocation (see buffer_texture.h).
-  gpu::BufferTexture positionTex_{gl::NoCreate}, velocityTex_{gl::NoCreate}, restTex_{gl::NoCreate},
+  // texelFetch views for reads that differ per invocation (see render/gl/buffer_texture.h).
+  gl::BufferTexture positionTex_{gl::NoCreate}, velocityTex_{gl::NoCreate}, restTex_{gl::NoCreate},
       sortedDataTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate}, unsortedTex_{gl::NoCreate},
       predictedTex_{gl::NoCreate};
 
