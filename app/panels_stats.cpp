@@ -98,6 +98,10 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
               (unsigned long long)s.accuracy.headPenetrations, s.accuracy.maxSpeed);
   ImGui::Text("particles %zu", s.particles);
   ImGui::Text("strands simulated %zu, drawn %zu", s.strands, s.drawnStrands);
+  const GroomReport& groom = viewer.simulation().groomReport();
+  if (groom.fileStrands > 0)
+    ImGui::Text("groom file: %zu strands; resampling saved %zu of %zu points", groom.fileStrands,
+                groom.savedPoints(), groom.filePoints);
   bool vsync = viewer.vsync();
   if (ImGui::Checkbox("vsync", &vsync)) viewer.setVsync(vsync);
   ImGui::End();
