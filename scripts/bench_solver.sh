@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The GPU solver (llvmpipe where there is no GPU) against the CPU reference on the paper's two
 # scenes, then how a GPU frame grows with the strand count and with the stiffness window w.
-# Strand counts: the step alone (head collisions) to 100k strands; with hair-hair collisions
-# to 30k, because every count grows on the same scalp, so the hair gets denser and the
-# contact pass grows with the square of the count.
+# Strand counts 1k to 100k, the step alone (head collisions) and with hair-hair collisions;
+# every count grows on the same scalp, so the hair gets denser and the contact pass grows
+# faster than the count (pairs per segment grow with the density).
 # Prints a Markdown table: ms per frame (all substeps and the collision pass), split by stage.
 #   scripts/bench_solver.sh [BIN] [FRAMES]
 # FRAMES (default 4) per row; big rows run fewer. Means include the first frame, which on
@@ -36,6 +36,9 @@ print(f"| {sys.argv[2]:<30} | {dev:<9} | {m['particles']:>9} | {sys.argv[3]:>2} 
 PY
 }
 
+# The machine may be shared: the load average before and after, to judge the numbers by.
+echo "Load before: $(uptime | sed 's/.*load average: //')"
+echo
 echo "| scene                          | device    | particles | fr |  ms/frame | steps/s | integrate | shape m. | strain | grid | contacts | contact pairs |"
 echo "|--------------------------------|-----------|-----------|----|-----------|---------|----------|----------|--------|---------|----------|----------|"
 row "Fig. 1, full collisions"        gpu "$fig1" "$frames"
@@ -50,7 +53,7 @@ for strands in 1000 3000 10000 30000 100000; do
   row "Fig. 1, head only, ${strands} str." gpu "$fig1" "$n" --set collision.mode=head \
     --set hairstyle.strands=$strands
 done
-for strands in 1000 3000 30000; do
+for strands in 1000 3000 10000 30000 100000; do
   n=$frames
   [ "$strands" -ge 30000 ] && n=2
   row "Fig. 1, full, ${strands} str." gpu "$fig1" "$n" --set hairstyle.strands=$strands
@@ -59,3 +62,5 @@ for w in 1 2 4 8 15; do
   row "Fig. 1, head only, w=$w" gpu "$fig1" "$frames" --set collision.mode=head \
     --set sim.stiffness_window=$w
 done
+echo
+echo "Load after: $(uptime | sed 's/.*load average: //')"

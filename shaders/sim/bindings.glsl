@@ -3,7 +3,7 @@
 // Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
 // bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
 // (no pass here declares more) but only 8 binding points; every driver we run on has more
-// than the 21 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+// than the 22 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
@@ -21,19 +21,22 @@
 #define CSM_BIND_SPHERES 9       // vec4: world head spheres (centre, radius) per substep
 // Hair-hair collision.
 #define CSM_BIND_SEGMENT_FORCE 10  // vec4 x2 per segment: forces on its two particles
-#define CSM_BIND_SEGMENT_DATA 11   // vec4 per segment: midpoint xyz, half length w
-#define CSM_BIND_SEGMENT_BUCKET 12 // uint per segment: hash bucket of its cell
-#define CSM_BIND_GRID_COUNT 13     // uint per bucket: segments in it (back to 0 after scatter)
-#define CSM_BIND_GRID_START 14     // uint per bucket + 4: exclusive scan of the counts
+#define CSM_BIND_SEGMENT_CELLS 11  // uint per particle: cells its segment entered (0: none)
+#define CSM_BIND_SEGMENT_BASE 12   // uint per particle + 4: exclusive scan of those, where its
+                                   // cells' partial forces start
+#define CSM_BIND_GRID_COUNT 13     // uint per bucket: entries in it (back to 0 after scatter)
+#define CSM_BIND_GRID_START 14     // uint per bucket + 4: exclusive scan of the counts; entry
+                                   // `buckets` is the total the grid needed
 #define CSM_BIND_SCAN_BLOCKS 15    // uint per CSM_SCAN_LEAF buckets: block sums, then their scan
-#define CSM_BIND_UNSORTED 16       // vec4 per entry: segments scattered into their buckets
-                                   // (midpoint xyz, w the segment index, encodeIndex)
-#define CSM_BIND_SORTED_DATA 17    // vec4 per entry: the same, sorted within each bucket by
-                                   // midpoint x, then segment index
-#define CSM_BIND_COUNTERS 18       // uint[4]: longest segment (float bits), contacts,
-                                   // penetrations, recorded pairs
+#define CSM_BIND_ENTRY_HIGH 16     // uvec4 per grid entry: box upper corner (float bits), segment
+#define CSM_BIND_ENTRY_LOW 17      // uvec4 per grid entry: box lower corner (float bits), cell key
+#define CSM_BIND_COUNTERS 18       // uint[8]: entries needed, contacts, penetrations, recorded
+                                   // pairs, segments in no cell (see segmentCells)
 #define CSM_BIND_PAIRS 19          // uvec2: recorded contact pairs (tests)
 #define CSM_BIND_SEGMENT_CONTACTS 20  // uint per segment: its contacts, both sides counted
+#define CSM_BIND_PARTIAL_FORCE 21  // vec4 x2 per grid entry: forces of the segment's contacts
+                                   // owned by that cell, at its SEGMENT_BASE + cell index
+                                   // (w of the first: how many)
 
 // Texture units of buffer textures (samplerBuffer views of the buffers above), for reads
 // that differ per invocation: on llvmpipe a texel fetch is a vector gather where a storage
@@ -41,16 +44,18 @@
 #define CSM_TEX_POSITION 0
 #define CSM_TEX_VELOCITY 1
 #define CSM_TEX_REST 2
-#define CSM_TEX_SORTED_DATA 3
+#define CSM_TEX_ENTRY_LOW 3
 #define CSM_TEX_GRID_START 4
-#define CSM_TEX_UNSORTED 5
+#define CSM_TEX_ENTRY_HIGH 5
 #define CSM_TEX_PREDICTED 6
 
 // Slots of the COUNTERS buffer.
-#define CSM_COUNTER_LONGEST 0
+#define CSM_COUNTER_ENTRIES 0
 #define CSM_COUNTER_CONTACTS 1
 #define CSM_COUNTER_PENETRATIONS 2
 #define CSM_COUNTER_PAIRS 3
+#define CSM_COUNTER_OVERSIZE 4
+#define CSM_COUNTERS 8
 
 // Work group sizes.
 #define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes

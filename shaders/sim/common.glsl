@@ -10,12 +10,13 @@ struct SimParams {
   vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
   vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
   vec4 contact;    // x penalty stiffness (1/s^2), y normal damping (1/s), z friction, w frame dt
-  vec4 misc;       // x DFTL, y wind drag (1/s), z cell slack, w prefilter slack
+  vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
   ivec4 ints;      // x pinned, y stiffness window w, z rotation iterations, w head spheres
   uvec4 flags;     // x strain limiting, y head collision, z wind, w contact forces valid
   uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = do not record)
-  uvec4 grid;      // x bucket mask (buckets - 1), y P1, z P2, w unused
-  uvec4 runs[3];   // bucket offsets of the 9 (dy, dz) runs of three x-neighbouring cells
+  uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z most cells per segment
+  vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
+  vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
 };
 
 struct Substep {
@@ -109,24 +110,55 @@ float closestSegmentPoints(vec3 p0, vec3 p1, vec3 q0, vec3 q1, out float s, out 
   return dot(diff, diff);
 }
 
-// A segment index carried in a float's bits. Offset so that the pattern is a normal float
-// (indices < 2^27, the particle limit, give 2.0 .. 2^17): a GPU may flush denormals even
-// when it only moves them.
-float encodeIndex(uint i) { return uintBitsToFloat(i + 0x40000000u); }
-uint decodeIndex(float f) { return floatBitsToUint(f) - 0x40000000u; }
+// The collision grid (DESIGN.md section 1.7): cells of edge P.cells.x, at least twice the
+// contact distance and half a mean segment. Each segment is entered in every cell its box,
+// padded by P.cells.z (r and 1% for rounding), touches; a pair is tested only in the cell that
+// holds the lowest corner of the overlap of the two boxes, so it is found exactly once. Every
+// pass computes boxes and cells with these functions from the same positions, so they agree
+// to the bit (the owner cell of an overlapping pair always lies in both cell ranges).
 
-// The grid's cell edge: the longest segment plus 2r, so two segments closer than 2r have
-// midpoints in the same or neighbouring cells. The slack (a few float ulps) keeps that true
-// when the midpoints are rounded.
-float cellSize(uint longestBits) {
-  return (uintBitsToFloat(longestBits) + 2.0 * P.stepping.z) * P.misc.z;
+// Cells are counted from the head (P.origin) and clamped to -512..511 per axis (+-4.6 m with
+// Fig. 1's 9 mm cells): a cell's 30-bit key is then exact, and a far-away segment of an
+// exploding simulation shares the border cells instead of overflowing (slower, still exact:
+// the clamp is monotone, so the owner argument above holds).
+ivec3 cellOf(vec3 p) { return ivec3(clamp(floor((p - P.origin.xyz) * P.cells.y), -512.0, 511.0)); }
+
+uint cellKey(ivec3 c) {
+  uvec3 u = uvec3(c + 512);
+  return u.x | (u.y << 10u) | (u.z << 20u);
 }
 
-ivec3 cellOf(vec3 midpoint, float cell) { return ivec3(floor(midpoint / cell)); }
+void segmentBox(vec3 p0, vec3 p1, out vec3 lo, out vec3 hi) {
+  lo = min(p0, p1) - P.cells.z;
+  hi = max(p0, p1) + P.cells.z;
+}
 
-// A linear hash: x-neighbouring cells fall into consecutive buckets, so the 27 neighbours are
-// 9 runs of 3 buckets, at offsets independent of the cell (chosen on the CPU so that the 27
-// buckets are distinct). Arithmetic wraps mod 2^32, and the bucket count is a power of two.
-uint bucketOf(ivec3 c) {
-  return (uint(c.x) + uint(c.y) * P.grid.y + uint(c.z) * P.grid.z) & P.grid.x;
+// The cells of a segment's padded box, [lo, hi] per axis. False when it has none: a position
+// that is not finite (the comparison fails for NaN too), or a box over P.grid.z cells (a
+// segment stretched far beyond its rest length; see GpuSolver::gridStats). Such a segment
+// is in no cell and looks for no contacts, so the pass stays symmetric and bounded.
+bool segmentCells(vec3 p0, vec3 p1, out ivec3 lo, out ivec3 hi) {
+  lo = ivec3(0);
+  hi = ivec3(-1);
+  if (!all(lessThan(abs(p0), vec3(1e30))) || !all(lessThan(abs(p1), vec3(1e30)))) return false;
+  vec3 bl, bh;
+  segmentBox(p0, p1, bl, bh);
+  ivec3 l = cellOf(bl), h = cellOf(bh);
+  ivec3 span = h - l + 1;
+  uint most = P.grid.z;
+  if (any(greaterThan(span, ivec3(most))) || uint(span.x * span.y * span.z) > most) return false;
+  lo = l;
+  hi = h;
+  return true;
+}
+
+// Bucket of a cell key (a 32-bit integer finalizer, so that the low bits, which the
+// power-of-two mask keeps, mix all three coordinates). Several cells may share a bucket:
+// entries carry their key.
+uint bucketOf(uint key) {
+  uint h = key * 0x9e3779b1u;
+  h ^= h >> 16u;
+  h *= 0x7feb352du;
+  h ^= h >> 15u;
+  return h & P.grid.x;
 }

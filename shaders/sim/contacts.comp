@@ -1,27 +1,35 @@
 // Collision pass, contacts (DESIGN.md section 1 step 7, paper section 3.3): one invocation
-// per grid entry, in grid order, so the invocations of a SIMD group usually share a cell and
-// walk the same candidates. Each segment visits the 27 cells around its own (9 runs of 3
-// buckets; distinct buckets, see bucketOf), cut along x to the window it can reach (buckets
-// are sorted by x: a binary search in the first and last bucket of a run saves a third of
-// the candidates), tests every candidate, and sums the penalty, normal damping and
-// Coulomb-limited friction of all its contacts into its own slot: every pair is met from
-// both sides, and both sides evaluate it with the lower segment index first, so the two
-// forces are exact opposites. No float atomics: the slot is written once, and the candidates
-// come in a fixed order (runs by offset; within a bucket by x, then segment index), so the
-// sums are deterministic whatever the schedule. The particles gather from their segments'
-// slots in predict.comp. Formulas: CpuSolver::collide. Closest points: Ericson, Real-Time
+// per grid entry (a segment in one of its cells), in grid order, so the invocations of a SIMD
+// group usually share a bucket and read the same candidates (one cache line per gather; a
+// pass per segment over its own cells measured 1.9x slower on llvmpipe, its lanes reading
+// different buckets). An entry tests a candidate only when the candidate is of the same cell
+// (buckets can hold several), this cell holds the lowest corner of the overlap of the two
+// padded boxes (the owner: a pair is met once from each side, with no dedup), the boxes
+// overlap, and the pair passes the same-strand gap rule. It sums the penalty, normal damping
+// and Coulomb-limited friction of its contacts into its partial slot (the segment's base +
+// the cell's index in its box), and segment_forces.comp adds a segment's partials in cell
+// order. Every pair is met from both sides, and both sides evaluate it with the lower
+// segment index first, so the two forces are exact opposites. No float atomics. The scatter
+// leaves each bucket in the order of its atomics, so an entry sums its contacts in ascending
+// segment index (a sorted list), which makes the sums deterministic whatever the schedule:
+// sorting an entry's few contacts costs far less than sorting the ~100 entries of each bucket
+// (DESIGN.md section 1.7). Formulas: CpuSolver::collide. Closest points: Ericson, Real-Time
 // Collision Detection, 5.1.9.
 //
-// Three phases, because a SIMD lane that skips work still waits for the others (and on
-// llvmpipe a branch is only a mask: both sides always run, and a loop body runs at least
-// once), so rare work must not sit in the loop over candidates:
-//  1. every candidate of a chunk of 128: a cheap, conservative test of its midpoint against
-//     this segment (a bit per candidate that may touch);
-//  2. the chunk's flagged candidates: closest points of the two segments, contacts as bits,
-//     then appended to a per-invocation list in shared memory (a private array indexed by a
-//     per-lane count measured 40% slower on llvmpipe);
-//  3. the list: forces. Should a segment have more than kMaxContacts contacts, the scan
-//     runs again for the next ones (rounds), keeping the order.
+// Phases, because a SIMD lane that skips work still waits for the others (and on llvmpipe a
+// branch is only a mask: both sides always run, and a loop body runs at least once), so rare
+// work must not sit in the loop over candidates:
+//  1. every candidate of a chunk of 128 entries, one texel each (entryLow): same cell, owner,
+//     and half of the box overlap test (a bit per candidate that may touch);
+//  2. the flagged ones (entryHigh): the other half of the overlap, the gap rule, and segment a
+//     against b's box (a slab test);
+//  3. the remaining ones: closest points of the two segments; contacts go into a list in
+//     shared memory sorted by segment index (a private array indexed by a per-lane count
+//     measured 40% slower on llvmpipe);
+//  4. the list: forces. Should an entry have more than kMaxContacts contacts, the list keeps
+//     the lowest indices and the scan runs again for the next ones (rounds).
+// When the grid did not fit its buffers this frame (see grid_scatter.comp), no entry runs and
+// segment_forces.comp writes zero forces: the pass is skipped as a whole.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_CONTACT_GROUP) in;
@@ -29,16 +37,17 @@ layout(local_size_x = CSM_CONTACT_GROUP) in;
 layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
 layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
-layout(binding = CSM_TEX_SORTED_DATA) uniform samplerBuffer sortedTex;
+layout(binding = CSM_TEX_ENTRY_LOW) uniform usamplerBuffer entryLowTex;
+layout(binding = CSM_TEX_ENTRY_HIGH) uniform usamplerBuffer entryHighTex;
 layout(binding = CSM_TEX_GRID_START) uniform usamplerBuffer gridStartTex;
 
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
 layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
   uint particleStrand[];
 };
-layout(std430, binding = CSM_BIND_SEGMENT_FORCE) writeonly buffer SegmentForce { vec4 segForce[]; };
-layout(std430, binding = CSM_BIND_SEGMENT_CONTACTS) writeonly buffer SegmentContacts {
-  uint segContacts[];
+layout(std430, binding = CSM_BIND_SEGMENT_BASE) readonly buffer SegmentBase { uint segBase[]; };
+layout(std430, binding = CSM_BIND_PARTIAL_FORCE) writeonly buffer PartialForce {
+  vec4 partialForce[];
 };
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
 layout(std430, binding = CSM_BIND_PAIRS) writeonly buffer Pairs { uvec2 pairs[]; };
@@ -52,18 +61,16 @@ shared uint contactList[kMaxContacts * CSM_CONTACT_GROUP];  // [k * group size +
 
 vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
 
-// The first entry of [lo, hi) whose midpoint x is not below x.
-uint lowerBoundX(uint lo, uint hi, float x) {
-  while (lo < hi) {
-    uint mid = (lo + hi) >> 1u;
-    if (texelFetch(sortedTex, int(mid)).x < x) lo = mid + 1u;
-    else hi = mid;
-  }
-  return lo;
+// Index of the lowest set bit of a 128-bit mask (not zero), and clears it.
+uint popLowest(inout uvec4 mask) {
+  uint word = mask.x != 0u ? 0u : mask.y != 0u ? 1u : mask.z != 0u ? 2u : 3u;
+  uint bit = uint(findLSB(mask[word]));
+  mask[word] &= mask[word] - 1u;
+  return 32u * word + bit;
 }
 
 void main() {
-  uint j = globalIndex();
+  uint e = globalIndex();
   uint lid = gl_LocalInvocationID.x;
   if (lid == 0u) {
     groupContacts = 0u;
@@ -71,99 +78,103 @@ void main() {
   }
   barrier();
   uint pairsHere = 0u, penetrationsHere = 0u;
-  if (j < P.counts.z) {
-    vec4 me = texelFetch(sortedTex, int(j));
-    uint a = decodeIndex(me.w);
+  uint total = texelFetch(gridStartTex, int(P.grid.x + 1u)).x;
+  if (e < total && total <= P.grid.y) {
+    uvec4 meLow = texelFetch(entryLowTex, int(e)), meHigh = texelFetch(entryHighTex, int(e));
+    uint a = meHigh.w, key = meLow.w;
+    // The box as the scatter computed it (segmentBox of the same positions).
+    vec3 lowA = uintBitsToFloat(meLow.xyz), highA = uintBitsToFloat(meHigh.xyz);
+    ivec3 cell = ivec3(uvec3(key, key >> 10u, key >> 20u) & 1023u) - 512;
+    ivec3 boxLo = cellOf(lowA), span = cellOf(highA) - boxLo + 1;
+    ivec3 d = cell - boxLo;
+    uint slot = segBase[a] + uint((d.z * span.y + d.y) * span.x + d.x);
+    vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
+    // For the slab test of phase 2: axes along which a hardly moves are not tested (a
+    // conservative pass; the box test covers them).
+    bvec3 flatA = lessThan(abs(a1 - a0), vec3(1e-12));
+    vec3 invA = 1.0 / mix(a1 - a0, vec3(1.0), flatA);
     // Segments of a's own strand: [sFirst, sLast) (the gap rule).
     uint strandA = particleStrand[a];
     uint sFirst = strandFirst[strandA], sLast = strandFirst[strandA + 1u] - 1u;
-    vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
-    vec3 ad = a1 - a0;
-    float add = dot(ad, ad);
-    float invAdd = add > 0.0 ? 1.0 / add : 0.0;
-    float longest = uintBitsToFloat(counters[CSM_COUNTER_LONGEST]);
     float r = P.stepping.z;
     float twoR = 2.0 * r;
     float stiffness = P.contact.x, damping = P.contact.y, friction = P.contact.z;
     float dt = P.contact.w;
     float massA = 0.5 * (texelFetch(restTex, int(a)).w + texelFetch(restTex, int(a + 1u)).w);
-    // Phase-1 bound: a segment b within 2r of a has its midpoint within 2r + |b|/2 of a, and
-    // |b| <= the longest segment. The slack covers rounding.
-    float reach = (0.5 * longest + twoR) * P.misc.w + 1e-7;
-    float reach2 = reach * reach;
-    // Candidates' midpoints lie within reach of a's segment, so within reach + |a|/2 of its
-    // midpoint along x.
-    float window = reach + 0.5 * sqrt(add) * P.misc.w + 1e-7;
-    uint home = bucketOf(cellOf(me.xyz, cellSize(floatBitsToUint(longest))));
-    uint buckets = P.grid.x + 1u;
+    uint bucket = bucketOf(key);
+    uint lo = texelFetch(gridStartTex, int(bucket)).x;
+    uint hi = texelFetch(gridStartTex, int(bucket + 1u)).x;
 
     vec3 f0 = vec3(0.0), f1 = vec3(0.0);
     uint count = 0u;
-    uint skip = 0u;  // contacts handled by earlier rounds
+    uint from = 0u;  // this round lists contacts with segments from this index on
     bool more = true;
     while (more) {
       more = false;
-      uint seen = 0u, listed = 0u;
-      for (int run = 0; run < 9; ++run) {
-        // Buckets first, first+1, first+2 hold the cells at dx = -1, 0, +1: one range of
-        // entries, cut to the window by binary search in the outer two, unless the run wraps
-        // around the end of the table (then three).
-        uint first = (home + P.runs[run >> 2][run & 3] - 1u) & P.grid.x;
-        uint pieces = first + 3u <= buckets ? 1u : 3u;
-        for (uint piece = 0u; piece < pieces; ++piece) {
-          uint b0 = (first + piece) & P.grid.x;
-          uint b1 = pieces == 1u ? first + 2u : b0;
-          uint lo = texelFetch(gridStartTex, int(b0)).x;
-          uint hi = texelFetch(gridStartTex, int(b1 + 1u)).x;
-          if (piece == 0u) lo = lowerBoundX(lo, texelFetch(gridStartTex, int(b0 + 1u)).x, me.x - window);
-          if (piece + 1u == pieces)
-            hi = lowerBoundX(texelFetch(gridStartTex, int(b1)).x, hi, me.x + window);
-          for (uint base = lo; base < hi; base += kChunk) {
-            uint n = min(kChunk, hi - base);
-            // Phase 1: a bit per candidate that may touch.
-            uvec4 maybe = uvec4(0u);
-            for (uint c = 0u; c < n; ++c) {
-              vec3 m = texelFetch(sortedTex, int(base + c)).xyz;
-              float t = clamp(dot(m - a0, ad) * invAdd, 0.0, 1.0);
-              vec3 off = a0 + t * ad - m;
-              if (dot(off, off) < reach2) maybe[c >> 5u] |= 1u << (c & 31u);
-            }
-            // Phase 2: closest points of the flagged ones; contacts as bits again.
-            uvec4 touching = uvec4(0u);
-            while (any(notEqual(maybe, uvec4(0u)))) {
-              uint word = maybe.x != 0u ? 0u : maybe.y != 0u ? 1u : maybe.z != 0u ? 2u : 3u;
-              uint bit = uint(findLSB(maybe[word]));
-              maybe[word] &= maybe[word] - 1u;
-              uint b = decodeIndex(texelFetch(sortedTex, int(base + 32u * word + bit)).w);
-              bool sameStrandNear =
-                  b >= sFirst && b < sLast && (b > a ? b - a : a - b) <= kStrandGap;
-              vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
-              // The pair as CpuSolver sees it, lower index first. The operands are chosen
-              // before the call: under a SIMD mask both sides of a ?: would run it.
-              bool lower = a < b;
-              float s, t;
-              float d2 = closestSegmentPoints(lower ? a0 : b0, lower ? a1 : b1, lower ? b0 : a0,
-                                              lower ? b1 : a1, s, t);
-              if (b != a && !sameStrandNear && d2 < twoR * twoR) touching[word] |= 1u << bit;
-            }
-            // The chunk's contacts, in candidate order, to the list (rounds: see above).
-            while (any(notEqual(touching, uvec4(0u)))) {
-              uint word = touching.x != 0u ? 0u : touching.y != 0u ? 1u : touching.z != 0u ? 2u : 3u;
-              uint bit = uint(findLSB(touching[word]));
-              touching[word] &= touching[word] - 1u;
-              if (seen >= skip) {
-                if (listed < kMaxContacts)
-                  contactList[(listed++) * CSM_CONTACT_GROUP + lid] =
-                      decodeIndex(texelFetch(sortedTex, int(base + 32u * word + bit)).w);
-                else
-                  more = true;
-              }
-              ++seen;
-            }
+      uint listed = 0u;
+      for (uint base = lo; base < hi; base += kChunk) {
+        uint n = min(kChunk, hi - base);
+        // Phase 1.
+        uvec4 maybe = uvec4(0u);
+        for (uint c = 0u; c < n; ++c) {
+          uvec4 cand = texelFetch(entryLowTex, int(base + c));
+          vec3 lowB = uintBitsToFloat(cand.xyz);
+          if (cand.w == key && all(lessThanEqual(lowB, highA)) &&
+              cellOf(max(lowA, lowB)) == cell)
+            maybe[c >> 5u] |= 1u << (c & 31u);
+        }
+        // Phase 2.
+        uvec4 close = uvec4(0u);
+        while (any(notEqual(maybe, uvec4(0u)))) {
+          uint c = popLowest(maybe);
+          uvec4 cand = texelFetch(entryHighTex, int(base + c));
+          uint b = cand.w;
+          bool sameStrandNear =
+              b >= sFirst && b < sLast && (b > a ? b - a : a - b) <= kStrandGap;
+          vec3 highB = uintBitsToFloat(cand.xyz);
+          // Segment a against b's box padded once more (2r in all, and slack): a point of
+          // a within 2r of b lies in it, so a pair that misses it cannot touch (slab test;
+          // on Fig. 1 it keeps 56 of the 87 candidates whose boxes overlap).
+          vec3 lowB2 = uintBitsToFloat(texelFetch(entryLowTex, int(base + c)).xyz) - P.cells.z;
+          vec3 t0 = (lowB2 - a0) * invA, t1 = (highB + P.cells.z - a0) * invA;
+          vec3 tNear = mix(min(t0, t1), vec3(-1e30), flatA);
+          vec3 tFar = mix(max(t0, t1), vec3(1e30), flatA);
+          bool crosses = max(max(tNear.x, tNear.y), max(tNear.z, 0.0)) <=
+                         min(min(tFar.x, tFar.y), min(tFar.z, 1.0));
+          if (b != a && b >= from && !sameStrandNear && all(lessThanEqual(lowA, highB)) &&
+              crosses)
+            close[c >> 5u] |= 1u << (c & 31u);
+        }
+        // Phase 3.
+        while (any(notEqual(close, uvec4(0u)))) {
+          uint b = texelFetch(entryHighTex, int(base + popLowest(close))).w;
+          vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
+          // The pair as CpuSolver sees it, lower index first. The operands are chosen
+          // before the call: under a SIMD mask both sides of a ?: would run it.
+          bool lower = a < b;
+          float s, t;
+          float d2 = closestSegmentPoints(lower ? a0 : b0, lower ? a1 : b1,
+                                          lower ? b0 : a0, lower ? b1 : a1, s, t);
+          if (d2 >= twoR * twoR) continue;
+          // Into the sorted list; when it is full, the highest index waits for the
+          // next round.
+          uint last = (kMaxContacts - 1u) * CSM_CONTACT_GROUP + lid;
+          if (listed == kMaxContacts) {
+            more = true;
+            if (b > contactList[last]) continue;
+          } else {
+            ++listed;
           }
+          uint k = listed - 1u;
+          while (k > 0u && contactList[(k - 1u) * CSM_CONTACT_GROUP + lid] > b) {
+            contactList[k * CSM_CONTACT_GROUP + lid] =
+                contactList[(k - 1u) * CSM_CONTACT_GROUP + lid];
+            --k;
+          }
+          contactList[k * CSM_CONTACT_GROUP + lid] = b;
         }
       }
-      // Phase 3.
+      // Phase 4, in ascending b: the same order whatever the order of the buckets.
       for (uint k = 0u; k < listed; ++k) {
         uint b = contactList[k * CSM_CONTACT_GROUP + lid];
         vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
@@ -200,8 +211,8 @@ void main() {
           ++pairsHere;
           if (dist < r) ++penetrationsHere;
           if (P.counts.w > 0u) {
-            uint slot = atomicAdd(counters[CSM_COUNTER_PAIRS], 1u);
-            if (slot < P.counts.w) pairs[slot] = uvec2(a, b);
+            uint pairSlot = atomicAdd(counters[CSM_COUNTER_PAIRS], 1u);
+            if (pairSlot < P.counts.w) pairs[pairSlot] = uvec2(a, b);
           }
         } else {
           f0 -= (1.0 - t) * f;
@@ -209,11 +220,10 @@ void main() {
         }
         ++count;
       }
-      skip += kMaxContacts;
+      if (more) from = contactList[(kMaxContacts - 1u) * CSM_CONTACT_GROUP + lid] + 1u;
     }
-    segForce[2u * a] = vec4(f0, 0.0);
-    segForce[2u * a + 1u] = vec4(f1, 0.0);
-    segContacts[a] = count;
+    partialForce[2u * slot] = vec4(f0, float(count));
+    partialForce[2u * slot + 1u] = vec4(f1, 0.0);
   }
   if (pairsHere > 0u) atomicAdd(groupContacts, pairsHere);
   if (penetrationsHere > 0u) atomicAdd(groupPenetrations, penetrationsHere);

@@ -1,24 +1,36 @@
-// Collision pass, grid build 2/6 (counting sort: count): each segment finds its cell's
-// bucket and counts itself in. Integer atomics: the counts do not depend on the order.
+// Collision pass, grid build 1/3 (counting sort: count), one invocation per segment: the
+// segment counts itself into the bucket of every cell its padded box touches (typically 2 to
+// 12; segmentCells caps it), and notes how many (a second scan gives each segment its range
+// of partial forces). Integer atomics: the counts do not depend on the order.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
+layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
+
 layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
   uint particleStrand[];
 };
-layout(std430, binding = CSM_BIND_SEGMENT_DATA) readonly buffer SegmentData { vec4 segData[]; };
-layout(std430, binding = CSM_BIND_SEGMENT_BUCKET) writeonly buffer SegmentBucket {
-  uint segBucket[];
-};
 layout(std430, binding = CSM_BIND_GRID_COUNT) buffer GridCount { uint gridCount[]; };
-layout(std430, binding = CSM_BIND_COUNTERS) readonly buffer Counters { uint counters[]; };
+layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
+layout(std430, binding = CSM_BIND_SEGMENT_CELLS) writeonly buffer SegmentCells {
+  uint segCells[];
+};
 
 void main() {
   uint i = globalIndex();
-  if (i + 1u >= P.counts.x || particleStrand[i] != particleStrand[i + 1u]) return;
-  float cell = cellSize(counters[CSM_COUNTER_LONGEST]);
-  uint bucket = bucketOf(cellOf(segData[i].xyz, cell));
-  segBucket[i] = bucket;
-  atomicAdd(gridCount[bucket], 1u);
+  if (i >= P.counts.x) return;
+  segCells[i] = 0u;
+  if (i + 1u == P.counts.x || particleStrand[i] != particleStrand[i + 1u]) return;
+  ivec3 lo, hi;
+  if (!segmentCells(texelFetch(posTex, int(i)).xyz, texelFetch(posTex, int(i + 1u)).xyz, lo, hi)) {
+    atomicAdd(counters[CSM_COUNTER_OVERSIZE], 1u);
+    return;
+  }
+  ivec3 span = hi - lo + 1;
+  segCells[i] = uint(span.x * span.y * span.z);
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x)
+        atomicAdd(gridCount[bucketOf(cellKey(ivec3(x, y, z)))], 1u);
 }

@@ -1,26 +1,42 @@
-// Collision pass, grid build 6a (counting sort: scatter): each segment takes a slot in its
-// bucket's range, with its midpoint. Counting the bucket back down returns the counts to zero for the next
-// frame (no clear needed); the order within a bucket depends on the schedule, which the
-// rank pass (grid_rank.comp) then removes.
+// Collision pass, grid build 3/3 (counting sort: scatter), one invocation per segment: an
+// entry in each of its cells' buckets, with what the contact pass tests a candidate on, so
+// that its first test reads one texel: the box's lower corner and the cell's key (entryLow),
+// the upper corner and the segment (entryHigh). Counting each bucket back down returns the
+// counts to zero for the next frame (no clear needed), also when the entries do not fit:
+// then nothing is written past the capacity and the contact pass skips the frame
+// (GpuSolver grows the buffers when it sees the total). The order within a bucket depends on
+// the schedule; the contact pass orders each segment's contacts itself (contacts.comp).
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
+layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
+
 layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
   uint particleStrand[];
 };
-layout(std430, binding = CSM_BIND_SEGMENT_BUCKET) readonly buffer SegmentBucket {
-  uint segBucket[];
-};
 layout(std430, binding = CSM_BIND_GRID_COUNT) buffer GridCount { uint gridCount[]; };
 layout(std430, binding = CSM_BIND_GRID_START) readonly buffer GridStart { uint gridStart[]; };
-layout(std430, binding = CSM_BIND_SEGMENT_DATA) readonly buffer SegmentData { vec4 segData[]; };
-layout(std430, binding = CSM_BIND_UNSORTED) writeonly buffer Unsorted { vec4 unsorted[]; };
+layout(std430, binding = CSM_BIND_ENTRY_LOW) writeonly buffer EntryLow { uvec4 entryLow[]; };
+layout(std430, binding = CSM_BIND_ENTRY_HIGH) writeonly buffer EntryHigh { uvec4 entryHigh[]; };
 
 void main() {
   uint i = globalIndex();
   if (i + 1u >= P.counts.x || particleStrand[i] != particleStrand[i + 1u]) return;
-  uint bucket = segBucket[i];
-  uint slot = gridStart[bucket] + atomicAdd(gridCount[bucket], 0xffffffffu) - 1u;
-  unsorted[slot] = vec4(segData[i].xyz, encodeIndex(i));
+  vec3 p0 = texelFetch(posTex, int(i)).xyz, p1 = texelFetch(posTex, int(i + 1u)).xyz;
+  ivec3 lo, hi;
+  if (!segmentCells(p0, p1, lo, hi)) return;
+  vec3 low, high;
+  segmentBox(p0, p1, low, high);
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) {
+        uint key = cellKey(ivec3(x, y, z));
+        uint bucket = bucketOf(key);
+        uint slot = gridStart[bucket] + atomicAdd(gridCount[bucket], 0xffffffffu) - 1u;
+        if (slot < P.grid.y) {
+          entryLow[slot] = uvec4(floatBitsToUint(low), key);
+          entryHigh[slot] = uvec4(floatBitsToUint(high), i);
+        }
+      }
 }

@@ -1,6 +1,7 @@
-// Collision pass, grid build 5/6 (exclusive scan, level 3 of 3): each invocation rescans its
+// Collision pass, grid build 2/3 (exclusive scan, level 3 of 3): each invocation rescans its
 // block of counts from the block's offset, giving every bucket its first entry; entry
-// `count` is the total, so bucket b's entries are [gridStart[b], gridStart[b+1]).
+// `count` is the total, so bucket b's entries are [gridStart[b], gridStart[b+1]). The total
+// also goes to the counters, where GpuSolver reads it to size the entry buffers.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -8,6 +9,7 @@ layout(local_size_x = CSM_PARTICLE_GROUP) in;
 layout(std430, binding = CSM_BIND_GRID_COUNT) readonly buffer GridCount { uvec4 gridCount[]; };
 layout(std430, binding = CSM_BIND_GRID_START) writeonly buffer GridStart { uvec4 gridStart[]; };
 layout(std430, binding = CSM_BIND_SCAN_BLOCKS) readonly buffer ScanBlocks { uint blockSums[]; };
+layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
 
 uniform uint blocks;
 
@@ -23,5 +25,8 @@ void main() {
     running = start.w + c.w;
   }
   // The total after the last bucket (gridStart has one uvec4 more than the counts).
-  if (block + 1u == blocks) gridStart[first + uint(CSM_SCAN_LEAF / 4)] = uvec4(running);
+  if (block + 1u == blocks) {
+    gridStart[first + uint(CSM_SCAN_LEAF / 4)] = uvec4(running);
+    counters[CSM_COUNTER_ENTRIES] = running;
+  }
 }

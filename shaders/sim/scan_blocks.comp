@@ -1,4 +1,4 @@
-// Collision pass, grid build 3/6 (counting sort: exclusive scan, level 1 of 3). A two-level
+// Collision pass, grid build 2/3 (counting sort: exclusive scan, level 1 of 3). A two-level
 // parallel scan (reduce, scan the partial sums, then scan-and-add; Merrill & Grimshaw 2011
 // call the sequential leaves "raking"): each invocation sums a block of CSM_SCAN_LEAF
 // consecutive bucket counts; scan_sums.comp scans the block sums, scan_add.comp rescans

@@ -1,4 +1,4 @@
-// Collision pass, grid build 4/6 (exclusive scan, level 2 of 3): one work group scans the
+// Collision pass, grid build 2/3 (exclusive scan, level 2 of 3): one work group scans the
 // block sums in place with a work-efficient parallel scan in shared memory (Blelloch 1990;
 // GPU Gems 3, ch. 39), CSM_SCAN_BLOCK at a time with a running carry (one round covers
 // CSM_SCAN_BLOCK x CSM_SCAN_LEAF = 32768 buckets; 100k strands need a few), and stores the

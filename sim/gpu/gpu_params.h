@@ -17,12 +17,13 @@ struct SimParams {
   glm::vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
   glm::vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
   glm::vec4 contact;    // x penalty stiffness (1/s^2), y normal damping (1/s), z friction, w dt
-  glm::vec4 misc;       // x DFTL, y wind drag (1/s), z cell slack, w prefilter slack
+  glm::vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
   glm::ivec4 ints;      // x pinned, y stiffness window w, z rotation iterations, w head spheres
   glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w contact forces valid
   glm::uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = off)
-  glm::uvec4 grid;      // x bucket mask, y P1, z P2, w unused
-  glm::uvec4 runs[3];   // bucket offsets of the 9 (dy, dz) runs
+  glm::uvec4 grid;      // x bucket mask, y entry capacity, z most cells per segment, w unused
+  glm::vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
+  glm::vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
 };
 
 struct Substep {
@@ -31,8 +32,8 @@ struct Substep {
   glm::vec4 time;       // x time at the start, y h, z unused, w velocity kept by damping
 };
 
-static_assert(sizeof(SimParams) == 13 * 16);
-static_assert(offsetof(SimParams, runs) == 10 * 16);
+static_assert(sizeof(SimParams) == 12 * 16);
+static_assert(offsetof(SimParams, cells) == 10 * 16);
 static_assert(sizeof(Substep) == 144);
 
 }  // namespace csm::gpu

@@ -21,10 +21,17 @@ constexpr const char* kStageNames[] = {"integrate", "shape_matching", "strain_li
                                        "contacts"};
 enum Stage { kIntegrate = 0, kShapeMatching, kStrainLimiting, kGrid, kContacts };
 
-// The cell edge and the contact prefilter get a little slack over their exact bounds, so that
-// float rounding of midpoints never drops a pair closer than 2r (see contacts.comp).
-constexpr float kCellSlack = 1.0f + 1e-5f;
-constexpr float kPrefilterSlack = 1.0f + 1e-4f;
+// The grid (DESIGN.md section 1.7). Boxes are padded by r (half the contact distance) and 1%,
+// so that a pair the contact pass finds closer than 2r in float always has overlapping boxes.
+constexpr float kPadSlack = 1.01f;
+// A segment enters at most this many cells (4 x 4 x 4): a box of a strain-limited segment
+// spans at most 3 cells per axis (cells are at least half a mean segment), so only a segment
+// stretched to ~1.5 mean lengths or more misses it. Such a segment is in no cell this frame
+// (counted; see gridStats), which keeps the pass bounded when a simulation explodes.
+constexpr uint32_t kMaxSegmentCells = 64;
+// Entry buffers start at this many entries per segment (Fig. 1 needs ~7); when a frame needs
+// more, the pass skips that frame and the buffers grow (see growEntries).
+constexpr uint32_t kEntriesPerSegment = 10;
 
 // Strand lengths are rounded up to this step for MAX_N, so a regrown groom rarely recompiles.
 constexpr int kMaxNStep = 8;
@@ -49,23 +56,6 @@ void fill(gl::Buffer& buffer, const std::vector<T>& data) {
 template <class T>
 void zeroed(gl::Buffer& buffer, size_t count) {
   fill(buffer, std::vector<T>(std::max<size_t>(count, 1)));
-}
-
-// The bucket offsets of the 9 runs of three x-neighbouring cells (dy, dz in -1..1) under the
-// linear hash x + P1 y + P2 z (mod buckets): valid when the 27 buckets around any cell are
-// distinct, i.e. the runs' bases are at least 3 apart around the table. Then every bucket is
-// visited at most once, and no candidate is counted twice.
-bool runsDistinct(uint32_t p1, uint32_t p2, uint32_t buckets, uint32_t runs[9]) {
-  const uint32_t mask = buckets - 1;
-  int k = 0;
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy) runs[k++] = (uint32_t(dy) * p1 + uint32_t(dz) * p2) & mask;
-  for (int i = 0; i < 9; ++i)
-    for (int j = i + 1; j < 9; ++j) {
-      const uint32_t d = (runs[i] - runs[j]) & mask;
-      if (d < 3 || d > buckets - 3) return false;
-    }
-  return true;
 }
 
 }  // namespace
@@ -95,14 +85,13 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
   if (builtMaxN_ == 0) {
     if (!make(programs_.predict, "sim/predict.comp") ||
         !make(programs_.strainLimit, "sim/strain_limit.comp") ||
-        !make(programs_.segmentPrep, "sim/segment_prep.comp") ||
         !make(programs_.gridCount, "sim/grid_count.comp") ||
         !make(programs_.scanBlocks, "sim/scan_blocks.comp") ||
         !make(programs_.scanSums, "sim/scan_sums.comp") ||
         !make(programs_.scanAdd, "sim/scan_add.comp") ||
         !make(programs_.gridScatter, "sim/grid_scatter.comp") ||
-        !make(programs_.gridRank, "sim/grid_rank.comp") ||
-        !make(programs_.contacts, "sim/contacts.comp"))
+        !make(programs_.contacts, "sim/contacts.comp") ||
+        !make(programs_.segmentForces, "sim/segment_forces.comp"))
       return false;
   }
   if (maxN != builtMaxN_) {
@@ -143,18 +132,20 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
     gl::logMessage(gl::LogLevel::Error, error);
   }
 
-  // One bucket per segment at least (a power of two, so the hash wraps with the integers).
-  buckets_ = std::max<uint32_t>(64, std::bit_ceil(std::max<uint32_t>(segments_, 1)));
+  // Rest lengths set the cell edge (DESIGN.md section 1.7): strain limiting keeps the current
+  // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
+  double restSum = 0.0;
+  for (size_t i = 0; i + 1 < particles_; ++i)
+    if (st.particleStrand[i] == st.particleStrand[i + 1])
+      restSum += glm::length(glm::dvec3(st.rest[i + 1]) - glm::dvec3(st.rest[i]));
+  meanSegment_ = segments_ > 0 ? restSum / segments_ : 0.0;
+  // Two buckets per segment (a power of two, so the hash is masked): dense hair fills far
+  // fewer cells than that, sparse hair about as many, so few buckets hold two cells.
+  buckets_ = std::max<uint32_t>(64, std::bit_ceil(std::max<uint32_t>(2 * segments_, 1)));
   scanBlocks_ = buckets_ / CSM_SCAN_LEAF;
-  uint32_t runs[9] = {};
-  uint32_t p1 = uint32_t(double(buckets_) * 0.6180339887) | 1u;
-  uint32_t p2 = uint32_t(double(buckets_) * 0.7548776662) | 1u;
-  for (int tries = 0; !runsDistinct(p1, p2, buckets_, runs); ++tries) {
-    p1 += 2;
-    if (tries % 64 == 63) p2 += 2;
-  }
-  params_.grid = glm::uvec4(buckets_ - 1, p1, p2, 0);
-  for (int k = 0; k < 9; ++k) params_.runs[k / 4][k % 4] = runs[k];
+  // The per-segment scan (where each segment's partial forces start) runs on the same scan
+  // passes, over one count per particle.
+  segmentScan_ = std::max<uint32_t>(64, std::bit_ceil(uint32_t(particles_)));
 
   fill(rest_, st.rest);
   fill(position_, st.position);
@@ -166,28 +157,21 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   const glm::dquat q = head.rotation;
   fill(rotation_, std::vector<glm::vec4>(particles_, glm::vec4(q.x, q.y, q.z, q.w)));
   zeroed<glm::vec4>(segmentForce_, 2 * particles_);
-  zeroed<glm::vec4>(segmentData_, particles_);
-  zeroed<uint32_t>(segmentBucket_, particles_);
   zeroed<uint32_t>(gridCount_, buckets_);
   zeroed<uint32_t>(gridStart_, buckets_ + 4);  // + the total, as a uvec4
   zeroed<uint32_t>(scanBlockSums_, scanBlocks_ + 1);
-  zeroed<glm::vec4>(unsorted_, segments_);
-  zeroed<glm::vec4>(sortedData_, segments_);
-  zeroed<uint32_t>(counters_, 4);
+  zeroed<uint32_t>(counters_, CSM_COUNTERS);
+  zeroed<uint32_t>(segmentCells_, segmentScan_);
+  zeroed<uint32_t>(segmentBase_, segmentScan_ + 4);
+  zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
   zeroed<glm::uvec2>(pairs_, pairCapacity_);
   zeroed<uint32_t>(segmentContacts_, particles_);
-  auto view = [](gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format) {
-    if (tex.id() == 0)
-      tex = gl::BufferTexture(buffer, format);
-    else
-      tex.attach(buffer, format);
-  };
+  entryCapacity_ = 0;
+  growEntries(std::max<uint64_t>(1, uint64_t(segments_) * kEntriesPerSegment));
   view(positionTex_, position_, GL_RGBA32F);
   view(velocityTex_, velocity_, GL_RGBA32F);
   view(restTex_, rest_, GL_RGBA32F);
-  view(sortedDataTex_, sortedData_, GL_RGBA32F);
   view(gridStartTex_, gridStart_, GL_R32UI);
-  view(unsortedTex_, unsorted_, GL_RGBA32F);
   view(predictedTex_, predicted_, GL_RGBA32F);
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
@@ -197,6 +181,38 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   contactStats_ = ContactStats{};
   for (FrameTimers& f : timers_) f.issued = false;
   lastStages_.clear();
+}
+
+void GpuSolver::view(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format) {
+  if (tex.id() == 0)
+    tex = gl::BufferTexture(buffer, format);
+  else
+    tex.attach(buffer, format);
+}
+
+void GpuSolver::growEntries(uint64_t needed) {
+  // A quarter more than asked, so a growing tangle does not reallocate every frame; never
+  // beyond what a 32-bit index and one buffer can hold.
+  const uint64_t limit = uint64_t(1) << 27;  // 2 GiB of 16-byte entries
+  const uint64_t want = std::min(limit, needed + needed / 4);
+  if (want <= entryCapacity_) return;
+  entryCapacity_ = uint32_t(want);
+  zeroed<glm::uvec4>(entryLow_, entryCapacity_);
+  zeroed<glm::uvec4>(entryHigh_, entryCapacity_);
+  zeroed<glm::vec4>(partialForce_, 2 * size_t(entryCapacity_));
+  view(entryLowTex_, entryLow_, GL_RGBA32UI);
+  view(entryHighTex_, entryHigh_, GL_RGBA32UI);
+}
+
+GpuSolver::GridStats GpuSolver::gridStats() {
+  const std::vector<uint32_t> c = counters_.download<uint32_t>(CSM_COUNTERS);
+  GridStats g;
+  g.entries = c[CSM_COUNTER_ENTRIES];
+  g.capacity = entryCapacity_;
+  g.oversize = c[CSM_COUNTER_OVERSIZE];
+  g.buckets = buckets_;
+  g.cell = params_.cells.x;
+  return g;
 }
 
 void GpuSolver::setPairCapacity(size_t capacity) {
@@ -215,12 +231,21 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.windShape = glm::vec4(wind.gusts, wind.gustFrequency, wind.turbulence, wind.turbulenceScale);
   p.stepping = glm::vec4(sim.stiffness, sim.strainLimit, col.radius, col.headFriction);
   p.contact = glm::vec4(col.stiffness, col.damping, col.friction, sim.dt);
-  p.misc = glm::vec4(sim.dftl, wind.drag, kCellSlack, kPrefilterSlack);
+  p.misc = glm::vec4(sim.dftl, wind.drag, 0.0f, 0.0f);
   p.ints = glm::ivec4(sim.pinned, sim.stiffnessWindow, sim.rotationIterations,
                       int(config_.head.spheres.size()));
   const bool windOn = wind.strength > 0.0f && wind.drag > 0.0f;
   p.flags = glm::uvec4(sim.strainLimiting, col.mode != CollisionMode::Off, windOn, forcesValid_);
   p.counts = glm::uvec4(particles_, strands_, segments_, pairCapacity_);
+  p.grid = glm::uvec4(buckets_ - 1, entryCapacity_, kMaxSegmentCells, 0);
+  // Cells of at least twice the contact distance and half a mean segment, as the CPU
+  // reference (findContactsGrid): a segment then enters ~2-12 cells, and a cell holds about a
+  // sixteenth of what a cell as long as a segment holds.
+  const double cell = std::max({4.0 * double(col.radius), 0.5 * meanSegment_, 1e-6});
+  p.cells = glm::vec4(float(cell), float(1.0 / cell), col.radius * kPadSlack + 1e-7f, 0.0f);
+  // Cells count from the head, so the clamped 10-bit cell coordinates (common.glsl) cover
+  // +-512 cells around it wherever it moves.
+  p.origin = glm::vec4(glm::vec3(poses.back().translation), 0.0f);
 
   const int substeps = int(poses.size());
   const double h = double(sim.dt) / substeps;
@@ -261,22 +286,23 @@ void GpuSolver::bindAll() {
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
   spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
   segmentForce_.bindBase(ssbo, CSM_BIND_SEGMENT_FORCE);
-  segmentData_.bindBase(ssbo, CSM_BIND_SEGMENT_DATA);
-  segmentBucket_.bindBase(ssbo, CSM_BIND_SEGMENT_BUCKET);
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
-  unsorted_.bindBase(ssbo, CSM_BIND_UNSORTED);
-  sortedData_.bindBase(ssbo, CSM_BIND_SORTED_DATA);
+  entryHigh_.bindBase(ssbo, CSM_BIND_ENTRY_HIGH);
+  entryLow_.bindBase(ssbo, CSM_BIND_ENTRY_LOW);
   counters_.bindBase(ssbo, CSM_BIND_COUNTERS);
   pairs_.bindBase(ssbo, CSM_BIND_PAIRS);
   segmentContacts_.bindBase(ssbo, CSM_BIND_SEGMENT_CONTACTS);
+  segmentCells_.bindBase(ssbo, CSM_BIND_SEGMENT_CELLS);
+  segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
+  partialForce_.bindBase(ssbo, CSM_BIND_PARTIAL_FORCE);
   positionTex_.bind(CSM_TEX_POSITION);
   velocityTex_.bind(CSM_TEX_VELOCITY);
   restTex_.bind(CSM_TEX_REST);
-  sortedDataTex_.bind(CSM_TEX_SORTED_DATA);
+  entryLowTex_.bind(CSM_TEX_ENTRY_LOW);
   gridStartTex_.bind(CSM_TEX_GRID_START);
-  unsortedTex_.bind(CSM_TEX_UNSORTED);
+  entryHighTex_.bind(CSM_TEX_ENTRY_HIGH);
   predictedTex_.bind(CSM_TEX_PREDICTED);
 }
 
@@ -380,6 +406,15 @@ void GpuSolver::detectContacts() {
   bindAll();
   beginTimerFrame();
   collide();
+  // A tool asks for this pass's contacts: when the grid did not fit, grow it and run again
+  // (stepFrame instead grows it when contactStats() sees the total).
+  const uint32_t needed = counters_.download<uint32_t>(1)[CSM_COUNTER_ENTRIES];
+  if (needed > entryCapacity_) {
+    growEntries(needed);
+    writeParams({head_}, {head_});
+    bindAll();
+    collide();
+  }
   endStage();
   timers_[timerFrame_].issued = true;
   forcesValid_ = true;
@@ -394,27 +429,40 @@ void GpuSolver::collide() {
   }
   timeStage(kGrid);
   counters_.clearToZero();
-  dispatchItems(programs_.segmentPrep, uint32_t(strands_), CSM_STRAND_GROUP);
-  gl::memoryBarrier(kPassBarrier);
   dispatchItems(programs_.gridCount, uint32_t(particles_), CSM_PARTICLE_GROUP);
   gl::memoryBarrier(kPassBarrier);
-  // Counting sort, exclusive scan of the bucket counts: block sums, their scan, each block
-  // rescanned from its offset.
-  programs_.scanBlocks.setUniform("blocks", scanBlocks_);
-  dispatchItems(programs_.scanBlocks, scanBlocks_, CSM_PARTICLE_GROUP);
-  gl::memoryBarrier(kPassBarrier);
-  programs_.scanSums.setUniform("count", scanBlocks_);
-  programs_.scanSums.dispatch(1);
-  gl::memoryBarrier(kPassBarrier);
-  programs_.scanAdd.setUniform("blocks", scanBlocks_);
-  dispatchItems(programs_.scanAdd, scanBlocks_, CSM_PARTICLE_GROUP);
-  gl::memoryBarrier(kPassBarrier);
+  // Counting sort, exclusive scan of the bucket counts; then the same scan over the
+  // segments' cell counts, its buffers bound in the grid's place for the while.
+  scan(scanBlocks_);
+  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
+  segmentCells_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
+  segmentBase_.bindBase(ssbo, CSM_BIND_GRID_START);
+  segmentScanBlocks_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
+  scan(segmentScan_ / CSM_SCAN_LEAF);
+  gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
+  gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
+  scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
   dispatchItems(programs_.gridScatter, uint32_t(particles_), CSM_PARTICLE_GROUP);
   gl::memoryBarrier(kPassBarrier);
-  dispatchItems(programs_.gridRank, segments_, CSM_PARTICLE_GROUP);
-  gl::memoryBarrier(kPassBarrier);
   timeStage(kContacts);
-  dispatchItems(programs_.contacts, segments_, CSM_CONTACT_GROUP);
+  // One invocation per entry slot: how many are used is known on the GPU only (no read-back
+  // inside a frame); the others return at once.
+  dispatchItems(programs_.contacts, entryCapacity_, CSM_CONTACT_GROUP);
+  gl::memoryBarrier(kPassBarrier);
+  dispatchItems(programs_.segmentForces, uint32_t(particles_), CSM_PARTICLE_GROUP);
+  gl::memoryBarrier(kPassBarrier);
+}
+
+void GpuSolver::scan(uint32_t blocks) {
+  // Block sums, their scan, each block rescanned from its offset (scan_*.comp).
+  programs_.scanBlocks.setUniform("blocks", blocks);
+  dispatchItems(programs_.scanBlocks, blocks, CSM_PARTICLE_GROUP);
+  gl::memoryBarrier(kPassBarrier);
+  programs_.scanSums.setUniform("count", blocks);
+  programs_.scanSums.dispatch(1);
+  gl::memoryBarrier(kPassBarrier);
+  programs_.scanAdd.setUniform("blocks", blocks);
+  dispatchItems(programs_.scanAdd, blocks, CSM_PARTICLE_GROUP);
   gl::memoryBarrier(kPassBarrier);
 }
 
@@ -453,8 +501,10 @@ std::vector<StageTime> GpuSolver::stageTimes() {
 
 ContactStats GpuSolver::contactStats() {
   if (!contactStats_) {
-    const std::vector<uint32_t> c = counters_.download<uint32_t>(4);
+    const std::vector<uint32_t> c = counters_.download<uint32_t>(CSM_COUNTERS);
     contactStats_ = ContactStats{c[CSM_COUNTER_CONTACTS], c[CSM_COUNTER_PENETRATIONS]};
+    // The grid did not fit this frame (it applied no hair-hair forces): room for next frame.
+    if (c[CSM_COUNTER_ENTRIES] > entryCapacity_) growEntries(c[CSM_COUNTER_ENTRIES]);
   }
   return *contactStats_;
 }

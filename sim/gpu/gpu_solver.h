@@ -4,9 +4,10 @@
 //
 // Per step (substep): predict.comp (per particle), shape_match.comp (per strand: region
 // sums, rotations, goals, integration), strain_limit.comp (per strand). Per frame, when
-// collision.mode is full: the hash grid by counting sort (segment_prep, grid_count, a
-// three-level parallel scan, grid_scatter, grid_rank) and contacts.comp, whose per-segment
-// forces the next frame's predict passes gather. 3 dispatches per step + 8 per frame.
+// collision.mode is full: the hash grid by counting sort (grid_count, a three-level parallel
+// scan of the buckets and one of the segments, grid_scatter; DESIGN.md section 1.7),
+// contacts.comp per grid entry and segment_forces.comp, whose per-segment forces the next
+// frame's predict passes gather. 3 dispatches per step + 11 per frame.
 #pragma once
 
 #include <array>
@@ -62,6 +63,14 @@ class GpuSolver final : public Solver {
   std::vector<uint32_t> readSegmentContactCounts();
   // Hash table size of the grid (a power of two).
   uint32_t bucketCount() const { return buckets_; }
+  // The grid of the last collision pass (reads back): entries it needed, entries the buffers
+  // hold (over it, the pass applied no forces), segments in no cell (not finite, or a box
+  // over the cell cap), and the cell edge in metres.
+  struct GridStats {
+    uint32_t entries = 0, capacity = 0, oversize = 0, buckets = 0;
+    float cell = 0.0f;
+  };
+  GridStats gridStats();
 
  private:
   GpuSolver() = default;
@@ -69,6 +78,9 @@ class GpuSolver final : public Solver {
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
   void collide();
+  void growEntries(uint64_t needed);
+  void scan(uint32_t blocks);
+  static void view(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format);
   void dispatchItems(const gl::Program& program, uint32_t items, uint32_t groupSize);
   void timeStage(int stage);
   void endStage();
@@ -80,6 +92,9 @@ class GpuSolver final : public Solver {
   size_t particles_ = 0, strands_ = 0;
   uint32_t segments_ = 0;
   uint32_t buckets_ = 0, scanBlocks_ = 0;
+  uint32_t segmentScan_ = 0;    // counts in the per-segment scan (a power of two)
+  uint32_t entryCapacity_ = 0;  // grid entries the entry buffers hold
+  double meanSegment_ = 0.0;    // mean rest length of a segment (m)
   size_t pairCapacity_ = 0;
   bool forcesValid_ = false;
   bool collidedThisFrame_ = false;
@@ -88,21 +103,22 @@ class GpuSolver final : public Solver {
 
   struct Programs {
     gl::Program predict{gl::NoCreate}, shapeMatch{gl::NoCreate}, strainLimit{gl::NoCreate};
-    gl::Program segmentPrep{gl::NoCreate}, gridCount{gl::NoCreate}, scanBlocks{gl::NoCreate},
-        scanSums{gl::NoCreate}, scanAdd{gl::NoCreate}, gridScatter{gl::NoCreate},
-        gridRank{gl::NoCreate}, contacts{gl::NoCreate};
+    gl::Program gridCount{gl::NoCreate}, scanBlocks{gl::NoCreate}, scanSums{gl::NoCreate},
+        scanAdd{gl::NoCreate}, gridScatter{gl::NoCreate}, contacts{gl::NoCreate},
+        segmentForces{gl::NoCreate};
   } programs_;
 
   gl::Buffer rest_{gl::NoCreate}, position_{gl::NoCreate}, velocity_{gl::NoCreate},
       strandFirst_{gl::NoCreate}, particleStrand_{gl::NoCreate}, predicted_{gl::NoCreate},
       rotation_{gl::NoCreate}, strandOrder_{gl::NoCreate}, paramsBuffer_{gl::NoCreate},
-      spheres_{gl::NoCreate}, segmentForce_{gl::NoCreate}, segmentData_{gl::NoCreate},
-      segmentBucket_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
-      scanBlockSums_{gl::NoCreate}, unsorted_{gl::NoCreate}, sortedData_{gl::NoCreate},
-      counters_{gl::NoCreate}, pairs_{gl::NoCreate}, segmentContacts_{gl::NoCreate};
+      spheres_{gl::NoCreate}, segmentForce_{gl::NoCreate}, gridCount_{gl::NoCreate},
+      gridStart_{gl::NoCreate}, scanBlockSums_{gl::NoCreate}, entryLow_{gl::NoCreate},
+      entryHigh_{gl::NoCreate}, counters_{gl::NoCreate}, pairs_{gl::NoCreate},
+      segmentContacts_{gl::NoCreate}, segmentCells_{gl::NoCreate}, segmentBase_{gl::NoCreate},
+      segmentScanBlocks_{gl::NoCreate}, partialForce_{gl::NoCreate};
   // texelFetch views for reads that differ per invocation (see render/gl/buffer_texture.h).
   gl::BufferTexture positionTex_{gl::NoCreate}, velocityTex_{gl::NoCreate}, restTex_{gl::NoCreate},
-      sortedDataTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate}, unsortedTex_{gl::NoCreate},
+      entryLowTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate}, entryHighTex_{gl::NoCreate},
       predictedTex_{gl::NoCreate};
 
   // GPU time per stage: one GL_TIME_ELAPSED query around each dispatch group, for the last

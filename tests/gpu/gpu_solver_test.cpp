@@ -299,7 +299,8 @@ TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][so
   CHECK(offset("P.flags") == offsetof(SimParams, flags));
   CHECK(offset("P.counts") == offsetof(SimParams, counts));
   CHECK(offset("P.grid") == offsetof(SimParams, grid));
-  CHECK(offset("P.runs[0]") == offsetof(SimParams, runs));
+  CHECK(offset("P.cells") == offsetof(SimParams, cells));
+  CHECK(offset("P.origin") == offsetof(SimParams, origin));
   CHECK(offset("S[0].head") == sizeof(SimParams) + offsetof(Substep, head));
   CHECK(offset("S[0].headDelta") == sizeof(SimParams) + offsetof(Substep, headDelta));
   CHECK(offset("S[0].time") == sizeof(SimParams) + offsetof(Substep, time));
