@@ -2,6 +2,7 @@
 // there is no GPU): the hash grid finds exactly the pairs brute force finds, and collisions
 // keep strands apart.
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <random>
 #include <set>
@@ -201,4 +202,95 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
   CHECK(with * 2 < without);
   CHECK(off.contacts == 0);
   CHECK(on.contacts > 0);
+}
+
+TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers degrade safely",
+          "[gpu][collision]") {
+  // An exploding strand: one segment 2 m long spans far more than the 64-cell cap, so it is
+  // in no cell (counted) and finds no contacts; every other pair is still found exactly.
+  // Long diagonal segments between short ones (cells follow the mean length) need more
+  // entries than the buffers start with: the test hook grows them and runs again.
+  test::glContext();
+  std::string error;
+  auto gpu = GpuSolver::create(&error);
+  REQUIRE(gpu);
+  Groom g;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-0.03f, 0.03f), d(-1.0f, 1.0f);
+  for (int s = 0; s < 300; ++s) {
+    std::vector<glm::vec3> points;
+    glm::vec3 p(u(rng), u(rng), u(rng));
+    for (int i = 0; i < 8; ++i) {
+      points.push_back(p);
+      p += i % 2 == 0 ? glm::vec3(d(rng) < 0 ? -1 : 1, 1, d(rng) < 0 ? -1 : 1) * 0.0115f
+                      : glm::vec3(d(rng), d(rng), d(rng)) * 0.001f;
+    }
+    g.addStrand(points);
+  }
+  const uint32_t longFirst = uint32_t(g.pointCount());
+  g.addStrand(
+      {glm::vec3(-1.0f, 0.0f, 0.0f), glm::vec3(1.0f, 0.01f, 0.01f), glm::vec3(1.0f, 0.03f, 0.01f)});
+  const double r = 0.0005;
+  Config c;
+  c.collision.mode = CollisionMode::Full;
+  c.collision.radius = float(r);
+  gpu->setPairCapacity(200000);
+  gpu->reset(g, c, Pose{});
+  gpu->detectContacts();
+  const GpuSolver::GridStats grid = gpu->gridStats();
+  INFO("entries " << grid.entries << " capacity " << grid.capacity << " oversize " << grid.oversize
+                  << " cell " << grid.cell);
+  CHECK(grid.oversize == 1);
+  CHECK(grid.entries <= grid.capacity);
+  CHECK(grid.entries > 2100 * 10);  // more than the 10 per segment it started with
+
+  std::vector<glm::vec4> x;
+  gpu->readPositions(x);
+  const auto brute = findContactsBruteForce(toDouble(x), strandOf(g), 2.0 * r);
+  std::set<std::pair<uint32_t, uint32_t>> expected;
+  for (const SegmentPair& p : brute)
+    if (p.a != longFirst && p.b != longFirst && std::abs(p.distance - 2.0 * r) > 2e-5 * r)
+      expected.insert({p.a, p.b});
+  size_t missing = 0, extra = 0;
+  std::set<std::pair<uint32_t, uint32_t>> found;
+  for (const auto& p : gpu->readContactPairs()) {
+    found.insert(p);
+    CHECK(p.first != longFirst);
+    CHECK(p.second != longFirst);
+  }
+  for (const auto& p : expected) missing += found.count(p) ? 0 : 1;
+  for (const auto& p : found) {
+    const bool borderline = std::any_of(brute.begin(), brute.end(), [&](const SegmentPair& q) {
+      return q.a == p.first && q.b == p.second && std::abs(q.distance - 2.0 * r) <= 2e-5 * r;
+    });
+    if (!expected.count(p) && !borderline) ++extra;
+  }
+  CHECK(expected.size() > 50);
+  CHECK(missing == 0);
+  CHECK(extra == 0);
+
+  // The buffers hold what this groom needs, so stepping finds the contacts with no growth.
+  const uint32_t capacity = grid.capacity;
+  gpu->stepFrame(Pose{}, Pose{});
+  CHECK(gpu->contactStats().contacts > 0);
+  CHECK(gpu->gridStats().capacity == capacity);
+}
+
+TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision]") {
+  test::glContext();
+  std::string error;
+  auto gpu = GpuSolver::create(&error);
+  REQUIRE(gpu);
+  Groom g = tangle(200, 0.004, 5);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  g.addStrand({glm::vec3(0.0f), glm::vec3(nan, 0.0f, 0.0f), glm::vec3(0.0f, 1e35f, 0.0f)});
+  Config c;
+  c.collision.mode = CollisionMode::Full;
+  c.collision.radius = 0.002f;
+  gpu->setPairCapacity(100000);
+  gpu->reset(g, c, Pose{});
+  gpu->detectContacts();
+  CHECK(gpu->gridStats().oversize == 2);  // both segments of the broken strand
+  CHECK(gpu->contactStats().contacts > 0);
+  CHECK(gpu->contactStats().contacts == gpu->readContactPairs().size());
 }
