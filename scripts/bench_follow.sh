@@ -24,8 +24,8 @@ common=(--headless --quiet --solver "$solver" --frames "$frames" --every "$frame
   --set hairstyle.follow_count=9 --out "$tmp/follow" --metrics "$tmp/follow.json"
 
 mkdir -p "$root/docs/images"
-cp "$tmp/all/frame_$(printf %05d "$frames").png" "$root/docs/images/follow_all_simulated.png"
-cp "$tmp/follow/frame_$(printf %05d "$frames").png" "$root/docs/images/follow_guides.png"
+cp "$(ls "$tmp"/all/frame_*.png | tail -n 1)" "$root/docs/images/follow_all_simulated.png"
+cp "$(ls "$tmp"/follow/frame_*.png | tail -n 1)" "$root/docs/images/follow_guides.png"
 python3 - "$tmp/all.json" "$tmp/follow.json" <<'PY'
 import json, sys
 rows = [("50,000 simulated", json.load(open(sys.argv[1]))),
