@@ -205,8 +205,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
           {"resample_saved_particles", sim.groomReport().savedPoints()}}},
         // Where the solver ran: the GL renderer string for the GPU solver (e.g. "llvmpipe
         // (LLVM 15.0.6, 256 bits)" or "NVIDIA H100 80GB HBM3/PCIe/SSE2").
-        {"device",
-         options.solver == "gpu" && context ? context->renderer() : std::string("cpu")},
+        {"device", options.solver == "gpu" && context ? context->renderer() : std::string("cpu")},
     };
     if (renderer) {
       meta["drawn_strands"] = drawnStrandCount(sim.solver().strandCount(), c);

@@ -73,7 +73,7 @@ struct SimConfig {
 
 struct CollisionConfig {
   CollisionMode mode = CollisionMode::Full;
-  float radius = 0.001f;      // hair radius, metres
+  float radius = 0.001f;  // hair radius, metres
   // Penalty forces act one frame late and sum over a segment's contacts: strong normal
   // damping then overshoots and flings strands out of dense hair (20/s reached 16 m/s on the
   // Fig. 1 scene, 5/s stays under 3 m/s).

@@ -48,7 +48,8 @@ Stats hairStats(const test::Image& img, const std::vector<bool>& mask) {
 
 }  // namespace
 
-TEST_CASE("Render: a Fig. 1 frame shows hair over a plausible share and is not flat", "[render][image]") {
+TEST_CASE("Render: a Fig. 1 frame shows hair over a plausible share and is not flat",
+          "[render][image]") {
   test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 3000));
   const test::Image hair = scene.render(640, 360);
   CHECK(scene.renderer().drawnStrands() == 3000);
