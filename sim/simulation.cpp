@@ -17,6 +17,12 @@ std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error) 
 }
 
 bool Simulation::load(const Config& config, const std::string& baseDir, std::string* error) {
+  if (!regrow(config, baseDir, error)) return false;
+  reset();
+  return true;
+}
+
+bool Simulation::regrow(const Config& config, const std::string& baseDir, std::string* error) {
   std::string capacity = checkCapacity(config);
   if (!capacity.empty()) {
     if (error) *error = capacity;
@@ -30,7 +36,6 @@ bool Simulation::load(const Config& config, const std::string& baseDir, std::str
   baseDir_ = baseDir;
   groom_ = std::move(groom);
   ++generation_;
-  reset();
   return true;
 }
 
@@ -40,11 +45,7 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     if (p.effect == Effect::Rebuild && !sameValue(p, config_, config)) rebuild = true;
   if (rebuild) {
     // Keep the clock and the camera: only the hair starts again from rest.
-    const double t = time_;
-    const long frame = frame_;
-    if (!load(config, baseDir_, error)) return false;
-    time_ = t;
-    frame_ = frame;
+    if (!regrow(config, baseDir_, error)) return false;
     lastPose_ = headPoseAt(time_);
     solver_->reset(groom_, config_, lastPose_);
     return true;

@@ -48,6 +48,9 @@ class Simulation {
   long generation() const { return generation_; }
 
  private:
+  // Grows the groom for `config` and keeps it; the solver is not touched.
+  bool regrow(const Config& config, const std::string& baseDir, std::string* error);
+
   std::unique_ptr<Solver> solver_;
   Config config_;
   std::string baseDir_;

@@ -126,9 +126,13 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   }
 }
 
-void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
+void CpuSolver::clearStages() {
   stages_ = {
       {"integrate", 0.0}, {"shape_matching", 0.0}, {"strain_limiting", 0.0}, {"contacts", 0.0}};
+}
+
+void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
+  clearStages();
   const int substeps = std::max(1, config_.sim.substeps);
   const double h = double(config_.sim.dt) / substeps;
   for (int k = 0; k < substeps; ++k) step(h, interpolate(from, to, double(k + 1) / substeps));
@@ -143,13 +147,11 @@ void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
 }
 
 void CpuSolver::step(double h, const Pose& head) {
-  if (stages_.size() < 4)
-    stages_ = {
-        {"integrate", 0.0}, {"shape_matching", 0.0}, {"strain_limiting", 0.0}, {"contacts", 0.0}};
+  if (stages_.size() < 4) clearStages();  // a single step called directly
   const Pose before = head_;
   const std::vector<Sphere> spheres = worldSpheres(config_.head.spheres, head);
   auto t0 = Clock::now();
-  predict(h, spheres, head);
+  predict(h, head);
   stages_[0].ms += msSince(t0);
   t0 = Clock::now();
   shapeMatch();
@@ -164,7 +166,7 @@ void CpuSolver::step(double h, const Pose& head) {
   head_ = head;
 }
 
-void CpuSolver::predict(double h, const std::vector<Sphere>&, const Pose& head) {
+void CpuSolver::predict(double h, const Pose& head) {
   const SimConfig& sim = config_.sim;
   const glm::dvec3 gravity(sim.gravity);
   const bool wind = config_.wind.strength > 0.0f && config_.wind.drag > 0.0f;

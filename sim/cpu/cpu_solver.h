@@ -52,7 +52,8 @@ class CpuSolver final : public Solver {
   double restLength(size_t i) const { return restLength_[i]; }
 
  private:
-  void predict(double h, const std::vector<Sphere>& spheres, const Pose& head);
+  void clearStages();
+  void predict(double h, const Pose& head);
   void shapeMatch();
   void integrate(double h);
   void limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
