@@ -19,6 +19,12 @@ struct Sphere {
 
 enum class CollisionMode : int { Off = 0, Head = 1, Full = 2 };
 enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
+// How stiffness is given (sim/stiffness.h). Paper: a window in particles and alpha = the pull
+// toward the goals per step, as the paper does; the hair gets stiffer with more substeps and
+// softer with more particles. Calibrated: a window in metres and a bending stiffness per unit
+// mass; each step pulls by alpha = min(1, k h^2), so the hair is the same at any step size,
+// resolution and density.
+enum class StiffnessModel : int { Paper = 0, Calibrated = 1 };
 
 struct HairstyleConfig {
   std::string file;  // a groom file (.hair, .tfx); empty = the generator below
@@ -58,13 +64,25 @@ struct HeadConfig {
 
 struct SimConfig {
   float dt = 1.0f / 60.0f;  // simulated seconds per frame
-  int substeps = 4;
-  int stiffnessWindow = 2;    // w: region of particle k is [k-w, k+w]
-  float stiffness = 1.0f;     // alpha: pull towards the goals, 1 = the paper
-  float damping = 1.0f;       // 1/s, linear velocity damping
+  int substeps = 4;         // paper: steps per frame; calibrated: the fewest steps per frame
+  int maxSubsteps = 64;     // calibrated: the most steps per frame the stiffness may ask for
+  StiffnessModel stiffnessModel = StiffnessModel::Calibrated;
+  // Calibrated: the region of particle k holds the particles within windowLength of rest arc
+  // length of it (at least its neighbours), and bendingStiffness is EI over the linear density
+  // (m^4/s^2). The default is the paper model's w = 2, alpha = 1 at 2 cm segments and 4 steps
+  // of 1/240 s.
+  float windowLength = 0.04f;        // m
+  float bendingStiffness = 6.6e-3f;  // m^4/s^2
+  // Calibrated: the scalp holds the particles within rootLength of rest arc length of the root
+  // (at least `pinned` of them), so the held piece does not shrink with more particles.
+  float rootLength = 0.02f;  // m
+  // Paper: region of particle k is [k-w, k+w]; alpha the pull towards the goals per step.
+  int stiffnessWindow = 2;
+  float stiffness = 1.0f;
+  float damping = 1.0f;       // 1/s, linear velocity damping: v *= exp(-damping h) per step
   float strainLimit = 0.05f;  // epsilon: longest allowed stretch of a segment
   bool strainLimiting = true;
-  int pinned = 2;  // particles from the root that follow the head
+  int pinned = 2;  // particles from the root that follow the head (calibrated: at least)
   glm::vec3 gravity{0.0f, -9.81f, 0.0f};
   float density = 1.0e-4f;     // kg per metre of strand
   float dftl = 0.0f;           // dynamic follow-the-leader velocity correction, 0..1
@@ -80,7 +98,7 @@ struct CollisionConfig {
   float stiffness = 4000.0f;  // penalty, acceleration per metre of overlap (1/s^2)
   float damping = 5.0f;       // normal damping, 1/s
   float friction = 0.3f;      // hair-hair tangential damping, 0..1
-  float headFriction = 0.3f;  // head tangential friction, 0..1
+  float headFriction = 0.3f;  // Coulomb friction coefficient against the head
 };
 
 struct WindConfig {
@@ -90,7 +108,7 @@ struct WindConfig {
   float gustFrequency = 0.4f;    // Hz
   float turbulence = 0.3f;       // relative amplitude of spatial turbulence
   float turbulenceScale = 0.1f;  // metres
-  float drag = 2.0f;             // 1/s: acceleration per m/s of perpendicular relative wind
+  float drag = 2.0f;  // 1/s: acceleration per m/s of perpendicular relative wind (implicit)
 };
 
 struct RenderConfig {

@@ -122,6 +122,30 @@ int pinnedForLength(double clampLength, double segmentLength) {
   return std::max(2, 1 + int(std::lround(clampLength / segmentLength)));
 }
 
+Scene cantileverScene(int particles, double length, int strands) {
+  Scene s;
+  for (int k = 0; k < strands; ++k) {
+    // Strands fan out around the vertical so that several can share one scene.
+    const double a = 2.0 * M_PI * k / std::max(1, strands);
+    const glm::dvec3 dir(std::cos(a), 0.0, std::sin(a));
+    const glm::dvec3 root = 0.002 * double(k / 64) * glm::dvec3(0, 1, 0);
+    std::vector<glm::vec3> pts;
+    for (int i = 0; i < particles; ++i)
+      pts.emplace_back(glm::vec3(root + dir * (length * i / (particles - 1))));
+    s.groom.addStrand(pts);
+  }
+  Config& c = s.config;
+  // The same clamped length in both stiffness models: a count for the paper's, a length for
+  // the calibrated one (equal here, as the particles are evenly spaced).
+  c.sim.pinned = pinnedForLength(length / 7.0, length / (particles - 1));
+  c.sim.rootLength = float(length / 7.0);
+  c.collision.mode = CollisionMode::Off;
+  c.wind.strength = 0.0f;
+  c.head.motion = HeadMotion::None;
+  c.head.spheres = {{{0.0f, 10.0f, 0.0f}, 0.01f}};  // out of the way
+  return s;
+}
+
 EnergyMeter::EnergyMeter(const Groom& groom, const SimConfig& sim) : first_(groom.first) {
   const HairState st = makeHairState(groom, sim, Pose{});
   mass_.resize(st.particleCount());
@@ -220,6 +244,7 @@ Scene pendulumScene(int particles, double length, double amplitude, double frame
   c.sim.dt = float(frameDt);
   c.sim.pinned = 1;
   c.sim.damping = 0.0f;
+  c.sim.stiffnessModel = StiffnessModel::Paper;
   c.sim.stiffnessWindow = particles;
   c.collision.mode = CollisionMode::Off;
   c.wind.strength = 0.0f;

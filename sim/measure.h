@@ -94,6 +94,11 @@ int windowForLength(double windowLength, double segmentLength);
 // particle count changes.
 int pinnedForLength(double clampLength, double segmentLength);
 
+// One straight strand of `particles` particles and length L, clamped horizontally at the root
+// (about L/7 of it kinematic whatever the particle count), released under gravity: it swings
+// down and sags. Several strands fan out around the vertical; no head, wind or collisions.
+Scene cantileverScene(int particles, double length, int strands = 1);
+
 // ---- Energy and stability -------------------------------------------------------------------
 
 // Kinetic plus gravitational energy of the strands, with each particle's potential measured
@@ -146,7 +151,8 @@ struct PendulumResult {
 
 // One straight strand of n particles and length L hanging from a fixed root, started at rest
 // at `amplitude` radians from the vertical in the x-y plane; collisions, wind and damping off;
-// only the root pinned; the CSM window spans the whole strand (a rigid strand).
+// only the root pinned; the CSM window spans the whole strand (a rigid strand; the paper's
+// stiffness model, alpha = 1).
 Scene pendulumScene(int particles, double length, double amplitude, double frameDt = 1.0 / 60.0);
 
 // Runs the scene `periods` expected periods and measures the period from the zero crossings of

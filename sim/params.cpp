@@ -135,16 +135,61 @@ std::vector<Param> buildParams() {
        FIELD(sim.dt),
        {},
        true},
-      {"sim.substeps", "Substeps", "Simulation", P::Int, 1, 64, "Steps per frame.", E::Live,
-       FIELD(sim.substeps)},
+      {"sim.stiffness_model",
+       "Stiffness model",
+       "Simulation",
+       P::Enum,
+       0,
+       0,
+       "calibrated: a window in metres and a bending stiffness; the hair looks the same at any "
+       "substeps, particle count and density (DESIGN.md section 4). paper: a window in "
+       "particles and alpha per step, as the paper does: more substeps stiffen the hair, more "
+       "particles soften it.",
+       E::Live,
+       FIELD(sim.stiffnessModel),
+       {"paper", "calibrated"}},
+      {"sim.substeps", "Substeps", "Simulation", P::Int, 1, 64,
+       "Steps per frame (paper); the fewest steps per frame (calibrated: more when the "
+       "stiffness needs them, up to max substeps).",
+       E::Live, FIELD(sim.substeps)},
+      {"sim.max_substeps", "Max substeps", "Simulation", P::Int, 1, 256,
+       "Calibrated: the most steps per frame the stiffness may ask for. When it binds, the "
+       "stiffest strands are softer than asked, and the log and the panel say so.",
+       E::Live, FIELD(sim.maxSubsteps)},
+      {"sim.window_length",
+       "Stiffness window",
+       "Simulation",
+       P::Float,
+       0.002,
+       1.0,
+       "Calibrated: half-length of each shape-matching region along the strand (m; the panel "
+       "shows cm). Regions never hold fewer than 3 particles. A longer window gives smoother "
+       "bends and needs fewer steps for the same stiffness.",
+       E::Live,
+       FIELD(sim.windowLength),
+       {},
+       true},
+      {"sim.bending_stiffness",
+       "Bending stiffness",
+       "Simulation",
+       P::Float,
+       1e-7,
+       100.0,
+       "Calibrated: bending stiffness per unit mass, EI over the linear density (m^4/s^2). A "
+       "real hair is about 1e-3; a clump of hair acts stiffer. Doubling it halves the sag.",
+       E::Live,
+       FIELD(sim.bendingStiffness),
+       {},
+       true},
       {"sim.stiffness_window", "Stiffness window w", "Simulation", P::Int, 1, 32,
-       "Half-width of each shape-matching region, in particles: larger = stiffer hair.", E::Live,
-       FIELD(sim.stiffnessWindow)},
+       "Paper: half-width of each shape-matching region, in particles: larger = stiffer hair.",
+       E::Live, FIELD(sim.stiffnessWindow)},
       {"sim.stiffness", "Stiffness alpha", "Simulation", P::Float, 0.0, 1.0,
-       "How far particles move toward their goals each step (1 = the paper).", E::Live,
+       "Paper: how far particles move toward their goals each step (1 = the paper).", E::Live,
        FIELD(sim.stiffness)},
       {"sim.damping", "Damping", "Simulation", P::Float, 0.0, 100.0,
-       "Linear velocity damping (1/s).", E::Live, FIELD(sim.damping)},
+       "Linear velocity damping (1/s): velocities fall by exp(-damping t).", E::Live,
+       FIELD(sim.damping)},
       {"sim.strain_limiting", "Strain limiting", "Simulation", P::Bool, 0, 1,
        "Limit segment stretch root to tip after shape matching.", E::Live,
        FIELD(sim.strainLimiting)},
@@ -160,7 +205,9 @@ std::vector<Param> buildParams() {
        P::Float,
        1e-7,
        1.0,
-       "Mass per metre of strand (kg/m); particle masses follow segment lengths.",
+       "Mass per metre of strand (kg/m); particle masses follow segment lengths. Shape matching "
+       "and every acceleration are independent of it; it sets EI = bending stiffness x "
+       "density.",
        E::Live,
        FIELD(sim.density),
        {},
@@ -211,9 +258,10 @@ std::vector<Param> buildParams() {
       {"collision.friction", "Hair friction", "Simulation|Collision", P::Float, 0.0, 1.0,
        "Hair-hair friction: share of sliding speed removed per contact.", E::Live,
        FIELD(collision.friction)},
-      {"collision.head_friction", "Head friction", "Simulation|Collision", P::Float, 0.0, 1.0,
-       "Share of sliding speed removed when a particle touches the head.", E::Live,
-       FIELD(collision.headFriction)},
+      {"collision.head_friction", "Head friction", "Simulation|Collision", P::Float, 0.0, 2.0,
+       "Coulomb friction coefficient between hair and head: sliding slows by at most this "
+       "times the push the head gives.",
+       E::Live, FIELD(collision.headFriction)},
 
       // Wind
       {"wind.strength", "Strength", "Wind", P::Float, 0.0, 50.0, "Mean wind speed (m/s).", E::Live,
@@ -229,7 +277,9 @@ std::vector<Param> buildParams() {
       {"wind.turbulence_scale", "Turbulence scale", "Wind", P::Float, 0.005, 2.0,
        "Size of turbulent eddies (m).", E::Live, FIELD(wind.turbulenceScale)},
       {"wind.drag", "Drag", "Wind", P::Float, 0.0, 100.0,
-       "Acceleration per m/s of wind across the strand (1/s).", E::Live, FIELD(wind.drag)},
+       "Acceleration per m/s of wind across the strand (1/s), applied implicitly (stable at "
+       "any step).",
+       E::Live, FIELD(wind.drag)},
 
       // Rendering
       {"render.shadows", "Shadows", "Rendering", P::Bool, 0, 1, "Deep opacity map self-shadowing.",

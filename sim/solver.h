@@ -12,6 +12,7 @@
 #include "sim/config.h"
 #include "sim/groom.h"
 #include "sim/head.h"
+#include "sim/stiffness.h"
 
 namespace csm {
 
@@ -34,7 +35,8 @@ class Solver {
   virtual void reset(const Groom& groom, const Config& config, const Pose& head) = 0;
   // Live parameters; takes effect on the next step.
   virtual void setConfig(const Config& config) = 0;
-  // One frame of config.sim.dt seconds: sim.substeps steps, the head moving from `from` to `to`.
+  // One frame of config.sim.dt seconds, the head moving from `from` to `to`: sim.substeps steps,
+  // or with the calibrated stiffness model as many as planFrame (sim/stiffness.h) asks.
   virtual void stepFrame(const Pose& from, const Pose& to) = 0;
 
   virtual size_t strandCount() const = 0;
@@ -56,6 +58,8 @@ class Solver {
   virtual std::vector<StageTime> stageTimes() { return {}; }
   // Hair-hair contacts found by the last collision pass (zeros when collisions are off).
   virtual ContactStats contactStats() { return {}; }
+  // The stiffness it runs with: steps per frame, alpha, windows (CSM solvers).
+  virtual StiffnessInfo stiffness() const { return {}; }
 };
 
 }  // namespace csm

@@ -146,27 +146,6 @@ Scene mainScene(const Options& o) {
   return s;
 }
 
-Scene cantileverScene(int particles, double length, int strands) {
-  Scene s;
-  for (int k = 0; k < strands; ++k) {
-    // Strands fan out around the vertical so that several can share one scene.
-    const double a = 2.0 * M_PI * k / std::max(1, strands);
-    const glm::dvec3 dir(std::cos(a), 0.0, std::sin(a));
-    const glm::dvec3 root = 0.002 * double(k / 64) * glm::dvec3(0, 1, 0);
-    std::vector<glm::vec3> pts;
-    for (int i = 0; i < particles; ++i)
-      pts.emplace_back(glm::vec3(root + dir * (length * i / (particles - 1))));
-    s.groom.addStrand(pts);
-  }
-  Config& c = s.config;
-  c.sim.pinned = pinnedForLength(length / 7.0, length / (particles - 1));
-  c.collision.mode = CollisionMode::Off;
-  c.wind.strength = 0.0f;
-  c.head.motion = HeadMotion::None;
-  c.head.spheres = {{{0.0f, 10.0f, 0.0f}, 0.01f}};  // out of the way
-  return s;
-}
-
 Scene presetScene(const Options& o, const std::string& preset, int strands) {
   Scene s;
   PresetErrors errors;

@@ -49,10 +49,6 @@ std::vector<Setting> methodSettings(const Options& o);
 // A few hundred strands of shoulder-length hair on a nodding head, head collisions, no wind:
 // smooth enough for time-step error.
 Scene mainScene(const Options& o);
-// One straight strand of `particles` particles and length L, clamped horizontally at the root
-// (about L/7 of it kinematic whatever the particle count), released under gravity: it swings
-// down and sags.
-Scene cantileverScene(int particles, double length, int strands = 1);
 // The default preset with a given strand count (the "model no more than a scene needs" study).
 Scene presetScene(const Options& o, const std::string& preset, int strands);
 
@@ -88,5 +84,6 @@ void runResolution(const Options& o);
 void runRegionSums(const Options& o);
 void runScaling(const Options& o);
 void runSceneChoices(const Options& o);
+void runWindow(const Options& o);
 
 }  // namespace csm::bench

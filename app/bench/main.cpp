@@ -24,8 +24,8 @@ namespace {
 using namespace csm;
 using namespace csm::bench;
 
-const char* kSections[] = {"methods",     "stability", "resolution",
-                           "region_sums", "scaling",   "scene_choices"};
+const char* kSections[] = {"methods", "stability",     "resolution", "region_sums",
+                           "scaling", "scene_choices", "window"};
 
 void usage(FILE* f) {
   std::fprintf(f,
@@ -36,7 +36,7 @@ void usage(FILE* f) {
                "  --gpu            create a headless GL context and include the GPU solver\n"
                "  --out DIR        where CSV and charts go (default: docs/charts of the source)\n"
                "  --only SECTION   run only this section (repeatable): methods, stability,\n"
-               "                   resolution, region_sums, scaling, scene_choices\n"
+               "                   resolution, region_sums, scaling, scene_choices, window\n"
                "  --threads N      workers for accuracy runs (default 2; timings run alone)\n"
                "  --no-charts      write CSV only; do not run scripts/charts.py\n"
                "  --help           this text\n");
@@ -162,6 +162,7 @@ int main(int argc, char** argv) {
   section("region_sums", runRegionSums);
   section("scaling", runScaling);
   section("scene_choices", runSceneChoices);
+  section("window", runWindow);
   meta["seconds"] = seconds;
   meta["seconds_total"] = std::chrono::duration<double>(Clock::now() - start).count();
   {

@@ -3,7 +3,7 @@
 // Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
 // bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
 // (no pass here declares more) but only 8 binding points; every driver we run on has more
-// than the 22 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+// than the 24 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
@@ -18,6 +18,12 @@
 #define CSM_BIND_ROTATION 6      // vec4: quaternion (xyz, w) of each particle's region, warm start
 #define CSM_BIND_STRAND_ORDER 7  // uint: strands by length, for the per-strand passes
 #define CSM_BIND_PARAMS 8        // SimParams + one Substep per substep
+#define CSM_BIND_REGION 22       // vec4 per particle: its region (sim/stiffness.h): x per-region
+                                 // mass, y 1 / J (0: no extent), z first (negative: that many
+                                 // ghosts and particles from 0), w last particle of the region
+                                 // (indices within the strand, exact in float)
+#define CSM_BIND_STRAND_STIFFNESS 23  // vec4 per strand: x calibrated rate k (1/s^2), y per-region
+                                      // mass of a ghost, z pinned particles, w unused
 #define CSM_BIND_SPHERES 9       // vec4: world head spheres (centre, radius) per substep
 // Hair-hair collision.
 #define CSM_BIND_SEGMENT_FORCE 10  // vec4 x2 per segment: forces on its two particles
@@ -48,6 +54,7 @@
 #define CSM_TEX_GRID_START 4
 #define CSM_TEX_ENTRY_HIGH 5
 #define CSM_TEX_PREDICTED 6
+#define CSM_TEX_REGION 7
 
 // Slots of the COUNTERS buffer.
 #define CSM_COUNTER_ENTRIES 0

@@ -11,7 +11,8 @@ struct SimParams {
   vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
   vec4 contact;    // x penalty stiffness (1/s^2), y normal damping (1/s), z friction, w frame dt
   vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
-  ivec4 ints;      // x pinned, y stiffness window w, z rotation iterations, w head spheres
+  ivec4 ints;      // x unused (pinned particles are per strand), y stiffness model (0 paper,
+                   // 1 calibrated), z rotation iterations, w head spheres
   uvec4 flags;     // x strain limiting, y head collision, z wind, w contact forces valid
   uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = do not record)
   uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z most cells per segment
@@ -22,7 +23,8 @@ struct SimParams {
 struct Substep {
   mat4 head;       // head pose at the end of the step: pinned roots follow it
   mat4 headDelta;  // start-of-step pose after the inverse of the end pose (head friction)
-  vec4 time;       // x time at the start of the step, y h, z unused, w velocity kept by damping
+  vec4 time;       // x time at the start of the step, y h, z twist step (twistStepOf), w velocity
+                   // kept by damping (exp(-c h))
 };
 
 layout(std430, binding = CSM_BIND_PARAMS) readonly buffer Params {
@@ -56,16 +58,18 @@ mat3 quatToMat(vec4 q) {
 
 // Rotational part of A (Mueller, Bender, Chentanez, Macklin 2016, "A Robust Method to Extract
 // the Rotational Part of Deformations"), warm-started from last step's q: each iteration turns
-// R's columns toward A's by the torque they make, scaled like a Newton step. Robust when A is
-// rank-deficient (straight strands). Same arithmetic as csm::extractRotation, in float.
-vec4 extractRotation(mat3 A, vec4 q, int iterations) {
+// R's columns toward A's by the torque they make over the region's rest moment J (1 / J is
+// invJ; 0 leaves q alone), the value of sum r.a at convergence: scale-free. Robust when A is
+// rank-deficient (straight strands). The turn about the rest-frame `axis` (unit, or zero) is
+// taken at twistStep of its size (see csm::extractRotation). Same arithmetic, in float.
+vec4 extractRotation(mat3 A, float invJ, vec4 q, int iterations, vec3 axis, float twistStep) {
   for (int it = 0; it < iterations; ++it) {
     mat3 R = quatToMat(q);
-    vec3 torque = cross(R[0], A[0]) + cross(R[1], A[1]) + cross(R[2], A[2]);
-    float scale = abs(dot(R[0], A[0]) + dot(R[1], A[1]) + dot(R[2], A[2])) + 1e-9;
-    vec3 omega = torque / scale;
+    vec3 omega = (cross(R[0], A[0]) + cross(R[1], A[1]) + cross(R[2], A[2])) * invJ;
+    vec3 e = R * axis;
+    omega -= (1.0 - twistStep) * dot(omega, e) * e;
     float angle = length(omega);
-    if (angle < 1e-9) break;
+    if (angle < 1e-12) break;
     float half_ = 0.5 * angle;
     q = quatMul(vec4(sin(half_) * (omega / angle), cos(half_)), q);
     q = q / length(q);

@@ -17,6 +17,9 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
 };
 layout(std430, binding = CSM_BIND_PREDICTED) writeonly buffer Predicted { vec4 pred[]; };
 layout(std430, binding = CSM_BIND_SEGMENT_FORCE) readonly buffer SegmentForce { vec4 segForce[]; };
+layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
+  vec4 strandStiffness[];
+};
 
 uniform uint substep;
 
@@ -27,7 +30,7 @@ void main() {
   uint a = strandFirst[s], b = strandFirst[s + 1u];
   Substep st = S[substep];
   vec4 r = texelFetch(restTex, int(i));
-  if (int(i - a) < P.ints.x) {
+  if (int(i - a) < int(strandStiffness[s].z)) {
     pred[i] = vec4((st.head * vec4(r.xyz, 1.0)).xyz, 1.0);
     return;
   }
@@ -44,11 +47,15 @@ void main() {
     acc += f / r.w;
   }
   if (P.flags.z != 0u) {
-    // Drag acts on the wind across the strand, not along it.
-    vec3 t = normalize(texelFetch(posTex, int(min(i + 1u, b - 1u))).xyz -
-                       texelFetch(posTex, int(max(i, a + 1u) - 1u)).xyz);
+    // Drag acts on the wind across the strand, not along it; implicit in the velocity
+    // (c / (1 + h c) instead of c), as CpuSolver::windDrag.
+    vec3 d = texelFetch(posTex, int(min(i + 1u, b - 1u))).xyz -
+             texelFetch(posTex, int(max(i, a + 1u) - 1u)).xyz;
+    float len = length(d);
+    vec3 t = len > 1e-12 ? d / len : vec3(0.0);
     vec3 rel = windVelocity(x, st.time.x) - v;
-    acc += P.misc.y * (rel - dot(rel, t) * t);
+    float c = P.misc.y;
+    acc += c / (1.0 + h * c) * (rel - dot(rel, t) * t);
   }
   v += h * acc;
   pred[i] = vec4(x + h * v, 1.0);

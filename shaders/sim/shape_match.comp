@@ -14,6 +14,9 @@
 //
 // Prefix sums are root-relative (x* - x*_root, x̄ - x̄_root) exactly as in CpuSolver, so the
 // differences keep float precision (world coordinates would cancel 2 more digits in A).
+// Regions come from regionTex (sim/stiffness.h, built on the CPU): each particle's region
+// [lo, hi] within the strand, which is also the range of regions containing it, its per-region
+// mass (FastLSM) and 1 / J of its region.
 #include "sim/common.glsl"
 
 #ifndef MAX_N
@@ -28,11 +31,15 @@ layout(local_size_x = CSM_STRAND_GROUP) in;
 layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
 layout(binding = CSM_TEX_PREDICTED) uniform samplerBuffer predTex;
+layout(binding = CSM_TEX_REGION) uniform samplerBuffer regionTex;
 layout(std430, binding = CSM_BIND_POSITION) writeonly buffer Position { vec4 pos[]; };
 layout(std430, binding = CSM_BIND_VELOCITY) writeonly buffer Velocity { vec4 vel[]; };
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
 layout(std430, binding = CSM_BIND_STRAND_ORDER) readonly buffer StrandOrder { uint strandOrder[]; };
 layout(std430, binding = CSM_BIND_ROTATION) buffer Rotation { vec4 rotation[]; };
+layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
+  vec4 strandStiffness[];
+};
 
 uniform uint substep;
 
@@ -45,13 +52,18 @@ void main() {
   // MAX_N is the groom's longest strand (GpuSolver::reset rebuilds this pass when it grows);
   // the guard only keeps a failed rebuild from writing past the arrays.
   if (n <= 0 || n > MAX_N) return;
-  int w = max(1, P.ints.y);
   int iterations = max(1, P.ints.z);
   vec3 origin = texelFetch(predTex, int(a)).xyz;
   vec3 rest0 = texelFetch(restTex, int(a)).xyz;
+  Substep st = S[substep];
+  vec4 stiff = strandStiffness[s];
+  // Ghosts behind the root (sim/stiffness.h): -j d at rest, -j D now, root-relative.
+  float mg = stiff.y;
+  vec3 d = n > 1 ? texelFetch(restTex, int(a) + 1).xyz - rest0 : vec3(0.0);
+  vec3 D = mat3(st.head) * d;
 
-  // Prefix sums over the strand's particles: mass, m y, m ȳ, m y ȳᵀ (y = x* - x*_root,
-  // ȳ = x̄ - x̄_root). Entry j holds the sum over particles [0, j).
+  // Prefix sums over the strand's particles, weighted by per-region mass: m, m y, m ȳ, m y ȳᵀ
+  // (y = x* - x*_root, ȳ = x̄ - x̄_root). Entry j holds the sum over particles [0, j).
   float prefM[MAX_N + 1];
   vec3 prefX[MAX_N + 1], prefRest[MAX_N + 1];
   mat3 prefA[MAX_N + 1];
@@ -60,46 +72,66 @@ void main() {
   prefRest[0] = vec3(0.0);
   prefA[0] = mat3(0.0);
   for (int j = 0; j < n; ++j) {
-    vec4 r = texelFetch(restTex, int(a) + j);
-    float m = r.w;
+    float m = texelFetch(regionTex, int(a) + j).x;
     vec3 y = texelFetch(predTex, int(a) + j).xyz - origin;
-    vec3 yr = r.xyz - rest0;
+    vec3 yr = texelFetch(restTex, int(a) + j).xyz - rest0;
     prefM[j + 1] = prefM[j] + m;
     prefX[j + 1] = prefX[j] + m * y;
     prefRest[j + 1] = prefRest[j] + m * yr;
     prefA[j + 1] = prefA[j] + outerProduct(m * y, yr);
   }
 
-  // Region k = particles [k-w, k+w]: centroids, A = sum m y ȳᵀ - M c c̄ᵀ, R from A; then the
+  // Region k = particles [lo, hi]: centroids, A = sum m y ȳᵀ - M c c̄ᵀ, R from A; then the
   // prefix sums over regions of R_k and c_k - R_k c̄_k for the goals.
   mat3 prefR[MAX_N + 1];
   vec3 prefT[MAX_N + 1];
   prefR[0] = mat3(0.0);
   prefT[0] = vec3(0.0);
   for (int k = 0; k < n; ++k) {
-    int lo = max(0, k - w), hi = min(n - 1, k + w);
+    vec4 region = texelFetch(regionTex, int(a) + k);
+    int ghosts = max(0, -int(region.z));
+    // Clamped only so that bad region data can never index past the private arrays.
+    int lo = clamp(int(region.z), 0, n - 1), hi = clamp(int(region.w), lo, n - 1);
     float M = prefM[hi + 1] - prefM[lo];
-    vec3 c = (prefX[hi + 1] - prefX[lo]) / M;
-    vec3 cRest = (prefRest[hi + 1] - prefRest[lo]) / M;
-    mat3 A = (prefA[hi + 1] - prefA[lo]) - outerProduct(M * c, cRest);
-    vec4 q = extractRotation(A, rotation[a + uint(k)], iterations);
+    vec3 sumX = prefX[hi + 1] - prefX[lo];
+    vec3 sumRest = prefRest[hi + 1] - prefRest[lo];
+    mat3 sumA = prefA[hi + 1] - prefA[lo];
+    if (ghosts > 0) {
+      // Arithmetic series over the ghosts (csm::ghostSum1, ghostSum2).
+      float q = float(ghosts);
+      float s1 = mg * 0.5 * q * (q + 1.0), s2 = mg * q * (q + 1.0) * (2.0 * q + 1.0) / 6.0;
+      M += mg * q;
+      sumX -= s1 * D;
+      sumRest -= s1 * d;
+      sumA += outerProduct(s2 * D, d);
+    }
+    vec3 c = sumX / M;
+    vec3 cRest = sumRest / M;
+    mat3 A = sumA - outerProduct(M * c, cRest);
+    // The twist axis: the region's rest chord (ghosts continue the root segment).
+    vec3 chord = texelFetch(restTex, int(a) + hi).xyz -
+                 (ghosts > 0 ? rest0 - float(ghosts) * d : texelFetch(restTex, int(a) + lo).xyz);
+    float chordLength = length(chord);
+    vec3 axis = chordLength > 0.0 ? chord / chordLength : vec3(0.0);
+    vec4 q = extractRotation(A, region.y, rotation[a + uint(k)], iterations, axis, st.time.z);
     rotation[a + uint(k)] = q;
     mat3 R = quatToMat(q);
     prefR[k + 1] = prefR[k] + R;
     prefT[k + 1] = prefT[k] + (c - R * cRest);
   }
 
-  // Goals (paper eq. 1) averaged over the regions containing each particle,
-  // g_i = ((sum R_k) ȳ_i + sum (c_k - R_k c̄_k)) / |K_i|, then integration (eq. 2-3):
-  // x = x* + alpha (g - x*), v = (x - x_old) / h, damped.
-  Substep st = S[substep];
+  // Goals (paper eq. 1) averaged over the regions containing each particle (the regions
+  // lo..hi of its own range), g_i = ((sum R_k) ȳ_i + sum (c_k - R_k c̄_k)) / |K_i|, then
+  // integration (eq. 2-3): x = x* + alpha (g - x*), v = (x - x_old) / h, damped. alpha is the
+  // paper's, or min(1, k h^2) with the strand's calibrated rate k.
   float h = st.time.y;
   float keep = st.time.w;
-  float alpha = P.stepping.x;
-  int pinned = P.ints.x;
+  float alpha = P.ints.y == 1 ? min(1.0, stiff.x * h * h) : P.stepping.x;
+  int pinned = int(stiff.z);
   for (int i = 0; i < n; ++i) {
     uint p = a + uint(i);
-    int lo = max(0, i - w), hi = min(n - 1, i + w);
+    vec4 region = texelFetch(regionTex, int(p));
+    int lo = clamp(int(region.z), 0, n - 1), hi = clamp(int(region.w), lo, n - 1);
     vec3 yr = texelFetch(restTex, int(p)).xyz - rest0;
     vec3 goal = origin + ((prefR[hi + 1] - prefR[lo]) * yr + (prefT[hi + 1] - prefT[lo])) /
                              float(hi - lo + 1);

@@ -1,8 +1,9 @@
 // Step 6 of DESIGN.md section 1, one invocation per strand: strain limiting in one sweep from
 // root to tip (paper section 3.2: each segment is fixed against an already final parent, so
-// no iteration), pushing out of the head spheres, head friction and DFTL (Mueller et al.
-// 2012), as CpuSolver::limitStrain. The sweep is sequential by nature; a strand is one
-// invocation and the particle's parent stays in registers.
+// no iteration), pushing out of the head spheres, Coulomb friction against the head and DFTL
+// (Mueller et al. 2012) on the strain-limit correction, as CpuSolver::limitStrain. The sweep
+// is sequential by nature; a strand is one invocation and the particle's parent stays in
+// registers.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_STRAND_GROUP) in;
@@ -13,6 +14,9 @@ layout(std430, binding = CSM_BIND_VELOCITY) buffer Velocity { vec4 vel[]; };
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
 layout(std430, binding = CSM_BIND_STRAND_ORDER) readonly buffer StrandOrder { uint strandOrder[]; };
 layout(std430, binding = CSM_BIND_SPHERES) readonly buffer Spheres { vec4 spheres[]; };
+layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
+  vec4 strandStiffness[];
+};
 
 uniform uint substep;
 
@@ -51,7 +55,7 @@ void main() {
   uint s = strandOrder[id];
   uint a = strandFirst[s];
   int n = int(strandFirst[s + 1u] - a);
-  int pinned = P.ints.x;
+  int pinned = int(strandStiffness[s].z);
   int first = max(1, pinned);
   if (n <= first) return;
 
@@ -82,6 +86,7 @@ void main() {
       float len = length(d);
       if (len > maxLength) x = xPrev + d * (maxLength / len);
     }
+    vec3 strained = x;
     bool touching = false;
     if (headCollide) {
       // Overlapping spheres can push a particle into each other: repeat until it is clear.
@@ -95,12 +100,12 @@ void main() {
         if (!moved) break;
       }
     }
-    vec3 correction = x - start;
-    v += correction / h;
-    if (touching && friction > 0.0) {
-      // Friction against the moving head: damp the sliding part of the relative velocity.
+    vec3 vBeforeHead = v + (strained - start) / h;
+    v = vBeforeHead + (x - strained) / h;
+    if (touching) {
+      // Coulomb friction against the moving head: the tangential speed relative to the surface
+      // loses at most mu times the normal speed the contact took away this step.
       vec3 surfaceVel = (x - (st.headDelta * vec4(x, 1.0)).xyz) / h;
-      vec3 rel = v - surfaceVel;
       vec4 nearest = spheres[sphereBase];
       float best = length(x - nearest.xyz) - nearest.w;
       for (int k = 1; k < sphereCount; ++k) {
@@ -112,13 +117,18 @@ void main() {
         }
       }
       vec3 nrm = normalize(x - nearest.xyz);
-      float vn = dot(rel, nrm);
-      vec3 vt = rel - vn * nrm;
-      v = surfaceVel + max(0.0, vn) * nrm + (1.0 - friction) * vt;
+      float vnBefore = dot(vBeforeHead - surfaceVel, nrm);
+      vec3 rel = v - surfaceVel;
+      float vn = max(0.0, dot(rel, nrm));
+      vec3 vt = rel - dot(rel, nrm) * nrm;
+      float vtLen = length(vt);
+      float taken = friction * max(0.0, vn - vnBefore);
+      float keepT = vtLen > taken ? 1.0 - taken / vtLen : 0.0;
+      v = surfaceVel + vn * nrm + keepT * vt;
     }
     // Dynamic follow-the-leader: the parent takes back part of the velocity its child got
-    // from the correction, against the heavy-tip look.
-    if (dftl > 0.0 && prevFree) vPrev -= dftl * correction / h;
+    // from the strain-limit correction, against the heavy-tip look.
+    if (dftl > 0.0 && prevFree) vPrev -= dftl * (strained - start) / h;
     vel[p - 1u] = vec4(vPrev, 0.0);
     pos[p] = vec4(x, 1.0);
     restPrev = restHere;

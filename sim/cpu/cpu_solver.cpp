@@ -61,27 +61,77 @@ bool pushOutOfSphere(glm::dvec3& p, const glm::dvec3& prev, const glm::dvec3& c,
 
 }  // namespace
 
-void extractRotation(const Eigen::Matrix3d& A, Eigen::Quaterniond& q, int iterations) {
+void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, int iterations,
+                     const Eigen::Vector3d& axis, double twistStep) {
+  if (!(J > 0.0)) return;
+  const double axisLength = axis.norm();
+  const bool twist = twistStep < 1.0 && axisLength > 0.0;
   for (int it = 0; it < iterations; ++it) {
     const Eigen::Matrix3d R = q.matrix();
-    // The torque that turns R's columns toward A's, scaled like a Newton step.
+    // The torque that turns R's columns toward A's, over the rest moment: a Newton step near
+    // convergence, where sum r.a = J.
     const Eigen::Vector3d torque =
         R.col(0).cross(A.col(0)) + R.col(1).cross(A.col(1)) + R.col(2).cross(A.col(2));
-    const double scale =
-        std::abs(R.col(0).dot(A.col(0)) + R.col(1).dot(A.col(1)) + R.col(2).dot(A.col(2))) + 1e-9;
-    const Eigen::Vector3d omega = torque / scale;
+    Eigen::Vector3d omega = torque / J;
+    if (twist) {
+      const Eigen::Vector3d e = R * (axis / axisLength);
+      omega -= (1.0 - twistStep) * omega.dot(e) * e;
+    }
     const double angle = omega.norm();
-    if (angle < 1e-9) break;
+    if (angle < 1e-12) break;
     q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, omega / angle)) * q;
     q.normalize();
   }
+}
+
+double measureWindowCoefficient(int w) {
+  const double l = 0.01;
+  const int n = 8 * w + 24;
+  Groom straight;
+  std::vector<glm::vec3> pts;
+  for (int i = 0; i < n; ++i) pts.emplace_back(float(i * l), 0.0f, 0.0f);
+  straight.addStrand(pts);
+  Config c;
+  c.sim.stiffnessModel = StiffnessModel::Paper;
+  c.sim.stiffnessWindow = w;
+  c.sim.stiffness = 1.0f;
+  c.sim.pinned = 0;
+  c.sim.gravity = glm::vec3(0.0f);
+  c.sim.damping = 0.0f;
+  c.sim.strainLimiting = false;
+  c.sim.rotationIterations = 16;
+  c.collision.mode = CollisionMode::Off;
+  c.wind.strength = 0.0f;
+  // mu(kappa) / (kappa w l)^4 = c_w + d (kappa w l)^2: two wavenumbers give c_w. The slope
+  // kappa * amplitude stays small enough that the rotations' nonlinearity is far below mu.
+  auto ratio = [&](double kwl) {
+    const double kappa = kwl / (w * l);
+    const double amplitude = 1e-6 / kappa;
+    CpuSolver solver;
+    solver.reset(straight, c, Pose{});
+    std::vector<glm::dvec3>& x = solver.mutablePositions();
+    for (int i = 0; i < n; ++i) x[i] = glm::dvec3(i * l, amplitude * std::sin(kappa * i * l), 0.0);
+    solver.step(1e-3, Pose{});
+    // The middle particles, whose goals no clipped region and no clipped per-region mass
+    // reaches (3w from either end): there g = (1 - mu) u exactly.
+    double gu = 0.0, uu = 0.0;
+    for (int i = 3 * w + 1; i < n - 3 * w - 1; ++i) {
+      const double u = amplitude * std::sin(kappa * i * l);
+      gu += solver.positions()[i].y * u;
+      uu += u * u;
+    }
+    return (1.0 - gu / uu) / std::pow(kwl, 4.0);
+  };
+  const double r1 = ratio(0.1), r2 = ratio(0.2);
+  return (4.0 * r1 - r2) / 3.0;
 }
 
 void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   config_ = config;
   time_ = 0.0;
   head_ = head;
-  const HairState st = makeHairState(groom, config.sim, head);
+  state_ = makeHairState(groom, config.sim, head);
+  const HairState& st = state_;
   const size_t n = st.particleCount(), strands = st.strandCount();
   first_ = st.strandFirst;
   strandOf_ = st.particleStrand;
@@ -114,16 +164,28 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   prefT_.assign(m, Eigen::Vector3d::Zero());
   regionC_.assign(n, Eigen::Vector3d::Zero());
   regionCRest_.assign(n, Eigen::Vector3d::Zero());
-  // Static prefix sums: masses and mass-weighted rest positions (relative to the root).
-  for (size_t s = 0; s < strands; ++s) {
+  rebuildRegions();
+}
+
+void CpuSolver::rebuildRegions() {
+  regions_ = ::csm::buildRegions(state_, config_.sim);
+  // Static prefix sums: per-region masses and mass-weighted rest positions (root-relative).
+  for (size_t s = 0; s + 1 < first_.size(); ++s) {
     const uint32_t a = first_[s], b = first_[s + 1];
     const size_t pb = a + s;
     for (uint32_t i = a; i < b; ++i) {
       const size_t j = pb + (i - a);
-      prefMass_[j + 1] = prefMass_[j] + mass_[i];
-      prefMassRest_[j + 1] = prefMassRest_[j] + mass_[i] * toEigen(rest_[i] - rest_[a]);
+      const double m = regions_.mass[i];
+      prefMass_[j + 1] = prefMass_[j] + m;
+      prefMassRest_[j + 1] = prefMassRest_[j] + m * toEigen(rest_[i] - rest_[a]);
     }
   }
+}
+
+void CpuSolver::setConfig(const Config& config) {
+  const bool rebuild = regionsChanged(config_.sim, config.sim);
+  config_ = config;
+  if (rebuild) rebuildRegions();
 }
 
 void CpuSolver::clearStages() {
@@ -133,9 +195,9 @@ void CpuSolver::clearStages() {
 
 void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   clearStages();
-  const int substeps = std::max(1, config_.sim.substeps);
-  const double h = double(config_.sim.dt) / substeps;
-  for (int k = 0; k < substeps; ++k) step(h, interpolate(from, to, double(k + 1) / substeps));
+  const FramePlan plan = planFrame(config_.sim, regions_.maxRate);
+  for (int k = 0; k < plan.substeps; ++k)
+    step(plan.h, interpolate(from, to, double(k + 1) / plan.substeps));
   auto t0 = Clock::now();
   if (config_.collision.mode == CollisionMode::Full) {
     collide();
@@ -154,7 +216,7 @@ void CpuSolver::step(double h, const Pose& head) {
   predict(h, head);
   stages_[0].ms += msSince(t0);
   t0 = Clock::now();
-  shapeMatch();
+  shapeMatch(head, h);
   stages_[1].ms += msSince(t0);
   t0 = Clock::now();
   integrate(h);
@@ -166,6 +228,17 @@ void CpuSolver::step(double h, const Pose& head) {
   head_ = head;
 }
 
+glm::dvec3 CpuSolver::windDrag(uint32_t i, uint32_t end, double h) const {
+  // Drag acts on the wind across the strand, not along it; implicit in the velocity, so it
+  // neither overshoots nor depends on the step: c / (1 + h c) instead of c.
+  const glm::dvec3 d = x_[std::min(i + 1, end - 1)] - x_[i - 1];
+  const double len = glm::length(d);
+  const glm::dvec3 t = len > 1e-12 ? d / len : glm::dvec3(0.0);
+  const glm::dvec3 rel = windVelocity(config_.wind, x_[i], time_) - v_[i];
+  const double c = config_.wind.drag;
+  return c / (1.0 + h * c) * (rel - glm::dot(rel, t) * t);
+}
+
 void CpuSolver::predict(double h, const Pose& head) {
   const SimConfig& sim = config_.sim;
   const glm::dvec3 gravity(sim.gravity);
@@ -173,20 +246,16 @@ void CpuSolver::predict(double h, const Pose& head) {
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
+      const int pinned = regions_.pinned[s];
       for (uint32_t i = a; i < b; ++i) {
         xOld_[i] = x_[i];
-        if (int(i - a) < sim.pinned) {
+        if (int(i - a) < pinned) {
           // Kinematic roots follow the head.
           xPred_[i] = head.apply(rest_[i]);
           continue;
         }
         glm::dvec3 acc = gravity + contactForce_[i] / mass_[i];
-        if (wind) {
-          // Drag acts on the wind across the strand, not along it.
-          const glm::dvec3 t = glm::normalize(x_[std::min(i + 1, b - 1)] - x_[i - 1]);
-          const glm::dvec3 rel = windVelocity(config_.wind, x_[i], time_) - v_[i];
-          acc += double(config_.wind.drag) * (rel - glm::dot(rel, t) * t);
-        }
+        if (wind) acc += windDrag(i, b, h);
         v_[i] += h * acc;
         xPred_[i] = x_[i] + h * v_[i];
       }
@@ -194,43 +263,61 @@ void CpuSolver::predict(double h, const Pose& head) {
   });
 }
 
-void CpuSolver::shapeMatch() {
-  const int w = std::max(1, config_.sim.stiffnessWindow);
+void CpuSolver::shapeMatch(const Pose& head, double h) {
   const int iterations = std::max(1, config_.sim.rotationIterations);
+  const double twistStep = twistStepOf(config_.sim, h, iterations);
+  const std::vector<int>& lo = regions_.lo;
+  const std::vector<int>& hi = regions_.hi;
+  const Eigen::Matrix3d headRotation = toEigen(head.rotation).toRotationMatrix();
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
       const int n = int(b - a);
       const size_t pb = a + s;
+      // Ghosts behind the root (sim/stiffness.h): -j d at rest, -j D now, root-relative.
+      const double mg = regions_.ghostMass[s];
+      const Eigen::Vector3d d = n > 1 ? toEigen(rest_[a + 1] - rest_[a]) : Eigen::Vector3d::Zero();
+      const Eigen::Vector3d D = headRotation * d;
       // Root-relative coordinates keep the prefix sums' differences exact enough in float on the
       // GPU; the CPU uses the same formulation so the two compare term by term.
       const glm::dvec3 origin = xPred_[a];
       for (int j = 0; j < n; ++j) {
-        const double m = mass_[a + j];
+        const double m = regions_.mass[a + j];
         const Eigen::Vector3d y = toEigen(xPred_[a + j] - origin);
         const Eigen::Vector3d yr = toEigen(rest_[a + j] - rest_[a]);
         prefMassX_[pb + j + 1] = prefMassX_[pb + j] + m * y;
         prefA_[pb + j + 1] = prefA_[pb + j] + m * y * yr.transpose();
       }
       for (int k = 0; k < n; ++k) {
-        const int lo = std::max(0, k - w), hi = std::min(n - 1, k + w);
+        const int ghosts = std::max(0, -lo[a + k]);
+        const int l0 = std::max(0, lo[a + k]), l1 = hi[a + k];
         double M;
         Eigen::Vector3d sumX, sumRest;
         Eigen::Matrix3d sumA;
         if (sums_ == RegionSums::Prefix) {
-          M = prefMass_[pb + hi + 1] - prefMass_[pb + lo];
-          sumX = prefMassX_[pb + hi + 1] - prefMassX_[pb + lo];
-          sumRest = prefMassRest_[pb + hi + 1] - prefMassRest_[pb + lo];
-          sumA = prefA_[pb + hi + 1] - prefA_[pb + lo];
+          M = prefMass_[pb + l1 + 1] - prefMass_[pb + l0];
+          sumX = prefMassX_[pb + l1 + 1] - prefMassX_[pb + l0];
+          sumRest = prefMassRest_[pb + l1 + 1] - prefMassRest_[pb + l0];
+          sumA = prefA_[pb + l1 + 1] - prefA_[pb + l0];
+          if (ghosts > 0) {
+            const double s1 = mg * ghostSum1(ghosts), s2 = mg * ghostSum2(ghosts);
+            M += mg * ghosts;
+            sumX -= s1 * D;
+            sumRest -= s1 * d;
+            sumA += s2 * D * d.transpose();
+          }
         } else {
           M = 0.0;
           sumX.setZero();
           sumRest.setZero();
           sumA.setZero();
-          for (int j = lo; j <= hi; ++j) {
-            const double m = mass_[a + j];
-            const Eigen::Vector3d y = toEigen(xPred_[a + j] - origin);
-            const Eigen::Vector3d yr = toEigen(rest_[a + j] - rest_[a]);
+          for (int j = -ghosts; j <= l1; ++j) {
+            const double m = j < 0 ? mg : regions_.mass[a + j];
+            const Eigen::Vector3d y =
+                j < 0 ? Eigen::Vector3d(j * D) : toEigen(xPred_[a + j] - origin);
+            const Eigen::Vector3d yr =
+                j < 0 ? Eigen::Vector3d(j * d) : toEigen(rest_[a + j] - rest_[a]);
+            if (j >= 0 && j < l0) continue;
             M += m;
             sumX += m * y;
             sumRest += m * yr;
@@ -239,46 +326,53 @@ void CpuSolver::shapeMatch() {
         }
         const Eigen::Vector3d c = sumX / M, cRest = sumRest / M;
         const Eigen::Matrix3d A = sumA - M * c * cRest.transpose();
-        extractRotation(A, q_[a + k], iterations);
+        // The twist axis: the region's rest chord (ghosts continue the root segment).
+        const int first = lo[a + k];
+        const Eigen::Vector3d chord =
+            toEigen(rest_[a + l1] - rest_[a]) -
+            (first >= 0 ? toEigen(rest_[a + first] - rest_[a]) : Eigen::Vector3d(first * d));
+        extractRotation(A, regions_.inertia[a + k], q_[a + k], iterations, chord, twistStep);
         const Eigen::Matrix3d R = q_[a + k].matrix();
         regionC_[a + k] = c;
         regionCRest_[a + k] = cRest;
         prefR_[pb + k + 1] = prefR_[pb + k] + R;
         prefT_[pb + k + 1] = prefT_[pb + k] + (c - R * cRest);
       }
-      // Goals (paper eq. 1) averaged over the regions that contain each particle:
+      // Goals (paper eq. 1) averaged over the regions that contain each particle, which are the
+      // regions lo[i]..hi[i] (regions are symmetric):
       // g_i = ((sum R_k) xr_i + sum (c_k - R_k cr_k)) / |K_i|, both sums prefix differences.
       for (int i = 0; i < n; ++i) {
-        const int lo = std::max(0, i - w), hi = std::min(n - 1, i + w);
+        const int l0 = std::max(0, lo[a + i]), l1 = hi[a + i];
         const Eigen::Vector3d yr = toEigen(rest_[a + i] - rest_[a]);
         Eigen::Matrix3d sumR;
         Eigen::Vector3d sumT;
         if (sums_ == RegionSums::Prefix) {
-          sumR = prefR_[pb + hi + 1] - prefR_[pb + lo];
-          sumT = prefT_[pb + hi + 1] - prefT_[pb + lo];
+          sumR = prefR_[pb + l1 + 1] - prefR_[pb + l0];
+          sumT = prefT_[pb + l1 + 1] - prefT_[pb + l0];
         } else {
           sumR.setZero();
           sumT.setZero();
-          for (int k = lo; k <= hi; ++k) {
+          for (int k = l0; k <= l1; ++k) {
             const Eigen::Matrix3d R = q_[a + k].matrix();
             sumR += R;
             sumT += regionC_[a + k] - R * regionCRest_[a + k];
           }
         }
-        goal_[a + i] = origin + toGlm((sumR * yr + sumT) / double(hi - lo + 1));
+        goal_[a + i] = origin + toGlm((sumR * yr + sumT) / double(l1 - l0 + 1));
       }
     }
   });
 }
 
 void CpuSolver::integrate(double h) {
-  const double alpha = config_.sim.stiffness;
-  const double keep = std::max(0.0, 1.0 - double(config_.sim.damping) * h);
+  const SimConfig& sim = config_.sim;
+  const double keep = std::exp(-double(sim.damping) * h);
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
+      const double alpha = stepAlpha(sim, regions_.rate[s], h);
       for (uint32_t i = a; i < b; ++i) {
-        const bool pinned = int(i - a) < config_.sim.pinned;
+        const bool pinned = int(i - a) < regions_.pinned[s];
         x_[i] = pinned ? xPred_[i] : xPred_[i] + alpha * (goal_[i] - xPred_[i]);
         v_[i] = (x_[i] - xOld_[i]) / h;
         if (!pinned) v_[i] *= keep;
@@ -298,16 +392,18 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
+      const int pinned = regions_.pinned[s];
       // One sweep from root to tip: each segment is fixed against an already final parent, so
       // no iteration is needed (paper section 3.2).
-      for (uint32_t i = a + std::max(1, sim.pinned); i < b; ++i) {
-        const glm::dvec3 start = x_[i];
+      for (uint32_t i = a + std::max(1, pinned); i < b; ++i) {
         const double maxLength = limit ? (1.0 + sim.strainLimit) * restLength_[i - 1] : 0.0;
+        const glm::dvec3 start = x_[i];
         if (limit) {
           const glm::dvec3 d = x_[i] - x_[i - 1];
           const double len = glm::length(d);
           if (len > maxLength) x_[i] = x_[i - 1] + d * (maxLength / len);
         }
+        const glm::dvec3 strained = x_[i];
         bool touching = false;
         if (headCollide) {
           // Overlapping spheres can push a particle into each other: repeat until it is clear.
@@ -320,13 +416,14 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
             if (!moved) break;
           }
         }
-        const glm::dvec3 correction = x_[i] - start;
-        v_[i] += correction / h;
-        if (touching && friction > 0.0) {
-          // Friction against the moving head: damp the sliding part of the relative velocity.
+        const glm::dvec3 vBeforeHead = v_[i] + (strained - start) / h;
+        v_[i] = vBeforeHead + (x_[i] - strained) / h;
+        if (touching) {
+          // Coulomb friction against the moving head: the tangential speed relative to the
+          // surface loses at most mu times the normal speed the contact took away this step,
+          // so a resting strand feels mu g_n whatever the step.
           const glm::dvec3 local = glm::inverse(head.rotation) * (x_[i] - head.translation);
           const glm::dvec3 surfaceVel = (x_[i] - before.apply(local)) / h;
-          glm::dvec3 rel = v_[i] - surfaceVel;
           const Sphere* nearest = &spheres.front();
           double best = 1e300;
           for (const Sphere& sp : spheres) {
@@ -334,13 +431,18 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
             if (dist < best) best = dist, nearest = &sp;
           }
           const glm::dvec3 n = glm::normalize(x_[i] - glm::dvec3(nearest->center));
-          const double vn = glm::dot(rel, n);
-          const glm::dvec3 vt = rel - vn * n;
-          v_[i] = surfaceVel + std::max(0.0, vn) * n + (1.0 - friction) * vt;
+          const double vnBefore = glm::dot(vBeforeHead - surfaceVel, n);
+          const glm::dvec3 rel = v_[i] - surfaceVel;
+          const double vn = std::max(0.0, glm::dot(rel, n));
+          const glm::dvec3 vt = rel - glm::dot(rel, n) * n;
+          const double vtLen = glm::length(vt);
+          const double taken = friction * std::max(0.0, vn - vnBefore);
+          const double keepT = vtLen > taken ? 1.0 - taken / vtLen : 0.0;
+          v_[i] = surfaceVel + vn * n + keepT * vt;
         }
         // Dynamic follow-the-leader (Mueller et al. 2012): the parent takes back part of the
-        // velocity its child got from the correction, against the heavy-tip look.
-        if (dftl > 0.0 && int(i - 1 - a) >= sim.pinned) v_[i - 1] -= dftl * correction / h;
+        // velocity its child got from the strain-limit correction, against the heavy-tip look.
+        if (dftl > 0.0 && int(i - 1 - a) >= pinned) v_[i - 1] -= dftl * (strained - start) / h;
       }
     }
   });

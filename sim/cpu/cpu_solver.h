@@ -17,8 +17,26 @@ namespace csm {
 
 // Rotational part of A (Mueller, Bender, Chentanez, Macklin 2016, "A Robust Method to Extract
 // the Rotational Part of Deformations"): rotates q toward A's rotation a fixed number of times.
-// Robust when A is rank-deficient, which a straight strand's regions are.
-void extractRotation(const Eigen::Matrix3d& A, Eigen::Quaterniond& q, int iterations);
+// Robust when A is rank-deficient, which a straight strand's regions are. Each iteration turns
+// by the torque of R's columns toward A's over the region's rest moment J = sum m |r|^2 (the
+// value of sum r.a at convergence): scale-free, so the masses' unit and size cancel, and
+// bounded where sum r.a passes through zero. J <= 0 (a region with no extent) leaves q alone.
+//
+// The turn about `axis` (a rest-frame direction, e.g. the region's chord; zero: none) is taken
+// at `twistStep` (0..1) of its size. For a nearly straight region that turn, the twist about
+// the strand, is barely determined by the positions: each full iteration moves it only by the
+// small share b / J of its error (b the region's moment across the strand), so it relaxes at
+// a rate set by the iterations per second, and more substeps make the twist, and the goals,
+// follow the curvature faster. The calibrated model passes twistStep = r h / iterations so that
+// the twist relaxes at r iterations per second whatever the step.
+void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, int iterations,
+                     const Eigen::Vector3d& axis = Eigen::Vector3d::Zero(), double twistStep = 1.0);
+
+// Measures c_w (sim/stiffness.h) on this solver: a long straight strand bent by a small sine
+// wave of wavenumber kappa, with nothing acting but the goals of the paper model with window w
+// and alpha = 1; mu is the share of the wave one step removes, and c_w = mu / (kappa w l)^4,
+// extrapolated to kappa -> 0 from kappa w l = 0.1 and 0.2.
+double measureWindowCoefficient(int w);
 
 class CpuSolver final : public Solver {
  public:
@@ -30,7 +48,7 @@ class CpuSolver final : public Solver {
 
   std::string_view name() const override { return "cpu"; }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
-  void setConfig(const Config& config) override { config_ = config; }
+  void setConfig(const Config& config) override;
   void stepFrame(const Pose& from, const Pose& to) override;
 
   size_t strandCount() const override { return first_.size() - 1; }
@@ -41,6 +59,7 @@ class CpuSolver final : public Solver {
   void readVelocities(std::vector<glm::vec4>& out) override;
   std::vector<StageTime> stageTimes() override { return stages_; }
   ContactStats contactStats() override { return contacts_; }
+  StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
   // One step of length h ending at head pose `head` (exposed for tests).
   void step(double h, const Pose& head);
@@ -53,8 +72,10 @@ class CpuSolver final : public Solver {
 
  private:
   void clearStages();
+  void rebuildRegions();
   void predict(double h, const Pose& head);
-  void shapeMatch();
+  glm::dvec3 windDrag(uint32_t i, uint32_t end, double h) const;
+  void shapeMatch(const Pose& head, double h);
   void integrate(double h);
   void limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
                    const Pose& headBefore);
@@ -67,6 +88,8 @@ class CpuSolver final : public Solver {
 
   std::vector<uint32_t> first_{0};
   std::vector<uint32_t> strandOf_;
+  HairState state_;               // the layout the regions are built from
+  Regions regions_;               // shape-matching regions, per-region masses, rates
   std::vector<glm::dvec3> rest_;  // head frame
   std::vector<double> mass_;
   std::vector<double> restLength_;  // segment i -> i+1; 0 for a strand's last particle
@@ -76,7 +99,8 @@ class CpuSolver final : public Solver {
   ContactStats contacts_;
   std::vector<StageTime> stages_;
 
-  // Per strand s, prefix arrays have strand size + 1 entries starting at first_[s] + s.
+  // Per strand s, prefix arrays have strand size + 1 entries starting at first_[s] + s. Sums
+  // over regions weigh each particle by its per-region mass (regions_.mass).
   std::vector<double> prefMass_;
   std::vector<Eigen::Vector3d> prefMassRest_, prefMassX_;
   std::vector<Eigen::Matrix3d> prefA_, prefR_;

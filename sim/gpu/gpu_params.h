@@ -18,7 +18,7 @@ struct SimParams {
   glm::vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
   glm::vec4 contact;    // x penalty stiffness (1/s^2), y normal damping (1/s), z friction, w dt
   glm::vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
-  glm::ivec4 ints;      // x pinned, y stiffness window w, z rotation iterations, w head spheres
+  glm::ivec4 ints;      // x unused, y stiffness model, z rotation iterations, w head spheres
   glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w contact forces valid
   glm::uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = off)
   glm::uvec4 grid;      // x bucket mask, y entry capacity, z most cells per segment, w unused
@@ -29,7 +29,7 @@ struct SimParams {
 struct Substep {
   glm::mat4 head;       // head pose at the end of the step
   glm::mat4 headDelta;  // start-of-step pose after the inverse of the end pose
-  glm::vec4 time;       // x time at the start, y h, z unused, w velocity kept by damping
+  glm::vec4 time;       // x time at the start, y h, z twist step, w velocity kept by damping
 };
 
 static_assert(sizeof(SimParams) == 12 * 16);

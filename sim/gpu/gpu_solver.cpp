@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <numeric>
 
@@ -107,7 +108,8 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   config_ = config;
   time_ = 0.0;
   head_ = head;
-  const HairState st = makeHairState(groom, config.sim, head);
+  state_ = makeHairState(groom, config.sim, head);
+  const HairState& st = state_;
   particles_ = st.particleCount();
   strands_ = st.strandCount();
 
@@ -173,6 +175,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   view(restTex_, rest_, GL_RGBA32F);
   view(gridStartTex_, gridStart_, GL_R32UI);
   view(predictedTex_, predicted_, GL_RGBA32F);
+  uploadRegions();
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
 
@@ -181,6 +184,29 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   contactStats_ = ContactStats{};
   for (FrameTimers& f : timers_) f.issued = false;
   lastStages_.clear();
+}
+
+void GpuSolver::uploadRegions() {
+  regions_ = buildRegions(state_, config_.sim);
+  std::vector<glm::vec4> region(particles_);
+  for (size_t i = 0; i < particles_; ++i) {
+    const double J = regions_.inertia[i];
+    region[i] = glm::vec4(float(regions_.mass[i]), J > 0.0 ? float(1.0 / J) : 0.0f,
+                          float(regions_.lo[i]), float(regions_.hi[i]));
+  }
+  fill(region_, region);
+  std::vector<glm::vec4> strand(strands_);
+  for (size_t s = 0; s < strands_; ++s)
+    strand[s] = glm::vec4(float(regions_.rate[s]), float(regions_.ghostMass[s]),
+                          float(regions_.pinned[s]), 0.0f);
+  fill(strandStiffness_, strand);
+  view(regionTex_, region_, GL_RGBA32F);
+}
+
+void GpuSolver::setConfig(const Config& config) {
+  const bool rebuild = regionsChanged(config_.sim, config.sim);
+  config_ = config;
+  if (rebuild && particles_ > 0) uploadRegions();
 }
 
 void GpuSolver::view(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format) {
@@ -232,7 +258,7 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.stepping = glm::vec4(sim.stiffness, sim.strainLimit, col.radius, col.headFriction);
   p.contact = glm::vec4(col.stiffness, col.damping, col.friction, sim.dt);
   p.misc = glm::vec4(sim.dftl, wind.drag, 0.0f, 0.0f);
-  p.ints = glm::ivec4(sim.pinned, sim.stiffnessWindow, sim.rotationIterations,
+  p.ints = glm::ivec4(0, int(sim.stiffnessModel), sim.rotationIterations,
                       int(config_.head.spheres.size()));
   const bool windOn = wind.strength > 0.0f && wind.drag > 0.0f;
   p.flags = glm::uvec4(sim.strainLimiting, col.mode != CollisionMode::Off, windOn, forcesValid_);
@@ -249,7 +275,7 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
 
   const int substeps = int(poses.size());
   const double h = double(sim.dt) / substeps;
-  const double keep = std::max(0.0, 1.0 - double(sim.damping) * h);
+  const double keep = std::exp(-double(sim.damping) * h);
   std::vector<unsigned char> blob(sizeof(gpu::SimParams) + substeps * sizeof(gpu::Substep));
   std::memcpy(blob.data(), &p, sizeof(p));
   std::vector<glm::vec4> spheres;
@@ -263,7 +289,8 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
     now[3] = glm::dvec4(poses[k].translation, 1.0);
     was[3] = glm::dvec4(before[k].translation, 1.0);
     s.headDelta = glm::mat4(was * glm::inverse(now));
-    s.time = glm::vec4(float(t), float(h), 0.0f, float(keep));
+    s.time = glm::vec4(float(t), float(h), float(twistStepOf(sim, h, sim.rotationIterations)),
+                       float(keep));
     std::memcpy(blob.data() + sizeof(p) + k * sizeof(s), &s, sizeof(s));
     for (const Sphere& sp : worldSpheres(config_.head.spheres, poses[k]))
       spheres.emplace_back(sp.center, sp.radius);
@@ -283,6 +310,8 @@ void GpuSolver::bindAll() {
   predicted_.bindBase(ssbo, CSM_BIND_PREDICTED);
   rotation_.bindBase(ssbo, CSM_BIND_ROTATION);
   strandOrder_.bindBase(ssbo, CSM_BIND_STRAND_ORDER);
+  region_.bindBase(ssbo, CSM_BIND_REGION);
+  strandStiffness_.bindBase(ssbo, CSM_BIND_STRAND_STIFFNESS);
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
   spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
   segmentForce_.bindBase(ssbo, CSM_BIND_SEGMENT_FORCE);
@@ -304,6 +333,7 @@ void GpuSolver::bindAll() {
   gridStartTex_.bind(CSM_TEX_GRID_START);
   entryHighTex_.bind(CSM_TEX_ENTRY_HIGH);
   predictedTex_.bind(CSM_TEX_PREDICTED);
+  regionTex_.bind(CSM_TEX_REGION);
 }
 
 void GpuSolver::dispatchItems(const gl::Program& program, uint32_t items, uint32_t groupSize) {
@@ -352,8 +382,9 @@ void GpuSolver::beginTimerFrame() {
 }
 
 void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
-  const int substeps = std::max(1, config_.sim.substeps);
-  const double h = double(config_.sim.dt) / substeps;
+  const FramePlan plan = planFrame(config_.sim, regions_.maxRate);
+  const int substeps = plan.substeps;
+  const double h = plan.h;
   std::vector<Pose> poses(substeps), before(substeps);
   for (int k = 0; k < substeps; ++k) {
     poses[k] = interpolate(from, to, double(k + 1) / substeps);

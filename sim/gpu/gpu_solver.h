@@ -3,7 +3,8 @@
 // on the GPU; nothing is read back inside a frame.
 //
 // Per step (substep): predict.comp (per particle), shape_match.comp (per strand: region
-// sums, rotations, goals, integration), strain_limit.comp (per strand). Per frame, when
+// sums, rotations, goals, integration), strain_limit.comp (per strand). The regions and the
+// number of steps come from sim/stiffness.h, as for CpuSolver. Per frame, when
 // collision.mode is full: the hash grid by counting sort (grid_count, a three-level parallel
 // scan of the buckets and one of the segments, grid_scatter; DESIGN.md section 1.7),
 // contacts.comp per grid entry and segment_forces.comp, whose per-segment forces the next
@@ -23,6 +24,7 @@
 #include "render/gl/query.h"
 #include "render/gl/buffer_texture.h"
 #include "sim/gpu/gpu_params.h"
+#include "sim/hair_state.h"
 #include "sim/solver.h"
 
 namespace csm {
@@ -36,7 +38,7 @@ class GpuSolver final : public Solver {
 
   std::string_view name() const override { return "gpu"; }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
-  void setConfig(const Config& config) override { config_ = config; }
+  void setConfig(const Config& config) override;
   void stepFrame(const Pose& from, const Pose& to) override;
 
   size_t strandCount() const override { return strands_; }
@@ -49,6 +51,7 @@ class GpuSolver final : public Solver {
   unsigned positionBuffer() override { return position_.id(); }
   std::vector<StageTime> stageTimes() override;
   ContactStats contactStats() override;
+  StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
   // --- For tests and tools. ---
   // Runs the collision pass on the current state now (stepFrame does it at the end of each
@@ -75,6 +78,7 @@ class GpuSolver final : public Solver {
  private:
   GpuSolver() = default;
   bool build(int maxStrandSize, std::string* error);
+  void uploadRegions();
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
   void collide();
@@ -89,6 +93,8 @@ class GpuSolver final : public Solver {
   Config config_;
   double time_ = 0.0;
   Pose head_;
+  HairState state_;  // the layout the regions are built from
+  Regions regions_;
   size_t particles_ = 0, strands_ = 0;
   uint32_t segments_ = 0;
   uint32_t buckets_ = 0, scanBlocks_ = 0;
@@ -115,11 +121,12 @@ class GpuSolver final : public Solver {
       gridStart_{gl::NoCreate}, scanBlockSums_{gl::NoCreate}, entryLow_{gl::NoCreate},
       entryHigh_{gl::NoCreate}, counters_{gl::NoCreate}, pairs_{gl::NoCreate},
       segmentContacts_{gl::NoCreate}, segmentCells_{gl::NoCreate}, segmentBase_{gl::NoCreate},
-      segmentScanBlocks_{gl::NoCreate}, partialForce_{gl::NoCreate};
+      segmentScanBlocks_{gl::NoCreate}, partialForce_{gl::NoCreate}, region_{gl::NoCreate},
+      strandStiffness_{gl::NoCreate};
   // texelFetch views for reads that differ per invocation (see render/gl/buffer_texture.h).
   gl::BufferTexture positionTex_{gl::NoCreate}, velocityTex_{gl::NoCreate}, restTex_{gl::NoCreate},
       entryLowTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate}, entryHighTex_{gl::NoCreate},
-      predictedTex_{gl::NoCreate};
+      predictedTex_{gl::NoCreate}, regionTex_{gl::NoCreate};
 
   // GPU time per stage: one GL_TIME_ELAPSED query around each dispatch group, for the last
   // few frames; stageTimes() reads the newest frame whose results are in. Software drivers

@@ -227,15 +227,34 @@ TEST_CASE("rotation extraction recovers the rotation, also from rank-deficient m
       Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()));
   Eigen::Matrix3d S;
   S << 2.0, 0.3, 0.1, 0.3, 1.5, -0.2, 0.1, -0.2, 0.7;  // symmetric positive definite
+  // The rest moment J of a region is the trace of its rest covariance.
   Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
-  extractRotation(truth.matrix() * S, q, 100);
+  extractRotation(truth.matrix() * S, S.trace(), q, 100);
   CHECK((q.matrix() - truth.matrix()).norm() < 1e-8);
 
   // A straight strand: A = R a b^T has rank one; any rotation that maps b onto R b will do.
   const Eigen::Vector3d axis(0.0, -1.0, 0.0);
   const Eigen::Matrix3d A = truth.matrix() * axis * axis.transpose();
   Eigen::Quaterniond r = Eigen::Quaterniond::Identity();
-  extractRotation(A, r, 100);
+  extractRotation(A, 1.0, r, 100);
   CHECK((r.matrix() * axis - truth.matrix() * axis).norm() < 1e-8);
   CHECK(std::abs(r.norm() - 1.0) < 1e-12);
+}
+
+TEST_CASE("rotation extraction is scale-free: tiny masses track the same rotation per step") {
+  // A region of real hair (5e-6 kg/m, 2 cm segments) has J ~ 1e-11 kg m^2; a unit-bearing
+  // regulariser beside it (the old "+ 1e-9") tracked only part of a rotation per iteration.
+  const Eigen::Quaterniond truth(
+      Eigen::AngleAxisd(0.05, Eigen::Vector3d(0.2, 1.0, -0.4).normalized()));
+  Eigen::Matrix3d S;
+  S << 2.0, 0.3, 0.1, 0.3, 1.5, -0.2, 0.1, -0.2, 0.7;
+  Eigen::Quaterniond unit = Eigen::Quaterniond::Identity();
+  extractRotation(truth.matrix() * S, S.trace(), unit, 3);
+  CHECK(unit.angularDistance(truth) < 0.1 * 0.05);  // most of the way in 3 iterations
+  for (double scale : {1e-6, 1e-12, 1e-15}) {
+    Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+    extractRotation(truth.matrix() * S * scale, S.trace() * scale, q, 3);
+    INFO("scale " << scale);
+    CHECK(q.angularDistance(unit) < 1e-12);
+  }
 }
