@@ -79,10 +79,15 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   auto lastReport = Clock::now();
   const auto start = Clock::now();
   long firstNanFrame = -1;
+  const StiffnessInfo stiffness = sim.solver().stiffness();
   if (!options.quiet)
-    std::fprintf(stderr, "csmhair: %s: %zu strands, %zu particles, solver %s, %ld frames\n",
+    std::fprintf(stderr, "csmhair: %s: %zu strands, %zu particles, solver %s, %ld frames; %s\n",
                  scene.source.c_str(), sim.solver().strandCount(), sim.solver().particleCount(),
-                 std::string(sim.solver().name()).c_str(), frames);
+                 std::string(sim.solver().name()).c_str(), frames,
+                 stiffnessText(stiffness).c_str());
+  // Said even with --quiet: the hair is softer than the preset asks.
+  if (const std::string warning = stiffnessWarning(stiffness); !warning.empty())
+    std::fprintf(stderr, "csmhair: warning: %s\n", warning.c_str());
 
   std::unique_ptr<HairRenderer> renderer;
   std::unique_ptr<CaptureTarget> target;
@@ -192,7 +197,18 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
         {"strands", sim.solver().strandCount()},
         {"particles", sim.solver().particleCount()},
         {"frame_dt", c.sim.dt},
-        {"substeps", c.sim.substeps},
+        {"substeps", stiffness.plan.substeps},
+        {"stiffness",
+         {{"model", c.sim.stiffnessModel == StiffnessModel::Paper ? "paper" : "calibrated"},
+          {"window", c.sim.stiffnessModel == StiffnessModel::Paper ? double(c.sim.stiffnessWindow)
+                                                                   : double(c.sim.windowLength)},
+          {"window_unit", c.sim.stiffnessModel == StiffnessModel::Paper ? "particles" : "m"},
+          {"bending_stiffness", c.sim.bendingStiffness},
+          {"substeps_wanted", stiffness.plan.wanted},
+          {"substeps_capped", stiffness.plan.capped},
+          {"alpha", {stiffness.alphaMin, stiffness.alphaMax}},
+          {"particles_per_side", {stiffness.windowMin, stiffness.windowMax}},
+          {"rate", {stiffness.rateMin, stiffness.rateMax}}}},
         {"stiffness_window", c.sim.stiffnessWindow},
         {"collision_mode", c.collision.mode == CollisionMode::Off    ? "off"
                            : c.collision.mode == CollisionMode::Head ? "head"

@@ -56,7 +56,8 @@ const char* effectText(Effect e) {
 }
 
 void paramTooltip(const Param& p) {
-  if (!ImGui::IsItemHovered()) return;
+  // Also on a greyed-out parameter: its description says which stiffness model it is for.
+  if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
   ImGui::BeginTooltip();
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
   ImGui::TextUnformatted(p.description.data(), p.description.data() + p.description.size());
@@ -116,12 +117,38 @@ void sphereWidgets(const Param& p, Config& config, const std::string& label, Edi
   ImGui::TreePop();
 }
 
+// What the stiffness the solver runs with comes to: steps, alpha, window in particles, and a
+// warning when the stiffness asks for more steps than sim.max_substeps allows.
+void drawStiffnessInfo(const Viewer& viewer) {
+  const StiffnessInfo info = viewer.simulation().solver().stiffness();
+  if (info.strands == 0) return;
+  ImGui::Indent();
+  ImGui::TextDisabled("%s", stiffnessText(info).c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "What this stiffness comes to in the running solver: steps per frame (calibrated: the "
+        "most the stiffest strand needs for alpha <= 1), the pull alpha toward the goals per "
+        "step, particles per side of a region, and the calibrated rate k = B / (c_w (w l)^4).");
+  const std::string warning = stiffnessWarning(info);
+  if (!warning.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kYellow);
+    ImGui::TextWrapped("%s", warning.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::Unindent();
+}
+
 void drawGroupContents(const ParamGroup& group, Viewer& viewer) {
   Config& edited = viewer.editedConfig();
   bool apply = false;
   for (const Param* p : group.params) {
+    const bool applies = !p->applies || p->applies(edited);
+    if (!applies) ImGui::BeginDisabled();
     const ParamEdit e = paramWidget(*p, edited);
+    if (!applies) ImGui::EndDisabled();
     if (e == ParamEdit::Apply) apply = true;
+    if (applies && (p->key == "sim.window_length" || p->key == "sim.stiffness_window"))
+      drawStiffnessInfo(viewer);
   }
   // Apply once, after the loop: applyConfig refreshes the edited copy.
   if (apply) viewer.applyConfig(Config(edited));
@@ -195,10 +222,18 @@ ParamEdit paramWidget(const Param& p, Config& config) {
             ImGui::DragInt(label.c_str(), &v, 1.0f, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp));
       break;
     }
-    case ParamType::Float:
-      edit.item(ImGui::SliderFloat(label.c_str(), &p.ref<float>(config), float(p.min), float(p.max),
-                                   "%.4g", sliderFlags(p)));
+    case ParamType::Float: {
+      // Shown in the parameter's display unit (cm for lengths of strand), stored in SI.
+      float& v = p.ref<float>(config);
+      const float scale = float(p.displayScale);
+      float shown = v * scale;
+      const std::string format = p.unit.empty() ? "%.4g" : "%.4g " + str(p.unit);
+      const bool changed = ImGui::SliderFloat(label.c_str(), &shown, float(p.min) * scale,
+                                              float(p.max) * scale, format.c_str(), sliderFlags(p));
+      if (changed) v = scale == 1.0f ? shown : shown / scale;
+      edit.item(changed);
       break;
+    }
     case ParamType::Vec3:
       edit.item(ImGui::DragFloat3(label.c_str(), &p.ref<glm::vec3>(config).x, dragSpeed(p),
                                   float(p.min), float(p.max), "%.3f",

@@ -130,6 +130,8 @@ bool Viewer::open(const Config& config, const std::string& baseDir, const std::s
   log(MessageLevel::Info, "opened " + (presetPath.empty() ? "the built-in preset" : presetPath) +
                               ": " + std::to_string(sim_->solver().strandCount()) + " strands, " +
                               std::to_string(sim_->solver().particleCount()) + " particles");
+  stiffnessWarning_.clear();
+  checkStiffness();
   return true;
 }
 
@@ -185,8 +187,16 @@ bool Viewer::applyConfig(const Config& next) {
                                 " strands, " + std::to_string(sim_->solver().particleCount()) +
                                 " particles");
   }
+  checkStiffness();
   updateTitle();
   return true;
+}
+
+void Viewer::checkStiffness() {
+  const std::string warning = stiffnessWarning(sim_->solver().stiffness());
+  if (warning == stiffnessWarning_) return;
+  stiffnessWarning_ = warning;
+  if (!warning.empty()) log(MessageLevel::Warning, warning);
 }
 
 bool Viewer::setParam(std::string_view key, std::string_view text, std::string* error) {

@@ -138,6 +138,7 @@ class Viewer {
   void takeScreenshot();
   void afterSceneChange();
   void updateTitle();
+  void checkStiffness();
 
   ViewerOptions options_;
   std::unique_ptr<GlfwWindow> window_;
@@ -159,6 +160,7 @@ class Viewer {
   std::string shaderLog_;
   bool shaderReloadFailed_ = false;
   std::vector<ViewerMessage> messages_;
+  std::string stiffnessWarning_;  // the last one logged, so a slider does not repeat it
 
   bool paused_ = false;
   bool stepRequested_ = false;

@@ -3,8 +3,8 @@
 
 usage: /usr/bin/python3 scripts/charts.py DIR
 
-Reads DIR/{methods,stability,resolution,region_sums,scaling,scene_choices}.csv (whichever are
-there) and writes PNG and SVG charts next to them. Needs only Debian's python3-matplotlib.
+Reads DIR/{methods,stability,resolution,region_sums,scaling,scene_choices,window_coefficient,
+window_sag}.csv (whichever are there) and writes PNG and SVG charts next to them. Needs only Debian's python3-matplotlib.
 """
 import csv
 import json
@@ -28,8 +28,11 @@ plt.rcParams.update({
 
 FAMILY_STYLE = {
     "CSM": ("#1f77b4", "o"),
+    "CSM calibrated": ("#2ca02c", "o"),
+    "GPU CSM calibrated": ("#006400", "*"),
+    "CSM calibrated (steps capped)": ("#2ca02c", "o"),
     "CSM, no strain limit": ("#17becf", "v"),
-    "CSM + DFTL 0.9": ("#2ca02c", "^"),
+    "CSM + DFTL 0.9": ("#bcbd22", "^"),
     "CSM, hair-hair collisions": ("#9467bd", "P"),
     "GPU CSM": ("#000000", "*"),
     "MS explicit": ("#d62728", "s"),
@@ -321,6 +324,41 @@ def scene_chart(rows, out):
     save(fig, out, "scene_choices")
 
 
+def window_chart(coefficients, sags, out):
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4.0))
+    if coefficients:
+        w = [num(r, "w") for r in coefficients]
+        a1.plot(w, [num(r, "measured") for r in coefficients], marker="o", markersize=3,
+                label="measured on the CPU solver")
+        a1.plot(w, [num(r, "table") for r in coefficients], linestyle="--", color="k",
+                linewidth=0.8, label="table (w <= 16), (1 + 2/w) / 45 beyond")
+        a1.axhline(1 / 45, color="#999999", linewidth=0.6, linestyle=":")
+        a1.annotate("1/45", (w[-1], 1 / 45), fontsize=7, xytext=(-20, -10),
+                    textcoords="offset points")
+        a1.set_xlabel("w: particles per side of a region")
+        a1.set_ylabel("c_w: mu = c_w (kappa w l)^4")
+        a1.set_title("The window coefficient the calibration uses", fontsize=9)
+        a1.legend(fontsize=7)
+    if sags:
+        for g, ls in ((1.0, "-"), (9.81, "--")):
+            for n, colour in ((16, "#1f77b4"), (32, "#ff7f0e"), (64, "#2ca02c")):
+                pts = [(100 * num(r, "window_length_m"), num(r, "sag_mm")) for r in sags
+                       if num(r, "gravity") == g and num(r, "particles") == n]
+                a2.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", markersize=3,
+                        color=colour, linestyle=ls, label=f"{n} particles, g = {g:g}")
+            beam = [num(r, "beam_sag_mm") for r in sags if num(r, "gravity") == g]
+            if beam and g == 1.0:
+                a2.axhline(beam[0], color="k", linewidth=0.7, linestyle=":")
+                a2.annotate("Euler-Bernoulli beam, g = 1", (1, beam[0]), fontsize=7,
+                            xytext=(2, 3), textcoords="offset points")
+        a2.set_yscale("log")
+        a2.set_xlabel("window length (cm), bending stiffness fixed")
+        a2.set_ylabel("sag of a 12 cm clamped strand (mm)")
+        a2.set_title("What the window still does at a fixed bending stiffness", fontsize=9)
+        a2.legend(fontsize=6)
+    save(fig, out, "window")
+
+
 def main():
     if len(sys.argv) != 2:
         print(__doc__, file=sys.stderr)
@@ -341,6 +379,10 @@ def main():
         rows = read(os.path.join(out, f"{name}.csv"))
         if rows:
             fn(rows, out)
+    coefficients = read(os.path.join(out, "window_coefficient.csv"))
+    sags = read(os.path.join(out, "window_sag.csv"))
+    if coefficients or sags:
+        window_chart(coefficients, sags, out)
     if meta:
         print(f"charts.py: from {meta.get('command', '?')} on {meta.get('cores', '?')} cores, "
               f"{meta.get('cpu', '?')}")

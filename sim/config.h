@@ -69,10 +69,11 @@ struct SimConfig {
   StiffnessModel stiffnessModel = StiffnessModel::Calibrated;
   // Calibrated: the region of particle k holds the particles within windowLength of rest arc
   // length of it (at least its neighbours), and bendingStiffness is EI over the linear density
-  // (m^4/s^2). The default is the paper model's w = 2, alpha = 1 at 2 cm segments and 4 steps
-  // of 1/240 s.
+  // (m^4/s^2). The default needs 4 steps of 1/240 s on 2 cm segments, and gives the default
+  // hairstyle the look that the paper model's w = 2, alpha = 1 gave it there
+  // (docs/BENCHMARKS.md, "Stiffness").
   float windowLength = 0.04f;        // m
-  float bendingStiffness = 6.6e-3f;  // m^4/s^2
+  float bendingStiffness = 3.8e-3f;  // m^4/s^2
   // Calibrated: the scalp holds the particles within rootLength of rest arc length of the root
   // (at least `pinned` of them), so the held piece does not shrink with more particles.
   float rootLength = 0.02f;  // m

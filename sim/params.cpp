@@ -1,7 +1,9 @@
 #include "sim/params.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +15,13 @@ namespace {
 
 using P = ParamType;
 using E = Effect;
+
+bool paperModel(const Config& c) {
+  return c.sim.stiffnessModel == StiffnessModel::Paper;
+}
+bool calibratedModel(const Config& c) {
+  return c.sim.stiffnessModel == StiffnessModel::Calibrated;
+}
 
 std::vector<Param> buildParams() {
   return {
@@ -152,10 +161,19 @@ std::vector<Param> buildParams() {
        "Steps per frame (paper); the fewest steps per frame (calibrated: more when the "
        "stiffness needs them, up to max substeps).",
        E::Live, FIELD(sim.substeps)},
-      {"sim.max_substeps", "Max substeps", "Simulation", P::Int, 1, 256,
+      {"sim.max_substeps",
+       "Max substeps",
+       "Simulation",
+       P::Int,
+       1,
+       256,
        "Calibrated: the most steps per frame the stiffness may ask for. When it binds, the "
        "stiffest strands are softer than asked, and the log and the panel say so.",
-       E::Live, FIELD(sim.maxSubsteps)},
+       E::Live,
+       FIELD(sim.maxSubsteps),
+       {},
+       false,
+       calibratedModel},
       {"sim.window_length",
        "Stiffness window",
        "Simulation",
@@ -168,7 +186,10 @@ std::vector<Param> buildParams() {
        E::Live,
        FIELD(sim.windowLength),
        {},
-       true},
+       true,
+       calibratedModel,
+       100.0,
+       "cm"},
       {"sim.bending_stiffness",
        "Bending stiffness",
        "Simulation",
@@ -180,13 +201,52 @@ std::vector<Param> buildParams() {
        E::Live,
        FIELD(sim.bendingStiffness),
        {},
-       true},
-      {"sim.stiffness_window", "Stiffness window w", "Simulation", P::Int, 1, 32,
+       true,
+       calibratedModel,
+       1.0,
+       "m^4/s^2"},
+      {"sim.root_length",
+       "Root length",
+       "Simulation",
+       P::Float,
+       0.0,
+       0.2,
+       "Calibrated: length of strand from the root that the scalp holds rigidly (m; the panel "
+       "shows cm); at least `pinned` particles. A length, so the held piece stays the same with "
+       "more particles.",
+       E::Live,
+       FIELD(sim.rootLength),
+       {},
+       false,
+       calibratedModel,
+       100.0,
+       "cm"},
+      {"sim.stiffness_window",
+       "Stiffness window w",
+       "Simulation",
+       P::Int,
+       1,
+       32,
        "Paper: half-width of each shape-matching region, in particles: larger = stiffer hair.",
-       E::Live, FIELD(sim.stiffnessWindow)},
-      {"sim.stiffness", "Stiffness alpha", "Simulation", P::Float, 0.0, 1.0,
-       "Paper: how far particles move toward their goals each step (1 = the paper).", E::Live,
-       FIELD(sim.stiffness)},
+       E::Live,
+       FIELD(sim.stiffnessWindow),
+       {},
+       false,
+       paperModel,
+       1.0,
+       "particles"},
+      {"sim.stiffness",
+       "Stiffness alpha",
+       "Simulation",
+       P::Float,
+       0.0,
+       1.0,
+       "Paper: how far particles move toward their goals each step (1 = the paper).",
+       E::Live,
+       FIELD(sim.stiffness),
+       {},
+       false,
+       paperModel},
       {"sim.damping", "Damping", "Simulation", P::Float, 0.0, 100.0,
        "Linear velocity damping (1/s): velocities fall by exp(-damping t).", E::Live,
        FIELD(sim.damping)},
@@ -196,7 +256,9 @@ std::vector<Param> buildParams() {
       {"sim.strain_limit", "Strain limit", "Simulation", P::Float, 0.0, 1.0,
        "Largest relative stretch of a segment, epsilon.", E::Live, FIELD(sim.strainLimit)},
       {"sim.pinned", "Pinned particles", "Simulation", P::Int, 1, 4,
-       "Particles from the root that follow the head rigidly.", E::Live, FIELD(sim.pinned)},
+       "Particles from the root that follow the head rigidly (calibrated: at least this many; "
+       "see root length).",
+       E::Live, FIELD(sim.pinned)},
       {"sim.gravity", "Gravity", "Simulation", P::Vec3, -100, 100, "Gravity (m/s^2).", E::Live,
        FIELD(sim.gravity)},
       {"sim.density",
@@ -394,6 +456,16 @@ std::string readVec3(const Param& p, const nlohmann::json& v, glm::vec3& out) {
   return {};
 }
 
+// The shortest decimal that reads back as the same float, as a double: JSON then says 0.04,
+// not 0.03999999910593033, and reading it gives the float back.
+double shortest(float v) {
+  if (!std::isfinite(v)) return v;
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf - 1, v);
+  *r.ptr = '\0';
+  return std::strtod(buf, nullptr);
+}
+
 }  // namespace
 
 const std::vector<Param>& params() {
@@ -415,11 +487,11 @@ nlohmann::json paramToJson(const Param& p, const Config& c) {
     case P::Int:
       return p.ref<int>(c);
     case P::Float:
-      return p.ref<float>(c);
+      return shortest(p.ref<float>(c));
     case P::Vec3:
     case P::Color: {
       const glm::vec3& v = p.ref<glm::vec3>(c);
-      return json::array({v.x, v.y, v.z});
+      return json::array({shortest(v.x), shortest(v.y), shortest(v.z)});
     }
     case P::Enum: {
       int i = p.ref<int>(c);
@@ -431,7 +503,8 @@ nlohmann::json paramToJson(const Param& p, const Config& c) {
     case P::Spheres: {
       json a = json::array();
       for (const Sphere& s : p.ref<std::vector<Sphere>>(c))
-        a.push_back({{"center", {s.center.x, s.center.y, s.center.z}}, {"radius", s.radius}});
+        a.push_back({{"center", {shortest(s.center.x), shortest(s.center.y), shortest(s.center.z)}},
+                     {"radius", shortest(s.radius)}});
       return a;
     }
   }

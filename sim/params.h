@@ -36,6 +36,12 @@ struct Param {
   void* (*field)(Config&) = nullptr;
   std::vector<std::string_view> options{};  // names of enum values, in enum order
   bool logarithmic = false;                 // a slider hint for wide ranges
+  // When it does something: null = always. The panels grey it out otherwise (the stiffness
+  // model's parameters apply to one model each).
+  bool (*applies)(const Config&) = nullptr;
+  // How the panels show a number: value x displayScale, in `unit` (the key's unit stays SI).
+  double displayScale = 1.0;
+  std::string_view unit{};
 
   template <class T>
   T& ref(Config& c) const {

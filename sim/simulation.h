@@ -38,6 +38,7 @@ class Simulation {
   Pose headPose() const { return headPoseAt(time_); }
 
   Solver& solver() { return *solver_; }
+  const Solver& solver() const { return *solver_; }
   const Config& config() const { return config_; }
   const Groom& groom() const { return groom_; }
   const GroomReport& groomReport() const { return groomReport_; }

@@ -49,6 +49,10 @@ class Solver {
   // Read-backs, for tests, metrics and export; never called inside a frame.
   virtual void readPositions(std::vector<glm::vec4>& out) = 0;
   virtual void readVelocities(std::vector<glm::vec4>& out) = 0;
+  // Replaces positions and velocities (the layout readPositions gives); the rest of the
+  // solver's state (region rotations, contact forces) stays. For tests, and to resume a state.
+  virtual void writeState(const std::vector<glm::vec4>& positions,
+                          const std::vector<glm::vec4>& velocities) = 0;
 
   // The GL name of an SSBO holding the current positions (vec4 per particle, in particle
   // order) when the solver keeps them on the GPU; 0 when the caller must upload readPositions.

@@ -106,9 +106,9 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
       const double reach = w * meanSegment;
       if (count > 1 && reach > 0.0)
         r.rate[s] = double(sim.bendingStiffness) / (windowCoefficient(w) * std::pow(reach, 4.0));
-      // A ghost carries a whole segment of the root's spacing (the root carries half of one),
-      // shared like an inner particle's among 2w + 1 regions.
-      if (ghosts > 0) r.ghostMass[s] = 2.0 * double(st.rest[a].w) / (2.0 * w + 1.0);
+      // A ghost carries a whole segment of the root's spacing, shared like an inner
+      // particle's among 2w + 1 regions.
+      if (ghosts > 0) r.ghostMass[s] = seg[0] / (2.0 * w + 1.0);
     } else {
       const int w = std::max(1, sim.stiffnessWindow);
       r.window[s] = w;
@@ -118,8 +118,11 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
       }
     }
     r.maxRate = std::max(r.maxRate, r.rate[s]);
-    for (int i = 0; i < count; ++i)
-      r.mass[a + i] = double(st.rest[a + i].w) / double(r.hi[a + i] - std::max(0, r.lo[a + i]) + 1);
+    // Each particle carries half of each segment beside it, as makeHairState's masses do.
+    for (int i = 0; i < count; ++i) {
+      const double carried = std::max(0.5 * ((i > 0 ? seg[i - 1] : 0.0) + seg[i]), 1e-6);
+      r.mass[a + i] = carried / double(r.hi[a + i] - std::max(0, r.lo[a + i]) + 1);
+    }
     // J_k, directly: a build-time cost of O(region) per region.
     const glm::dvec3 root = restOf(st, a);
     const glm::dvec3 step = count > 1 ? restOf(st, a + 1) - root : glm::dvec3(0.0);

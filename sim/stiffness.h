@@ -48,9 +48,14 @@ int calibratedWindow(double windowLength, double segmentLength, int particles);
 // regions at the root are clipped and pivot about it: the root holds the strand the less
 // firmly the longer the window (a 12 cm strand sags 4x more at a 4 cm window than at 1 cm);
 // with them the scalp is a clamp whatever the window.
+//
+// Masses: shape matching is homogeneous in mass (a uniform scale cancels from centroids, A and
+// J alike), so the regions weigh particles by mass over the linear density, i.e. by the strand
+// length each carries (m): the density then cancels exactly, bit for bit, in both solvers.
 struct Regions {
   std::vector<int> lo, hi;      // per particle
-  std::vector<double> mass;     // per particle: m_i / |K_i|, its share in each of its regions
+  std::vector<double> mass;     // per particle: m_i / |K_i| over the density (m), its share in
+                                // each of its regions
   std::vector<double> inertia;  // per region: J_k = sum of mass |rest - rest centroid_k|^2
   // Per strand.
   std::vector<double> rate;       // k (1/s^2) of the calibrated model, else 0

@@ -31,8 +31,13 @@ struct Setting {
   std::string family;  // "CSM", "CSM, no strain limit", "MS explicit", ... (one colour each)
   std::string label;   // "w2 s4"
   std::string solver = "csm";  // "csm", "csm-direct", "gpu" or a baseline name
-  int substeps = 4;
-  int window = 2;
+  int substeps = 4;            // calibrated: the fewest; the stiffness may ask for more
+  // CSM's stiffness model: the paper's (window in particles, alpha = 1) unless a setting says.
+  StiffnessModel model = StiffnessModel::Paper;
+  int window = 2;                    // paper: particles
+  float windowLength = 0.04f;        // calibrated: m
+  float bendingStiffness = 3.8e-3f;  // calibrated: m^4/s^2
+  int maxSubsteps = 64;              // calibrated
   bool strainLimiting = true;
   float dftl = 0.0f;
   CollisionMode collision = CollisionMode::Head;

@@ -33,6 +33,16 @@ void runResolution(const Options& o) {
   lines.push_back({"CSM", "w = 4 particles", csm(4)});
   lines.push_back({"CSM", "w = 3.3 cm (2 at 16 particles)", csm(2), true});
   lines.push_back({"CSM", "w = 6.7 cm (4 at 16 particles)", csm(4), true});
+  for (float length : {0.02f, 0.04f}) {
+    Setting s = csm(2);
+    s.model = StiffnessModel::Calibrated;
+    s.windowLength = length;
+    s.substeps = 1;  // as many as the stiffness needs
+    s.maxSubsteps = 256;
+    char label[64];
+    std::snprintf(label, sizeof label, "%g cm window, B %g", 100.0 * length, s.bendingStiffness);
+    lines.push_back({"CSM calibrated", label, s});
+  }
   {
     Setting s;
     s.solver = "ms-explicit";

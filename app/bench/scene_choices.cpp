@@ -157,12 +157,12 @@ void runSceneChoices(const Options& o) {
                                    : "full",
         r, {NAN, NAN});
   }
-  // Substeps, against 32.
+  // Substeps, against 32. The preset's calibrated stiffness needs 4: fewer are not asked for.
   {
     Scene ref = base;
     ref.config.sim.substeps = 32;
     const Outcome refRun = run(ref, duration);
-    for (int n : {1, 2, 4, 8}) {
+    for (int n : {4, 8, 16}) {
       Scene s = base;
       s.config.sim.substeps = n;
       const Outcome r = run(s, duration);

@@ -112,6 +112,14 @@ void BaselineSolver::readVelocities(std::vector<glm::vec4>& out) {
   for (size_t i = 0; i < v_.size(); ++i) out[i] = glm::vec4(glm::vec3(v_[i]), 0.0f);
 }
 
+void BaselineSolver::writeState(const std::vector<glm::vec4>& positions,
+                                const std::vector<glm::vec4>& velocities) {
+  for (size_t i = 0; i < x_.size() && i < positions.size(); ++i)
+    x_[i] = glm::dvec3(glm::vec3(positions[i]));
+  for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
+    v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+}
+
 std::unique_ptr<BaselineSolver> makeBaseline(std::string_view name, const BaselineParams& params) {
   if (name == "ms-explicit") return std::make_unique<ExplicitMassSpring>(params);
   if (name == "ms-implicit") return std::make_unique<ImplicitMassSpring>(params);

@@ -44,6 +44,8 @@ class BaselineSolver : public Solver {
 
   void readPositions(std::vector<glm::vec4>& out) override;
   void readVelocities(std::vector<glm::vec4>& out) override;
+  void writeState(const std::vector<glm::vec4>& positions,
+                  const std::vector<glm::vec4>& velocities) override;
   std::vector<StageTime> stageTimes() override { return {{"integrate", lastMs_}}; }
 
   // One step of length h ending at head pose `head`.

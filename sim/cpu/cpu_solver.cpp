@@ -497,4 +497,12 @@ void CpuSolver::readVelocities(std::vector<glm::vec4>& out) {
   for (size_t i = 0; i < v_.size(); ++i) out[i] = glm::vec4(glm::vec3(v_[i]), 0.0f);
 }
 
+void CpuSolver::writeState(const std::vector<glm::vec4>& positions,
+                           const std::vector<glm::vec4>& velocities) {
+  for (size_t i = 0; i < x_.size() && i < positions.size(); ++i)
+    x_[i] = glm::dvec3(glm::vec3(positions[i]));
+  for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
+    v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+}
+
 }  // namespace csm

@@ -57,6 +57,8 @@ class CpuSolver final : public Solver {
 
   void readPositions(std::vector<glm::vec4>& out) override;
   void readVelocities(std::vector<glm::vec4>& out) override;
+  void writeState(const std::vector<glm::vec4>& positions,
+                  const std::vector<glm::vec4>& velocities) override;
   std::vector<StageTime> stageTimes() override { return stages_; }
   ContactStats contactStats() override { return contacts_; }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }

@@ -509,6 +509,17 @@ void GpuSolver::readVelocities(std::vector<glm::vec4>& out) {
   out = velocity_.download<glm::vec4>(particles_);
 }
 
+void GpuSolver::writeState(const std::vector<glm::vec4>& positions,
+                           const std::vector<glm::vec4>& velocities) {
+  if (particles_ == 0) return;
+  std::vector<glm::vec4> x(positions), v(velocities);
+  x.resize(particles_, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  v.resize(particles_, glm::vec4(0.0f));
+  for (glm::vec4& p : x) p.w = 1.0f;
+  position_.upload(x);
+  velocity_.upload(v);
+}
+
 std::vector<StageTime> GpuSolver::stageTimes() {
   // The newest frame whose queries have all finished; if none has, wait for the newest.
   const int n = int(timers_.size());

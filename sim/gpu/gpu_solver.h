@@ -48,6 +48,8 @@ class GpuSolver final : public Solver {
   void finish() override;
   void readPositions(std::vector<glm::vec4>& out) override;
   void readVelocities(std::vector<glm::vec4>& out) override;
+  void writeState(const std::vector<glm::vec4>& positions,
+                  const std::vector<glm::vec4>& velocities) override;
   unsigned positionBuffer() override { return position_.id(); }
   std::vector<StageTime> stageTimes() override;
   ContactStats contactStats() override;

@@ -150,6 +150,9 @@ class NanAfter final : public Solver {
     if (frames_ >= badFrame_ && out.size() > 10) out[10].x = std::nanf("");
   }
   void readVelocities(std::vector<glm::vec4>& out) override { inner_.readVelocities(out); }
+  void writeState(const std::vector<glm::vec4>& x, const std::vector<glm::vec4>& v) override {
+    inner_.writeState(x, v);
+  }
 
  private:
   CpuSolver inner_;

@@ -1,0 +1,191 @@
+// The calibrated stiffness model's claims (sim/stiffness.h, DESIGN.md section 4), measured
+// through the Solver interface, so that the CPU reference (tests/cpu/stiffness_test.cpp) and
+// the GPU solver (tests/gpu/gpu_stiffness_test.cpp) are held to the same scenes and numbers.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "sim/cpu/cpu_solver.h"
+#include "sim/hair_state.h"
+#include "sim/hairstyle.h"
+#include "sim/head.h"
+#include "sim/measure.h"
+#include "sim/preset.h"
+#include "sim/solver.h"
+
+namespace csm::test {
+
+using MakeSolver = std::function<std::unique_ptr<Solver>()>;
+
+// The built-in default preset (nodding, a light gusty breeze, head collisions only) with its
+// first `strands` strands. Strands touch only the head, so each moves as it does among all
+// 3,000: a sample of the full scene, not a different one.
+inline Scene defaultScene(int strands = 300) {
+  Scene s;
+  s.config = defaultConfig();
+  s.config.hairstyle.strands = strands;
+  s.groom = growHairstyle(s.config.hairstyle, s.config.head.spheres, s.config.collision.radius);
+  return s;
+}
+
+// Positions after `seconds` of the scene, the head following its motion.
+inline std::vector<glm::vec4> runFor(const MakeSolver& make, const Scene& scene, double seconds) {
+  std::unique_ptr<Solver> solver = make();
+  SceneRunner run(*solver, scene);
+  run.runTo(seconds);
+  std::vector<glm::vec4> x;
+  solver->readPositions(x);
+  return x;
+}
+
+inline double distance(const glm::vec4& a, const glm::vec4& b) {
+  const double d = glm::length(glm::dvec3(a.x, a.y, a.z) - glm::dvec3(b.x, b.y, b.z));
+  return std::isfinite(d) ? d : 1e30;
+}
+
+// RMS distance (m) over every particle.
+inline double rmsDistance(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) sum += distance(a[i], b[i]) * distance(a[i], b[i]);
+  return std::sqrt(sum / double(std::max<size_t>(a.size(), 1)));
+}
+
+// RMS distance (m) over the strands' tips.
+inline double tipRms(const Groom& g, const std::vector<glm::vec4>& a,
+                     const std::vector<glm::vec4>& b) {
+  double sum = 0.0;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    const uint32_t tip = g.first[s + 1] - 1;
+    sum += distance(a[tip], b[tip]) * distance(a[tip], b[tip]);
+  }
+  return std::sqrt(sum / double(std::max<size_t>(g.strandCount(), 1)));
+}
+
+// The clamped strand: 12 cm, held horizontally over its first seventh, under gravity, with the
+// default calibrated stiffness.
+inline constexpr double kStrandLength = 0.12;
+inline Scene clampedStrand(int particles, int substeps = 1, double frameDt = 1.0 / 60.0) {
+  Scene s = cantileverScene(particles, kStrandLength, 1);
+  s.config.sim.stiffnessModel = StiffnessModel::Calibrated;
+  s.config.sim.substeps = substeps;
+  s.config.sim.maxSubsteps = 256;
+  s.config.sim.dt = float(frameDt);
+  return s;
+}
+
+// Its sag (m): root height minus tip height, settled by strong damping (10/s for 2 s), the
+// mean over the last quarter second.
+inline double clampedSag(const MakeSolver& make, int particles, int substeps = 1,
+                         double frameDt = 1.0 / 60.0) {
+  Scene s = clampedStrand(particles, substeps, frameDt);
+  s.config.sim.damping = 10.0f;
+  std::unique_ptr<Solver> solver = make();
+  SceneRunner run(*solver, s);
+  std::vector<glm::vec4> x;
+  double sum = 0.0;
+  int count = 0;
+  while (run.time() < 2.0 - 0.5 * frameDt) {
+    run.frame();
+    if (run.time() <= 1.75) continue;
+    solver->readPositions(x);
+    sum += double(x.front().y) - double(x.back().y);
+    ++count;
+  }
+  return sum / std::max(1, count);
+}
+
+// Its swing: released at rest, lightly damped (the default 1/s), the tip's path over 1 s, one
+// point a frame.
+inline std::vector<glm::dvec3> swingTip(const MakeSolver& make, int particles) {
+  const Scene s = clampedStrand(particles);
+  std::unique_ptr<Solver> solver = make();
+  SceneRunner run(*solver, s);
+  std::vector<glm::dvec3> tip;
+  std::vector<glm::vec4> x;
+  while (run.time() < 1.0 - 0.5 * s.config.sim.dt) {
+    run.frame();
+    solver->readPositions(x);
+    tip.emplace_back(x.back().x, x.back().y, x.back().z);
+  }
+  return tip;
+}
+
+inline double pathRms(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+  double sum = 0.0;
+  const size_t n = std::min(a.size(), b.size());
+  for (size_t f = 0; f < n; ++f) sum += glm::dot(a[f] - b[f], a[f] - b[f]);
+  return n ? std::sqrt(sum / double(n)) : 1e30;
+}
+
+// A free strand (nothing pinned, no gravity, damping, wind, strain limit or collisions), bent
+// and twisted away from its curled rest shape and thrown: only the goals act, and they must
+// not change the total momentum. Returns the largest |P(k+1) - P(k)| / |P(k)| over `steps`
+// single steps, P = sum m v with the masses the goals weigh by (each particle the half
+// segments beside it, in double: HairState's float masses carry 6e-8 of rounding) and, from the
+// CPU reference, its double velocities (read back as float they carry as much).
+inline double momentumDrift(const MakeSolver& make, int steps) {
+  Groom g;
+  std::vector<glm::vec3> pts;
+  for (int i = 0; i < 24; ++i) {
+    const float a = 0.35f * float(i);
+    pts.emplace_back(0.02f * std::cos(a), -0.012f * float(i), 0.02f * std::sin(a));
+  }
+  g.addStrand(pts);
+  Config c;
+  c.sim.stiffnessModel = StiffnessModel::Calibrated;
+  c.sim.pinned = 0;
+  c.sim.rootLength = 0.0f;
+  c.sim.gravity = glm::vec3(0.0f);
+  c.sim.damping = 0.0f;
+  c.sim.strainLimiting = false;
+  c.sim.substeps = 1;
+  c.sim.dt = 1.0f / 240.0f;
+  c.collision.mode = CollisionMode::Off;
+  c.wind.strength = 0.0f;
+  c.head.motion = HeadMotion::None;
+  const HairState st = makeHairState(g, c.sim, Pose{});
+  std::vector<double> mass(pts.size(), 0.0);
+  for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    const double half = 0.5 * glm::length(glm::dvec3(pts[i + 1]) - glm::dvec3(pts[i]));
+    mass[i] += half;
+    mass[i + 1] += half;
+  }
+  std::unique_ptr<Solver> solver = make();
+  solver->reset(g, c, Pose{});
+  std::vector<glm::vec4> x(st.position), v(st.position.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const float t = float(i);
+    x[i] += glm::vec4(0.004f * std::sin(0.9f * t), 0.003f * std::cos(0.7f * t),
+                      0.002f * std::sin(1.3f * t), 0.0f);
+    v[i] = glm::vec4(0.3f + 0.2f * std::sin(t), -0.1f + 0.15f * std::cos(1.7f * t),
+                     0.2f + 0.1f * std::sin(2.3f * t), 0.0f);
+  }
+  solver->writeState(x, v);
+  auto momentum = [&] {
+    glm::dvec3 p(0.0);
+    if (const auto* cpu = dynamic_cast<const CpuSolver*>(solver.get())) {
+      for (size_t i = 0; i < cpu->velocities().size(); ++i) p += mass[i] * cpu->velocities()[i];
+      return p;
+    }
+    std::vector<glm::vec4> vel;
+    solver->readVelocities(vel);
+    for (size_t i = 0; i < vel.size(); ++i) p += mass[i] * glm::dvec3(glm::vec3(vel[i]));
+    return p;
+  };
+  double worst = 0.0;
+  glm::dvec3 before = momentum();
+  for (int k = 0; k < steps; ++k) {
+    solver->stepFrame(Pose{}, Pose{});
+    const glm::dvec3 after = momentum();
+    worst = std::max(worst, glm::length(after - before) / glm::length(before));
+    before = after;
+  }
+  return worst;
+}
+
+}  // namespace csm::test
