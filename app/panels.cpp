@@ -123,7 +123,17 @@ void drawStiffnessInfo(const Viewer& viewer) {
   const StiffnessInfo info = viewer.simulation().solver().stiffness();
   if (info.strands == 0) return;
   ImGui::Indent();
-  ImGui::TextDisabled("%s", stiffnessText(info).c_str());
+  std::string text = stiffnessText(info);
+  const SimConfig& sim = viewer.simulation().config().sim;
+  if (info.model == StiffnessModel::Calibrated) {
+    char ei[64];
+    std::snprintf(ei, sizeof ei, "; EI = B x density = %.3g N m^2",
+                  double(sim.bendingStiffness) * double(sim.density));
+    text += ei;
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "What this stiffness comes to in the running solver: steps per frame (calibrated: the "
@@ -289,7 +299,8 @@ void drawParameterPanel(Viewer& viewer, PanelState& state) {
   drawControls(viewer);
   drawPresetSection(viewer, state);
   for (const ParamGroup& group : paramGroups()) {
-    const bool open = group.name == "Hairstyle" || group.name == "Wind";
+    const bool open =
+        group.name == "Hairstyle" || group.name == "Simulation" || group.name == "Wind";
     if (ImGui::CollapsingHeader(group.name.c_str(), open ? ImGuiTreeNodeFlags_DefaultOpen : 0))
       drawGroupContents(group, viewer);
   }

@@ -31,6 +31,7 @@ FAMILY_STYLE = {
     "CSM calibrated": ("#2ca02c", "o"),
     "GPU CSM calibrated": ("#006400", "*"),
     "CSM calibrated (steps capped)": ("#2ca02c", "o"),
+    "CSM calibrated + DFTL 0.9 (steps capped)": ("#2ca02c", "^"),
     "CSM, no strain limit": ("#17becf", "v"),
     "CSM + DFTL 0.9": ("#bcbd22", "^"),
     "CSM, hair-hair collisions": ("#9467bd", "P"),
@@ -270,6 +271,9 @@ def resolution_chart(rows, out):
             colour = {"w = 2 particles": "#1f77b4", "w = 4 particles": "#aec7e8"}.get(
                 lab, "#2ca02c" if "3.3" in lab else "#98df8a")
             ls = "--" if "cm" in lab else "-"
+        elif fam == "CSM calibrated":
+            colour = "#54278f" if lab.startswith("2 cm") else "#000000"
+            ls = "-"
         name = f"{fam}: {lab}"
         a1.plot([p[0] for p in pts], [p[1] for p in pts], marker=marker, color=colour,
                 linestyle=ls, label=name)

@@ -63,6 +63,17 @@ void runStability(const Options& o) {
          s.bendingStiffness = float(b);
          return s;
        }},
+      {"CSM calibrated + DFTL 0.9 (steps capped)", "bending stiffness B (m^4/s^2), 4 cm window",
+       o.quick ? std::vector<double>{1e-4, 1e-3, 1e-2, 1e-1}
+               : std::vector<double>{1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 1.0},
+       [](double b) {
+         Setting s;
+         s.solver = "csm";
+         s.model = StiffnessModel::Calibrated;
+         s.bendingStiffness = float(b);
+         s.dftl = 0.9f;
+         return s;
+       }},
       {"MS explicit", "stretch stiffness EA (N), bending 0.2 EA", ea, springs("ms-explicit")},
       {"MS implicit", "stretch stiffness EA (N), bending 0.2 EA", ea, springs("ms-implicit")},
       {"PBD", "iterations per step (k = 1, bending 0.5)",

@@ -246,6 +246,49 @@ TEST_CASE(
   removeTemp(dir);
 }
 
+TEST_CASE("window: the stiffness window changes live; a capped stiffness is said", "[window]") {
+  std::unique_ptr<Viewer> v = makeViewer();
+  REQUIRE(v->loadPreset((kSource / "presets/default.json").string()));
+  REQUIRE(v->setParam("hairstyle.strands", "300"));
+  runFrames(*v, 2);
+  const long generation = v->simulation().generation();
+  const StiffnessInfo before = v->simulation().solver().stiffness();
+  CHECK(before.model == StiffnessModel::Calibrated);
+  CHECK(before.windowMax == 2);  // 4 cm on 2 cm segments
+  CHECK(before.plan.substeps == 4);
+  CHECK_FALSE(before.plan.capped);
+
+  // Half the window: one particle a side, a stiffer rate, more steps; live, not regrown.
+  REQUIRE(v->setParam("sim.window_length", "0.02"));
+  const StiffnessInfo half = v->simulation().solver().stiffness();
+  CHECK(v->simulation().generation() == generation);
+  CHECK(half.windowMax == 1);
+  CHECK(half.rateMax > 10.0 * before.rateMax);
+  CHECK(half.plan.substeps > before.plan.substeps);
+  runFrames(*v, 2);
+
+  // Capped: a warning in the log, once.
+  REQUIRE(v->setParam("sim.max_substeps", "5"));
+  CHECK(v->simulation().solver().stiffness().plan.capped);
+  auto warnings = [&] {
+    return std::count_if(v->messages().begin(), v->messages().end(), [](const ViewerMessage& m) {
+      return m.level == MessageLevel::Warning && m.text.find("max_substeps") != std::string::npos;
+    });
+  };
+  CHECK(warnings() == 1);
+  REQUIRE(v->setParam("wind.strength", "2"));  // another live change: no second warning
+  CHECK(warnings() == 1);
+  runFrames(*v, 2);
+  CHECK_FALSE(v->nanStopped());
+
+  // The paper model takes its window in particles and sim.substeps as they are.
+  REQUIRE(v->setParam("sim.stiffness_model", "paper"));
+  const StiffnessInfo paper = v->simulation().solver().stiffness();
+  CHECK(paper.model == StiffnessModel::Paper);
+  CHECK(paper.plan.substeps == v->simulation().config().sim.substeps);
+  CHECK(paper.windowMax == v->simulation().config().sim.stiffnessWindow);
+}
+
 TEST_CASE("window: a broken preset shows its messages and the scene keeps running", "[window]") {
   const fs::path dir = tempDir();
   std::unique_ptr<Viewer> v = makeViewer();
