@@ -60,7 +60,7 @@ for strands in 1000 3000 10000 30000 100000; do
 done
 for w in 1 2 4 8 15; do
   row "Fig. 1, head only, w=$w" gpu "$fig1" "$frames" --set collision.mode=head \
-    --set sim.stiffness_window=$w
+    --set sim.stiffness_model=paper --set sim.stiffness_window=$w
 done
 echo
 echo "Load after: $(uptime | sed 's/.*load average: //')"

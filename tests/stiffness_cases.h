@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
 #include "sim/cpu/cpu_solver.h"
@@ -186,6 +187,89 @@ inline double momentumDrift(const MakeSolver& make, int steps) {
     before = after;
   }
   return worst;
+}
+
+// ---- The claims, asserted on a solver (each a TEST_CASE in both tiers) -------------------------
+
+// Density 5e-6, 1e-4 and 1e-2 kg/m: the default scene agrees within 1 um RMS after 1 s.
+inline void checkDensityCancels(const MakeSolver& make) {
+  Scene s = defaultScene();
+  const auto reference = runFor(make, s, 1.0);
+  for (float density : {5e-6f, 1e-2f}) {
+    s.config.sim.density = density;
+    const double rms = rmsDistance(runFor(make, s, 1.0), reference);
+    INFO("density " << density << ": RMS " << rms << " m from 1e-4 kg/m");
+    CHECK(rms < 1e-6);
+  }
+}
+
+// A clamped strand's sag at 8, 16 and 32 substeps within 2% of 64.
+inline void checkSagAcrossSubsteps(const MakeSolver& make) {
+  const double reference = clampedSag(make, 16, 64);
+  CHECK(reference > 0.02);  // it does sag: 12 cm of hair, not a rod
+  for (int substeps : {8, 16, 32}) {
+    const double sag = clampedSag(make, 16, substeps);
+    INFO(substeps << " substeps: sag " << sag << " m, 64 substeps: " << reference << " m");
+    CHECK(std::abs(sag / reference - 1.0) < 0.02);
+  }
+}
+
+// The nodding default scene: tip RMS between N and 2N substeps <= 2 mm, shrinking with h.
+inline void checkSceneConverges(const MakeSolver& make) {
+  const Scene s = defaultScene();
+  std::vector<std::vector<glm::vec4>> runs;
+  for (int substeps : {8, 16, 32, 64}) {
+    Scene n = s;
+    n.config.sim.substeps = substeps;
+    runs.push_back(runFor(make, n, 1.0));
+  }
+  double previous = 1e30;
+  for (size_t k = 0; k + 1 < runs.size(); ++k) {
+    const double rms = tipRms(s.groom, runs[k], runs[k + 1]);
+    INFO((8 << k) << " against " << (16 << k) << " substeps: tip RMS " << rms * 1000 << " mm");
+    CHECK(rms <= 0.002);
+    CHECK(rms < previous);
+    previous = rms;
+  }
+}
+
+// sim.dt 1/30 and 1/120 against 1/60 with automatic substeps: sag within 2%, tip RMS <= 5 mm.
+inline void checkFrameRates(const MakeSolver& make) {
+  const double sag60 = clampedSag(make, 16, 1, 1.0 / 60.0);
+  Scene s = defaultScene();
+  s.config.sim.substeps = 1;
+  const auto at60 = runFor(make, s, 1.0);
+  for (double dt : {1.0 / 30.0, 1.0 / 120.0}) {
+    const double sag = clampedSag(make, 16, 1, dt);
+    Scene f = s;
+    f.config.sim.dt = float(dt);
+    const double rms = tipRms(s.groom, runFor(make, f, 1.0), at60);
+    INFO("dt " << dt << ": sag " << sag << " m (" << sag60 << " at 1/60 s), tip RMS " << rms * 1000
+               << " mm");
+    CHECK(std::abs(sag / sag60 - 1.0) < 0.02);
+    CHECK(rms <= 0.005);
+  }
+}
+
+// 16 and 24 particles against 32: sag within 15%, swing tip RMS <= 10 mm.
+inline void checkResolution(const MakeSolver& make) {
+  const double sag32 = clampedSag(make, 32);
+  const auto swing32 = swingTip(make, 32);
+  for (int particles : {16, 24}) {
+    const double sag = clampedSag(make, particles);
+    const double rms = pathRms(swingTip(make, particles), swing32);
+    INFO(particles << " particles: sag " << sag << " m (" << sag32 << " m at 32), swing tip RMS "
+                   << rms * 1000 << " mm");
+    CHECK(std::abs(sag / sag32 - 1.0) < 0.15);
+    CHECK(rms <= 0.010);
+  }
+}
+
+// Sum m v of a free strand changes by less than `tolerance` of itself a step.
+inline void checkMomentum(const MakeSolver& make, double tolerance) {
+  const double drift = momentumDrift(make, 200);
+  INFO("largest relative change of the momentum in one step: " << drift);
+  CHECK(drift < tolerance);
 }
 
 }  // namespace csm::test

@@ -38,6 +38,19 @@ void runStability(const Options& o) {
       return s;
     };
   };
+  const std::vector<double> bending =
+      o.quick ? std::vector<double>{1e-4, 1e-3, 1e-2, 1e-1}
+              : std::vector<double>{1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 1.0};
+  auto calibrated = [](float dftl) {
+    return [=](double b) {
+      Setting s;
+      s.solver = "csm";
+      s.model = StiffnessModel::Calibrated;
+      s.bendingStiffness = float(b);
+      s.dftl = dftl;
+      return s;
+    };
+  };
   auto springs = [](const char* name) {
     return [=](double k) {
       Setting s;
@@ -53,27 +66,10 @@ void runStability(const Options& o) {
       {"CSM + DFTL 0.9", "stiffness window w", windows, csm(true, 0.9f)},
       // Calibrated: the steps per frame capped at the map's, so that each column is one h;
       // alpha = min(1, k h^2) then saturates at 1 where the stiffness asks for more.
-      {"CSM calibrated (steps capped)", "bending stiffness B (m^4/s^2), 4 cm window",
-       o.quick ? std::vector<double>{1e-4, 1e-3, 1e-2, 1e-1}
-               : std::vector<double>{1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 1.0},
-       [](double b) {
-         Setting s;
-         s.solver = "csm";
-         s.model = StiffnessModel::Calibrated;
-         s.bendingStiffness = float(b);
-         return s;
-       }},
+      {"CSM calibrated (steps capped)", "bending stiffness B (m^4/s^2), 4 cm window", bending,
+       calibrated(0.0f)},
       {"CSM calibrated + DFTL 0.9 (steps capped)", "bending stiffness B (m^4/s^2), 4 cm window",
-       o.quick ? std::vector<double>{1e-4, 1e-3, 1e-2, 1e-1}
-               : std::vector<double>{1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 1.0},
-       [](double b) {
-         Setting s;
-         s.solver = "csm";
-         s.model = StiffnessModel::Calibrated;
-         s.bendingStiffness = float(b);
-         s.dftl = 0.9f;
-         return s;
-       }},
+       bending, calibrated(0.9f)},
       {"MS explicit", "stretch stiffness EA (N), bending 0.2 EA", ea, springs("ms-explicit")},
       {"MS implicit", "stretch stiffness EA (N), bending 0.2 EA", ea, springs("ms-implicit")},
       {"PBD", "iterations per step (k = 1, bending 0.5)",
