@@ -58,7 +58,7 @@ void BaselineSolver::prepareStep(const Pose& head) {
   spheres_ = worldSpheres(config_.head.spheres, head);
 }
 
-glm::dvec3 BaselineSolver::externalAcceleration(uint32_t i) const {
+glm::dvec3 BaselineSolver::externalAcceleration(uint32_t i, double h) const {
   glm::dvec3 acc(config_.sim.gravity);
   const WindConfig& wind = config_.wind;
   if (wind.strength > 0.0f && wind.drag > 0.0f) {
@@ -68,7 +68,8 @@ glm::dvec3 BaselineSolver::externalAcceleration(uint32_t i) const {
     const double len = glm::length(d);
     const glm::dvec3 t = len > 1e-15 ? d / len : glm::dvec3(0.0);
     const glm::dvec3 rel = windVelocity(wind, x_[i], time_) - v_[i];
-    acc += double(wind.drag) * (rel - glm::dot(rel, t) * t);
+    const double c = wind.drag;
+    acc += c / (1.0 + h * c) * (rel - glm::dot(rel, t) * t);
   }
   return acc;
 }
@@ -97,7 +98,7 @@ bool BaselineSolver::projectOutOfHead(glm::dvec3& p) const {
 }
 
 void BaselineSolver::damp(double h) {
-  const double keep = std::max(0.0, 1.0 - double(config_.sim.damping) * h);
+  const double keep = std::exp(-double(config_.sim.damping) * h);
   for (uint32_t i = 0; i < x_.size(); ++i)
     if (!pinned(i)) v_[i] *= keep;
 }

@@ -60,8 +60,9 @@ class BaselineSolver : public Solver {
   virtual void onReset() {}
 
   bool pinned(uint32_t i) const { return int(i - first_[strandOf_[i]]) < config_.sim.pinned; }
-  // Gravity, wind drag across the strand (as the CSM solver applies it) and nothing else.
-  glm::dvec3 externalAcceleration(uint32_t i) const;
+  // Gravity, wind drag across the strand (as the CSM solver applies it: implicit in the
+  // velocity over a step of h, c / (1 + h c)) and nothing else.
+  glm::dvec3 externalAcceleration(uint32_t i, double h) const;
   // Moves p out of every head sphere (radius + hair radius) by radial projection.
   // Returns true when it moved. Does nothing when collisions are off.
   bool projectOutOfHead(glm::dvec3& p) const;
@@ -69,7 +70,7 @@ class BaselineSolver : public Solver {
   glm::dvec3 rootTarget(uint32_t i, const Pose& head) const { return head.apply(rest_[i]); }
   // Sets spheres_ for the step's end pose.
   void prepareStep(const Pose& head);
-  // v *= 1 - damping h, as the CSM solver damps.
+  // v *= exp(-damping h), as the CSM solver damps.
   void damp(double h);
 
   BaselineParams params_;

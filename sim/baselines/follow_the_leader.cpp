@@ -18,7 +18,7 @@ void FollowTheLeader::step(double h, const Pose& head) {
       p_[i] = rootTarget(i, head);
       continue;
     }
-    v_[i] += h * externalAcceleration(i);
+    v_[i] += h * externalAcceleration(i, h);
     p_[i] = x_[i] + h * v_[i];
   }
   // Optional bending, which the paper leaves out: one pass of PBD bending constraints before

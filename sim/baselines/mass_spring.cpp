@@ -30,7 +30,7 @@ void forEachSpring(const std::vector<double>& restLength, const std::vector<doub
 
 void ExplicitMassSpring::step(double h, const Pose& head) {
   prepareStep(head);
-  for (uint32_t i = 0; i < x_.size(); ++i) force_[i] = mass_[i] * externalAcceleration(i);
+  for (uint32_t i = 0; i < x_.size(); ++i) force_[i] = mass_[i] * externalAcceleration(i, h);
   forEachSpring(restLength_, bendLength_, params_, [&](const Spring& s) {
     const glm::dvec3 d = x_[s.j] - x_[s.i];
     const double len = glm::length(d);
@@ -80,7 +80,7 @@ void ImplicitMassSpring::step(double h, const Pose& head) {
   for (uint32_t i = 0; i < n; ++i) {
     const bool p = pinned(i);
     addBlock(i, i, (p ? 1.0 : mass_[i]) * Eigen::Matrix3d::Identity());
-    const glm::dvec3 f = p ? dvPinned[i] : h * mass_[i] * externalAcceleration(i);
+    const glm::dvec3 f = p ? dvPinned[i] : h * mass_[i] * externalAcceleration(i, h);
     bAt(i) = Eigen::Vector3d(f.x, f.y, f.z);
   }
   forEachSpring(restLength_, bendLength_, params_, [&](const Spring& s) {

@@ -26,7 +26,7 @@ void PbdSolver::step(double h, const Pose& head) {
       p_[i] = rootTarget(i, head);
       continue;
     }
-    v_[i] += h * externalAcceleration(i);
+    v_[i] += h * externalAcceleration(i, h);
     p_[i] = x_[i] + h * v_[i];
   }
   const int iterations = std::max(1, params_.iterations);
