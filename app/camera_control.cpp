@@ -9,14 +9,14 @@
 #include <glm/trigonometric.hpp>
 
 #include "render/renderer.h"
-#include "sim/params.h"
+#include "app/params.h"
 
 namespace csm {
 namespace {
 
 // The parameter's own range, so the mouse can never set what a preset could not hold.
 float clampToParam(const char* key, float value) {
-  const Param* p = findParam(key);
+  const PresetParam* p = findParam(key);
   return p ? std::clamp(value, float(p->min), float(p->max)) : value;
 }
 
@@ -45,7 +45,7 @@ void panCamera(CameraConfig& camera, float dxPixels, float dyPixels, int viewpor
   const float perPixel =
       2.0f * camera.distance * std::tan(glm::radians(camera.fov) * 0.5f) / float(viewportHeight);
   glm::vec3 target = camera.target - right * (dxPixels * perPixel) + up * (dyPixels * perPixel);
-  const Param* p = findParam("camera.target");
+  const PresetParam* p = findParam("camera.target");
   if (p) target = glm::clamp(target, glm::vec3(float(p->min)), glm::vec3(float(p->max)));
   camera.target = target;
 }

@@ -3,6 +3,7 @@
 // and turning the head about the neck with the mouse. Pure math: no window, no ImGui.
 #pragma once
 
+#include "render/view_config.h"
 #include "sim/config.h"
 #include "sim/head.h"
 

@@ -45,12 +45,6 @@ struct PngWriteContext {
   ~PngWriteContext() { png_destroy_write_struct(&png, &info); }
 };
 
-struct PngReadContext {
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-  ~PngReadContext() { png_destroy_read_struct(&png, &info, nullptr); }
-};
-
 struct File {
   FILE* f = nullptr;
   ~File() {
@@ -87,39 +81,6 @@ bool writePng(const std::string& path, int width, int height, const std::vector<
     png_write_row(ctx.png, const_cast<png_bytep>(&rgb[std::size_t(y) * width * 3]));
   png_write_end(ctx.png, nullptr);
   if (std::fflush(file.f) != 0) return fail(std::string("cannot write: ") + std::strerror(errno));
-  return true;
-}
-
-bool readPng(const std::string& path, int& width, int& height, std::vector<std::uint8_t>& rgb,
-             std::string* error) {
-  auto fail = [&](const std::string& why) {
-    if (error) *error = path + ": " + why;
-    return false;
-  };
-  File file;
-  file.f = std::fopen(path.c_str(), "rb");
-  if (!file.f) return fail(std::string("cannot open: ") + std::strerror(errno));
-  PngReadContext ctx;
-  ctx.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  if (!ctx.png) return fail("libpng failed to start");
-  ctx.info = png_create_info_struct(ctx.png);
-  if (!ctx.info) return fail("libpng failed to start");
-  if (setjmp(png_jmpbuf(ctx.png))) return fail("not a readable PNG");
-  png_init_io(ctx.png, file.f);
-  png_read_info(ctx.png, ctx.info);
-  const png_uint_32 w = png_get_image_width(ctx.png, ctx.info);
-  const png_uint_32 h = png_get_image_height(ctx.png, ctx.info);
-  const int depth = png_get_bit_depth(ctx.png, ctx.info);
-  const int type = png_get_color_type(ctx.png, ctx.info);
-  if (depth != 8 || (type != PNG_COLOR_TYPE_RGB && type != PNG_COLOR_TYPE_RGBA))
-    return fail("expected an 8-bit RGB or RGBA PNG");
-  if (type == PNG_COLOR_TYPE_RGBA) png_set_strip_alpha(ctx.png);
-  png_read_update_info(ctx.png, ctx.info);
-  width = int(w);
-  height = int(h);
-  rgb.assign(std::size_t(w) * h * 3, 0);
-  for (png_uint_32 y = 0; y < h; ++y) png_read_row(ctx.png, &rgb[std::size_t(y) * w * 3], nullptr);
-  png_read_end(ctx.png, nullptr);
   return true;
 }
 

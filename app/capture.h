@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "render/gl/framebuffer.h"
-#include "render/gl/renderbuffer.h"
+#include "gl/framebuffer.h"
+#include "gl/renderbuffer.h"
 
 namespace csm {
 
@@ -34,9 +34,6 @@ class CaptureTarget {
 // Writes 8-bit RGB rows (top to bottom). False with the reason in `error`.
 bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb,
               std::string* error);
-// Reads an 8-bit RGB or RGBA PNG back as RGB, for tests. False with the reason in `error`.
-bool readPng(const std::string& path, int& width, int& height, std::vector<std::uint8_t>& rgb,
-             std::string* error);
 
 // The first executable called `name` on PATH, or "" when there is none.
 std::string findOnPath(const std::string& name);

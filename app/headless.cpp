@@ -6,12 +6,13 @@
 
 #include "app/capture.h"
 #include "app/metrics.h"
-#include "render/gl/context.h"
+#include "gl/context.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
 #include "sim/head.h"
 #include "sim/io/cyhair.h"
 #include "sim/metrics.h"
+#include "sim/gpu/make_solver.h"
 #include "sim/simulation.h"
 
 namespace csm {
@@ -34,7 +35,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   // Before anything is simulated: a missing ffmpeg or an unwritable directory fails at once.
   std::unique_ptr<VideoPipe> video;
   if (render && !options.video.empty()) {
-    const double fps = 1.0 / (double(scene.config.sim.dt) * options.every);
+    const double fps = 1.0 / (double(scene.preset.scene.sim.dt) * options.every);
     video = VideoPipe::open(options.video, options.width, options.height, fps, &error);
     if (!video) {
       std::fprintf(stderr, "csmhair: %s\n", error.c_str());
@@ -67,7 +68,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     return 1;
   }
   Simulation sim(std::move(solver));
-  if (!sim.load(scene.config, scene.baseDir, &error)) {
+  if (!sim.load(scene.preset.scene, scene.baseDir, &error)) {
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
     return 2;
   }
@@ -129,8 +130,8 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     if (renderer && (f + 1) % options.every == 0) {
       const unsigned buffer = positions.update(sim.solver());
       const auto r0 = Clock::now();
-      renderer->render(
-          frameViewOf(sim, buffer, target->width(), target->height(), target->framebuffer()));
+      renderer->render(frameViewOf(sim, scene.preset.view, buffer, target->width(),
+                                   target->height(), target->framebuffer()));
       CaptureTarget::waitForGpu();
       lastRenderMs = std::chrono::duration<double, std::milli>(Clock::now() - r0).count();
       recorder.addRender(lastRenderMs, renderer->stageTimes());
@@ -192,7 +193,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   if (!options.metrics.empty()) {
     const Config& c = sim.config();
     nlohmann::json meta = {
-        {"preset", c.name},
+        {"preset", scene.preset.name},
         {"source", scene.source},
         {"strands", sim.solver().strandCount()},
         {"particles", sim.solver().particleCount()},

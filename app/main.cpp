@@ -4,8 +4,8 @@
 #include "app/cli.h"
 #include "app/headless.h"
 #include "app/scene_setup.h"
-#include "sim/params.h"
-#include "sim/preset.h"
+#include "app/params.h"
+#include "app/preset.h"
 #ifdef CSM_HAVE_VIEWER
 #include "app/viewer.h"
 #endif
@@ -13,9 +13,9 @@
 namespace {
 
 int listParams() {
-  const csm::Config defaults = csm::defaultConfig();
+  const csm::Preset defaults = csm::defaultPreset();
   std::string group;
-  for (const csm::Param& p : csm::params()) {
+  for (const csm::PresetParam& p : csm::params()) {
     if (p.group != group) {
       group = p.group;
       std::printf("\n[%s]\n", group.c_str());
@@ -31,10 +31,10 @@ int listParams() {
 int validate(const std::vector<std::string>& files) {
   int status = 0;
   for (const std::string& f : files) {
-    csm::Config c = csm::defaultConfig();
+    csm::Preset c = csm::defaultPreset();
     csm::PresetErrors errors;
     if (csm::loadPreset(f, c, errors)) {
-      std::printf("%s: ok (%d strands)\n", f.c_str(), c.hairstyle.strands);
+      std::printf("%s: ok (%d strands)\n", f.c_str(), c.scene.hairstyle.strands);
     } else {
       std::fputs(errors.text().c_str(), stderr);
       status = 2;
@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
     // The window opens anyway, on the built-in scene, and shows the messages.
     if (!options->headless && options->savePreset.empty()) {
       csm::SceneSetup builtIn;
-      builtIn.config = csm::defaultConfig();
+      builtIn.preset = csm::defaultPreset();
       builtIn.source = "<built-in default preset>";
       return csm::runViewer(*options, builtIn, error);
     }
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (!options->savePreset.empty()) {
-    if (!csm::savePreset(options->savePreset, scene.config, &error)) {
+    if (!csm::savePreset(options->savePreset, scene.preset, &error)) {
       std::fprintf(stderr, "csmhair: %s\n", error.c_str());
       return 1;
     }

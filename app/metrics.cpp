@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "sim/preset.h"
+#include "app/preset.h"
 
 namespace csm {
 

@@ -28,7 +28,7 @@ ParamGroup& child(ParamGroup& parent, std::string_view name) {
 
 std::vector<ParamGroup> buildGroups() {
   ParamGroup root;
-  for (const Param& p : params()) {
+  for (const PresetParam& p : params()) {
     ParamGroup* g = &root;
     std::string_view rest = p.group;
     while (!rest.empty()) {
@@ -55,7 +55,7 @@ const char* effectText(Effect e) {
   return "";
 }
 
-void paramTooltip(const Param& p) {
+void paramTooltip(const PresetParam& p) {
   // Also on a greyed-out parameter: its description says which stiffness model it is for.
   if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
   ImGui::BeginTooltip();
@@ -78,15 +78,16 @@ struct EditTracker {
   }
 };
 
-ImGuiSliderFlags sliderFlags(const Param& p) {
+ImGuiSliderFlags sliderFlags(const PresetParam& p) {
   return ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
 }
 
-float dragSpeed(const Param& p) {
+float dragSpeed(const PresetParam& p) {
   return float(std::max(1e-4, (p.max - p.min) * 5e-4));
 }
 
-void sphereWidgets(const Param& p, Config& config, const std::string& label, EditTracker& edit) {
+void sphereWidgets(const PresetParam& p, Preset& config, const std::string& label,
+                   EditTracker& edit) {
   std::vector<Sphere>& spheres = p.ref<std::vector<Sphere>>(config);
   const bool open = ImGui::TreeNode(label.c_str());
   paramTooltip(p);
@@ -149,10 +150,10 @@ void drawStiffnessInfo(const Viewer& viewer) {
 }
 
 void drawGroupContents(const ParamGroup& group, Viewer& viewer) {
-  Config& edited = viewer.editedConfig();
+  Preset& edited = viewer.editedConfig();
   bool apply = false;
-  for (const Param* p : group.params) {
-    const bool applies = !p->applies || p->applies(edited);
+  for (const PresetParam* p : group.params) {
+    const bool applies = p->applies(edited);
     if (!applies) ImGui::BeginDisabled();
     const ParamEdit e = paramWidget(*p, edited);
     if (!applies) ImGui::EndDisabled();
@@ -161,7 +162,7 @@ void drawGroupContents(const ParamGroup& group, Viewer& viewer) {
       drawStiffnessInfo(viewer);
   }
   // Apply once, after the loop: applyConfig refreshes the edited copy.
-  if (apply) viewer.applyConfig(Config(edited));
+  if (apply) viewer.applyConfig(Preset(edited));
   for (const ParamGroup& sub : group.children) {
     if (ImGui::TreeNode(sub.name.c_str())) {
       drawGroupContents(sub, viewer);
@@ -213,7 +214,7 @@ const std::vector<ParamGroup>& paramGroups() {
   return groups;
 }
 
-ParamEdit paramWidget(const Param& p, Config& config) {
+ParamEdit paramWidget(const PresetParam& p, Preset& config) {
   ImGui::PushID(p.key.data(), p.key.data() + p.key.size());
   const std::string label = str(p.label);
   EditTracker edit;

@@ -8,8 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/config.h"
-#include "sim/params.h"
+#include "app/params.h"
 
 namespace csm {
 
@@ -28,7 +27,7 @@ struct PanelState {
 // The parameter table as a tree of groups, in the table's order.
 struct ParamGroup {
   std::string name;
-  std::vector<const Param*> params;
+  std::vector<const PresetParam*> params;
   std::vector<ParamGroup> children;
 };
 const std::vector<ParamGroup>& paramGroups();
@@ -39,7 +38,7 @@ enum class ParamEdit {
   Pending  // a parameter that regrows the hair is being dragged: apply on release
 };
 // One widget for one parameter, chosen by its type, editing `config` in place.
-ParamEdit paramWidget(const Param& p, Config& config);
+ParamEdit paramWidget(const PresetParam& p, Preset& preset);
 
 // Every panel and banner of one frame; widgets that change the scene call
 // Viewer::applyConfig (or the viewer's other actions).

@@ -39,8 +39,7 @@ std::string shortName(const std::filesystem::path& file, const PanelState& state
 void drawPresetSection(Viewer& viewer, PanelState& state) {
   if (!ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) return;
   rescan(viewer, state);
-  const Config& c = viewer.simulation().config();
-  ImGui::Text("%s", c.name.c_str());
+  ImGui::Text("%s", viewer.preset().name.c_str());
   const std::vector<std::string_view> changed = viewer.modifiedKeys();
   if (!changed.empty()) {
     ImGui::SameLine();

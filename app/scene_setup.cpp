@@ -2,8 +2,9 @@
 
 #include <filesystem>
 
-#include "sim/params.h"
-#include "sim/preset.h"
+#include "app/params.h"
+#include "app/preset.h"
+#include "sim/scene_checks.h"
 
 namespace csm {
 
@@ -14,35 +15,36 @@ bool isGroomFile(const std::string& path) {
 
 bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {
   namespace fs = std::filesystem;
-  out.config = defaultConfig();
+  out.preset = defaultPreset();
   out.baseDir.clear();
   out.source = "<built-in default preset>";
   if (!options.preset.empty()) {
     if (isGroomFile(options.preset)) {
       // A groom opened directly: the default scene with the groom instead of the generator.
-      out.config.name = fs::path(options.preset).stem().string();
-      out.config.hairstyle.file = fs::absolute(options.preset).lexically_normal().string();
-      out.config.hairstyle.strands = 1000000;  // every strand of the file
-      out.config.hairstyle.maxParticles = 32;
+      out.preset.name = fs::path(options.preset).stem().string();
+      HairstyleConfig& h = out.preset.scene.hairstyle;
+      h.file = fs::absolute(options.preset).lexically_normal().string();
+      h.strands = 1000000;  // every strand of the file
+      h.maxParticles = 32;
       out.source = options.preset;
     } else {
       PresetErrors pe;
-      Config c = out.config;
+      Preset c = out.preset;
       if (!loadPreset(options.preset, c, pe)) {
         if (errors) *errors = pe.text();
         return false;
       }
-      out.config = c;
+      out.preset = c;
       out.source = options.preset;
       out.baseDir = fs::absolute(options.preset).parent_path().string();
     }
   }
   std::string msgs;
   for (const auto& [key, value] : options.sets) {
-    const Param* p = findParam(key);
+    const PresetParam* p = findParam(key);
     if (!p) {
       std::string near;
-      for (const Param& q : params())
+      for (const PresetParam& q : params())
         if (q.key.substr(0, q.key.find('.')) == key.substr(0, key.find('.')))
           near += (near.empty() ? "" : ", ") + std::string(q.key);
       msgs +=
@@ -51,13 +53,13 @@ bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {
           "\n";
       continue;
     }
-    std::string err = paramFromText(*p, out.config, value);
+    std::string err = paramFromText(*p, out.preset, value);
     if (!err.empty()) msgs += "--set " + key + "=" + value + ": " + err + "\n";
   }
   if (msgs.empty()) {
-    for (const std::string& e : crossCheck(out.config))
+    for (const std::string& e : crossCheck(out.preset.scene))
       msgs += out.source + " with --set: " + e + "\n";
-    std::string capacity = checkCapacity(out.config);
+    std::string capacity = checkCapacity(out.preset.scene);
     if (!capacity.empty()) msgs += capacity + "\n";
   }
   if (!msgs.empty()) {

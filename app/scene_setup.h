@@ -5,12 +5,12 @@
 #include <string>
 
 #include "app/cli.h"
-#include "sim/config.h"
+#include "app/preset.h"
 
 namespace csm {
 
 struct SceneSetup {
-  Config config;
+  Preset preset;
   std::string baseDir;  // where relative paths in the preset point
   std::string source;   // what the scene came from, for messages
 };

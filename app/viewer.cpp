@@ -16,13 +16,15 @@
 #include "app/camera_control.h"
 #include "app/panels.h"
 #include "app/window.h"
-#include "render/gl/debug.h"
-#include "render/gl/framebuffer.h"
-#include "render/gl/shader_source.h"
+#include "gl/debug.h"
+#include "gl/framebuffer.h"
+#include "gl/shader_source.h"
 #include "render/renderer.h"
+#include "sim/gpu/make_solver.h"
 #include "sim/metrics.h"
-#include "sim/params.h"
-#include "sim/preset.h"
+#include "app/params.h"
+#include "sim/scene_checks.h"
+#include "app/preset.h"
 
 namespace csm {
 namespace {
@@ -52,7 +54,7 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   v->window_ = GlfwWindow::create(wo, error);
   if (!v->window_) return nullptr;
 
-  // Messages from render/gl (shader logs, GL errors) go to the Messages panel too.
+  // Messages from gl (shader logs, GL errors) go to the Messages panel too.
   gl::setLogSink([raw = v.get()](gl::LogLevel level, std::string_view text) {
     raw->log(level == gl::LogLevel::Error     ? MessageLevel::Error
              : level == gl::LogLevel::Warning ? MessageLevel::Warning
@@ -117,13 +119,15 @@ void Viewer::log(MessageLevel level, std::string text) {
 
 // --- The scene -------------------------------------------------------------------------
 
-bool Viewer::open(const Config& config, const std::string& baseDir, const std::string& presetPath,
+bool Viewer::open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
                   std::string* error) {
-  if (!sim_->load(config, baseDir, error)) return false;
+  if (!sim_->load(preset.scene, baseDir, error)) return false;
   sim_->setUserPose(Pose{});
   sim_->reset();
-  loaded_ = config;
-  edited_ = sim_->config();
+  loaded_ = preset;
+  current_ = preset;
+  current_.scene = sim_->config();
+  edited_ = current_;
   presetPath_ = presetPath;
   paused_ = false;
   afterSceneChange();
@@ -136,7 +140,7 @@ bool Viewer::open(const Config& config, const std::string& baseDir, const std::s
 }
 
 bool Viewer::loadPreset(const std::string& path) {
-  Config c = defaultConfig();
+  Preset c = defaultPreset();
   PresetErrors errors;
   if (!csm::loadPreset(path, c, errors)) {
     presetErrors_ = errors.messages;
@@ -168,19 +172,21 @@ void Viewer::showPresetErrors(const std::string& text, const std::string& note) 
   }
 }
 
-bool Viewer::applyConfig(const Config& next) {
-  std::vector<std::string> problems = crossCheck(next);
-  const std::string capacity = checkCapacity(next);
+bool Viewer::applyConfig(const Preset& next) {
+  std::vector<std::string> problems = crossCheck(next.scene);
+  const std::string capacity = checkCapacity(next.scene);
   if (!capacity.empty()) problems.push_back(capacity);
   std::string error;
   const long generation = sim_->generation();
-  if (problems.empty() && !sim_->setConfig(next, &error)) problems.push_back(error);
+  if (problems.empty() && !sim_->setConfig(next.scene, &error)) problems.push_back(error);
   if (!problems.empty()) {
     for (const std::string& p : problems) log(MessageLevel::Error, "not applied: " + p);
-    edited_ = sim_->config();  // the widgets show what runs
+    edited_ = current_;  // the widgets show what runs
     return false;
   }
-  edited_ = sim_->config();
+  current_ = next;
+  current_.scene = sim_->config();
+  edited_ = current_;
   if (sim_->generation() != generation) {
     afterSceneChange();
     log(MessageLevel::Info, "regrew the hair: " + std::to_string(sim_->solver().strandCount()) +
@@ -200,12 +206,12 @@ void Viewer::checkStiffness() {
 }
 
 bool Viewer::setParam(std::string_view key, std::string_view text, std::string* error) {
-  const Param* p = findParam(key);
+  const PresetParam* p = findParam(key);
   std::string why;
   if (!p) {
     why = std::string(key) + ": unknown parameter";
   } else {
-    Config next = sim_->config();
+    Preset next = current_;
     why = paramFromText(*p, next, text);
     if (why.empty()) {
       if (applyConfig(next)) return true;
@@ -231,11 +237,11 @@ bool Viewer::save() {
 
 bool Viewer::saveAs(const std::string& path) {
   std::string error;
-  if (!csm::savePreset(path, sim_->config(), &error)) {
+  if (!csm::savePreset(path, current_, &error)) {
     log(MessageLevel::Error, "save failed: " + error);
     return false;
   }
-  loaded_ = sim_->config();
+  loaded_ = current_;
   presetPath_ = path;
   log(MessageLevel::Info, "saved " + path);
   updateTitle();
@@ -248,8 +254,8 @@ void Viewer::revert() {
 
 std::vector<std::string_view> Viewer::modifiedKeys() const {
   std::vector<std::string_view> keys;
-  for (const Param& p : params())
-    if (p.group != "Camera" && !sameValue(p, loaded_, sim_->config())) keys.push_back(p.key);
+  for (const PresetParam& p : params())
+    if (p.group != "Camera" && !sameValue(p, loaded_, current_)) keys.push_back(p.key);
   return keys;
 }
 
@@ -263,7 +269,7 @@ void Viewer::afterSceneChange() {
 }
 
 void Viewer::updateTitle() {
-  std::string t = "csmhair - " + sim_->config().name;
+  std::string t = "csmhair - " + current_.name;
   if (!presetPath_.empty()) t += " (" + presetPath_ + ")";
   if (modified()) t += " *";
   if (t != title_) {
@@ -281,14 +287,14 @@ void Viewer::resetHair() {
 }
 
 void Viewer::resetView() {
-  Config next = sim_->config();
-  next.camera = loaded_.camera;
+  Preset next = current_;
+  next.view.camera = loaded_.view.camera;
   applyConfig(next);
 }
 
 void Viewer::frameHead() {
-  Config next = sim_->config();
-  csm::frameHead(next.camera, next, sim_->headPose());
+  Preset next = current_;
+  csm::frameHead(next.view.camera, next.scene, sim_->headPose());
   applyConfig(next);
 }
 
@@ -370,19 +376,19 @@ void Viewer::handleMouse() {
   if (moved && (right || (left && io.KeyCtrl))) {
     // Turn the head about the neck: the hair reacts on the next step.
     sim_->setUserPose(
-        dragHead(sim_->userPose(), sim_->config().camera, sim_->config().head, d.x, d.y));
+        dragHead(sim_->userPose(), current_.view.camera, current_.scene.head, d.x, d.y));
   } else if (moved && (middle || (left && io.KeyShift))) {
-    Config next = sim_->config();
-    panCamera(next.camera, d.x, d.y, window_->framebufferSize().height);
+    Preset next = current_;
+    panCamera(next.view.camera, d.x, d.y, window_->framebufferSize().height);
     applyConfig(next);
   } else if (moved && left) {
-    Config next = sim_->config();
-    orbitCamera(next.camera, d.x, d.y);
+    Preset next = current_;
+    orbitCamera(next.view.camera, d.x, d.y);
     applyConfig(next);
   }
   if (io.MouseWheel != 0.0f) {
-    Config next = sim_->config();
-    zoomCamera(next.camera, io.MouseWheel);
+    Preset next = current_;
+    zoomCamera(next.view.camera, io.MouseWheel);
     applyConfig(next);
   }
 }
@@ -434,7 +440,7 @@ void Viewer::sample() {
 
 void Viewer::renderScene() {
   const WindowSize size = window_->framebufferSize();
-  const Config& c = sim_->config();
+  const ViewConfig& look = current_.view;
   Solver& solver = sim_->solver();
   unsigned buffer = solver.positionBuffer();
   if (renderer_ && buffer == 0) {
@@ -453,7 +459,8 @@ void Viewer::renderScene() {
   gl::Framebuffer::bindDefault();
   if (renderer_ && size.width > 0 && size.height > 0) {
     FrameView view;
-    view.config = &c;
+    view.scene = &sim_->config();
+    view.look = &look;
     view.groom = &sim_->groom();
     view.generation = sim_->generation();
     view.head = sim_->headPose();
@@ -465,8 +472,8 @@ void Viewer::renderScene() {
     stats_.renderStages = renderer_->stageTimes();
   } else {
     gl::Framebuffer window = gl::Framebuffer::wrap(0);
-    window.clearColor(0, std::array<float, 4>{c.render.background.x, c.render.background.y,
-                                              c.render.background.z, 1.0f});
+    window.clearColor(0, std::array<float, 4>{look.render.background.x, look.render.background.y,
+                                              look.render.background.z, 1.0f});
     window.release();
   }
   // The renderer may leave its own framebuffer bound; the UI goes into the window's.
@@ -552,7 +559,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
     return startupErrors.empty() ? 1 : 2;
   }
-  if (!viewer->open(scene.config, scene.baseDir, startupErrors.empty() ? options.preset : "",
+  if (!viewer->open(scene.preset, scene.baseDir, startupErrors.empty() ? options.preset : "",
                     &error)) {
     std::fprintf(stderr, "csmhair: %s: %s\n", scene.source.c_str(), error.c_str());
     return 2;

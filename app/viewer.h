@@ -15,11 +15,13 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "app/preset.h"
 #include "app/scene_setup.h"
 #include "app/viewer_image.h"
 #include "app/viewer_stats.h"
-#include "render/gl/buffer.h"
+#include "gl/buffer.h"
 #include "sim/config.h"
+#include "sim/gpu/make_solver.h"
 #include "sim/simulation.h"
 
 namespace csm {
@@ -57,7 +59,7 @@ class Viewer {
 
   // --- The scene -------------------------------------------------------------------------
   // Makes `config` the current preset; `presetPath` is empty for the built-in one.
-  bool open(const Config& config, const std::string& baseDir, const std::string& presetPath,
+  bool open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
             std::string* error);
   // Reads and validates a preset file and opens it. When it is not valid the current scene
   // stays and the messages are shown in the window (presetErrors()).
@@ -65,7 +67,7 @@ class Viewer {
   // The one setter: applies a whole config (crossCheck, capacity, then
   // Simulation::setConfig, which regrows the hair when a Rebuild parameter changed). On
   // failure keeps the running scene and shows why.
-  bool applyConfig(const Config& next);
+  bool applyConfig(const Preset& next);
   // One parameter from text, as --set reads it, through applyConfig.
   bool setParam(std::string_view key, std::string_view text, std::string* error = nullptr);
   bool save();  // over the opened preset
@@ -95,8 +97,9 @@ class Viewer {
   // --- State, for the panels and tests ---------------------------------------------------
   Simulation& simulation() { return *sim_; }
   const Simulation& simulation() const { return *sim_; }
-  Config& editedConfig() { return edited_; }  // what the widgets edit
-  const Config& loadedConfig() const { return loaded_; }
+  const Preset& preset() const { return current_; }  // what runs and is shown
+  Preset& editedConfig() { return edited_; }         // what the widgets edit
+  const Preset& loadedConfig() const { return loaded_; }
   const std::string& presetPath() const { return presetPath_; }
   const ViewerStats& stats() const { return stats_; }
   const std::vector<ViewerMessage>& messages() const { return messages_; }
@@ -153,7 +156,7 @@ class Viewer {
   long sceneVersion_ = 0;
   long positionsRead_ = -1;  // positionsStamp() of positions_
 
-  Config edited_, loaded_;
+  Preset current_, edited_, loaded_;
   std::string presetPath_;
   std::vector<std::string> presetErrors_;
   std::string presetErrorsNote_;

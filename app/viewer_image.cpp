@@ -5,7 +5,7 @@
 
 #include <png.h>
 
-#include "render/gl/framebuffer.h"
+#include "gl/framebuffer.h"
 
 namespace csm {
 

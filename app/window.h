@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "render/gl/context.h"
+#include "gl/context.h"
 
 struct GLFWwindow;
 

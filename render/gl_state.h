@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "render/gl/gl.h"
+#include "gl/gl.h"
 
 namespace csm {
 

@@ -9,9 +9,9 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "render/bindings.h"
-#include "render/gl/caps.h"
-#include "render/gl/debug.h"
-#include "render/gl/shader_source.h"
+#include "gl/caps.h"
+#include "gl/debug.h"
+#include "gl/shader_source.h"
 #include "render/gl_state.h"
 
 namespace csm {
@@ -204,9 +204,9 @@ bool HairRenderer::reloadShaders(std::string* log) {
 
 void HairRenderer::updateTopology(const FrameView& frame) {
   const Groom& groom = *frame.groom;
-  const Config& config = *frame.config;
+  const Config& config = *frame.scene;
   TopologyKey key{frame.generation, frame.groom, groom.strandCount(), groom.pointCount(),
-                  std::clamp(config.render.subdivision, 1, 64)};
+                  std::clamp(frame.look->render.subdivision, 1, 64)};
   if (key == topologyKey_) return;
   topologyKey_ = key;
 
@@ -431,16 +431,17 @@ void HairRenderer::updateTargets(int width, int height, int samples) {
 }
 
 void HairRenderer::updateUniforms(const FrameView& frame) {
-  const Config& c = *frame.config;
-  const RenderConfig& r = c.render;
+  const Config& c = *frame.scene;
+  const ViewConfig& look = *frame.look;
+  const RenderConfig& r = look.render;
   const float aspect = float(frame.width) / float(std::max(frame.height, 1));
-  const glm::mat4 view = frame.useCameraMatrices ? frame.view : cameraView(c.camera);
+  const glm::mat4 view = frame.useCameraMatrices ? frame.view : cameraView(look.camera);
   const glm::mat4 proj =
-      frame.useCameraMatrices ? frame.projection : cameraProjection(c.camera, aspect);
+      frame.useCameraMatrices ? frame.projection : cameraProjection(look.camera, aspect);
   const glm::vec3 eye = glm::vec3(glm::inverse(view)[3]);
 
   // The light: orthographic, around the sphere that holds the hair this frame.
-  glm::vec3 dir = c.light.direction;
+  glm::vec3 dir = look.light.direction;
   dir = glm::length(dir) > 1e-6f ? glm::normalize(dir) : glm::vec3(0.0f, -1.0f, 0.0f);
   const glm::vec3 center = glm::vec3(frame.head.apply(glm::dvec3(boundCenter_)));
   const float R = boundRadius_;
@@ -453,8 +454,8 @@ void HairRenderer::updateUniforms(const FrameView& frame) {
   u.lightViewProj = lightViewProj_;
   u.headRotation = glm::mat4(glm::mat3_cast(glm::quat(frame.head.rotation)));
   u.eye = glm::vec4(eye, 1.0f);
-  u.lightDir = glm::vec4(dir, c.light.intensity);
-  u.lightColor = glm::vec4(srgbToLinear(c.light.color), c.light.ambient);
+  u.lightDir = glm::vec4(dir, look.light.intensity);
+  u.lightColor = glm::vec4(srgbToLinear(look.light.color), look.light.ambient);
   u.rootColor = glm::vec4(srgbToLinear(r.rootColor), r.colorVariation);
   u.tipColor = glm::vec4(srgbToLinear(r.tipColor), std::clamp(r.opacity, 0.0f, 1.0f));
   u.specShift =
@@ -492,19 +493,20 @@ void HairRenderer::drawHead() const {
 }
 
 void HairRenderer::render(const FrameView& frame) {
-  if (!frame.config || !frame.groom || frame.width <= 0 || frame.height <= 0) return;
-  const Config& c = *frame.config;
+  if (!frame.scene || !frame.look || !frame.groom || frame.width <= 0 || frame.height <= 0) return;
+  const Config& c = *frame.scene;
+  const RenderConfig& look = frame.look->render;
   GlStateBackup backup;
   if (timers_ && !synchronousTiming_) timer_.beginFrame();
 
-  const int samples = std::clamp(c.render.samples, 1, maxSamples_);
+  const int samples = std::clamp(look.samples, 1, maxSamples_);
   updateTopology(frame);
   updateTargets(frame.width, frame.height, samples);
   if (programSamples_ != samples_) {
     std::string log;
     if (!buildPrograms(samples_, &log)) gl::logMessage(gl::LogLevel::Error, "HairRenderer: " + log);
   }
-  updateShadowMaps(std::clamp(c.render.shadowMapSize, 16, 8192));
+  updateShadowMaps(std::clamp(look.shadowMapSize, 16, 8192));
 
   const std::vector<Sphere> spheres = worldSpheres(c.head.spheres, frame.head);
   std::vector<glm::vec4> sphereData;
@@ -544,7 +546,7 @@ void HairRenderer::render(const FrameView& frame) {
   headShadowFbo_.clearDepth(1.0f);
   opacityFbo_.clearColor(0, std::array<float, 4>{0.0f, 0.0f, 0.0f, 0.0f});
   lightDepthFbo_.clearDepth(1.0f);
-  if (c.render.shadows) {
+  if (look.shadows) {
     beginStage("shadow");
     glViewport(0, 0, shadowSize_, shadowSize_);
     glDisable(GL_BLEND);

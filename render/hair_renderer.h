@@ -26,13 +26,13 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "render/gl/buffer.h"
-#include "render/gl/framebuffer.h"
-#include "render/gl/program.h"
-#include "render/gl/query.h"
-#include "render/gl/renderbuffer.h"
-#include "render/gl/texture.h"
-#include "render/gl/vertex_array.h"
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "gl/program.h"
+#include "gl/query.h"
+#include "gl/renderbuffer.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
 #include "render/renderer.h"
 
 namespace csm {

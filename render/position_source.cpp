@@ -11,10 +11,11 @@ unsigned PositionSource::update(Solver& solver) {
   return buffer_.id();
 }
 
-FrameView frameViewOf(const Simulation& sim, unsigned positionBuffer, int width, int height,
-                      unsigned framebuffer) {
+FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
+                      int width, int height, unsigned framebuffer) {
   FrameView v;
-  v.config = &sim.config();
+  v.scene = &sim.config();
+  v.look = &view;
   v.groom = &sim.groom();
   v.generation = sim.generation();
   v.head = sim.headPose();

@@ -7,7 +7,7 @@
 
 #include <glm/vec4.hpp>
 
-#include "render/gl/buffer.h"
+#include "gl/buffer.h"
 #include "render/renderer.h"
 #include "sim/simulation.h"
 
@@ -23,8 +23,9 @@ class PositionSource {
   std::vector<glm::vec4> scratch_;
 };
 
-// The FrameView of a simulation's current frame, drawn into `framebuffer` at width x height.
-FrameView frameViewOf(const Simulation& sim, unsigned positionBuffer, int width, int height,
-                      unsigned framebuffer = 0);
+// The FrameView of a simulation's current frame seen as `view` says, drawn into
+// `framebuffer` at width x height.
+FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
+                      int width, int height, unsigned framebuffer = 0);
 
 }  // namespace csm

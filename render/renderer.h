@@ -9,6 +9,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "render/view_config.h"
 #include "sim/config.h"
 #include "sim/groom.h"
 #include "sim/head.h"
@@ -17,14 +18,15 @@
 namespace csm {
 
 struct FrameView {
-  const Config* config = nullptr;  // render.*, camera.*, light.*, head.spheres, hairstyle.follow_*
-  const Groom* groom = nullptr;    // topology (strand offsets) and per-strand colours
-  long generation = 0;             // changes when the groom is regrown: rebuild topology buffers
-  Pose head;                       // where the head is this frame
-  unsigned positionBuffer = 0;     // SSBO: vec4 per particle, world positions
-  int width = 1280, height = 720;  // target size in pixels
-  unsigned targetFramebuffer = 0;  // GL framebuffer to draw into (0 = the window's)
-  // Camera: when `useCameraMatrices` is false, derived from config->camera.
+  const Config* scene = nullptr;     // head.spheres, hairstyle.follow_*
+  const ViewConfig* look = nullptr;  // render.*, camera.*, light.*
+  const Groom* groom = nullptr;      // topology (strand offsets) and per-strand colours
+  long generation = 0;               // changes when the groom is regrown: rebuild topology buffers
+  Pose head;                         // where the head is this frame
+  unsigned positionBuffer = 0;       // SSBO: vec4 per particle, world positions
+  int width = 1280, height = 720;    // target size in pixels
+  unsigned targetFramebuffer = 0;    // GL framebuffer to draw into (0 = the window's)
+  // Camera: when `useCameraMatrices` is false, derived from look->camera.
   bool useCameraMatrices = false;
   glm::mat4 view{1.0f}, projection{1.0f};
 };

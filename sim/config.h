@@ -1,6 +1,6 @@
-// Everything a scene is: the values behind every parameter of a preset.
-// The parameter table (sim/params.h) declares each field once, with its key, range and
-// description; JSON, --set, --list-params and the ImGui panels all walk that table.
+// The simulated scene: the values behind the simulation's parameters. The parameter table
+// (sim/params.h) names each field once, with its key, range and description; JSON, --set,
+// --list-params and the ImGui panels all walk it (with the view's, render/view_params.h).
 #pragma once
 
 #include <cstdint>
@@ -112,53 +112,14 @@ struct WindConfig {
   float drag = 2.0f;  // 1/s: acceleration per m/s of perpendicular relative wind (implicit)
 };
 
-struct RenderConfig {
-  bool shadows = true;
-  float strandWidth = 1.5f;  // pixels
-  int subdivision = 4;       // spline segments drawn per simulated segment
-  glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
-  glm::vec3 tipColor{0.35f, 0.22f, 0.12f};
-  float colorVariation = 0.15f;
-  float specularShift1 = -0.08f;  // along the normal, in tangent units (primary, white)
-  float specularShift2 = 0.12f;   // secondary, tinted
-  float specularExponent1 = 80.0f;
-  float specularExponent2 = 20.0f;
-  float specularStrength1 = 0.35f;
-  float specularStrength2 = 0.25f;
-  float opacity = 0.6f;        // per strand
-  float layerSpacing = 0.01f;  // deep opacity map layer spacing, metres
-  int shadowMapSize = 1024;
-  glm::vec3 headColor{0.80f, 0.62f, 0.52f};
-  glm::vec3 background{0.55f, 0.60f, 0.66f};
-  int samples = 4;  // multisampling
-};
-
-struct CameraConfig {
-  glm::vec3 target{0.0f, -0.05f, 0.0f};
-  float distance = 0.75f;
-  float yaw = 30.0f;    // degrees about y
-  float pitch = 10.0f;  // degrees above the horizon
-  float fov = 40.0f;    // vertical, degrees
-};
-
-struct LightConfig {
-  glm::vec3 direction{-0.5f, -0.7f, -0.5f};  // the direction light travels
-  glm::vec3 color{1.0f, 0.97f, 0.92f};
-  float intensity = 2.2f;
-  float ambient = 0.25f;
-};
-
+// The scene the simulation runs: everything of a preset but how it is viewed
+// (render/view_config.h) and what it is called (app/preset.h).
 struct Config {
-  std::string name = "default";
-  std::string description;
   HairstyleConfig hairstyle;
   HeadConfig head;
   SimConfig sim;
   CollisionConfig collision;
   WindConfig wind;
-  RenderConfig render;
-  CameraConfig camera;
-  LightConfig light;
 };
 
 }  // namespace csm

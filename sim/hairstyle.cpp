@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -11,7 +12,6 @@
 #include "sim/io/fit.h"
 #include "sim/io/groom_file.h"
 #include "sim/io/resample.h"
-#include "sim/preset.h"
 
 namespace csm {
 namespace {
@@ -274,6 +274,11 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
   r.simulatedPoints = g.pointCount();
   out = std::move(g);
   return true;
+}
+
+std::string resolveRelative(const std::string& baseDir, const std::string& path) {
+  if (path.empty() || baseDir.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(baseDir) / path).lexically_normal().string();
 }
 
 }  // namespace csm

@@ -33,4 +33,8 @@ struct GroomReport {
 bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::string* error,
                 GroomReport* report = nullptr);
 
+// `path` against the folder of the preset it came from ("" for the built-in preset): groom
+// files named in a preset are relative to it.
+std::string resolveRelative(const std::string& baseDir, const std::string& path);
+
 }  // namespace csm

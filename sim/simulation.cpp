@@ -3,18 +3,9 @@
 #include "sim/cpu/cpu_solver.h"
 #include "sim/hairstyle.h"
 #include "sim/params.h"
-#include "sim/preset.h"
+#include "sim/scene_checks.h"
 
 namespace csm {
-
-std::unique_ptr<Solver> makeGpuSolver(std::string* error);  // sim/gpu
-
-std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error) {
-  if (name == "cpu") return std::make_unique<CpuSolver>();
-  if (name == "gpu") return makeGpuSolver(error);
-  if (error) *error = "unknown solver \"" + name + "\" (solvers: cpu, gpu)";
-  return nullptr;
-}
 
 bool Simulation::load(const Config& config, const std::string& baseDir, std::string* error) {
   if (!regrow(config, baseDir, error)) return false;
@@ -40,10 +31,7 @@ bool Simulation::regrow(const Config& config, const std::string& baseDir, std::s
 }
 
 bool Simulation::setConfig(const Config& config, std::string* error) {
-  bool rebuild = false;
-  for (const Param& p : params())
-    if (p.effect == Effect::Rebuild && !sameValue(p, config_, config)) rebuild = true;
-  if (rebuild) {
+  if (needsRegrow(config_, config)) {
     // Keep the clock and the camera: only the hair starts again from rest.
     if (!regrow(config, baseDir_, error)) return false;
     lastPose_ = headPoseAt(time_);

@@ -14,10 +14,6 @@
 
 namespace csm {
 
-// "cpu" or "gpu" (the GPU solver needs a current GL 4.3 context). Null with a message when
-// the name is unknown or the solver cannot start.
-std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error);
-
 class Simulation {
  public:
   explicit Simulation(std::unique_ptr<Solver> solver) : solver_(std::move(solver)) {}

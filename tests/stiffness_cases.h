@@ -16,7 +16,7 @@
 #include "sim/hairstyle.h"
 #include "sim/head.h"
 #include "sim/measure.h"
-#include "sim/preset.h"
+#include "app/preset.h"
 #include "sim/solver.h"
 
 namespace csm::test {
@@ -28,7 +28,7 @@ using MakeSolver = std::function<std::unique_ptr<Solver>()>;
 // 3,000: a sample of the full scene, not a different one.
 inline Scene defaultScene(int strands = 300) {
   Scene s;
-  s.config = defaultConfig();
+  s.config = defaultPreset().scene;
   s.config.hairstyle.strands = strands;
   s.groom = growHairstyle(s.config.hairstyle, s.config.head.spheres, s.config.collision.radius);
   return s;

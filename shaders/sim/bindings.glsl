@@ -46,7 +46,7 @@
 
 // Texture units of buffer textures (samplerBuffer views of the buffers above), for reads
 // that differ per invocation: on llvmpipe a texel fetch is a vector gather where a storage
-// load is a loop over the SIMD lanes (render/gl/buffer_texture.h).
+// load is a loop over the SIMD lanes (gl/buffer_texture.h).
 #define CSM_TEX_POSITION 0
 #define CSM_TEX_VELOCITY 1
 #define CSM_TEX_REST 2

@@ -9,9 +9,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "render/gl/caps.h"
-#include "render/gl/debug.h"
-#include "render/gl/shader_source.h"
+#include "gl/caps.h"
+#include "gl/debug.h"
+#include "gl/shader_source.h"
 #include "sim/hair_state.h"
 #include "shaders/sim/bindings.glsl"
 

@@ -19,10 +19,10 @@
 #include <utility>
 #include <vector>
 
-#include "render/gl/buffer.h"
-#include "render/gl/program.h"
-#include "render/gl/query.h"
-#include "render/gl/buffer_texture.h"
+#include "gl/buffer.h"
+#include "gl/program.h"
+#include "gl/query.h"
+#include "gl/buffer_texture.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/hair_state.h"
 #include "sim/solver.h"
@@ -125,7 +125,7 @@ class GpuSolver final : public Solver {
       segmentContacts_{gl::NoCreate}, segmentCells_{gl::NoCreate}, segmentBase_{gl::NoCreate},
       segmentScanBlocks_{gl::NoCreate}, partialForce_{gl::NoCreate}, region_{gl::NoCreate},
       strandStiffness_{gl::NoCreate};
-  // texelFetch views for reads that differ per invocation (see render/gl/buffer_texture.h).
+  // texelFetch views for reads that differ per invocation (see gl/buffer_texture.h).
   gl::BufferTexture positionTex_{gl::NoCreate}, velocityTex_{gl::NoCreate}, restTex_{gl::NoCreate},
       entryLowTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate}, entryHighTex_{gl::NoCreate},
       predictedTex_{gl::NoCreate}, regionTex_{gl::NoCreate};

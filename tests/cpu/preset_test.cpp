@@ -8,8 +8,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/params.h"
+#include "app/preset.h"
+#include "render/view_params.h"
 #include "sim/params.h"
-#include "sim/preset.h"
+#include "sim/scene_checks.h"
 
 using namespace csm;
 namespace fs = std::filesystem;
@@ -25,7 +28,7 @@ std::vector<std::string> presetFiles() {
 }
 
 std::string parseErrors(const std::string& text) {
-  Config c;
+  Preset c;
   PresetErrors e;
   CHECK_FALSE(parsePreset(text, "bad.json", c, e));
   return e.text();
@@ -34,13 +37,14 @@ std::string parseErrors(const std::string& text) {
 }  // namespace
 
 TEST_CASE("every parameter's default lies in its range and has a description") {
-  const Config c;
-  for (const Param& p : params()) {
+  const Preset c;
+  for (const PresetParam& p : params()) {
     INFO(p.key);
     CHECK(!p.description.empty());
     CHECK(!p.label.empty());
     CHECK(findParam(p.key) == &p);
-    Config copy = c;
+    if (p.type == ParamType::Enum) CHECK(!p.options.empty());
+    Preset copy = c;
     CHECK(paramFromJson(p, copy, paramToJson(p, c)) == "");
   }
 }
@@ -50,16 +54,16 @@ TEST_CASE("every preset in presets/ validates and round-trips through save and l
   REQUIRE(files.size() >= 5);
   for (const std::string& f : files) {
     INFO(f);
-    Config c;
+    Preset c;
     PresetErrors e;
     REQUIRE(loadPreset(f, c, e));
     const std::string tmp = (fs::temp_directory_path() / "csm_roundtrip.json").string();
     std::string err;
     REQUIRE(savePreset(tmp, c, &err));
-    Config back;
-    back.hairstyle.strands = 1;  // load must overwrite it
+    Preset back;
+    back.scene.hairstyle.strands = 1;  // load must overwrite it
     REQUIRE(loadPreset(tmp, back, e));
-    for (const Param& p : params()) {
+    for (const PresetParam& p : params()) {
       INFO(p.key);
       CHECK(sameValue(p, c, back));
     }
@@ -68,7 +72,7 @@ TEST_CASE("every preset in presets/ validates and round-trips through save and l
 }
 
 TEST_CASE("the built-in default preset is valid") {
-  Config c;
+  Preset c;
   PresetErrors e;
   CHECK(parsePreset(defaultPresetText(), "default", c, e));
   CHECK(e.empty());
@@ -111,7 +115,7 @@ TEST_CASE("saving never leaves a truncated preset") {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string path = (dir / "p.json").string();
-  Config c;
+  Preset c;
   c.name = "original";
   std::string err;
   REQUIRE(savePreset(path, c, &err));
@@ -133,7 +137,7 @@ TEST_CASE("saving never leaves a truncated preset") {
   CHECK_FALSE(saved);
   CHECK_THAT(err, Catch::Contains("p.json"));
   CHECK(fs::file_size(path) == sizeBefore);
-  Config back;
+  Preset back;
   PresetErrors e;
   REQUIRE(loadPreset(path, back, e));
   CHECK(back.name == "original");
@@ -148,16 +152,42 @@ TEST_CASE("saving never leaves a truncated preset") {
 }
 
 TEST_CASE("command-line values are parsed per type") {
-  Config c;
+  Preset c;
   CHECK(paramFromText(*findParam("wind.strength"), c, "3.5") == "");
-  CHECK(c.wind.strength == 3.5f);
+  CHECK(c.scene.wind.strength == 3.5f);
   CHECK(paramFromText(*findParam("collision.mode"), c, "head") == "");
-  CHECK(c.collision.mode == CollisionMode::Head);
+  CHECK(c.scene.collision.mode == CollisionMode::Head);
   CHECK(paramFromText(*findParam("wind.direction"), c, "0,0,1") == "");
-  CHECK(c.wind.direction == glm::vec3(0, 0, 1));
+  CHECK(c.scene.wind.direction == glm::vec3(0, 0, 1));
   CHECK(paramFromText(*findParam("render.shadows"), c, "false") == "");
-  CHECK_FALSE(c.render.shadows);
+  CHECK_FALSE(c.view.render.shadows);
   CHECK(paramFromText(*findParam("sim.substeps"), c, "2.5") != "");
   CHECK(paramFromText(*findParam("name"), c, "42") == "");
   CHECK(c.name == "42");
+}
+
+TEST_CASE("a parameter's type is its field's, and the modules' lists make the preset's") {
+  // Declared by pointer to member: the row's type comes from the field's C++ type.
+  CHECK(findParam("sim.dt")->type == ParamType::Float);
+  CHECK(findParam("sim.substeps")->type == ParamType::Int);
+  CHECK(findParam("sim.strain_limiting")->type == ParamType::Bool);
+  CHECK(findParam("sim.stiffness_model")->type == ParamType::Enum);
+  CHECK(findParam("wind.direction")->type == ParamType::Vec3);
+  CHECK(findParam("render.root_color")->type == ParamType::Color);
+  CHECK(findParam("head.spheres")->type == ParamType::Spheres);
+  CHECK(findParam("hairstyle.file")->type == ParamType::String);
+  // A row reads and writes the field it names, through the preset.
+  Preset p;
+  findParam("sim.substeps")->ref<int>(p) = 7;
+  CHECK(p.scene.sim.substeps == 7);
+  findParam("camera.distance")->ref<float>(p) = 2.5f;
+  CHECK(p.view.camera.distance == 2.5f);
+  CHECK_THROWS(findParam("camera.distance")->ref<int>(p));
+  // The simulation's rows and the view's, and nothing else but the preset's own two.
+  CHECK(params().size() == simParams().size() + viewParams().size() + 2);
+  for (const Param<Config>& s : simParams()) CHECK(findParam(s.key) != nullptr);
+  for (const Param<ViewConfig>& v : viewParams()) CHECK(findParam(v.key) != nullptr);
+  // Defaults are the config structs' own.
+  CHECK(valueText(*findParam("sim.dt"), Preset{}) ==
+        paramToJson(*findSimParam("sim.dt"), Config{}).dump());
 }

@@ -5,14 +5,14 @@
 
 #include <glm/glm.hpp>
 
-#include "render/gl/buffer.h"
-#include "render/gl/framebuffer.h"
-#include "render/gl/program.h"
-#include "render/gl/query.h"
-#include "render/gl/renderbuffer.h"
-#include "render/gl/shader.h"
-#include "render/gl/texture.h"
-#include "render/gl/vertex_array.h"
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "gl/program.h"
+#include "gl/query.h"
+#include "gl/renderbuffer.h"
+#include "gl/shader.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
 #include "tests/gpu/gl_fixture.h"
 
 using namespace csm;

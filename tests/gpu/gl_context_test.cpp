@@ -2,8 +2,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "render/gl/caps.h"
-#include "render/gl/debug.h"
+#include "gl/caps.h"
+#include "gl/debug.h"
 #include "tests/gpu/gl_fixture.h"
 
 using namespace csm;

@@ -7,8 +7,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "render/gl/context.h"
-#include "render/gl/debug.h"
+#include "gl/context.h"
+#include "gl/debug.h"
 
 namespace csm::test {
 
@@ -34,7 +34,7 @@ inline gl::HeadlessContext& glContext() {
   return *shared.context;
 }
 
-// Collects render/gl's log messages while alive, for tests that check what was logged.
+// Collects gl's log messages while alive, for tests that check what was logged.
 class LogCapture {
  public:
   LogCapture() {

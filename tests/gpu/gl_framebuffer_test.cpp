@@ -6,12 +6,12 @@
 
 #include <glm/glm.hpp>
 
-#include "render/gl/caps.h"
-#include "render/gl/framebuffer.h"
-#include "render/gl/renderbuffer.h"
-#include "render/gl/shader_source.h"
-#include "render/gl/texture.h"
-#include "render/gl/vertex_array.h"
+#include "gl/caps.h"
+#include "gl/framebuffer.h"
+#include "gl/renderbuffer.h"
+#include "gl/shader_source.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
 #include "tests/gpu/gl_fixture.h"
 
 using namespace csm;

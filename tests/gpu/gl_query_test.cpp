@@ -1,9 +1,9 @@
 // Timer queries and the per-stage timer.
 #include <vector>
 
-#include "render/gl/buffer.h"
-#include "render/gl/query.h"
-#include "render/gl/shader_source.h"
+#include "gl/buffer.h"
+#include "gl/query.h"
+#include "gl/shader_source.h"
 #include "tests/gpu/gl_fixture.h"
 
 using namespace csm;

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "render/gl/buffer.h"
-#include "render/gl/shader.h"
-#include "render/gl/shader_source.h"
+#include "gl/buffer.h"
+#include "gl/shader.h"
+#include "gl/shader_source.h"
 #include "tests/gpu/gl_fixture.h"
 
 using namespace csm;

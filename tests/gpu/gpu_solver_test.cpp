@@ -8,12 +8,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/gl/shader_source.h"
+#include "gl/shader_source.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/gpu_solver.h"
 #include "sim/hairstyle.h"
-#include "sim/preset.h"
+#include "app/preset.h"
 #include "tests/gpu/gl_fixture.h"
 
 using namespace csm;
@@ -175,9 +175,10 @@ TEST_CASE("GPU and CPU solvers agree without hair-hair collisions", "[gpu][solve
 
 TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[gpu][solver]") {
   // Full collisions, wind and head motion: every float sum in a fixed order, no float atomics.
-  Config c;
+  Preset preset;
   PresetErrors errors;
-  REQUIRE(loadPreset(std::string(CSM_SOURCE_DIR) + "/presets/long_windy.json", c, errors));
+  REQUIRE(loadPreset(std::string(CSM_SOURCE_DIR) + "/presets/long_windy.json", preset, errors));
+  Config c = preset.scene;
   c.hairstyle.strands = 800;
   const Groom g = grow(c);
   auto run = [&] {
@@ -199,9 +200,10 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
 }
 
 TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][solver]") {
-  Config c;
+  Preset preset;
   PresetErrors errors;
-  REQUIRE(loadPreset(std::string(CSM_SOURCE_DIR) + "/presets/long_windy.json", c, errors));
+  REQUIRE(loadPreset(std::string(CSM_SOURCE_DIR) + "/presets/long_windy.json", preset, errors));
+  Config c = preset.scene;
   c.hairstyle.strands = 600;
   REQUIRE(c.collision.mode == CollisionMode::Full);
   const Groom g = grow(c);

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <vector>
 
-#include "render/gl/shader_source.h"
+#include "gl/shader_source.h"
 #include "tests/gpu/render_test_scene.h"
 
 using namespace csm;
@@ -80,7 +80,7 @@ TEST_CASE("Render: a Fig. 1 frame shows hair over a plausible share and is not f
 }
 
 TEST_CASE("Render: the same preset and frame give the same image twice", "[render][image]") {
-  const Config c = test::presetConfig("paper_fig1_straight.json", 1500);
+  const Preset c = test::presetConfig("paper_fig1_straight.json", 1500);
   std::vector<std::uint8_t> first, second;
   {
     test::RenderScene scene(c, 3);
@@ -102,8 +102,8 @@ TEST_CASE("Render: follow hairs multiply the strands drawn around their guides",
           "[render][image][follow]") {
   // Few guides, so their strands do not yet cover the hair's outline; no shadows, so only
   // strands differ from the bare frame.
-  Config c = test::presetConfig("paper_fig1_straight.json", 100);
-  c.render.shadows = false;
+  Preset c = test::presetConfig("paper_fig1_straight.json", 100);
+  c.view.render.shadows = false;
   test::RenderScene scene(c);
   const test::Image bare = scene.render(480, 270, nullptr, false);
   const test::Image guides = scene.render(480, 270);
@@ -111,14 +111,15 @@ TEST_CASE("Render: follow hairs multiply the strands drawn around their guides",
   const std::vector<bool> guideMask = test::hairMask(guides, bare);
   const Stats g = hairStats(guides, guideMask);
 
-  Config follow = scene.sim().config();
-  follow.hairstyle.followCount = 9;
-  follow.hairstyle.followSpread = 0.006f;
+  Preset follow = scene.preset();
+  follow.scene = scene.sim().config();
+  follow.scene.hairstyle.followCount = 9;
+  follow.scene.hairstyle.followSpread = 0.006f;
   const test::Image withFollow = scene.render(480, 270, &follow);
   test::dumpImage(guides, "follow_0");
   test::dumpImage(withFollow, "follow_9");
   CHECK(scene.renderer().drawnStrands() == 1000);
-  CHECK(drawnStrandCount(100, follow) == 1000);
+  CHECK(drawnStrandCount(100, follow.scene) == 1000);
   const std::vector<bool> followMask = test::hairMask(withFollow, bare);
   const Stats f = hairStats(withFollow, followMask);
 
@@ -143,7 +144,7 @@ TEST_CASE("Render: follow hairs multiply the strands drawn around their guides",
   CHECK(far < hair / 50);
 
   // Spread zero: every follow hair lies on its guide.
-  follow.hairstyle.followSpread = 0.0f;
+  follow.scene.hairstyle.followSpread = 0.0f;
   const test::Image stacked = scene.render(480, 270, &follow);
   const Stats z = hairStats(stacked, test::hairMask(stacked, bare));
   INFO("spread 0: " << z.share);
@@ -159,8 +160,9 @@ TEST_CASE("Render: groom colours reach the screen", "[render][image]") {
   const test::Image img = [&] {
     CaptureTarget target(320, 180);
     PositionSource positions;
-    FrameView view = frameViewOf(scene.sim(), positions.update(scene.sim().solver()), 320, 180,
-                                 target.framebuffer());
+    FrameView view =
+        frameViewOf(scene.sim(), scene.preset().view, positions.update(scene.sim().solver()), 320,
+                    180, target.framebuffer());
     view.groom = &green;
     view.generation += 1000;  // a different groom: topology buffers are rebuilt
     scene.renderer().render(view);
@@ -178,7 +180,7 @@ TEST_CASE("Render: without strands or positions the head and backdrop are still 
   test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 200), 0);
   Groom empty;
   CaptureTarget target(160, 90);
-  FrameView view = frameViewOf(scene.sim(), 0, 160, 90, target.framebuffer());
+  FrameView view = frameViewOf(scene.sim(), scene.preset().view, 0, 160, 90, target.framebuffer());
   view.groom = &empty;
   scene.renderer().render(view);
   CHECK(scene.renderer().drawnStrands() == 0);
@@ -212,7 +214,8 @@ TEST_CASE("Render: the GL state the UI depends on is put back", "[render][state]
   uiFont.bind(0);
 
   PositionSource positions;
-  scene.renderer().render(frameViewOf(scene.sim(), positions.update(scene.sim().solver()), 160, 90,
+  scene.renderer().render(frameViewOf(scene.sim(), scene.preset().view,
+                                      positions.update(scene.sim().solver()), 160, 90,
                                       target.framebuffer()));
 
   GLint fb = 0, viewport[4] = {}, src = 0, dst = 0, texture = 0, active = 0;

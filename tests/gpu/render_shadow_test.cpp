@@ -15,7 +15,7 @@ TEST_CASE("Render: deep opacity layers hold opacity that grows with depth", "[re
   const HairRenderer& r = scene.renderer();
   const gl::Texture& layers = r.opacityLayers();
   const gl::Texture& depth = r.lightDepth();
-  REQUIRE(layers.width() == scene.sim().config().render.shadowMapSize);
+  REQUIRE(layers.width() == scene.preset().view.render.shadowMapSize);
   const std::vector<float> o = layers.read<float>(GL_RGBA, GL_FLOAT, 4);
   const std::vector<float> z = depth.read<float>(GL_DEPTH_COMPONENT, GL_FLOAT, 1);
   REQUIRE(o.size() == z.size() * 4);
@@ -52,14 +52,14 @@ TEST_CASE("Render: deep opacity layers hold opacity that grows with depth", "[re
 }
 
 TEST_CASE("Render: hair away from the light is darker with shadows on", "[render][shadow]") {
-  Config c = test::presetConfig("paper_fig1_straight.json", 2000);
+  Preset c = test::presetConfig("paper_fig1_straight.json", 2000);
   // Camera in front (+z), light from the right (+x): the left of the image faces away.
-  c.camera.yaw = 0.0f;
-  c.camera.pitch = 5.0f;
-  c.light.direction = {-1.0f, -0.3f, 0.0f};
+  c.view.camera.yaw = 0.0f;
+  c.view.camera.pitch = 5.0f;
+  c.view.light.direction = {-1.0f, -0.3f, 0.0f};
   test::RenderScene scene(c);
-  Config off = scene.sim().config();
-  off.render.shadows = false;
+  Preset off = scene.preset();
+  off.view.render.shadows = false;
   const test::Image on = scene.render(480, 270);
   const test::Image noShadow = scene.render(480, 270, &off);
   const test::Image bare = scene.render(480, 270, &off, false);

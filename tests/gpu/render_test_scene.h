@@ -13,20 +13,21 @@
 #include "app/capture.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
-#include "sim/preset.h"
+#include "app/preset.h"
+#include "sim/gpu/make_solver.h"
 #include "sim/simulation.h"
 #include "tests/gpu/gl_fixture.h"
 
 namespace csm::test {
 
 // A preset from presets/, with fewer strands so the CPU reference steps it quickly.
-inline Config presetConfig(const std::string& name, int strands) {
-  Config c = defaultConfig();
+inline Preset presetConfig(const std::string& name, int strands) {
+  Preset c = defaultPreset();
   PresetErrors errors;
   const std::string path = std::string(CSM_SOURCE_DIR) + "/presets/" + name;
   INFO(errors.text());
   REQUIRE(loadPreset(path, c, errors));
-  c.hairstyle.strands = strands;
+  c.scene.hairstyle.strands = strands;
   return c;
 }
 
@@ -53,12 +54,12 @@ inline void dumpImage(const Image& image, const std::string& name) {
 
 class RenderScene {
  public:
-  explicit RenderScene(const Config& config, int frames = 2) {
+  explicit RenderScene(const Preset& preset, int frames = 2) : preset_(preset) {
     glContext();
     std::string error;
     sim_ = std::make_unique<Simulation>(makeSolver("cpu", &error));
     INFO(error);
-    REQUIRE(sim_->load(config, std::string(CSM_SOURCE_DIR) + "/presets", &error));
+    REQUIRE(sim_->load(preset.scene, std::string(CSM_SOURCE_DIR) + "/presets", &error));
     for (int f = 0; f < frames; ++f) sim_->stepFrame();
     renderer_ = HairRenderer::create(&error);
     INFO(error);
@@ -67,15 +68,20 @@ class RenderScene {
 
   Simulation& sim() { return *sim_; }
   HairRenderer& renderer() { return *renderer_; }
+  const Preset& preset() const { return preset_; }
 
-  // Renders the current frame with `config` (default: the simulation's) and reads it back.
+  // Renders the current frame as `preset` says (default: the scene's own) and reads it back.
   // `withHair` false draws no strands: the backdrop and the head alone.
-  Image render(int width, int height, const Config* config = nullptr, bool withHair = true) {
+  Image render(int width, int height, const Preset* preset = nullptr, bool withHair = true) {
     if (!target_ || target_->width() != width || target_->height() != height)
       target_ = std::make_unique<CaptureTarget>(width, height);
     const unsigned buffer = withHair ? positions_.update(sim_->solver()) : 0;
-    FrameView view = frameViewOf(*sim_, buffer, width, height, target_->framebuffer());
-    if (config) view.config = config;
+    FrameView view =
+        frameViewOf(*sim_, preset_.view, buffer, width, height, target_->framebuffer());
+    if (preset) {
+      view.scene = &preset->scene;
+      view.look = &preset->view;
+    }
     renderer_->render(view);
     Image image;
     image.width = width;
@@ -85,6 +91,7 @@ class RenderScene {
   }
 
  private:
+  Preset preset_;
   std::unique_ptr<Simulation> sim_;
   std::unique_ptr<HairRenderer> renderer_;
   std::unique_ptr<CaptureTarget> target_;

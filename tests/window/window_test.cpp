@@ -24,10 +24,10 @@
 #include "app/panels.h"
 #include "app/viewer.h"
 #include "app/viewer_presets.h"
-#include "render/gl/shader_source.h"
+#include "gl/shader_source.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/params.h"
-#include "sim/preset.h"
+#include "app/preset.h"
 
 using namespace csm;
 namespace fs = std::filesystem;
@@ -173,7 +173,7 @@ TEST_CASE(
   runFrames(*v, 3);
   const size_t before = v->simulation().solver().strandCount();
   CHECK(before == 6000);
-  const CameraConfig camera = v->simulation().config().camera;
+  const CameraConfig camera = v->preset().view.camera;
   const double t = v->simulation().time();
 
   // The same setter the panels call (Viewer::applyConfig), by parameter name.
@@ -184,7 +184,7 @@ TEST_CASE(
   CHECK(v->simulation().solver().strandCount() == 1500);
   CHECK(v->simulation().config().hairstyle.strands == 1500);
   CHECK(v->simulation().config().wind.strength == 8.0f);
-  const CameraConfig& now = v->simulation().config().camera;
+  const CameraConfig& now = v->preset().view.camera;
   CHECK((now.target == camera.target && now.distance == camera.distance && now.yaw == camera.yaw &&
          now.pitch == camera.pitch && now.fov == camera.fov));
   CHECK(v->simulation().time() == Approx(t));
@@ -332,8 +332,8 @@ TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[win
   const fs::path dir = tempDir();
   std::unique_ptr<Viewer> v = makeViewer(
       [](const std::string&, std::string*) { return std::unique_ptr<Solver>(new NanAfter(4)); });
-  Config c = defaultConfig();
-  c.hairstyle.strands = 300;
+  Preset c = defaultPreset();
+  c.scene.hairstyle.strands = 300;
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
   runFrames(*v, 8);
@@ -362,8 +362,8 @@ TEST_CASE("window: a shader that fails to reload keeps the old program and shows
   fs::copy(kSource / "shaders", shaders, fs::copy_options::recursive);
   gl::setShaderDirectory(shaders);
   std::unique_ptr<Viewer> v = makeViewer();
-  Config c = defaultConfig();
-  c.hairstyle.strands = 400;
+  Preset c = defaultPreset();
+  c.scene.hairstyle.strands = 400;
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
   REQUIRE(v->hasRenderer());
@@ -396,8 +396,8 @@ TEST_CASE("window: a shader that fails to reload keeps the old program and shows
 TEST_CASE("window: save as writes the preset and clears the modified marker", "[window]") {
   const fs::path dir = tempDir();
   std::unique_ptr<Viewer> v = makeViewer();
-  Config c = defaultConfig();
-  c.hairstyle.strands = 200;
+  Preset c = defaultPreset();
+  c.scene.hairstyle.strands = 200;
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
   REQUIRE(v->setParam("wind.gusts", "1.25"));
@@ -406,15 +406,15 @@ TEST_CASE("window: save as writes the preset and clears the modified marker", "[
   CHECK(out == dir / "mine.json");
   REQUIRE(v->saveAs(out.string()));
   CHECK_FALSE(v->modified());
-  Config back = defaultConfig();
+  Preset back = defaultPreset();
   PresetErrors errors;
   REQUIRE(loadPreset(out.string(), back, errors));
-  CHECK(back.wind.gusts == 1.25f);
-  CHECK(back.hairstyle.strands == 200);
+  CHECK(back.scene.wind.gusts == 1.25f);
+  CHECK(back.scene.hairstyle.strands == 200);
   // Revert goes back to what was saved.
   REQUIRE(v->setParam("sim.damping", "3"));
   v->revert();
-  CHECK(v->simulation().config().sim.damping == back.sim.damping);
+  CHECK(v->simulation().config().sim.damping == back.scene.sim.damping);
   removeTemp(dir);
 }
 
@@ -451,7 +451,7 @@ TEST_CASE("camera control: orbit, zoom and head drag stay in range and keep the 
   zoomCamera(cam, 1000.0f);
   CHECK(cam.distance == Approx(findParam("camera.distance")->min));
 
-  Config c = defaultConfig();
+  Config c = defaultPreset().scene;
   frameHead(cam, c, Pose{});
   // The scalp grown by the longest strand is centred and fits the vertical field of view.
   const float reach = c.head.spheres[0].radius + c.hairstyle.lengthMax;

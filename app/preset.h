@@ -1,0 +1,48 @@
+// Presets: a JSON file holding a whole scene: what it is called, the simulated scene
+// (sim/config.h) and how it is viewed (render/view_config.h). Every key is a parameter of the
+// one list (app/params.h).
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "render/view_config.h"
+#include "sim/config.h"
+
+namespace csm {
+
+struct Preset {
+  std::string name = "default";
+  std::string description;
+  Config scene;     // what the simulation runs
+  ViewConfig view;  // the look, the camera, the light
+};
+
+struct PresetErrors {
+  std::vector<std::string> messages;  // each names the file and the JSON path or byte offset
+  bool empty() const { return messages.empty(); }
+  std::string text() const;  // one message a line
+};
+
+// Reads a preset over the defaults. `source` names the file in messages.
+// Returns false, with every problem found in `errors`, when the preset is not valid; `out`
+// is then left unchanged.
+// The checks between parameters (sim/scene_checks.h) and of the machine's capacity run too.
+bool parsePreset(std::string_view text, const std::string& source, Preset& out,
+                 PresetErrors& errors);
+bool loadPreset(const std::string& path, Preset& out, PresetErrors& errors);
+
+// The whole preset as JSON, every parameter present, nested by the keys' dots.
+nlohmann::json presetToJson(const Preset& c);
+// Writes a temporary file beside `path`, flushes it, then renames it over `path`: a crash or a
+// full disk never leaves a truncated preset.
+bool savePreset(const std::string& path, const Preset& c, std::string* error);
+
+// The preset compiled into the binary, so the program runs with no files.
+std::string_view defaultPresetText();
+Preset defaultPreset();
+
+}  // namespace csm

@@ -1,0 +1,92 @@
+#include "render/view_params.h"
+
+namespace csm {
+namespace {
+
+std::vector<Param<ViewConfig>> build() {
+  return {
+      param("render.shadows", "Shadows", "Rendering", &ViewConfig::render, &RenderConfig::shadows,
+            0, 1, "Deep opacity map self-shadowing.", Effect::Render),
+      param("render.strand_width", "Strand width", "Rendering", &ViewConfig::render,
+            &RenderConfig::strandWidth, 0.1, 8.0, "Width of a drawn strand (pixels).",
+            Effect::Render),
+      param("render.subdivision", "Subdivision", "Rendering", &ViewConfig::render,
+            &RenderConfig::subdivision, 1, 16, "Spline segments drawn per simulated segment.",
+            Effect::Render),
+      param("render.root_color", "Root colour", "Rendering|Colour", &ViewConfig::render,
+            &RenderConfig::rootColor, 0, 1, "Hair colour at the root.", Effect::Render)
+          .asColor(),
+      param("render.tip_color", "Tip colour", "Rendering|Colour", &ViewConfig::render,
+            &RenderConfig::tipColor, 0, 1, "Hair colour at the tip.", Effect::Render)
+          .asColor(),
+      param("render.color_variation", "Colour variation", "Rendering|Colour", &ViewConfig::render,
+            &RenderConfig::colorVariation, 0.0, 1.0, "Per-strand random variation of brightness.",
+            Effect::Render),
+      param("render.specular_shift1", "Primary shift", "Rendering|Specular", &ViewConfig::render,
+            &RenderConfig::specularShift1, -1.0, 1.0,
+            "Shift of the primary (white) highlight along the strand normal.", Effect::Render),
+      param("render.specular_shift2", "Secondary shift", "Rendering|Specular", &ViewConfig::render,
+            &RenderConfig::specularShift2, -1.0, 1.0, "Shift of the secondary (tinted) highlight.",
+            Effect::Render),
+      param("render.specular_exponent1", "Primary exponent", "Rendering|Specular",
+            &ViewConfig::render, &RenderConfig::specularExponent1, 1.0, 1000.0,
+            "Sharpness of the primary highlight.", Effect::Render)
+          .logScale(),
+      param("render.specular_exponent2", "Secondary exponent", "Rendering|Specular",
+            &ViewConfig::render, &RenderConfig::specularExponent2, 1.0, 1000.0,
+            "Sharpness of the secondary highlight.", Effect::Render)
+          .logScale(),
+      param("render.specular_strength1", "Primary strength", "Rendering|Specular",
+            &ViewConfig::render, &RenderConfig::specularStrength1, 0.0, 4.0,
+            "Brightness of the primary highlight.", Effect::Render),
+      param("render.specular_strength2", "Secondary strength", "Rendering|Specular",
+            &ViewConfig::render, &RenderConfig::specularStrength2, 0.0, 4.0,
+            "Brightness of the secondary highlight.", Effect::Render),
+      param("render.opacity", "Opacity", "Rendering|Shadows", &ViewConfig::render,
+            &RenderConfig::opacity, 0.01, 1.0, "Opacity of one strand, for coverage and shadows.",
+            Effect::Render),
+      param("render.layer_spacing", "Layer spacing", "Rendering|Shadows", &ViewConfig::render,
+            &RenderConfig::layerSpacing, 0.0005, 0.2, "Depth between deep opacity map layers (m).",
+            Effect::Render),
+      param("render.shadow_map_size", "Shadow map size", "Rendering|Shadows", &ViewConfig::render,
+            &RenderConfig::shadowMapSize, 128, 4096, "Resolution of the deep opacity maps.",
+            Effect::Render),
+      param("render.head_color", "Head colour", "Rendering|Colour", &ViewConfig::render,
+            &RenderConfig::headColor, 0, 1, "Colour of the head.", Effect::Render)
+          .asColor(),
+      param("render.background", "Background", "Rendering|Colour", &ViewConfig::render,
+            &RenderConfig::background, 0, 1, "Background colour.", Effect::Render)
+          .asColor(),
+      param("render.samples", "MSAA samples", "Rendering", &ViewConfig::render,
+            &RenderConfig::samples, 1, 16, "Multisampling for hair thinner than a pixel.",
+            Effect::Render),
+      param("camera.target", "Target", "Camera", &ViewConfig::camera, &CameraConfig::target, -10,
+            10, "Point the camera looks at (m).", Effect::Render),
+      param("camera.distance", "Distance", "Camera", &ViewConfig::camera, &CameraConfig::distance,
+            0.05, 20.0, "Distance from the target (m).", Effect::Render),
+      param("camera.yaw", "Yaw", "Camera", &ViewConfig::camera, &CameraConfig::yaw, -360.0, 360.0,
+            "Angle about y (degrees).", Effect::Render),
+      param("camera.pitch", "Pitch", "Camera", &ViewConfig::camera, &CameraConfig::pitch, -89.0,
+            89.0, "Angle above the horizon (degrees).", Effect::Render),
+      param("camera.fov", "Field of view", "Camera", &ViewConfig::camera, &CameraConfig::fov, 5.0,
+            120.0, "Vertical field of view (degrees).", Effect::Render),
+      param("light.direction", "Direction", "Light", &ViewConfig::light, &LightConfig::direction,
+            -1, 1, "Direction the light travels (normalised when used).", Effect::Render),
+      param("light.color", "Colour", "Light", &ViewConfig::light, &LightConfig::color, 0, 1,
+            "Light colour.", Effect::Render)
+          .asColor(),
+      param("light.intensity", "Intensity", "Light", &ViewConfig::light, &LightConfig::intensity,
+            0.0, 10.0, "Light intensity.", Effect::Render),
+      param("light.ambient", "Ambient", "Light", &ViewConfig::light, &LightConfig::ambient, 0.0,
+            2.0, "Ambient light.", Effect::Render),
+  };
+}
+
+}  // namespace
+
+const std::vector<Param<ViewConfig>>& viewParams() {
+  static const std::vector<Param<ViewConfig>> list = build();
+  return list;
+}
+
+}  // namespace csm

@@ -1,0 +1,134 @@
+// Stability maps: each method over time step x its own stiffness knob, on four cantilever
+// strands released under gravity (no head, no wind, nothing driving): a blow-up is a
+// non-finite state, a segment stretched beyond 100%, or the energy growing past 1.5 x its
+// start (sim/measure.h, checkStability).
+#include <cstdio>
+#include <mutex>
+
+#include "tools/bench/bench.h"
+#include "tools/bench/csv.h"
+
+namespace csm::bench {
+namespace {
+
+struct Axis {
+  std::string family;
+  std::string stiffnessName;
+  std::vector<double> values;
+  std::function<Setting(double)> setting;  // substeps are set by the map
+};
+
+}  // namespace
+
+void runStability(const Options& o) {
+  const std::vector<int> substeps =
+      o.quick ? std::vector<int>{1, 4, 16, 64} : std::vector<int>{1, 2, 4, 8, 16, 32, 64, 128};
+  const std::vector<double> ea =
+      o.quick ? std::vector<double>{0.001, 0.01, 0.1, 1.0}
+              : std::vector<double>{0.001, 0.003, 0.01, 0.03, 0.1, 0.3, 1.0, 3.0};
+  const std::vector<double> windows =
+      o.quick ? std::vector<double>{1, 2, 4, 8} : std::vector<double>{1, 2, 3, 4, 6, 8, 12, 15};
+  auto csm = [](bool limit, float dftl) {
+    return [=](double w) {
+      Setting s;
+      s.solver = "csm";
+      s.window = int(w);
+      s.strainLimiting = limit;
+      s.dftl = dftl;
+      return s;
+    };
+  };
+  const std::vector<double> bending =
+      o.quick ? std::vector<double>{1e-4, 1e-3, 1e-2, 1e-1}
+              : std::vector<double>{1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1, 1.0};
+  auto calibrated = [](float dftl) {
+    return [=](double b) {
+      Setting s;
+      s.solver = "csm";
+      s.model = StiffnessModel::Calibrated;
+      s.bendingStiffness = float(b);
+      s.dftl = dftl;
+      return s;
+    };
+  };
+  auto springs = [](const char* name) {
+    return [=](double k) {
+      Setting s;
+      s.solver = name;
+      s.params.stretchStiffness = k;
+      s.params.bendStiffness = 0.2 * k;
+      return s;
+    };
+  };
+  std::vector<Axis> axes = {
+      {"CSM", "stiffness window w", windows, csm(true, 0.0f)},
+      {"CSM, no strain limit", "stiffness window w", windows, csm(false, 0.0f)},
+      {"CSM + DFTL 0.9", "stiffness window w", windows, csm(true, 0.9f)},
+      // Calibrated: the steps per frame capped at the map's, so that each column is one h;
+      // alpha = min(1, k h^2) then saturates at 1 where the stiffness asks for more.
+      {"CSM calibrated (steps capped)", "bending stiffness B (m^4/s^2), 4 cm window", bending,
+       calibrated(0.0f)},
+      {"CSM calibrated + DFTL 0.9 (steps capped)", "bending stiffness B (m^4/s^2), 4 cm window",
+       bending, calibrated(0.9f)},
+      {"MS explicit", "stretch stiffness EA (N), bending 0.2 EA", ea, springs("ms-explicit")},
+      {"MS implicit", "stretch stiffness EA (N), bending 0.2 EA", ea, springs("ms-implicit")},
+      {"PBD", "iterations per step (k = 1, bending 0.5)",
+       o.quick ? std::vector<double>{1, 4, 16, 64}
+               : std::vector<double>{1, 2, 4, 8, 16, 32, 64, 128},
+       [](double it) {
+         Setting s;
+         s.solver = "pbd";
+         s.params.iterations = int(it);
+         return s;
+       }},
+      {"FTL (DFTL 0.9)", "bending constraint stiffness per 1/60 s",
+       o.quick ? std::vector<double>{0.0, 0.1, 0.5, 1.0}
+               : std::vector<double>{0.0, 0.02, 0.05, 0.1, 0.2, 0.5, 0.8, 1.0},
+       [](double k) {
+         Setting s;
+         s.solver = "ftl";
+         s.params.ftlBend = k;
+         return s;
+       }},
+  };
+  struct Cell {
+    int axis;
+    double stiffness;
+    int substeps;
+    StabilityResult result;
+  };
+  std::vector<Cell> cells;
+  for (int a = 0; a < int(axes.size()); ++a)
+    for (double k : axes[a].values)
+      for (int s : substeps) cells.push_back({a, k, s, {}});
+  const double duration = o.quick ? 1.0 : 2.0;
+  std::fprintf(stderr, "stability: %zu runs of %.0f s\n", cells.size(), duration);
+  parallelFor(int(cells.size()), o.threads, [&](int i) {
+    Cell& c = cells[i];
+    Setting s = axes[c.axis].setting(c.stiffness);
+    s.substeps = c.substeps;
+    s.maxSubsteps = c.substeps;
+    Scene scene = cantileverScene(16, 0.25, 4);
+    const int pinned = scene.config.sim.pinned;
+    s.apply(scene.config);
+    scene.config.sim.pinned = pinned;
+    scene.config.collision.mode = CollisionMode::Off;
+    std::unique_ptr<Solver> solver = s.make();
+    c.result = checkStability(*solver, scene, duration, 1.0, 1.5);
+  });
+  Csv csv({"family", "stiffness_name", "stiffness", "substeps", "h", "blowup", "max_strain",
+           "energy_ratio", "time"});
+  for (const Cell& c : cells) {
+    const double h = (1.0 / 60.0) / c.substeps;
+    csv.add(axes[c.axis].family).add(axes[c.axis].stiffnessName).add(c.stiffness);
+    csv.add(c.substeps).add(h).add(blowupName(c.result.blowup));
+    csv.add(c.result.maxStrain).add(c.result.energyRatio).add(c.result.time);
+    csv.endRow();
+  }
+  csv.write(o.out + "/stability.csv");
+  int blown = 0;
+  for (const Cell& c : cells) blown += c.result.blowup != Blowup::None;
+  std::fprintf(stderr, "  %d of %zu runs blew up\n", blown, cells.size());
+}
+
+}  // namespace csm::bench
