@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "app/capture.h"
+#include "app/frame_driver.h"
 #include "app/metrics.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"
@@ -74,12 +75,27 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   }
   const long frames = options.frames >= 0 ? options.frames : 60;
   const Groom& groom = sim.groom();
-  const std::vector<double> rest = restLengths(groom);
+  const bool metrics = !options.metrics.empty();
+  const bool writes = render && (!options.outDir.empty() || !options.video.empty());
+  // Nothing is read back per frame but the samples: every frame's with --metrics, otherwise
+  // one in ten, for the NaN check; a frame written out waits for its own first.
+  DriverOptions driving;
+  driving.sampleEvery = metrics ? 1 : 10;
+  driving.waitForSamples = writes;
+  driving.timeToCompletion = metrics;
+  FrameDriver driver(sim, driving);
   MetricsRecorder recorder;
-  std::vector<glm::vec4> x, v;
+  std::vector<glm::vec4> x;
   auto lastReport = Clock::now();
   const auto start = Clock::now();
   long firstNanFrame = -1;
+  auto nanStop = [&] {
+    firstNanFrame = driver.nanFrame();
+    std::fprintf(stderr,
+                 "csmhair: error: the simulation produced NaN at frame %ld (%llu particles); "
+                 "stopping\n",
+                 firstNanFrame, (unsigned long long)driver.nanParticles());
+  };
   const StiffnessInfo stiffness = sim.solver().stiffness();
   if (!options.quiet)
     std::fprintf(stderr, "csmhair: %s: %zu strands, %zu particles, solver %s, %ld frames; %s\n",
@@ -109,22 +125,15 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                    context->renderer().c_str(), options.outDir.empty() ? "" : " into ",
                    options.outDir.c_str());
   }
+  long simulated = 0;
   for (long f = 0; f < frames; ++f) {
-    const auto t0 = Clock::now();
-    sim.stepFrame();
-    sim.solver().finish();
-    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-    sim.solver().readPositions(x);
-    sim.solver().readVelocities(v);
-    const std::vector<Sphere> spheres = worldSpheres(sim.config().head.spheres, sim.headPose());
-    const Accuracy acc = measureAccuracy(x, v, groom, rest, spheres, sim.config().sim.pinned);
-    recorder.addFrame(ms, acc, sim.solver().stageTimes(), sim.solver().contactStats());
-    if (acc.nanCount > 0 && firstNanFrame < 0) {
-      firstNanFrame = f + 1;
-      std::fprintf(stderr,
-                   "csmhair: error: the simulation produced NaN at frame %ld (%llu particles); "
-                   "stopping\n",
-                   firstNanFrame, (unsigned long long)acc.nanCount);
+    driver.step();
+    ++simulated;
+    if (metrics) recorder.addFrame(driver.lastStepMs(), sim.solver().stageTimes());
+    for (const FrameSample& sample : driver.takeSamples())
+      if (metrics) recorder.addSample(sample);
+    if (driver.stopped()) {
+      nanStop();
       break;
     }
     if (renderer && (f + 1) % options.every == 0) {
@@ -132,10 +141,12 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
       const auto r0 = Clock::now();
       renderer->render(frameViewOf(sim, scene.preset.view, buffer, target->width(),
                                    target->height(), target->framebuffer()));
-      CaptureTarget::waitForGpu();
-      lastRenderMs = std::chrono::duration<double, std::milli>(Clock::now() - r0).count();
-      recorder.addRender(lastRenderMs, renderer->stageTimes());
-      if (!options.outDir.empty() || video) {
+      if (metrics) {
+        CaptureTarget::waitForGpu();
+        lastRenderMs = std::chrono::duration<double, std::milli>(Clock::now() - r0).count();
+        recorder.addRender(lastRenderMs, renderer->stageTimes());
+      }
+      if (writes) {
         const std::vector<std::uint8_t> rgb = target->readRgb();
         ++written;
         if (!options.outDir.empty()) {
@@ -158,12 +169,24 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     const auto now = Clock::now();
     if (!options.quiet && (now - lastReport > std::chrono::seconds(2) || f + 1 == frames)) {
       const double elapsed = std::chrono::duration<double>(now - start).count();
-      std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame  max strain %.4f  %.0f s elapsed", f + 1,
-                   frames, recorder.simMean(), acc.maxStrain, elapsed);
-      if (renderer) std::fprintf(stderr, "  render %.1f ms  %ld written", lastRenderMs, written);
+      std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame", f + 1, frames,
+                   1000.0 * elapsed / double(simulated));
+      if (driver.latestSample())
+        std::fprintf(stderr, "  max strain %.4f (frame %ld)",
+                     driver.latestSample()->accuracy.maxStrain, driver.latestSample()->frame);
+      std::fprintf(stderr, "  %.0f s elapsed", elapsed);
+      if (renderer && metrics)
+        std::fprintf(stderr, "  render %.1f ms  %ld written", lastRenderMs, written);
       std::fputc('\n', stderr);
       lastReport = now;
     }
+  }
+  // The samples still in flight: the last frames' NaN check and measures.
+  if (firstNanFrame < 0) {
+    driver.drain();
+    for (const FrameSample& sample : driver.takeSamples())
+      if (metrics) recorder.addSample(sample);
+    if (driver.stopped()) nanStop();
   }
   if (!options.exportHair.empty()) {
     // The final strands in world space, as a cyHair file for other tools.

@@ -8,11 +8,36 @@
 
 namespace csm {
 
-void MetricsRecorder::addFrame(double simMs, const Accuracy& a,
-                               const std::vector<StageTime>& stages, const ContactStats& contacts) {
-  const bool first = simMs_.empty();
+namespace {
+
+double percentile95(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, size_t(0.95 * double(v.size() - 1) + 0.5))];
+}
+
+double mean(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (double x : v) sum += x;
+  return v.empty() ? 0.0 : sum / double(v.size());
+}
+
+}  // namespace
+
+void MetricsRecorder::addFrame(double simMs, const std::vector<StageTime>& stages) {
   simMs_.push_back(simMs);
   for (const StageTime& s : stages) stageSum_[s.name] += s.ms;
+}
+
+void MetricsRecorder::addUiFrame(double ms) {
+  uiMs_.push_back(ms);
+}
+
+void MetricsRecorder::addSample(const FrameSample& sample) {
+  const Accuracy& a = sample.accuracy;
+  const ContactStats& contacts = sample.contacts;
+  const bool first = samples_ == 0;
+  ++samples_;
   worst_.maxStrain = first ? a.maxStrain : std::max(worst_.maxStrain, a.maxStrain);
   worst_.maxSpeed = std::max(worst_.maxSpeed, a.maxSpeed);
   worst_.nanCount = std::max(worst_.nanCount, a.nanCount);
@@ -29,17 +54,11 @@ void MetricsRecorder::addRender(double renderMs, const std::vector<StageTime>& s
 }
 
 double MetricsRecorder::simMean() const {
-  if (simMs_.empty()) return 0.0;
-  double sum = 0.0;
-  for (double v : simMs_) sum += v;
-  return sum / simMs_.size();
+  return mean(simMs_);
 }
 
 double MetricsRecorder::simP95() const {
-  if (simMs_.empty()) return 0.0;
-  std::vector<double> v = simMs_;
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, size_t(0.95 * (v.size() - 1) + 0.5))];
+  return percentile95(simMs_);
 }
 
 nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
@@ -48,6 +67,11 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
   // The fastest frame too: on a shared machine other work only ever adds time.
   const double fastest = simMs_.empty() ? 0.0 : *std::min_element(simMs_.begin(), simMs_.end());
   nlohmann::json ms = {{"sim_mean", simMean()}, {"sim_p95", simP95()}, {"sim_min", fastest}};
+  if (!uiMs_.empty()) {
+    ms["ui_mean"] = mean(uiMs_);
+    ms["ui_p95"] = percentile95(uiMs_);
+    ms["ui_frames"] = uiMs_.size();
+  }
   nlohmann::json stages = nlohmann::json::object();
   for (const auto& [name, sum] : stageSum_)
     stages[name] = simMs_.empty() ? 0.0 : sum / simMs_.size();
@@ -63,7 +87,8 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
   j["ms"] = ms;
   j["accuracy"] = {
       {"max_strain", worst_.maxStrain},
-      {"mean_strain", simMs_.empty() ? 0.0 : meanStrainSum_ / simMs_.size()},
+      {"mean_strain", samples_ == 0 ? 0.0 : meanStrainSum_ / double(samples_)},
+      {"samples", samples_},
       {"head_penetrations", worst_.headPenetrations},
       {"max_speed", worst_.maxSpeed},
       {"nan_count", worst_.nanCount},

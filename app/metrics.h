@@ -1,4 +1,4 @@
-// Per-frame timings and accuracy, written as the --metrics JSON.
+// Per-frame timings and the frames' samples (their accuracy), written as the --metrics JSON.
 #pragma once
 
 #include <map>
@@ -14,11 +14,16 @@ namespace csm {
 
 class MetricsRecorder {
  public:
-  void addFrame(double simMs, const Accuracy& accuracy, const std::vector<StageTime>& stages,
-                const ContactStats& contacts);
+  // A simulated frame: its wall time and the solver's stage times.
+  void addFrame(double simMs, const std::vector<StageTime>& stages);
+  // A frame's measures, when its sample comes (a few frames later).
+  void addSample(const FrameSample& sample);
   void addRender(double renderMs, const std::vector<StageTime>& stages);
+  // The window: wall time between UI frames.
+  void addUiFrame(double ms);
 
   long frames() const { return long(simMs_.size()); }
+  long samples() const { return samples_; }
   double simMean() const;
   double simP95() const;
   const Accuracy& worst() const { return worst_; }
@@ -30,7 +35,8 @@ class MetricsRecorder {
   bool write(const std::string& path, const nlohmann::json& meta, std::string* error) const;
 
  private:
-  std::vector<double> simMs_, renderMs_;
+  std::vector<double> simMs_, renderMs_, uiMs_;
+  long samples_ = 0;
   std::map<std::string, double> stageSum_, renderStageSum_;
   Accuracy worst_;  // max strain, max speed, max NaN count, summed head penetrations
   double meanStrainSum_ = 0.0;

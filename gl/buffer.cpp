@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "gl/debug.h"
+#include "gl/fence.h"
 
 namespace csm::gl {
 
@@ -72,6 +73,7 @@ void Buffer::read(GLintptr offset, GLsizeiptr size, void* out) const {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glBindBuffer(GL_COPY_READ_BUFFER, id_);
   glGetBufferSubData(GL_COPY_READ_BUFFER, offset, size, out);
+  countReadback(std::uint64_t(size));
   maybeCheckErrors("Buffer::read");
 }
 

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "gl/debug.h"
+#include "gl/fence.h"
 #include "gl/renderbuffer.h"
 #include "gl/texture.h"
 
@@ -153,6 +154,7 @@ void Framebuffer::read(GLenum attachment, const Rect& rect, GLenum format, GLenu
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(rect.x, rect.y, rect.width, rect.height, format, type, out);
+  countReadback(std::uint64_t(rect.width) * std::uint64_t(rect.height) * 4);
   maybeCheckErrors("Framebuffer::read");
 }
 

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "gl/debug.h"
+#include "gl/fence.h"
 
 namespace csm::gl {
 
@@ -182,6 +183,7 @@ void Texture::read(GLint level, GLenum format, GLenum type, void* out) const {
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glGetTexImage(target_, level, format, type, out);
+  countReadback(1);
   maybeCheckErrors("Texture::read");
 }
 

@@ -14,34 +14,37 @@ std::vector<double> restLengths(const Groom& groom) {
   return l;
 }
 
-Accuracy measureAccuracy(std::span<const glm::vec4> x, std::span<const glm::vec4> v,
-                         const Groom& groom, std::span<const double> restLength,
-                         std::span<const Sphere> spheres, int pinned) {
+namespace {
+
+bool finite(const glm::dvec3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+// The measures over strands [first[s], first[s+1]), positions and velocities by particle.
+template <class Position, class Velocity, class Pinned>
+Accuracy measure(size_t strands, const uint32_t* first, Position x, Velocity v, size_t velocities,
+                 std::span<const double> restLength, std::span<const Sphere> spheres,
+                 Pinned pinned) {
   Accuracy acc;
   double strainSum = 0.0;
   uint64_t segments = 0;
-  auto finite = [](const glm::vec4& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-  };
-  for (size_t s = 0; s < groom.strandCount(); ++s) {
-    const uint32_t a = groom.first[s], b = groom.first[s + 1];
+  for (size_t s = 0; s < strands; ++s) {
+    const uint32_t a = first[s], b = first[s + 1];
     for (uint32_t i = a; i < b; ++i) {
-      if (!finite(x[i]) || (i < v.size() && !finite(v[i]))) {
+      const glm::dvec3 xi = x(i);
+      if (!finite(xi) || (i < velocities && !finite(v(i)))) {
         ++acc.nanCount;
         continue;
       }
-      if (i < v.size()) acc.maxSpeed = std::max(acc.maxSpeed, double(glm::length(glm::vec3(v[i]))));
-      if (int(i - a) >= pinned)
+      if (i < velocities) acc.maxSpeed = std::max(acc.maxSpeed, glm::length(v(i)));
+      if (int(i - a) >= pinned(s))
         for (const Sphere& sp : spheres)
-          if (glm::length(glm::dvec3(glm::vec3(x[i])) - glm::dvec3(sp.center)) <
-              double(sp.radius) * (1.0 - 1e-6)) {
+          if (glm::length(xi - glm::dvec3(sp.center)) < double(sp.radius) * (1.0 - 1e-6)) {
             ++acc.headPenetrations;
             break;
           }
-      if (i + 1 < b && restLength[i] > 0.0 && finite(x[i + 1])) {
-        const double len =
-            glm::length(glm::dvec3(glm::vec3(x[i + 1])) - glm::dvec3(glm::vec3(x[i])));
-        const double strain = len / restLength[i] - 1.0;
+      if (i + 1 < b && restLength[i] > 0.0 && finite(x(i + 1))) {
+        const double strain = glm::length(x(i + 1) - xi) / restLength[i] - 1.0;
         acc.maxStrain = segments == 0 ? strain : std::max(acc.maxStrain, strain);
         strainSum += std::abs(strain);
         ++segments;
@@ -50,6 +53,28 @@ Accuracy measureAccuracy(std::span<const glm::vec4> x, std::span<const glm::vec4
   }
   acc.meanStrain = segments ? strainSum / segments : 0.0;
   return acc;
+}
+
+}  // namespace
+
+Accuracy measureAccuracy(std::span<const glm::vec4> x, std::span<const glm::vec4> v,
+                         const Groom& groom, std::span<const double> restLength,
+                         std::span<const Sphere> spheres, int pinned) {
+  // Through float, as the positions are: the speed and strain of a float state.
+  return measure(
+      groom.strandCount(), groom.first.data(),
+      [&](uint32_t i) { return glm::dvec3(glm::vec3(x[i])); },
+      [&](uint32_t i) { return glm::dvec3(glm::vec3(v[i])); }, v.size(), restLength, spheres,
+      [&](size_t) { return pinned; });
+}
+
+Accuracy measureAccuracy(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v,
+                         std::span<const uint32_t> first, std::span<const double> restLength,
+                         std::span<const Sphere> spheres, std::span<const int> pinned) {
+  return measure(
+      first.empty() ? 0 : first.size() - 1, first.data(), [&](uint32_t i) { return x[i]; },
+      [&](uint32_t i) { return v[i]; }, v.size(), restLength, spheres,
+      [&](size_t s) { return pinned[s]; });
 }
 
 }  // namespace csm

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "sim/config.h"
@@ -28,5 +29,11 @@ Accuracy measureAccuracy(std::span<const glm::vec4> positions,
                          std::span<const glm::vec4> velocities, const Groom& groom,
                          std::span<const double> restLength, std::span<const Sphere> worldSpheres,
                          int pinned);
+// The same on a solver's own state: double precision, strand s being the particles
+// [strandFirst[s], strandFirst[s+1]) with pinned[s] of them kinematic.
+Accuracy measureAccuracy(std::span<const glm::dvec3> positions,
+                         std::span<const glm::dvec3> velocities,
+                         std::span<const uint32_t> strandFirst, std::span<const double> restLength,
+                         std::span<const Sphere> worldSpheres, std::span<const int> pinned);
 
 }  // namespace csm

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "sim/config.h"
 #include "sim/groom.h"
 #include "sim/head.h"
+#include "sim/metrics.h"
 #include "sim/stiffness.h"
 
 namespace csm {
@@ -24,6 +26,14 @@ struct StageTime {
 struct ContactStats {
   uint64_t contacts = 0;      // segment pairs closer than 2r in the last collision pass
   uint64_t penetrations = 0;  // segment pairs closer than r: real crossings
+};
+
+// What a solver measures of one frame's state (sim/metrics.h's measures, with each strand's
+// own pinned particles and the head where it was at the end of the frame).
+struct FrameSample {
+  long frame = -1;
+  Accuracy accuracy;
+  ContactStats contacts;  // of that frame's collision pass
 };
 
 class Solver {
@@ -46,7 +56,18 @@ class Solver {
   // Blocks until the work already issued is done, so wall-clock timing is honest.
   virtual void finish() {}
 
-  // Read-backs, for tests, metrics and export; never called inside a frame.
+  // Measures the state at the end of the last frame without waiting for it: the GPU solver
+  // reduces it on the GPU to a few numbers per work group and copies them behind a fence; the
+  // CPU solvers measure at once. Samples come back in the order they were asked for.
+  virtual void requestSample(long frame) = 0;
+  // The oldest sample asked for, once ready; with `wait`, waiting for it. Nothing when none is
+  // asked for or, without `wait`, none is ready yet.
+  virtual std::optional<FrameSample> takeSample(bool wait = false) = 0;
+  // Forgets samples asked for and not taken (after a reset).
+  virtual void dropSamples() = 0;
+
+  // Read-backs of the whole state, for tests, export and the CPU renderer path; the frame
+  // loop samples instead (requestSample).
   virtual void readPositions(std::vector<glm::vec4>& out) = 0;
   virtual void readVelocities(std::vector<glm::vec4>& out) = 0;
   // Replaces positions and velocities (the layout readPositions gives); the rest of the
@@ -60,7 +81,8 @@ class Solver {
 
   // Time per stage of the last frame; solvers that cannot time stages return what they have.
   virtual std::vector<StageTime> stageTimes() { return {}; }
-  // Hair-hair contacts found by the last collision pass (zeros when collisions are off).
+  // Hair-hair contacts of the last collision pass (zeros when collisions are off). The GPU
+  // solver's are those of its latest sample: it reads nothing back for them.
   virtual ContactStats contactStats() { return {}; }
   // The stiffness it runs with: steps per frame, alpha, windows (CSM solvers).
   virtual StiffnessInfo stiffness() const { return {}; }

@@ -3,7 +3,7 @@
 // Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
 // bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
 // (no pass here declares more) but only 8 binding points; every driver we run on has more
-// than the 24 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+// than the 25 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
@@ -18,31 +18,40 @@
 #define CSM_BIND_ROTATION 6      // vec4: quaternion (xyz, w) of each particle's region, warm start
 #define CSM_BIND_STRAND_ORDER 7  // uint: strands by length, for the per-strand passes
 #define CSM_BIND_PARAMS 8        // SimParams + one Substep per substep
-#define CSM_BIND_REGION 22       // vec4 per particle: its region (sim/stiffness.h): x per-region
-                                 // mass, y 1 / J (0: no extent), z first (negative: that many
-                                 // ghosts and particles from 0), w last particle of the region
-                                 // (indices within the strand, exact in float)
-#define CSM_BIND_STRAND_STIFFNESS 23  // vec4 per strand: x calibrated rate k (1/s^2), y per-region
-                                      // mass of a ghost, z pinned particles, w unused
-#define CSM_BIND_SPHERES 9       // vec4: world head spheres (centre, radius) per substep
+#define CSM_BIND_REGION \
+  22  // vec4 per particle: its region (sim/stiffness.h): x per-region
+      // mass, y 1 / J (0: no extent), z first (negative: that many
+      // ghosts and particles from 0), w last particle of the region
+      // (indices within the strand, exact in float)
+#define CSM_BIND_STRAND_STIFFNESS \
+  23  // vec4 per strand: x calibrated rate k (1/s^2), y per-region
+      // mass of a ghost, z pinned particles, w unused
+#define CSM_BIND_MEASURE \
+  24                        // uvec4 x2 per CSM_MEASURE_GROUP particles: the measures of the
+                            // group (measure.comp), read back behind a fence
+#define CSM_BIND_SPHERES 9  // vec4: world head spheres (centre, radius) per substep
 // Hair-hair collision.
 #define CSM_BIND_SEGMENT_FORCE 10  // vec4 x2 per segment: forces on its two particles
 #define CSM_BIND_SEGMENT_CELLS 11  // uint per particle: cells its segment entered (0: none)
-#define CSM_BIND_SEGMENT_BASE 12   // uint per particle + 4: exclusive scan of those, where its
-                                   // cells' partial forces start
-#define CSM_BIND_GRID_COUNT 13     // uint per bucket: entries in it (back to 0 after scatter)
-#define CSM_BIND_GRID_START 14     // uint per bucket + 4: exclusive scan of the counts; entry
-                                   // `buckets` is the total the grid needed
-#define CSM_BIND_SCAN_BLOCKS 15    // uint per CSM_SCAN_LEAF buckets: block sums, then their scan
-#define CSM_BIND_ENTRY_HIGH 16     // uvec4 per grid entry: box upper corner (float bits), segment
-#define CSM_BIND_ENTRY_LOW 17      // uvec4 per grid entry: box lower corner (float bits), cell key
-#define CSM_BIND_COUNTERS 18       // uint[8]: entries needed, contacts, penetrations, recorded
-                                   // pairs, segments in no cell (see segmentCells)
-#define CSM_BIND_PAIRS 19          // uvec2: recorded contact pairs (tests)
+#define CSM_BIND_SEGMENT_BASE \
+  12                            // uint per particle + 4: exclusive scan of those, where its
+                                // cells' partial forces start
+#define CSM_BIND_GRID_COUNT 13  // uint per bucket: entries in it (back to 0 after scatter)
+#define CSM_BIND_GRID_START \
+  14                             // uint per bucket + 4: exclusive scan of the counts; entry
+                                 // `buckets` is the total the grid needed
+#define CSM_BIND_SCAN_BLOCKS 15  // uint per CSM_SCAN_LEAF buckets: block sums, then their scan
+#define CSM_BIND_ENTRY_HIGH 16   // uvec4 per grid entry: box upper corner (float bits), segment
+#define CSM_BIND_ENTRY_LOW 17    // uvec4 per grid entry: box lower corner (float bits), cell key
+#define CSM_BIND_COUNTERS \
+  18                                  // uint[8]: entries needed, contacts, penetrations, recorded
+                                      // pairs, segments in no cell (see segmentCells)
+#define CSM_BIND_PAIRS 19             // uvec2: recorded contact pairs (tests)
 #define CSM_BIND_SEGMENT_CONTACTS 20  // uint per segment: its contacts, both sides counted
-#define CSM_BIND_PARTIAL_FORCE 21  // vec4 x2 per grid entry: forces of the segment's contacts
-                                   // owned by that cell, at its SEGMENT_BASE + cell index
-                                   // (w of the first: how many)
+#define CSM_BIND_PARTIAL_FORCE \
+  21  // vec4 x2 per grid entry: forces of the segment's contacts
+      // owned by that cell, at its SEGMENT_BASE + cell index
+      // (w of the first: how many)
 
 // Texture units of buffer textures (samplerBuffer views of the buffers above), for reads
 // that differ per invocation: on llvmpipe a texel fetch is a vector gather where a storage
@@ -68,6 +77,7 @@
 #define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes
 #define CSM_STRAND_GROUP 64     // per-strand passes
 #define CSM_CONTACT_GROUP 64    // the contact pass (its contact lists fill shared memory)
+#define CSM_MEASURE_GROUP 256   // the measure pass: particles reduced into one record
 #define CSM_SCAN_GROUP 256      // invocations of the block-sum scan group; each scans 2 sums
 #define CSM_SCAN_BLOCK 512      // block sums per round of that scan (2 x CSM_SCAN_GROUP)
 #define CSM_SCAN_LEAF 64        // bucket counts summed by one invocation (a power of two)

@@ -35,7 +35,7 @@ layout(std430, binding = CSM_BIND_PARAMS) readonly buffer Params {
 // Items beyond 65535 work groups are dispatched as a 2D grid of groups (the GL 4.3 minimum
 // for gl_NumWorkGroups.x); this flattens it back. A macro: gl_WorkGroupSize exists only
 // after the pass declares its local size, below this include.
-#define globalIndex()                                                                     \
+#define globalIndex()                                                                \
   ((gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + \
    gl_LocalInvocationID.x)
 
@@ -125,7 +125,9 @@ float closestSegmentPoints(vec3 p0, vec3 p1, vec3 q0, vec3 q1, out float s, out 
 // Fig. 1's 9 mm cells): a cell's 30-bit key is then exact, and a far-away segment of an
 // exploding simulation shares the border cells instead of overflowing (slower, still exact:
 // the clamp is monotone, so the owner argument above holds).
-ivec3 cellOf(vec3 p) { return ivec3(clamp(floor((p - P.origin.xyz) * P.cells.y), -512.0, 511.0)); }
+ivec3 cellOf(vec3 p) {
+  return ivec3(clamp(floor((p - P.origin.xyz) * P.cells.y), -512.0, 511.0));
+}
 
 uint cellKey(ivec3 c) {
   uvec3 u = uvec3(c + 512);
@@ -144,7 +146,11 @@ void segmentBox(vec3 p0, vec3 p1, out vec3 lo, out vec3 hi) {
 bool segmentCells(vec3 p0, vec3 p1, out ivec3 lo, out ivec3 hi) {
   lo = ivec3(0);
   hi = ivec3(-1);
-  if (!all(lessThan(abs(p0), vec3(1e30))) || !all(lessThan(abs(p1), vec3(1e30)))) return false;
+  // isnan as well as the bound: a compiler may assume that comparisons see no NaN (llvmpipe
+  // drops them; tests/gpu/gpu_solver_test.cpp "a sample measures ..." caught it in measure.comp).
+  if (any(isnan(p0)) || any(isnan(p1)) || !all(lessThan(abs(p0), vec3(1e30))) ||
+      !all(lessThan(abs(p1), vec3(1e30))))
+    return false;
   vec3 bl, bh;
   segmentBox(p0, p1, bl, bh);
   ivec3 l = cellOf(bl), h = cellOf(bh);

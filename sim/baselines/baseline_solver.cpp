@@ -39,6 +39,7 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
       bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
   }
   spheres_ = worldSpheres(config.head.spheres, head);
+  samples_.clear();
   onReset();
 }
 
@@ -119,6 +120,21 @@ void BaselineSolver::writeState(const std::vector<glm::vec4>& positions,
     x_[i] = glm::dvec3(glm::vec3(positions[i]));
   for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
     v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+}
+
+void BaselineSolver::requestSample(long frame) {
+  FrameSample sample;
+  sample.frame = frame;
+  const std::vector<int> pinned(first_.size() - 1, config_.sim.pinned);
+  sample.accuracy = measureAccuracy(x_, v_, first_, restLength_, spheres_, pinned);
+  samples_.push_back(sample);
+}
+
+std::optional<FrameSample> BaselineSolver::takeSample(bool) {
+  if (samples_.empty()) return std::nullopt;
+  FrameSample s = samples_.front();
+  samples_.pop_front();
+  return s;
 }
 
 std::unique_ptr<BaselineSolver> makeBaseline(std::string_view name, const BaselineParams& params) {

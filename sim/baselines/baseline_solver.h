@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <deque>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -46,6 +47,10 @@ class BaselineSolver : public Solver {
   void readVelocities(std::vector<glm::vec4>& out) override;
   void writeState(const std::vector<glm::vec4>& positions,
                   const std::vector<glm::vec4>& velocities) override;
+  // Measured at once: the state is on the CPU.
+  void requestSample(long frame) override;
+  std::optional<FrameSample> takeSample(bool wait = false) override;
+  void dropSamples() override { samples_.clear(); }
   std::vector<StageTime> stageTimes() override { return {{"integrate", lastMs_}}; }
 
   // One step of length h ending at head pose `head`.
@@ -84,6 +89,7 @@ class BaselineSolver : public Solver {
   std::vector<double> bendLength_;  // rest distance i -> i+2; 0 where there is none
   std::vector<glm::dvec3> x_, v_;
   std::vector<Sphere> spheres_;  // world space, this step
+  std::deque<FrameSample> samples_;
   double lastMs_ = 0.0;
 };
 

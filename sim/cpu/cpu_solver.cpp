@@ -154,6 +154,7 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   q_.assign(n, toEigen(head.rotation));
   contacts_ = {};
   stages_.clear();
+  samples_.clear();
 
   const size_t m = n + strands;
   prefMass_.assign(m, 0.0);
@@ -503,6 +504,22 @@ void CpuSolver::writeState(const std::vector<glm::vec4>& positions,
     x_[i] = glm::dvec3(glm::vec3(positions[i]));
   for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
     v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+}
+
+void CpuSolver::requestSample(long frame) {
+  FrameSample sample;
+  sample.frame = frame;
+  sample.accuracy = measureAccuracy(x_, v_, first_, restLength_,
+                                    worldSpheres(config_.head.spheres, head_), regions_.pinned);
+  sample.contacts = contacts_;
+  samples_.push_back(sample);
+}
+
+std::optional<FrameSample> CpuSolver::takeSample(bool) {
+  if (samples_.empty()) return std::nullopt;
+  FrameSample s = samples_.front();
+  samples_.pop_front();
+  return s;
 }
 
 }  // namespace csm

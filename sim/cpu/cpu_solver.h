@@ -3,6 +3,7 @@
 // baseline.
 #pragma once
 
+#include <deque>
 #include <vector>
 
 #include <Eigen/Core>
@@ -59,6 +60,10 @@ class CpuSolver final : public Solver {
   void readVelocities(std::vector<glm::vec4>& out) override;
   void writeState(const std::vector<glm::vec4>& positions,
                   const std::vector<glm::vec4>& velocities) override;
+  // Measured at once: the state is on the CPU.
+  void requestSample(long frame) override;
+  std::optional<FrameSample> takeSample(bool wait = false) override;
+  void dropSamples() override { samples_.clear(); }
   std::vector<StageTime> stageTimes() override { return stages_; }
   ContactStats contactStats() override { return contacts_; }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
@@ -100,6 +105,7 @@ class CpuSolver final : public Solver {
   std::vector<Eigen::Quaterniond> q_;     // rotation of each region, warm start
   ContactStats contacts_;
   std::vector<StageTime> stages_;
+  std::deque<FrameSample> samples_;
 
   // Per strand s, prefix arrays have strand size + 1 entries starting at first_[s] + s. Sums
   // over regions weigh each particle by its per-region mass (regions_.mass).

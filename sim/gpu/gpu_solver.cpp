@@ -92,7 +92,8 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
         !make(programs_.scanAdd, "sim/scan_add.comp") ||
         !make(programs_.gridScatter, "sim/grid_scatter.comp") ||
         !make(programs_.contacts, "sim/contacts.comp") ||
-        !make(programs_.segmentForces, "sim/segment_forces.comp"))
+        !make(programs_.segmentForces, "sim/segment_forces.comp") ||
+        !make(programs_.measure, "sim/measure.comp"))
       return false;
   }
   if (maxN != builtMaxN_) {
@@ -181,7 +182,9 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
 
   forcesValid_ = false;
   collidedThisFrame_ = false;
-  contactStats_ = ContactStats{};
+  sampledContacts_ = ContactStats{};
+  dropSamples();
+  zeroed<glm::uvec4>(measure_, 2 * ((particles_ + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP));
   for (FrameTimers& f : timers_) f.issued = false;
   lastStages_.clear();
 }
@@ -326,6 +329,7 @@ void GpuSolver::bindAll() {
   segmentCells_.bindBase(ssbo, CSM_BIND_SEGMENT_CELLS);
   segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
   partialForce_.bindBase(ssbo, CSM_BIND_PARTIAL_FORCE);
+  measure_.bindBase(ssbo, CSM_BIND_MEASURE);
   positionTex_.bind(CSM_TEX_POSITION);
   velocityTex_.bind(CSM_TEX_VELOCITY);
   restTex_.bind(CSM_TEX_REST);
@@ -384,6 +388,7 @@ void GpuSolver::beginTimerFrame() {
 void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   const FramePlan plan = planFrame(config_.sim, regions_.maxRate);
   const int substeps = plan.substeps;
+  lastSubsteps_ = substeps;
   const double h = plan.h;
   std::vector<Pose> poses(substeps), before(substeps);
   for (int k = 0; k < substeps; ++k) {
@@ -420,8 +425,10 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     collide();
     forcesValid_ = true;
   } else {
+    // No collision pass: nothing to report either (the counters of a last pass are cleared
+    // once, on the GPU).
+    if (forcesValid_) counters_.clearToZero();
     forcesValid_ = false;
-    contactStats_ = ContactStats{};
   }
   endStage();
   timers_[timerFrame_].issued = true;
@@ -438,7 +445,7 @@ void GpuSolver::detectContacts() {
   beginTimerFrame();
   collide();
   // A tool asks for this pass's contacts: when the grid did not fit, grow it and run again
-  // (stepFrame instead grows it when contactStats() sees the total).
+  // (stepFrame instead grows it when a sample sees the total).
   const uint32_t needed = counters_.download<uint32_t>(1)[CSM_COUNTER_ENTRIES];
   if (needed > entryCapacity_) {
     growEntries(needed);
@@ -453,11 +460,7 @@ void GpuSolver::detectContacts() {
 }
 
 void GpuSolver::collide() {
-  contactStats_.reset();
-  if (segments_ == 0) {
-    contactStats_ = ContactStats{};
-    return;
-  }
+  if (segments_ == 0) return;
   timeStage(kGrid);
   counters_.clearToZero();
   dispatchItems(programs_.gridCount, uint32_t(particles_), CSM_PARTICLE_GROUP);
@@ -521,7 +524,7 @@ void GpuSolver::writeState(const std::vector<glm::vec4>& positions,
 }
 
 std::vector<StageTime> GpuSolver::stageTimes() {
-  // The newest frame whose queries have all finished; if none has, wait for the newest.
+  // The newest frame whose queries have all finished; none yet: the last known (no waiting).
   const int n = int(timers_.size());
   int pick = -1;
   for (int k = 0; k < n && pick < 0; ++k) {
@@ -529,7 +532,6 @@ std::vector<StageTime> GpuSolver::stageTimes() {
     const FrameTimers& t = timers_[f];
     if (t.issued && (t.used == 0 || t.queries[t.used - 1].second.resultAvailable())) pick = f;
   }
-  if (pick < 0 && timers_[timerFrame_].issued) pick = timerFrame_;
   if (pick < 0) return lastStages_;
   std::vector<StageTime> out;
   for (const char* name : kStageNames) out.push_back({name, 0.0});
@@ -541,14 +543,99 @@ std::vector<StageTime> GpuSolver::stageTimes() {
   return out;
 }
 
-ContactStats GpuSolver::contactStats() {
-  if (!contactStats_) {
-    const std::vector<uint32_t> c = counters_.download<uint32_t>(CSM_COUNTERS);
-    contactStats_ = ContactStats{c[CSM_COUNTER_CONTACTS], c[CSM_COUNTER_PENETRATIONS]};
-    // The grid did not fit this frame (it applied no hair-hair forces): room for next frame.
-    if (c[CSM_COUNTER_ENTRIES] > entryCapacity_) growEntries(c[CSM_COUNTER_ENTRIES]);
+ContactStats GpuSolver::readContactStats() {
+  const std::vector<uint32_t> c = counters_.download<uint32_t>(CSM_COUNTERS);
+  afterCounters(c.data());
+  return ContactStats{c[CSM_COUNTER_CONTACTS], c[CSM_COUNTER_PENETRATIONS]};
+}
+
+void GpuSolver::afterCounters(const uint32_t* c) {
+  // The grid did not fit that frame (it applied no hair-hair forces): room for the next.
+  if (c[CSM_COUNTER_ENTRIES] > entryCapacity_) growEntries(c[CSM_COUNTER_ENTRIES]);
+}
+
+void GpuSolver::requestSample(long frame) {
+  // A full ring: its oldest sample is read now (waiting for it) and kept until taken.
+  if (pendingSlots_.size() == slots_.size()) {
+    slots_[pendingSlots_.front()].fence.wait();
+    ready_.push_back(readSlot());
   }
-  return *contactStats_;
+  int index = 0;
+  while (std::find(pendingSlots_.begin(), pendingSlots_.end(), index) != pendingSlots_.end())
+    ++index;
+  SampleSlot& slot = slots_[index];
+  slot.frame = frame;
+  slot.groups = uint32_t((particles_ + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);
+  const GLsizeiptr recordBytes = GLsizeiptr(slot.groups) * 2 * sizeof(glm::uvec4);
+  const GLsizeiptr bytes = recordBytes + CSM_COUNTERS * sizeof(uint32_t);
+  if (slot.staging.id() == 0) slot.staging = gl::Buffer();
+  if (slot.staging.size() < bytes) slot.staging.setData(bytes, nullptr, GL_STREAM_READ);
+  if (slot.groups > 0) {
+    bindAll();
+    programs_.measure.setUniform("sphereBase",
+                                 unsigned((lastSubsteps_ - 1) * int(config_.head.spheres.size())));
+    dispatchItems(programs_.measure, uint32_t(particles_), CSM_MEASURE_GROUP);
+    gl::memoryBarrier(gl::Barrier::BufferUpdate);
+    measure_.copyTo(slot.staging, 0, 0, recordBytes);
+  }
+  counters_.copyTo(slot.staging, 0, recordBytes, CSM_COUNTERS * sizeof(uint32_t));
+  slot.fence = gl::Fence::insert();
+  pendingSlots_.push_back(index);
+}
+
+std::optional<FrameSample> GpuSolver::takeSample(bool wait) {
+  if (!ready_.empty()) {
+    FrameSample s = ready_.front();
+    ready_.pop_front();
+    return s;
+  }
+  if (pendingSlots_.empty()) return std::nullopt;
+  const SampleSlot& slot = slots_[pendingSlots_.front()];
+  if (!slot.fence.passed()) {
+    if (!wait) return std::nullopt;
+    slot.fence.wait();
+  }
+  return readSlot();
+}
+
+FrameSample GpuSolver::readSlot() {
+  SampleSlot& slot = slots_[pendingSlots_.front()];
+  pendingSlots_.pop_front();
+  std::vector<glm::uvec4> data(size_t(slot.groups) * 2 + CSM_COUNTERS / 4);
+  slot.staging.read(0, GLsizeiptr(data.size() * sizeof(glm::uvec4)), data.data());
+  // The records in order (measure.comp), as measureAccuracy adds them.
+  FrameSample sample;
+  sample.frame = slot.frame;
+  Accuracy& a = sample.accuracy;
+  uint32_t strainKey = 0;
+  uint64_t segments = 0;
+  double strainSum = 0.0;
+  for (uint32_t g = 0; g < slot.groups; ++g) {
+    const glm::uvec4 r0 = data[2 * g], r1 = data[2 * g + 1];
+    strainKey = std::max(strainKey, r0.x);
+    segments += r0.y;
+    a.headPenetrations += r0.z;
+    a.nanCount += r0.w;
+    strainSum += double(std::bit_cast<float>(r1.x));
+    a.maxSpeed = std::max(a.maxSpeed, double(std::bit_cast<float>(r1.y)));
+  }
+  if (segments > 0) {
+    // measure.comp's orderedKey, inverted.
+    const uint32_t bits = (strainKey & 0x80000000u) ? (strainKey & 0x7fffffffu) : ~strainKey;
+    a.maxStrain = double(std::bit_cast<float>(bits));
+    a.meanStrain = strainSum / double(segments);
+  }
+  const uint32_t* c = reinterpret_cast<const uint32_t*>(&data[size_t(slot.groups) * 2]);
+  sample.contacts = ContactStats{c[CSM_COUNTER_CONTACTS], c[CSM_COUNTER_PENETRATIONS]};
+  sampledContacts_ = sample.contacts;
+  afterCounters(c);
+  return sample;
+}
+
+void GpuSolver::dropSamples() {
+  pendingSlots_.clear();
+  ready_.clear();
+  for (SampleSlot& slot : slots_) slot.fence = gl::Fence();
 }
 
 std::vector<std::pair<uint32_t, uint32_t>> GpuSolver::readContactPairs(bool* overflow) {

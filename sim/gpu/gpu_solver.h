@@ -13,6 +13,7 @@
 
 #include <array>
 #include <chrono>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@
 #include "gl/program.h"
 #include "gl/query.h"
 #include "gl/buffer_texture.h"
+#include "gl/fence.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/hair_state.h"
 #include "sim/solver.h"
@@ -52,10 +54,16 @@ class GpuSolver final : public Solver {
                   const std::vector<glm::vec4>& velocities) override;
   unsigned positionBuffer() override { return position_.id(); }
   std::vector<StageTime> stageTimes() override;
-  ContactStats contactStats() override;
+  // Those of the latest sample taken: nothing is read back for them.
+  ContactStats contactStats() override { return sampledContacts_; }
+  void requestSample(long frame) override;
+  std::optional<FrameSample> takeSample(bool wait = false) override;
+  void dropSamples() override;
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
-  // --- For tests and tools. ---
+  // --- For tests and tools (these read back at once). ---
+  // The contacts of the last collision pass; also grows the grid when it did not fit.
+  ContactStats readContactStats();
   // Runs the collision pass on the current state now (stepFrame does it at the end of each
   // frame when collision.mode is full); its forces act during the next frame.
   void detectContacts();
@@ -89,6 +97,7 @@ class GpuSolver final : public Solver {
   static void view(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format);
   void dispatchItems(const gl::Program& program, uint32_t items, uint32_t groupSize);
   void timeStage(int stage);
+  void afterCounters(const uint32_t* counters);
   void endStage();
   void beginTimerFrame();
 
@@ -113,7 +122,7 @@ class GpuSolver final : public Solver {
     gl::Program predict{gl::NoCreate}, shapeMatch{gl::NoCreate}, strainLimit{gl::NoCreate};
     gl::Program gridCount{gl::NoCreate}, scanBlocks{gl::NoCreate}, scanSums{gl::NoCreate},
         scanAdd{gl::NoCreate}, gridScatter{gl::NoCreate}, contacts{gl::NoCreate},
-        segmentForces{gl::NoCreate};
+        segmentForces{gl::NoCreate}, measure{gl::NoCreate};
   } programs_;
 
   gl::Buffer rest_{gl::NoCreate}, position_{gl::NoCreate}, velocity_{gl::NoCreate},
@@ -124,15 +133,15 @@ class GpuSolver final : public Solver {
       entryHigh_{gl::NoCreate}, counters_{gl::NoCreate}, pairs_{gl::NoCreate},
       segmentContacts_{gl::NoCreate}, segmentCells_{gl::NoCreate}, segmentBase_{gl::NoCreate},
       segmentScanBlocks_{gl::NoCreate}, partialForce_{gl::NoCreate}, region_{gl::NoCreate},
-      strandStiffness_{gl::NoCreate};
+      strandStiffness_{gl::NoCreate}, measure_{gl::NoCreate};
   // texelFetch views for reads that differ per invocation (see gl/buffer_texture.h).
   gl::BufferTexture positionTex_{gl::NoCreate}, velocityTex_{gl::NoCreate}, restTex_{gl::NoCreate},
       entryLowTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate}, entryHighTex_{gl::NoCreate},
       predictedTex_{gl::NoCreate}, regionTex_{gl::NoCreate};
 
   // GPU time per stage: one GL_TIME_ELAPSED query around each dispatch group, for the last
-  // few frames; stageTimes() reads the newest frame whose results are in. Software drivers
-  // (llvmpipe) run a dispatch before glDispatchCompute returns and report no time for it in
+  // few frames; stageTimes() reads the newest frame whose results are in, never waiting. Software
+  // drivers (llvmpipe) run a dispatch before glDispatchCompute returns and report no time for it in
   // their timer queries, so there the stages are timed by the CPU clock instead.
   static constexpr int kStages = 5;  // integrate, shape_matching, strain_limiting, grid, contacts
   struct FrameTimers {
@@ -148,7 +157,21 @@ class GpuSolver final : public Solver {
   int timerFrame_ = 0;
   std::vector<StageTime> lastStages_;
 
-  std::optional<ContactStats> contactStats_;
+  // Samples (requestSample): the measure pass's records and the counters copied into a staging
+  // buffer of a small ring, read once its fence has passed. A full ring waits for its oldest.
+  struct SampleSlot {
+    gl::Buffer staging{gl::NoCreate};
+    gl::Fence fence;
+    long frame = -1;
+    uint32_t groups = 0;
+  };
+  static constexpr int kSampleSlots = 4;
+  std::array<SampleSlot, kSampleSlots> slots_;
+  std::deque<int> pendingSlots_;   // oldest first
+  std::deque<FrameSample> ready_;  // read off a full ring, not taken yet
+  FrameSample readSlot();          // the oldest pending slot, whose fence has passed
+  int lastSubsteps_ = 1;
+  ContactStats sampledContacts_;
 };
 
 }  // namespace csm

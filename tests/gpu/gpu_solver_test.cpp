@@ -191,7 +191,7 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
     gpu->readPositions(x);
     gpu->readVelocities(v);
     x.insert(x.end(), v.begin(), v.end());
-    CHECK(gpu->contactStats().contacts > 0);
+    CHECK(gpu->readContactStats().contacts > 0);
     return x;
   };
   const std::vector<glm::vec4> a = run(), b = run();
@@ -276,7 +276,7 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
   up.collision.mode = CollisionMode::Head;
   gpu->setConfig(up);
   gpu->stepFrame(Pose{}, Pose{});
-  CHECK(gpu->contactStats().contacts == 0);
+  CHECK(gpu->readContactStats().contacts == 0);
 
   // reset rebuilds for a groom of another size, and the clock starts again.
   const Groom bigger = grow(smallScene(120));
@@ -327,4 +327,57 @@ TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][so
                          glGetProgramResourceIndex(program->id(), GL_BUFFER_VARIABLE, "S[0].time"),
                          1, &strideProp, 1, nullptr, &stride);
   CHECK(size_t(stride) == sizeof(Substep));
+}
+
+TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measures read back",
+          "[gpu][solver][sample]") {
+  Config c = smallScene(300);
+  c.collision.mode = CollisionMode::Head;
+  c.wind.strength = 4.0f;
+  c.head.motion = HeadMotion::Nod;
+  c.head.amplitude = 40.0f;
+  c.head.frequency = 1.5f;
+  const Groom g = grow(c);
+  auto gpu = makeGpu();
+  gpu->reset(g, c, headPose(c.head, 0.0));
+  double t = 0.0;
+  for (int f = 0; f < 20; ++f, t += c.sim.dt) {
+    gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
+    gpu->requestSample(f);
+  }
+  // In order, each once; the last one waited for.
+  long expected = 0;
+  std::optional<FrameSample> last;
+  while (auto s = gpu->takeSample(true)) {
+    CHECK(s->frame == expected++);
+    last = s;
+  }
+  CHECK(expected == 20);
+  REQUIRE(last);
+  std::vector<glm::vec4> x, v;
+  gpu->readPositions(x);
+  gpu->readVelocities(v);
+  const Accuracy ref = measureAccuracy(
+      x, v, g, restLengths(g), worldSpheres(c.head.spheres, headPose(c.head, t)), c.sim.pinned);
+  const Accuracy& a = last->accuracy;
+  INFO("GPU max strain " << a.maxStrain << " vs " << ref.maxStrain << ", mean " << a.meanStrain
+                         << " vs " << ref.meanStrain << ", speed " << a.maxSpeed << " vs "
+                         << ref.maxSpeed << ", inside " << a.headPenetrations << " vs "
+                         << ref.headPenetrations);
+  CHECK(a.nanCount == 0);
+  CHECK(a.maxStrain == Approx(ref.maxStrain).margin(1e-5));
+  CHECK(a.meanStrain == Approx(ref.meanStrain).epsilon(1e-4));
+  CHECK(a.maxSpeed == Approx(ref.maxSpeed).epsilon(1e-5));
+  CHECK(a.headPenetrations == ref.headPenetrations);
+  CHECK(a.maxSpeed > 0.01);  // the scene moves
+
+  // A non-finite particle is counted.
+  x[17].y = std::nanf("");
+  gpu->writeState(x, v);
+  gpu->requestSample(99);
+  const std::optional<FrameSample> bad = gpu->takeSample(true);
+  REQUIRE(bad);
+  CHECK(bad->frame == 99);
+  CHECK(bad->accuracy.nanCount == 1);
+  CHECK_FALSE(gpu->takeSample(true));
 }

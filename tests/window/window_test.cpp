@@ -150,6 +150,13 @@ class NanAfter final : public Solver {
     if (frames_ >= badFrame_ && out.size() > 10) out[10].x = std::nanf("");
   }
   void readVelocities(std::vector<glm::vec4>& out) override { inner_.readVelocities(out); }
+  void requestSample(long frame) override { inner_.requestSample(frame); }
+  std::optional<FrameSample> takeSample(bool wait) override {
+    std::optional<FrameSample> s = inner_.takeSample(wait);
+    if (s && s->frame >= badFrame_) s->accuracy.nanCount = 1;
+    return s;
+  }
+  void dropSamples() override { inner_.dropSamples(); }
   void writeState(const std::vector<glm::vec4>& x, const std::vector<glm::vec4>& v) override {
     inner_.writeState(x, v);
   }

@@ -1,0 +1,54 @@
+#include "app/frame_driver.h"
+
+namespace csm {
+
+using Clock = std::chrono::steady_clock;
+
+void FrameDriver::step() {
+  if (stopped()) return;
+  const auto t0 = Clock::now();
+  sim_.stepFrame();
+  if (options_.timeToCompletion) sim_.solver().finish();
+  lastStepMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  const long frame = sim_.frame();
+  const bool due =
+      options_.waitForSamples || options_.sampleEvery <= 1 || frame % options_.sampleEvery == 0;
+  if (due) sim_.solver().requestSample(frame);
+  take(options_.waitForSamples);
+}
+
+void FrameDriver::take(bool wait) {
+  while (std::optional<FrameSample> s = sim_.solver().takeSample(wait)) accept(*s);
+}
+
+void FrameDriver::accept(const FrameSample& sample) {
+  latest_ = sample;
+  taken_.push_back(sample);
+  if (sample.accuracy.nanCount > 0 && !stopped()) {
+    nanFrame_ = sample.frame;
+    nanParticles_ = sample.accuracy.nanCount;
+  }
+}
+
+void FrameDriver::drain() {
+  take(true);
+}
+
+void FrameDriver::restart() {
+  sim_.solver().dropSamples();
+  latest_.reset();
+  resume();
+}
+
+void FrameDriver::resume() {
+  nanFrame_ = -1;
+  nanParticles_ = 0;
+}
+
+std::vector<FrameSample> FrameDriver::takeSamples() {
+  std::vector<FrameSample> out;
+  out.swap(taken_);
+  return out;
+}
+
+}  // namespace csm

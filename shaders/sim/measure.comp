@@ -1,0 +1,102 @@
+// The measures of sim/metrics.cpp (measureAccuracy) on the GPU: per particle, then reduced per
+// work group in shared memory into one record of two uvec4, so that a sample reads back a few
+// bytes per CSM_MEASURE_GROUP particles and no positions. No atomics: the reduction runs in a
+// fixed order, and GpuSolver::takeSample combines the records in order on the CPU.
+//   record[2g]:     x max strain (float bits, ordered as unsigned: see orderedKey),
+//                   y segments measured, z particles inside a head sphere, w non-finite particles
+//   record[2g + 1]: x sum of |strain| (float bits), y max speed (float bits), z, w unused
+#include "sim/common.glsl"
+
+layout(local_size_x = CSM_MEASURE_GROUP) in;
+
+layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
+layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
+layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
+layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
+layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
+  uint particleStrand[];
+};
+layout(std430, binding = CSM_BIND_SPHERES) readonly buffer Spheres { vec4 spheres[]; };
+layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
+  vec4 strandStiffness[];
+};
+layout(std430, binding = CSM_BIND_MEASURE) writeonly buffer Measure { uvec4 record[]; };
+
+uniform uint sphereBase;  // the head spheres of the frame's last step
+
+shared uint sMaxStrain[CSM_MEASURE_GROUP];
+shared uint sSegments[CSM_MEASURE_GROUP];
+shared uint sInside[CSM_MEASURE_GROUP];
+shared uint sNonFinite[CSM_MEASURE_GROUP];
+shared float sStrainSum[CSM_MEASURE_GROUP];
+shared float sMaxSpeed[CSM_MEASURE_GROUP];
+
+// Float bits made to sort as unsigned integers, negatives included.
+uint orderedKey(float f) {
+  uint u = floatBitsToUint(f);
+  return (u & 0x80000000u) != 0u ? ~u : (u | 0x80000000u);
+}
+
+// isnan and isinf, not a comparison: a compiler may assume comparisons see no NaN.
+bool finite3(vec3 v) {
+  return !any(isnan(v)) && !any(isinf(v));
+}
+
+void main() {
+  uint i = globalIndex();
+  uint l = gl_LocalInvocationID.x;
+  uint maxStrain = 0u, segments = 0u, inside = 0u, nonFinite = 0u;
+  float strainSum = 0.0, speed = 0.0;
+  if (i < P.counts.x) {
+    uint s = particleStrand[i];
+    uint a = strandFirst[s], b = strandFirst[s + 1u];
+    vec3 x = texelFetch(posTex, int(i)).xyz;
+    vec3 v = texelFetch(velTex, int(i)).xyz;
+    if (!finite3(x) || !finite3(v)) {
+      nonFinite = 1u;
+    } else {
+      speed = length(v);
+      if (int(i - a) >= int(strandStiffness[s].z))
+        for (int k = 0; k < P.ints.w; ++k) {
+          vec4 sp = spheres[sphereBase + uint(k)];
+          if (length(x - sp.xyz) < sp.w * (1.0 - 1e-6)) {
+            inside = 1u;
+            break;
+          }
+        }
+      if (i + 1u < b) {
+        float rest = length(texelFetch(restTex, int(i) + 1).xyz - texelFetch(restTex, int(i)).xyz);
+        vec3 next = texelFetch(posTex, int(i) + 1).xyz;
+        if (rest > 0.0 && finite3(next)) {
+          float strain = length(next - x) / rest - 1.0;
+          maxStrain = orderedKey(strain);
+          strainSum = abs(strain);
+          segments = 1u;
+        }
+      }
+    }
+  }
+  sMaxStrain[l] = maxStrain;
+  sSegments[l] = segments;
+  sInside[l] = inside;
+  sNonFinite[l] = nonFinite;
+  sStrainSum[l] = strainSum;
+  sMaxSpeed[l] = speed;
+  barrier();
+  for (uint half_ = CSM_MEASURE_GROUP / 2u; half_ > 0u; half_ >>= 1u) {
+    if (l < half_) {
+      sMaxStrain[l] = max(sMaxStrain[l], sMaxStrain[l + half_]);
+      sSegments[l] += sSegments[l + half_];
+      sInside[l] += sInside[l + half_];
+      sNonFinite[l] += sNonFinite[l + half_];
+      sStrainSum[l] += sStrainSum[l + half_];
+      sMaxSpeed[l] = max(sMaxSpeed[l], sMaxSpeed[l + half_]);
+    }
+    barrier();
+  }
+  if (l == 0u) {
+    uint g = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    record[2u * g] = uvec4(sMaxStrain[0], sSegments[0], sInside[0], sNonFinite[0]);
+    record[2u * g + 1u] = uvec4(floatBitsToUint(sStrainSum[0]), floatBitsToUint(sMaxSpeed[0]), 0u, 0u);
+  }
+}
