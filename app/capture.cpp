@@ -13,6 +13,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "gl/draw.h"
+
 extern char** environ;
 
 namespace csm {
@@ -34,7 +36,7 @@ std::vector<std::uint8_t> CaptureTarget::readRgb() const {
 }
 
 void CaptureTarget::waitForGpu() {
-  glFinish();
+  gl::finish();
 }
 
 namespace {

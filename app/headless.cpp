@@ -215,38 +215,18 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   }
   if (!options.metrics.empty()) {
     const Config& c = sim.config();
-    nlohmann::json meta = {
-        {"preset", scene.preset.name},
-        {"source", scene.source},
-        {"strands", sim.solver().strandCount()},
-        {"particles", sim.solver().particleCount()},
-        {"frame_dt", c.sim.dt},
-        {"substeps", stiffness.plan.substeps},
-        {"stiffness",
-         {{"model", c.sim.stiffnessModel == StiffnessModel::Paper ? "paper" : "calibrated"},
-          {"window", c.sim.stiffnessModel == StiffnessModel::Paper ? double(c.sim.stiffnessWindow)
-                                                                   : double(c.sim.windowLength)},
-          {"window_unit", c.sim.stiffnessModel == StiffnessModel::Paper ? "particles" : "m"},
-          {"bending_stiffness", c.sim.bendingStiffness},
-          {"substeps_wanted", stiffness.plan.wanted},
-          {"substeps_capped", stiffness.plan.capped},
-          {"alpha", {stiffness.alphaMin, stiffness.alphaMax}},
-          {"particles_per_side", {stiffness.windowMin, stiffness.windowMax}},
-          {"rate", {stiffness.rateMin, stiffness.rateMax}}}},
-        {"stiffness_window", c.sim.stiffnessWindow},
-        {"collision_mode", c.collision.mode == CollisionMode::Off    ? "off"
-                           : c.collision.mode == CollisionMode::Head ? "head"
-                                                                     : "full"},
-        {"solver", std::string(sim.solver().name())},
-        {"groom",
-         {{"file_strands", sim.groomReport().fileStrands},
-          {"file_points", sim.groomReport().filePoints},
-          {"simulated_particles", sim.groomReport().simulatedPoints},
-          {"resample_saved_particles", sim.groomReport().savedPoints()}}},
-        // Where the solver ran: the GL renderer string for the GPU solver (e.g. "llvmpipe
-        // (LLVM 15.0.6, 256 bits)" or "NVIDIA H100 80GB HBM3/PCIe/SSE2").
-        {"device", options.solver == "gpu" && context ? context->renderer() : std::string("cpu")},
-    };
+    RunDescription d;
+    d.preset = scene.preset.name;
+    d.source = scene.source;
+    d.config = c;
+    d.stiffness = stiffness;
+    d.strands = sim.solver().strandCount();
+    d.particles = sim.solver().particleCount();
+    d.solver = std::string(sim.solver().name());
+    d.groom = sim.groomReport();
+    d.device = options.solver == "gpu" && context ? context->renderer() : std::string("cpu");
+    nlohmann::json meta = describeRun(d);
+    meta["mode"] = "headless";
     if (renderer) {
       meta["drawn_strands"] = drawnStrandCount(sim.solver().strandCount(), c);
       meta["render_size"] = {options.width, options.height};

@@ -120,4 +120,38 @@ bool MetricsRecorder::write(const std::string& path, const nlohmann::json& meta,
   return true;
 }
 
+nlohmann::json describeRun(const RunDescription& r) {
+  const Config& c = r.config;
+  const bool paper = c.sim.stiffnessModel == StiffnessModel::Paper;
+  return {
+      {"preset", r.preset},
+      {"source", r.source},
+      {"strands", r.strands},
+      {"particles", r.particles},
+      {"frame_dt", c.sim.dt},
+      {"substeps", r.stiffness.plan.substeps},
+      {"stiffness",
+       {{"model", paper ? "paper" : "calibrated"},
+        {"window", paper ? double(c.sim.stiffnessWindow) : double(c.sim.windowLength)},
+        {"window_unit", paper ? "particles" : "m"},
+        {"bending_stiffness", c.sim.bendingStiffness},
+        {"substeps_wanted", r.stiffness.plan.wanted},
+        {"substeps_capped", r.stiffness.plan.capped},
+        {"alpha", {r.stiffness.alphaMin, r.stiffness.alphaMax}},
+        {"particles_per_side", {r.stiffness.windowMin, r.stiffness.windowMax}},
+        {"rate", {r.stiffness.rateMin, r.stiffness.rateMax}}}},
+      {"stiffness_window", c.sim.stiffnessWindow},
+      {"collision_mode", c.collision.mode == CollisionMode::Off    ? "off"
+                         : c.collision.mode == CollisionMode::Head ? "head"
+                                                                   : "full"},
+      {"solver", r.solver},
+      {"groom",
+       {{"file_strands", r.groom.fileStrands},
+        {"file_points", r.groom.filePoints},
+        {"simulated_particles", r.groom.simulatedPoints},
+        {"resample_saved_particles", r.groom.savedPoints()}}},
+      {"device", r.device},
+  };
+}
+
 }  // namespace csm

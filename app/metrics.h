@@ -7,8 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/config.h"
+#include "sim/hairstyle.h"
 #include "sim/metrics.h"
 #include "sim/solver.h"
+#include "sim/stiffness.h"
 
 namespace csm {
 
@@ -42,5 +45,19 @@ class MetricsRecorder {
   double meanStrainSum_ = 0.0;
   uint64_t contactsLast_ = 0, penetrationsLast_ = 0, penetrationsMax_ = 0;
 };
+
+// What ran, for the metrics' header: the same fields from headless runs and the window.
+struct RunDescription {
+  std::string preset, source;
+  Config config;
+  StiffnessInfo stiffness;
+  std::size_t strands = 0, particles = 0;
+  std::string solver;
+  GroomReport groom;
+  // Where the solver ran: the GL renderer string for the GPU solver (e.g. "llvmpipe (LLVM
+  // 15.0.6, 256 bits)" or "NVIDIA H100 80GB HBM3/PCIe/SSE2"), "cpu" otherwise.
+  std::string device;
+};
+nlohmann::json describeRun(const RunDescription& run);
 
 }  // namespace csm

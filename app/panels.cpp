@@ -121,11 +121,11 @@ void sphereWidgets(const PresetParam& p, Preset& config, const std::string& labe
 // What the stiffness the solver runs with comes to: steps, alpha, window in particles, and a
 // warning when the stiffness asks for more steps than sim.max_substeps allows.
 void drawStiffnessInfo(const Viewer& viewer) {
-  const StiffnessInfo info = viewer.simulation().solver().stiffness();
+  const StiffnessInfo& info = viewer.simFrame().stiffness;
   if (info.strands == 0) return;
   ImGui::Indent();
   std::string text = stiffnessText(info);
-  const SimConfig& sim = viewer.simulation().config().sim;
+  const SimConfig& sim = viewer.simFrame().config.sim;
   if (info.model == StiffnessModel::Calibrated) {
     char ei[64];
     std::snprintf(ei, sizeof ei, "; EI = B x density = %.3g N m^2",

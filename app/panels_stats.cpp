@@ -62,43 +62,49 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
     return;
   }
   const ViewerStats& s = viewer.stats();
-  Simulation& sim = viewer.simulation();
+  const SimFrame& f = viewer.simFrame();
   ImGui::Text("%.1f fps   %.1f ms a frame", s.fps, s.frameMs.mean());
-  ImGui::Text("solver %s, %s", std::string(sim.solver().name()).c_str(),
-              viewer.window().renderer().c_str());
-  ImGui::Text("t = %.2f s, frame %ld%s", sim.time(), sim.frame(),
-              viewer.paused() ? "  (paused)" : "");
-
-  char overlay[96];
-  std::snprintf(overlay, sizeof overlay, "frame time, ms (max %.1f)", s.frameMs.max());
-  plot("##frame", s.frameMs, overlay, 1.0f);
-  std::snprintf(overlay, sizeof overlay, "max strain (now %.4f)", s.maxStrain.latest());
-  plot("##strain", s.maxStrain, overlay, 0.01f);
-  ImGui::TextDisabled("strain and NaN: read back every %d frames", s.sampleEvery);
+  ImGui::Text("solver %s, %s", f.solver.c_str(), viewer.window().renderer().c_str());
+  ImGui::Text("t = %.2f s, frame %ld%s", f.time, f.frame,
+              viewer.loading() ? "  (loading)" : viewer.paused() ? "  (paused)" : "");
+  ImGui::TextDisabled("picture: %s quality",
+                      viewer.lastQuality() == DrawQuality::Interactive ? "interactive" : "full");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "Positions are read back from the solver only every %d frames, not every "
-        "frame,\nso the GPU path never waits for the GPU just to draw a plot.",
-        s.sampleEvery);
+        "While the camera moves or the hair simulates the scene is drawn with\n"
+        "Rendering > Interactive's settings; when still, and for screenshots, in full.");
+
+  char overlay[96];
+  std::snprintf(overlay, sizeof overlay, "UI frame time, ms (max %.1f)", s.frameMs.max());
+  plot("##frame", s.frameMs, overlay, 1.0f);
+  std::snprintf(overlay, sizeof overlay, "max strain (now %.4f)", f.maxStrain.latest());
+  plot("##strain", f.maxStrain, overlay, 0.01f);
+  ImGui::TextDisabled("strain and NaN: sampled each frame, a few frames late");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "The solver reduces each frame's state to a few numbers on the GPU and copies them\n"
+        "behind a fence; they are read when ready, so nothing waits for the GPU.");
 
   if (ImGui::BeginTable("stages", 2, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted("simulation step (wall)");
     ImGui::TableNextColumn();
-    ImGui::Text("%7.2f ms", s.simMs);
-    stageRows("sim", s.simStages);
+    ImGui::Text("%7.2f ms", f.stepMs);
+    stageRows("sim", f.stages);
     stageRows("render", s.renderStages);
     ImGui::EndTable();
   }
   ImGui::Separator();
-  ImGui::Text("hair contacts %llu, penetrations %llu", (unsigned long long)s.contacts.contacts,
-              (unsigned long long)s.contacts.penetrations);
+  const FrameSample sample = f.sample.value_or(FrameSample{});
+  ImGui::Text("hair contacts %llu, penetrations %llu",
+              (unsigned long long)sample.contacts.contacts,
+              (unsigned long long)sample.contacts.penetrations);
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
-              (unsigned long long)s.accuracy.headPenetrations, s.accuracy.maxSpeed);
-  ImGui::Text("particles %zu", s.particles);
-  ImGui::Text("strands simulated %zu, drawn %zu", s.strands, s.drawnStrands);
-  const GroomReport& groom = viewer.simulation().groomReport();
+              (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);
+  ImGui::Text("particles %zu", f.particles);
+  ImGui::Text("strands simulated %zu, drawn %zu", f.strands, s.drawnStrands);
+  const GroomReport& groom = f.groomReport;
   if (groom.fileStrands > 0)
     ImGui::Text("groom file: %zu strands; resampling saved %zu of %zu points", groom.fileStrands,
                 groom.savedPoints(), groom.filePoints);

@@ -6,7 +6,6 @@
 #include <ctime>
 #include <filesystem>
 
-#include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -15,36 +14,33 @@
 
 #include "app/camera_control.h"
 #include "app/panels.h"
+#include "app/params.h"
+#include "app/preset.h"
 #include "app/window.h"
 #include "gl/debug.h"
-#include "gl/framebuffer.h"
 #include "gl/shader_source.h"
-#include "render/renderer.h"
+#include "render/hair_renderer.h"
 #include "sim/gpu/make_solver.h"
-#include "sim/metrics.h"
-#include "app/params.h"
+#include "sim/params.h"
 #include "sim/scene_checks.h"
-#include "app/preset.h"
 
 namespace csm {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-uint64_t countNonFinite(const std::vector<glm::vec4>& x) {
-  uint64_t n = 0;
-  for (const glm::vec4& p : x)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) ++n;
-  return n;
-}
-
 const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+// After the camera or the head last moved, the view counts as moving this long: a drag
+// that pauses for a frame does not flip the quality back and forth.
+constexpr double kStillSeconds = 0.3;
 
 }  // namespace
 
 std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string* error) {
   std::unique_ptr<Viewer> v(new Viewer());
   v->options_ = options;
+  v->uiThread_ = std::this_thread::get_id();
   if (!v->options_.makeSolver) v->options_.makeSolver = csm::makeSolver;
 
   GlfwWindow::Options wo;
@@ -54,7 +50,7 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   v->window_ = GlfwWindow::create(wo, error);
   if (!v->window_) return nullptr;
 
-  // Messages from gl (shader logs, GL errors) go to the Messages panel too.
+  // Messages from gl (shader logs, GL errors), of either thread, go to the Messages panel.
   gl::setLogSink([raw = v.get()](gl::LogLevel level, std::string_view text) {
     raw->log(level == gl::LogLevel::Error     ? MessageLevel::Error
              : level == gl::LogLevel::Warning ? MessageLevel::Warning
@@ -72,35 +68,48 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   ImGui_ImplOpenGL3_Init("#version 430 core");
   v->imguiReady_ = true;
 
-  v->renderer_ = Renderer::create(&v->rendererError_);
-  if (!v->renderer_) {
+  v->renderer_ = HairRenderer::create(&v->rendererError_);
+  if (v->renderer_) {
+    // Pass timings by glFinish would stall every frame of the window.
+    v->renderer_->setSynchronousTiming(false);
+  } else {
     v->log(MessageLevel::Error,
            "The renderer did not start; the hair is simulated but not drawn: " + v->rendererError_);
   }
 
-  std::string solverError;
-  std::unique_ptr<Solver> solver = v->options_.makeSolver(options.solver, &solverError);
-  if (!solver && options.solver == "gpu") {
-    v->log(MessageLevel::Warning,
-           "The GPU solver did not start (" + solverError + "); using the CPU solver.");
-    solver = v->options_.makeSolver("cpu", &solverError);
+  SimThread::Options so;
+  so.makeSolver = v->options_.makeSolver;
+  so.solver = options.solver;
+  so.paced = options.paced;
+  so.frameLimit = options.frameLimit;
+  so.recordMetrics = options.recordMetrics;
+  so.wake = [] { glfwPostEmptyEvent(); };
+  if (options.solver == "gpu") {
+    std::string why;
+    so.context = v->window_->createShared(&why);
+    if (!so.context) v->log(MessageLevel::Warning, "no context for the simulation thread: " + why);
   }
-  if (!solver) {
-    if (error) *error = "no solver: " + solverError;
-    return nullptr;
-  }
-  v->sim_ = std::make_unique<Simulation>(std::move(solver));
+  SimThread::Started started;
+  v->sim_ = SimThread::start(std::move(so), &started, error);
+  if (!v->sim_) return nullptr;
+  if (!started.warning.empty()) v->log(MessageLevel::Warning, started.warning);
+  v->solverName_ = started.solver;
+  v->takeSimFrame();
   v->panels_ = std::make_unique<PanelState>();
   v->lastFrameStart_ = v->fpsWindowStart_ = Clock::now();
   return v;
 }
 
 Viewer::~Viewer() {
+  // The simulation first: its thread uses the shared context and the buffers drawn from.
+  sim_.reset();
+  frame_.reset();
   if (window_) window_->makeCurrent();
   // GL objects go before the context.
-  sim_.reset();
   renderer_.reset();
   uploaded_ = gl::Buffer(gl::NoCreate);
+  sceneFbo_ = gl::Framebuffer(gl::NoCreate);
+  sceneColor_ = gl::Texture(gl::NoCreate);
   if (imguiReady_) {
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -113,29 +122,146 @@ Viewer::~Viewer() {
 void Viewer::log(MessageLevel level, std::string text) {
   if (!options_.quiet && level != MessageLevel::Info)
     std::fprintf(stderr, "csmhair: %s\n", text.c_str());
-  messages_.push_back({level, std::move(text), Clock::now()});
+  ViewerMessage m{level, std::move(text), Clock::now()};
+  if (std::this_thread::get_id() != uiThread_) {
+    std::lock_guard lock(inboxMutex_);
+    inbox_.push_back(std::move(m));
+    return;
+  }
+  messages_.push_back(std::move(m));
   if (messages_.size() > 200) messages_.erase(messages_.begin(), messages_.begin() + 100);
+}
+
+void Viewer::drainInbox() {
+  std::vector<ViewerMessage> in;
+  {
+    std::lock_guard lock(inboxMutex_);
+    in.swap(inbox_);
+  }
+  for (ViewerMessage& m : in) messages_.push_back(std::move(m));
+  if (messages_.size() > 200) messages_.erase(messages_.begin(), messages_.begin() + 100);
+}
+
+MetricsRecorder Viewer::metrics() const {
+  MetricsRecorder m = sim_->metrics();
+  for (double ms : uiMs_) m.addUiFrame(ms);
+  return m;
+}
+
+// --- The simulation's frames ---------------------------------------------------------------
+
+void Viewer::takeSimFrame() {
+  // Events first: the frame taken after them is at least as new as each.
+  const std::vector<SimEvent> events = sim_->takeEvents();
+  if (std::shared_ptr<const SimFrame> f = sim_->acquire()) frame_ = std::move(f);
+  for (const SimEvent& e : events) handle(e);
+  drainInbox();
+  checkStiffness();
+}
+
+void Viewer::handle(const SimEvent& e) {
+  switch (e.kind) {
+    case SimEvent::Kind::Opened:
+      if (pendingOpen_ && pendingOpen_->ticket == e.ticket) {
+        loaded_ = pendingOpen_->preset;
+        current_ = loaded_;
+        edited_ = current_;
+        presetPath_ = pendingOpen_->path;
+        pendingOpen_.reset();
+        userPose_ = Pose{};
+        afterSceneChange();
+        log(MessageLevel::Info,
+            "opened " + (presetPath_.empty() ? "the built-in preset" : presetPath_) + ": " +
+                e.text);
+        stiffnessWarning_.clear();
+      }
+      break;
+    case SimEvent::Kind::OpenFailed:
+      if (pendingOpen_ && pendingOpen_->ticket == e.ticket) {
+        const std::string what = pendingOpen_->path.empty() ? "the preset" : pendingOpen_->path;
+        openError_ = e.text;
+        presetErrors_ = {what + ": " + e.text};
+        presetErrorsNote_ = "not loaded; the scene shown is the one that was running";
+        log(MessageLevel::Error, what + ": " + e.text);
+        pendingOpen_.reset();
+      }
+      break;
+    case SimEvent::Kind::ConfigRefused:
+      // The frames carry the config that still runs: the widgets show it again.
+      log(MessageLevel::Error, "not applied: " + e.text);
+      current_.scene = frame_->config;
+      edited_ = current_;
+      updateTitle();
+      break;
+    case SimEvent::Kind::Regrew:
+      log(MessageLevel::Info, "regrew the hair: " + e.text);
+      break;
+    case SimEvent::Kind::Nan:
+      if (e.ticket >= resetTicket_) {
+        paused_ = true;
+        sim_->setPaused(true);
+        log(MessageLevel::Error, e.text + "; paused. R resets the hair to rest.");
+      }
+      break;
+  }
+}
+
+bool Viewer::sync(double timeoutSeconds) {
+  const bool ok = sim_->sync(timeoutSeconds);
+  takeSimFrame();
+  return ok;
+}
+
+bool Viewer::waitForSimFrame(long frame, double timeoutSeconds) {
+  const bool ok =
+      sim_->waitFor([frame](const SimFrame& f) { return f.frame >= frame; }, timeoutSeconds);
+  takeSimFrame();
+  return ok;
+}
+
+bool Viewer::nanStopped() const {
+  return frame_->nanFrame >= 0 && frame_->ticket >= resetTicket_;
 }
 
 // --- The scene -------------------------------------------------------------------------
 
+void Viewer::startOpen(const Preset& preset, const std::string& baseDir, const std::string& path) {
+  PendingOpen p;
+  p.preset = preset;
+  p.baseDir = baseDir;
+  p.path = path;
+  // Running, from the new scene's first frame on (posted first: the open is the last
+  // command open() waits for).
+  paused_ = false;
+  sim_->setPaused(false);
+  p.ticket = sim_->open(preset.scene, baseDir);
+  pendingOpen_ = std::move(p);
+  // A NaN of the old scene goes with it.
+  resetTicket_ = pendingOpen_->ticket;
+}
+
 bool Viewer::open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
                   std::string* error) {
-  if (!sim_->load(preset.scene, baseDir, error)) return false;
-  sim_->setUserPose(Pose{});
-  sim_->reset();
-  loaded_ = preset;
-  current_ = preset;
-  current_.scene = sim_->config();
-  edited_ = current_;
-  presetPath_ = presetPath;
-  paused_ = false;
-  afterSceneChange();
-  log(MessageLevel::Info, "opened " + (presetPath.empty() ? "the built-in preset" : presetPath) +
-                              ": " + std::to_string(sim_->solver().strandCount()) + " strands, " +
-                              std::to_string(sim_->solver().particleCount()) + " particles");
-  stiffnessWarning_.clear();
-  checkStiffness();
+  openError_.clear();
+  startOpen(preset, baseDir, presetPath);
+  const long ticket = pendingOpen_->ticket;
+  const bool answered = sim_->waitForTicket(ticket);
+  takeSimFrame();
+  if (!answered) {
+    if (error) *error = "the simulation thread did not answer";
+    return false;
+  }
+  if (pendingOpen_ && pendingOpen_->ticket == ticket) {  // no event: cannot happen
+    pendingOpen_.reset();
+    if (error) *error = "the simulation did not open the preset";
+    return false;
+  }
+  if (!openError_.empty()) {
+    if (error) *error = openError_;
+    // Said by the caller: not the preset problems window.
+    presetErrors_.clear();
+    return false;
+  }
   return true;
 }
 
@@ -148,15 +274,8 @@ bool Viewer::loadPreset(const std::string& path) {
     log(MessageLevel::Error, path + " is not a valid preset; the current scene stays");
     return false;
   }
-  std::string error;
-  const std::string dir = std::filesystem::absolute(path).parent_path().string();
-  if (!open(c, dir, path, &error)) {
-    presetErrors_ = {path + ": " + error};
-    presetErrorsNote_ = "not loaded; the scene shown is the one that was running";
-    log(MessageLevel::Error, path + ": " + error);
-    return false;
-  }
   presetErrors_.clear();
+  startOpen(c, std::filesystem::absolute(path).parent_path().string(), path);
   return true;
 }
 
@@ -176,30 +295,29 @@ bool Viewer::applyConfig(const Preset& next) {
   std::vector<std::string> problems = crossCheck(next.scene);
   const std::string capacity = checkCapacity(next.scene);
   if (!capacity.empty()) problems.push_back(capacity);
-  std::string error;
-  const long generation = sim_->generation();
-  if (problems.empty() && !sim_->setConfig(next.scene, &error)) problems.push_back(error);
   if (!problems.empty()) {
     for (const std::string& p : problems) log(MessageLevel::Error, "not applied: " + p);
     edited_ = current_;  // the widgets show what runs
     return false;
   }
-  current_ = next;
-  current_.scene = sim_->config();
-  edited_ = current_;
-  if (sim_->generation() != generation) {
-    afterSceneChange();
-    log(MessageLevel::Info, "regrew the hair: " + std::to_string(sim_->solver().strandCount()) +
-                                " strands, " + std::to_string(sim_->solver().particleCount()) +
-                                " particles");
+  const bool sceneChanged = !sameScene(current_.scene, next.scene);
+  if (sceneChanged && pendingOpen_) {
+    // The edit would land on the preset being replaced; the view may change meanwhile.
+    log(MessageLevel::Warning, "not applied: a preset is loading; change it once it shows");
+    edited_ = current_;
+    return false;
   }
-  checkStiffness();
+  if (sceneChanged) sim_->setConfig(next.scene);
+  current_ = next;
+  edited_ = current_;
+  ++viewVersion_;
   updateTitle();
   return true;
 }
 
 void Viewer::checkStiffness() {
-  const std::string warning = stiffnessWarning(sim_->solver().stiffness());
+  if (!frame_->loaded) return;
+  const std::string warning = stiffnessWarning(frame_->stiffness);
   if (warning == stiffnessWarning_) return;
   stiffnessWarning_ = warning;
   if (!warning.empty()) log(MessageLevel::Warning, warning);
@@ -260,11 +378,7 @@ std::vector<std::string_view> Viewer::modifiedKeys() const {
 }
 
 void Viewer::afterSceneChange() {
-  ++sceneVersion_;
-  nanFrame_ = -1;
-  stats_.maxStrain.clear();
-  stats_.accuracy = Accuracy{};
-  stats_.sampledFrame = -1;
+  ++viewVersion_;
   updateTitle();
 }
 
@@ -280,9 +394,18 @@ void Viewer::updateTitle() {
 
 // --- Running ---------------------------------------------------------------------------
 
+void Viewer::setPaused(bool paused) {
+  paused_ = paused;
+  sim_->setPaused(paused);
+}
+
+void Viewer::stepOnce() {
+  setPaused(true);
+  sim_->step();
+}
+
 void Viewer::resetHair() {
-  sim_->reset();
-  afterSceneChange();
+  resetTicket_ = sim_->reset();
   log(MessageLevel::Info, "hair reset to rest");
 }
 
@@ -294,12 +417,13 @@ void Viewer::resetView() {
 
 void Viewer::frameHead() {
   Preset next = current_;
-  csm::frameHead(next.view.camera, next.scene, sim_->headPose());
+  csm::frameHead(next.view.camera, next.scene, frame_->head);
   applyConfig(next);
 }
 
 void Viewer::resetHead() {
-  sim_->setUserPose(Pose{});
+  userPose_ = Pose{};
+  sim_->setUserPose(userPose_);
 }
 
 bool Viewer::reloadShaders() {
@@ -316,6 +440,7 @@ bool Viewer::reloadShaders() {
 #endif
   }
   std::string buildLog;
+  ++viewVersion_;
   if (renderer_->reloadShaders(&buildLog)) {
     shaderReloadFailed_ = false;
     shaderLog_ = buildLog;
@@ -344,19 +469,30 @@ std::string Viewer::defaultScreenshotName() const {
   return std::string("csmhair_") + stamp + ".png";
 }
 
-void Viewer::requestScreenshot(const std::string& path) {
+void Viewer::requestScreenshot(const std::string& path, long minFrame) {
   screenshotPath_ = path;
+  screenshotTicket_ = sim_->ticket();
+  screenshotFrame_ = minFrame;
+}
+
+bool Viewer::screenshotDue() const {
+  if (screenshotPath_.empty()) return false;
+  // Every change made before the request shows, and the frame asked for is there (or will
+  // never come: stopped or paused).
+  if (frame_->ticket < screenshotTicket_ || pendingOpen_) return false;
+  return screenshotFrame_ < 0 || frame_->frame >= screenshotFrame_ || frame_->idle;
+}
+
+void Viewer::viewChanged(bool moved) {
+  if (moved) lastMotion_ = Clock::now();
 }
 
 void Viewer::handleKeys() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantCaptureKeyboard) return;  // typing in a text field
   auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-  if (pressed(GLFW_KEY_SPACE)) paused_ = !paused_;
-  if (pressed(GLFW_KEY_N) || pressed(GLFW_KEY_PERIOD)) {
-    paused_ = true;
-    stepRequested_ = true;
-  }
+  if (pressed(GLFW_KEY_SPACE)) setPaused(!paused_);
+  if (pressed(GLFW_KEY_N) || pressed(GLFW_KEY_PERIOD)) stepOnce();
   if (pressed(GLFW_KEY_R)) resetHair();
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) requestScreenshot(defaultScreenshotName());
   if (pressed(GLFW_KEY_F)) frameHead();
@@ -375,108 +511,89 @@ void Viewer::handleMouse() {
   const bool left = io.MouseDown[0], right = io.MouseDown[1], middle = io.MouseDown[2];
   if (moved && (right || (left && io.KeyCtrl))) {
     // Turn the head about the neck: the hair reacts on the next step.
-    sim_->setUserPose(
-        dragHead(sim_->userPose(), current_.view.camera, current_.scene.head, d.x, d.y));
+    userPose_ = dragHead(userPose_, current_.view.camera, current_.scene.head, d.x, d.y);
+    sim_->setUserPose(userPose_);
+    viewChanged(true);
   } else if (moved && (middle || (left && io.KeyShift))) {
     Preset next = current_;
     panCamera(next.view.camera, d.x, d.y, window_->framebufferSize().height);
     applyConfig(next);
+    viewChanged(true);
   } else if (moved && left) {
     Preset next = current_;
     orbitCamera(next.view.camera, d.x, d.y);
     applyConfig(next);
+    viewChanged(true);
   }
   if (io.MouseWheel != 0.0f) {
     Preset next = current_;
     zoomCamera(next.view.camera, io.MouseWheel);
     applyConfig(next);
+    viewChanged(true);
   }
 }
 
-void Viewer::simulate() {
-  if (nanStopped()) return;
-  const auto t0 = Clock::now();
-  sim_->stepFrame();
-  stats_.simMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-  stats_.simStages = sim_->solver().stageTimes();
-  stats_.contacts = sim_->solver().contactStats();
-}
+// --- Drawing -------------------------------------------------------------------------------
 
-long Viewer::positionsStamp() const {
-  // Changes whenever the positions may have: a step, a reset, a regrow.
-  return sim_->frame() * 1000003L + sceneVersion_;
-}
-
-void Viewer::stopOnNan(uint64_t count) {
-  if (nanStopped()) return;
-  nanFrame_ = sim_->frame();
-  nanParticles_ = count;
-  paused_ = true;
-  log(MessageLevel::Error, "the simulation produced NaN at frame " + std::to_string(nanFrame_) +
-                               " (" + std::to_string(count) +
-                               " particles); paused. R resets the hair to rest.");
-}
-
-void Viewer::sample() {
-  const long frame = sim_->frame();
-  const bool due = stats_.sampledFrame < 0 || frame < stats_.sampledFrame ||
-                   frame - stats_.sampledFrame >= stats_.sampleEvery;
-  if (!due) return;
-  Solver& solver = sim_->solver();
-  solver.readPositions(positions_);
-  solver.readVelocities(velocities_);
-  positionsRead_ = positionsStamp();
-  if (restGeneration_ != sim_->generation()) {
-    restLengths_ = restLengths(sim_->groom());
-    restGeneration_ = sim_->generation();
+unsigned Viewer::positionsForRender() {
+  if (frame_->positionBuffer != 0) return frame_->positionBuffer;
+  if (!frame_->hostPositions) return 0;
+  // A solver that keeps its state on the CPU: upload each new frame's positions.
+  if (uploaded_.id() == 0) uploaded_ = gl::Buffer();
+  if (uploadedSerial_ != frame_->serial && !frame_->hostPositions->empty()) {
+    uploaded_.upload(*frame_->hostPositions);
+    uploadedSerial_ = frame_->serial;
   }
-  const std::vector<Sphere> spheres = worldSpheres(sim_->config().head.spheres, sim_->headPose());
-  stats_.accuracy = measureAccuracy(positions_, velocities_, sim_->groom(), restLengths_, spheres,
-                                    sim_->config().sim.pinned);
-  stats_.sampledFrame = frame;
-  stats_.maxStrain.push(float(stats_.accuracy.maxStrain));
-  if (stats_.accuracy.nanCount > 0) stopOnNan(stats_.accuracy.nanCount);
+  return uploaded_.id();
 }
 
-void Viewer::renderScene() {
+void Viewer::renderScene(bool capture) {
   const WindowSize size = window_->framebufferSize();
+  if (size.width <= 0 || size.height <= 0) return;
   const ViewConfig& look = current_.view;
-  Solver& solver = sim_->solver();
-  unsigned buffer = solver.positionBuffer();
-  if (renderer_ && buffer == 0) {
-    // A solver that keeps its state on the CPU: upload this frame's positions.
-    // The positions are on the CPU anyway, so NaN is caught here on every frame.
-    if (positionsRead_ != positionsStamp()) {
-      solver.readPositions(positions_);
-      positionsRead_ = positionsStamp();
-      const uint64_t bad = countNonFinite(positions_);
-      if (bad > 0) stopOnNan(bad);
+  const bool moving =
+      std::chrono::duration<double>(Clock::now() - lastMotion_).count() < kStillSeconds;
+  const bool running = !paused_ && !frame_->idle;
+  const DrawQuality quality = !capture && look.render.interactive && (moving || running)
+                                  ? DrawQuality::Interactive
+                                  : DrawQuality::Full;
+  const SceneKey key{frame_->serial, viewVersion_, size.width, size.height, quality};
+
+  if (sceneColor_.id() == 0 || sceneColor_.width() != size.width ||
+      sceneColor_.height() != size.height) {
+    sceneColor_ = gl::Texture::create2D(GL_RGBA8, size.width, size.height);
+    sceneFbo_ = gl::Framebuffer();
+    sceneFbo_.attach(GL_COLOR_ATTACHMENT0, sceneColor_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    drawnKey_ = SceneKey{};
+  }
+  if (!(key == drawnKey_) || capture) {
+    if (renderer_ && frame_->loaded && frame_->groom) {
+      FrameView view;
+      view.scene = &frame_->config;
+      view.look = &look;
+      view.groom = frame_->groom.get();
+      view.generation = frame_->generation;
+      view.head = frame_->head;
+      view.positionBuffer = positionsForRender();
+      view.width = size.width;
+      view.height = size.height;
+      view.targetFramebuffer = sceneFbo_.id();
+      if (quality == DrawQuality::Interactive) view.amount = interactiveAmount(look.render);
+      renderer_->render(view);
+      // The simulation may write this frame's buffer again once these draws are done.
+      sim_->drawn();
+      stats_.renderStages = renderer_->stageTimes();
+      stats_.drawnStrands = renderer_->drawnStrands();
+    } else {
+      sceneFbo_.clearColor(0, std::array<float, 4>{look.render.background.x,
+                                                   look.render.background.y,
+                                                   look.render.background.z, 1.0f});
     }
-    if (uploaded_.id() == 0) uploaded_ = gl::Buffer();
-    uploaded_.upload(positions_);
-    buffer = uploaded_.id();
+    drawnKey_ = key;
+    lastQuality_ = quality;
+    ++scenesDrawn_;
   }
-  gl::Framebuffer::bindDefault();
-  if (renderer_ && size.width > 0 && size.height > 0) {
-    FrameView view;
-    view.scene = &sim_->config();
-    view.look = &look;
-    view.groom = &sim_->groom();
-    view.generation = sim_->generation();
-    view.head = sim_->headPose();
-    view.positionBuffer = buffer;
-    view.width = size.width;
-    view.height = size.height;
-    view.targetFramebuffer = 0;
-    renderer_->render(view);
-    stats_.renderStages = renderer_->stageTimes();
-  } else {
-    gl::Framebuffer window = gl::Framebuffer::wrap(0);
-    window.clearColor(0, std::array<float, 4>{look.render.background.x, look.render.background.y,
-                                              look.render.background.z, 1.0f});
-    window.release();
-  }
-  // The renderer may leave its own framebuffer bound; the UI goes into the window's.
+  sceneFbo_.blitTo(0, {0, 0, size.width, size.height}, {0, 0, size.width, size.height});
   gl::Framebuffer::bindDefault();
 }
 
@@ -493,18 +610,13 @@ void Viewer::takeScreenshot() {
   screenshotPath_.clear();
 }
 
-void Viewer::updateCounts() {
-  const Solver& solver = sim_->solver();
-  stats_.particles = solver.particleCount();
-  stats_.strands = solver.strandCount();
-  stats_.drawnStrands = renderer_ ? drawnStrandCount(stats_.strands, sim_->config()) : 0;
-}
-
 void Viewer::runFrame() {
   const auto start = Clock::now();
-  if (framesDrawn_ > 0)
-    stats_.frameMs.push(
-        float(std::chrono::duration<double, std::milli>(start - lastFrameStart_).count()));
+  if (framesDrawn_ > 0) {
+    const double ms = std::chrono::duration<double, std::milli>(start - lastFrameStart_).count();
+    stats_.frameMs.push(float(ms));
+    if (options_.recordMetrics) uiMs_.push_back(ms);
+  }
   lastFrameStart_ = start;
   ++fpsWindowFrames_;
   const double window = std::chrono::duration<double>(start - fpsWindowStart_).count();
@@ -519,26 +631,45 @@ void Viewer::runFrame() {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
 
+  takeSimFrame();
   handleKeys();
   handleMouse();
-  updateCounts();
   drawPanels(*this, *panels_);
-
-  if (!paused_ || stepRequested_) simulate();
-  stepRequested_ = false;
-  sample();
   ImGui::Render();
-  renderScene();
+  const bool capture = screenshotDue();
+  renderScene(capture);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  if (!screenshotPath_.empty()) takeScreenshot();
+  if (capture) takeScreenshot();
   window_->swapBuffers();
   ++framesDrawn_;
 }
 
-int Viewer::run(long exitAfter) {
+int Viewer::run() {
+  auto seconds = [](double s) {
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+  };
+  const auto busyBudget = seconds(options_.maxFps > 0.0 ? 1.0 / options_.maxFps : 0.0);
+  const auto idleBudget =
+      std::max(busyBudget, seconds(options_.idleFps > 0.0 ? 1.0 / options_.idleFps : 0.0));
   while (!window_->shouldClose()) {
-    if (exitAfter >= 0 && framesDrawn_ >= exitAfter) break;
+    if (options_.frameLimit >= 0 && frame_->idle && !screenshotPending() && !pendingOpen_ &&
+        frame_->ticket >= sim_->ticket())
+      break;
+    const auto start = Clock::now();
     runFrame();
+    // The swap waits for the display where there is one; where it does not (no vsync, a
+    // virtual display), keep to maxFps while anything moves and to idleFps when nothing
+    // does, and leave the CPU to the simulation. Input and the simulation's new frames
+    // (which post an empty event) end the wait early.
+    for (;;) {
+      const auto now = Clock::now();
+      const bool busy = now - window_->lastInput() < std::chrono::seconds(1) ||
+                        now - lastMotion_ < seconds(kStillSeconds) || screenshotPending() ||
+                        pendingOpen_ || sim_->latestSerial() != frame_->serial;
+      const auto next = start + (busy ? busyBudget : idleBudget);
+      if (now >= next || window_->shouldClose()) break;
+      glfwWaitEventsTimeout(std::chrono::duration<double>(next - now).count());
+    }
   }
   return 0;
 }
@@ -551,8 +682,12 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
   vo.height = options.height;
   vo.solver = options.solver;
   vo.quiet = options.quiet;
-  // A scripted run measures and captures; it should not wait for the display's refresh.
-  vo.vsync = options.exitAfter < 0;
+  // A scripted run measures and captures: as fast as the simulation goes, to its last frame.
+  const bool scripted = options.exitAfter >= 0;
+  vo.vsync = !scripted;
+  vo.paced = !scripted;
+  vo.frameLimit = options.exitAfter;
+  vo.recordMetrics = !options.metrics.empty();
   std::string error;
   std::unique_ptr<Viewer> viewer = Viewer::create(vo, &error);
   if (!viewer) {
@@ -570,27 +705,44 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
     viewer->showPresetErrors(startupErrors, "not loaded; showing the built-in preset instead");
 
   const auto start = Clock::now();
-  if (!options.screenshot.empty()) {
-    const long at = std::max(1L, options.exitAfter);
-    viewer->run(at - 1);
-    viewer->requestScreenshot(options.screenshot);
-    if (!viewer->window().shouldClose()) viewer->runFrame();
-    if (options.exitAfter < 0) viewer->run(-1);
-  } else {
-    viewer->run(options.exitAfter);
-  }
+  // --screenshot: of the frame --exit-after names (the first frame without it).
+  if (!options.screenshot.empty())
+    viewer->requestScreenshot(options.screenshot, std::max(1L, options.exitAfter));
+  viewer->run();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (options.exitAfter < 0) return 0;
+  if (!scripted) return 0;
+  const SimFrame& f = viewer->simFrame();
   const ViewerStats& s = viewer->stats();
-  if (!options.quiet && viewer->framesDrawn() > 0) {
-    // Steady state: the mean interval between frames after the first (which compiles shaders).
-    const double ms = s.frameMs.mean();
+  const MetricsRecorder m = viewer->metrics();
+  if (!options.quiet) {
     std::fprintf(stderr,
-                 "csmhair: %ld frames in %.2f s; steady %.2f fps (%.1f ms a frame, of which the "
-                 "last simulation step %.1f ms); %zu strands, %zu particles, solver %s, %s\n",
-                 viewer->framesDrawn(), seconds, ms > 0.0 ? 1000.0 / ms : 0.0, ms, s.simMs,
-                 s.strands, s.particles, std::string(viewer->simulation().solver().name()).c_str(),
-                 viewer->window().renderer().c_str());
+                 "csmhair: %ld simulated frames in %.2f s (%.1f ms a frame, the last step "
+                 "%.1f ms); %ld UI frames, %.1f ms apart on average; %zu strands, %zu particles, "
+                 "solver %s, %s\n",
+                 f.frame, seconds, f.frame > 0 ? 1000.0 * seconds / double(f.frame) : 0.0,
+                 f.stepMs, viewer->framesDrawn(), s.frameMs.mean(), f.strands, f.particles,
+                 f.solver.c_str(), viewer->window().renderer().c_str());
+  }
+  if (!options.metrics.empty()) {
+    RunDescription d;
+    d.preset = scene.preset.name;
+    d.source = scene.source;
+    d.config = f.config;
+    d.stiffness = f.stiffness;
+    d.strands = f.strands;
+    d.particles = f.particles;
+    d.solver = f.solver;
+    d.groom = f.groomReport;
+    d.device = viewer->window().renderer();
+    nlohmann::json meta = describeRun(d);
+    meta["mode"] = "window";
+    meta["wall_seconds"] = seconds;
+    meta["sim_frames"] = f.frame;
+    meta["drawn_strands"] = s.drawnStrands;
+    if (!m.write(options.metrics, meta, &error)) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return 1;
+    }
   }
   if (!startupErrors.empty()) return 2;
   if (viewer->nanStopped()) return 1;

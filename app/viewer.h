@@ -2,41 +2,64 @@
 // panels built from the one parameter table. The main loop follows Dear ImGui's
 // example_glfw_opengl3: poll, new frame, widgets, render, swap.
 //
+// The simulation runs on a thread of its own (SimThread) with a context shared with the
+// window's, so the UI, the camera and the panels run at display rate whatever a frame of
+// simulation costs; the view shows the latest frame the simulation finished. While the
+// camera moves or the hair simulates the scene is drawn in the preset's interactive quality
+// (render.interactive_*), in full when still and for screenshots; a scene that has not
+// changed is not drawn again (the last picture is kept in a texture).
+//
 // Every change of the scene, from a panel widget, the mouse camera, a key or a test script,
-// goes through applyConfig(), so what a test drives is what an artist drives.
+// goes through applyConfig(), so what a test drives is what an artist drives. Changes reach
+// the simulation between its frames; sync() waits until they have.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "app/cli.h"
 #include "app/preset.h"
 #include "app/scene_setup.h"
+#include "app/sim_thread.h"
 #include "app/viewer_image.h"
 #include "app/viewer_stats.h"
 #include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "gl/texture.h"
+#include "render/renderer.h"
 #include "sim/config.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/simulation.h"
 
 namespace csm {
 
 class GlfwWindow;
-class Renderer;
+class HairRenderer;
 struct PanelState;
-
-using SolverFactory = std::function<std::unique_ptr<Solver>(const std::string&, std::string*)>;
 
 struct ViewerOptions {
   int width = 1280, height = 720;
   std::string solver = "gpu";  // falls back to "cpu", with a message, when the GPU one fails
   bool vsync = true;
   bool quiet = false;
+  // The simulation keeps to real time (off: as fast as it goes, for scripted runs and tests).
+  bool paced = true;
+  // The simulation stops after this frame (-1: never); --exit-after.
+  long frameLimit = -1;
+  // Keep every UI frame's interval and every simulated frame's figures, for --metrics.
+  bool recordMetrics = false;
+  // UI frames a second at most, when the swap does not wait for the display (no vsync, or
+  // a virtual display): the UI then leaves the CPU to the simulation. At this rate while the
+  // user acts, the view moves or the simulation has a new frame to show; otherwise at
+  // idleFps, woken at once by input or a new frame.
+  double maxFps = 60.0;
+  double idleFps = 20.0;
   // Builds solvers by name; tests put their own in. Empty: csm::makeSolver.
   SolverFactory makeSolver;
 };
@@ -48,25 +71,32 @@ struct ViewerMessage {
   std::chrono::steady_clock::time_point when;
 };
 
+// How the last scene picture was drawn.
+enum class DrawQuality { Full, Interactive };
+
 class Viewer {
  public:
-  // Opens the window, Dear ImGui, the renderer and the solver. Null when there is no
-  // window to open; `error` then says why and points to --headless.
+  // Opens the window, Dear ImGui, the renderer and the simulation thread. Null when there is
+  // no window to open; `error` then says why and points to --headless.
   static std::unique_ptr<Viewer> create(const ViewerOptions& options, std::string* error);
   ~Viewer();
   Viewer(const Viewer&) = delete;
   Viewer& operator=(const Viewer&) = delete;
 
   // --- The scene -------------------------------------------------------------------------
-  // Makes `config` the current preset; `presetPath` is empty for the built-in one.
+  // Makes `preset` the current one and waits until it runs; `presetPath` is empty for the
+  // built-in one. False (the running scene stays) when its hair cannot be grown.
   bool open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
             std::string* error);
-  // Reads and validates a preset file and opens it. When it is not valid the current scene
-  // stays and the messages are shown in the window (presetErrors()).
+  // Reads and validates a preset file and starts opening it; the window keeps drawing the
+  // running scene until the new one is ready. When the file is not a valid preset, or its
+  // hair cannot be grown, the current scene stays and the messages are shown in the window
+  // (presetErrors()). False when the file is refused at once.
   bool loadPreset(const std::string& path);
-  // The one setter: applies a whole config (crossCheck, capacity, then
-  // Simulation::setConfig, which regrows the hair when a Rebuild parameter changed). On
-  // failure keeps the running scene and shows why.
+  // The one setter: applies a whole preset (crossCheck and capacity at once, then the
+  // simulation's setConfig between its frames, which regrows the hair when a Rebuild
+  // parameter changed; a regrow that fails is undone with a message). On failure keeps the
+  // running scene and shows why.
   bool applyConfig(const Preset& next);
   // One parameter from text, as --set reads it, through applyConfig.
   bool setParam(std::string_view key, std::string_view text, std::string* error = nullptr);
@@ -79,28 +109,43 @@ class Viewer {
   bool modified() const { return !modifiedKeys().empty(); }
 
   // --- Running ---------------------------------------------------------------------------
-  void setPaused(bool paused) { paused_ = paused; }
+  void setPaused(bool paused);
   bool paused() const { return paused_; }
-  void stepOnce() { stepRequested_ = true; }
+  void stepOnce();  // one frame, paused
   void resetHair();  // back to rest, time 0; clears a NaN stop
   void resetView();  // the preset's camera
   void frameHead();
   void resetHead();  // undo the mouse's head pose
   bool reloadShaders();
-  // Saves what the window shows, panels included, at the end of the next frame.
-  void requestScreenshot(const std::string& path);
-  // One pass of the main loop.
+  // Saves what the window shows, panels included, at full quality, in the first frame that
+  // shows every change made before the request (and, with `minFrame`, simulation frame
+  // `minFrame` or later).
+  void requestScreenshot(const std::string& path, long minFrame = -1);
+  bool screenshotPending() const { return !screenshotPath_.empty(); }
+  // One pass of the main loop: never waits for the simulation.
   void runFrame();
-  // Until the window closes, or `exitAfter` frames when >= 0. Returns the exit status.
-  int run(long exitAfter);
+  // Until the window closes; with a frame limit (ViewerOptions::frameLimit), until the
+  // simulation has reached it and a pending screenshot is taken. Keeps to maxFps. Returns
+  // the exit status.
+  int run();
+
+  // Waits until the simulation has applied every change made so far and takes in its latest
+  // frame (for scripts and tests; the window never waits). False on timeout.
+  bool sync(double timeoutSeconds = 120.0);
+  // Waits until the simulation has reached frame `frame` (or can go no further: paused,
+  // stopped on NaN, at the limit), then takes in its latest frame.
+  bool waitForSimFrame(long frame, double timeoutSeconds = 120.0);
 
   // --- State, for the panels and tests ---------------------------------------------------
-  Simulation& simulation() { return *sim_; }
-  const Simulation& simulation() const { return *sim_; }
+  // The latest frame of the simulation the window has taken in: what is drawn and what the
+  // Stats panel shows (time, counts, stiffness, samples, NaN).
+  const SimFrame& simFrame() const { return *frame_; }
+  const std::string& solverName() const { return solverName_; }
   const Preset& preset() const { return current_; }  // what runs and is shown
   Preset& editedConfig() { return edited_; }         // what the widgets edit
   const Preset& loadedConfig() const { return loaded_; }
   const std::string& presetPath() const { return presetPath_; }
+  bool loading() const { return pendingOpen_.has_value(); }
   const ViewerStats& stats() const { return stats_; }
   const std::vector<ViewerMessage>& messages() const { return messages_; }
   const std::vector<std::string>& presetErrors() const { return presetErrors_; }
@@ -116,68 +161,101 @@ class Viewer {
   }
   bool hasRenderer() const { return renderer_ != nullptr; }
   const std::string& rendererError() const { return rendererError_; }
-  bool nanStopped() const { return nanFrame_ >= 0; }
-  long nanFrame() const { return nanFrame_; }
-  uint64_t nanParticles() const { return nanParticles_; }
+  bool nanStopped() const;
+  long nanFrame() const { return frame_->nanFrame; }
+  uint64_t nanParticles() const { return frame_->nanParticles; }
   const Image& lastScreenshot() const { return lastScreenshot_; }
   const std::string& lastScreenshotPath() const { return lastScreenshotPath_; }
   long framesDrawn() const { return framesDrawn_; }
+  long scenesDrawn() const { return scenesDrawn_; }  // scene pictures drawn (not reused)
+  DrawQuality lastQuality() const { return lastQuality_; }
   GlfwWindow& window() { return *window_; }
   bool vsync() const;
   void setVsync(bool on);
   std::string defaultScreenshotName() const;
+  // From any thread; messages from other threads show from the next frame on.
   void log(MessageLevel level, std::string text);
+  // Every UI frame's interval and the simulation's frames, with ViewerOptions::recordMetrics.
+  MetricsRecorder metrics() const;
 
  private:
+  struct PendingOpen {
+    long ticket = 0;
+    Preset preset;
+    std::string baseDir, path;
+  };
+  // What a scene picture depends on: when none of it changed, the last one is shown again.
+  struct SceneKey {
+    long serial = -1, view = -1;
+    int width = 0, height = 0;
+    DrawQuality quality = DrawQuality::Full;
+    bool operator==(const SceneKey&) const = default;
+  };
+
   Viewer() = default;
+  void startOpen(const Preset& preset, const std::string& baseDir, const std::string& path);
+  void takeSimFrame();
+  void handle(const SimEvent& e);
   void handleKeys();
   void handleMouse();
-  void simulate();
-  void updateCounts();
-  void sample();
-  long positionsStamp() const;
-  void stopOnNan(uint64_t count);
-  void renderScene();
+  void drainInbox();
+  bool screenshotDue() const;
+  void renderScene(bool capture);
+  unsigned positionsForRender();
   void takeScreenshot();
   void afterSceneChange();
   void updateTitle();
   void checkStiffness();
+  void viewChanged(bool moved);
 
   ViewerOptions options_;
   std::unique_ptr<GlfwWindow> window_;
   bool imguiReady_ = false;
-  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<HairRenderer> renderer_;
   std::string rendererError_;
-  std::unique_ptr<Simulation> sim_;
-  gl::Buffer uploaded_{gl::NoCreate};  // positions of a solver without a GPU buffer
-  std::vector<glm::vec4> positions_, velocities_;
-  std::vector<double> restLengths_;
-  long restGeneration_ = -1;
-  long sceneVersion_ = 0;
-  long positionsRead_ = -1;  // positionsStamp() of positions_
+  std::unique_ptr<SimThread> sim_;
+  std::string solverName_;
+  std::shared_ptr<const SimFrame> frame_ = std::make_shared<SimFrame>();
+  gl::Buffer uploaded_{gl::NoCreate};  // a CPU solver's positions
+  long uploadedSerial_ = -1;
+
+  // The last scene picture, shown again while nothing it depends on changes.
+  gl::Texture sceneColor_{gl::NoCreate};
+  gl::Framebuffer sceneFbo_{gl::NoCreate};
+  SceneKey drawnKey_;
+  long viewVersion_ = 0;
+  std::chrono::steady_clock::time_point lastMotion_{};  // camera or head moved
+  DrawQuality lastQuality_ = DrawQuality::Full;
+  long scenesDrawn_ = 0;
 
   Preset current_, edited_, loaded_;
   std::string presetPath_;
+  std::optional<PendingOpen> pendingOpen_;
+  std::string openError_;  // why the last open failed
   std::vector<std::string> presetErrors_;
   std::string presetErrorsNote_;
   std::string shaderLog_;
   bool shaderReloadFailed_ = false;
   std::vector<ViewerMessage> messages_;
-  std::string stiffnessWarning_;  // the last one logged, so a slider does not repeat it
+  std::thread::id uiThread_;
+  mutable std::mutex inboxMutex_;
+  std::vector<ViewerMessage> inbox_;  // from other threads
+  std::string stiffnessWarning_;      // the last one logged, so a slider does not repeat it
 
+  Pose userPose_;
   bool paused_ = false;
-  bool stepRequested_ = false;
-  long nanFrame_ = -1;
-  uint64_t nanParticles_ = 0;
+  long resetTicket_ = 0;  // frames before it may still show a NaN the reset clears
   long framesDrawn_ = 0;
   std::string title_;
 
   ViewerStats stats_;
+  std::vector<double> uiMs_;  // with recordMetrics
   std::chrono::steady_clock::time_point lastFrameStart_{};
   std::chrono::steady_clock::time_point fpsWindowStart_{};
   long fpsWindowFrames_ = 0;
 
   std::string screenshotPath_;
+  long screenshotTicket_ = 0, screenshotFrame_ = -1;
   Image lastScreenshot_;
   std::string lastScreenshotPath_;
 

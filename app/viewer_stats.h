@@ -1,63 +1,20 @@
-// What the Stats panel shows: rolling histories for ImGui::PlotLines and the numbers of the
-// last frame and of the last read-back.
+// What the Stats panel shows of the window itself: frame times and the render passes. The
+// simulation's own figures come with each of its frames (SimFrame).
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <vector>
 
-#include "sim/metrics.h"
+#include "app/history.h"
 #include "sim/solver.h"
 
 namespace csm {
 
-// A fixed number of the latest values, oldest first when read from offset().
-class History {
- public:
-  explicit History(std::size_t capacity) : values_(capacity, 0.0f) {}
-  void push(float v) {
-    values_[next_] = v;
-    next_ = (next_ + 1) % values_.size();
-    count_ = std::min(count_ + 1, values_.size());
-  }
-  void clear() {
-    std::fill(values_.begin(), values_.end(), 0.0f);
-    next_ = count_ = 0;
-  }
-  // PlotLines(values(), size(), offset()) draws oldest to newest.
-  const float* values() const { return values_.data(); }
-  int size() const { return int(count_ < values_.size() ? count_ : values_.size()); }
-  int offset() const { return count_ < values_.size() ? 0 : int(next_); }
-  bool empty() const { return count_ == 0; }
-  float latest() const {
-    return empty() ? 0.0f : values_[(next_ + values_.size() - 1) % values_.size()];
-  }
-  float max() const {
-    return empty() ? 0.0f : *std::max_element(values_.begin(), values_.begin() + size());
-  }
-  float mean() const {
-    float s = 0.0f;
-    for (int i = 0; i < size(); ++i) s += values_[i];
-    return empty() ? 0.0f : s / float(size());
-  }
-
- private:
-  std::vector<float> values_;
-  std::size_t next_ = 0, count_ = 0;
-};
-
 struct ViewerStats {
-  History frameMs{600};    // wall time between frames: 10 s at 60 fps
-  History maxStrain{120};  // one value per read-back
-  double fps = 0.0;        // over the last second
-  double simMs = 0.0;      // wall time of stepFrame (for the GPU solver: the time to issue it)
-  std::vector<StageTime> simStages;     // the solver's own timings
-  std::vector<StageTime> renderStages;  // timer queries of the render passes
-  ContactStats contacts;
-  Accuracy accuracy;       // of the last read-back
-  long sampledFrame = -1;  // simulation frame of that read-back
-  int sampleEvery = 10;    // frames between read-backs
-  std::size_t particles = 0, strands = 0, drawnStrands = 0;
+  History frameMs{600};  // wall time between UI frames: 10 s at 60 fps
+  double fps = 0.0;      // over the last second
+  std::vector<StageTime> renderStages;  // of the last scene picture drawn
+  std::size_t drawnStrands = 0;         // in the last scene picture
 };
 
 }  // namespace csm

@@ -23,6 +23,48 @@ const char* kNoDisplayAdvice =
     "Run with --headless to simulate and render without a window (add --out DIR for "
     "images), or start a display, e.g. xvfb-run -a csmhair ...";
 
+void coreContextHints(bool debug) {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug ? GLFW_TRUE : GLFW_FALSE);
+}
+
+// The context of a hidden window, for a thread other than the main one.
+class SharedWindowContext final : public gl::Context {
+ public:
+  SharedWindowContext(GLFWwindow* window, const gl::Context& parent) : window_(window) {
+    copyInfo(parent, parent.platform() + ", shared");
+  }
+  ~SharedWindowContext() override { glfwDestroyWindow(window_); }
+  bool makeCurrent() override {
+    glfwMakeContextCurrent(window_);
+    return glfwGetCurrentContext() == window_;
+  }
+  void releaseCurrent() override {
+    if (glfwGetCurrentContext() == window_) glfwMakeContextCurrent(nullptr);
+  }
+  std::unique_ptr<gl::Context> createShared(std::string* error) override {
+    if (error) *error = "a shared context shares no further";
+    return nullptr;
+  }
+
+ private:
+  GLFWwindow* window_;
+};
+
+// Input callbacks that only note the time. Installed before Dear ImGui's, which chain to
+// them (imgui_impl_glfw.cpp keeps the previous callbacks and calls them).
+void noteInput(GLFWwindow* w) {
+  if (auto* window = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))) window->noteInput();
+}
+void onCursor(GLFWwindow* w, double, double) { noteInput(w); }
+void onButton(GLFWwindow* w, int, int, int) { noteInput(w); }
+void onScroll(GLFWwindow* w, double, double) { noteInput(w); }
+void onKey(GLFWwindow* w, int, int, int, int) { noteInput(w); }
+void onChar(GLFWwindow* w, unsigned) { noteInput(w); }
+
 }  // namespace
 
 std::unique_ptr<GlfwWindow> GlfwWindow::create(const Options& options, std::string* error) {
@@ -40,11 +82,7 @@ std::unique_ptr<GlfwWindow> GlfwWindow::create(const Options& options, std::stri
     return nullptr;
   }
   glfwDefaultWindowHints();
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, options.debug ? GLFW_TRUE : GLFW_FALSE);
+  coreContextHints(options.debug);
   // The renderer multisamples into its own framebuffer; the window's stays plain so that a
   // screenshot reads exactly what is shown.
   glfwWindowHint(GLFW_SAMPLES, 0);
@@ -64,6 +102,13 @@ std::unique_ptr<GlfwWindow> GlfwWindow::create(const Options& options, std::stri
   }
   std::unique_ptr<GlfwWindow> w(new GlfwWindow());
   w->window_ = window;
+  w->debug_ = options.debug;
+  glfwSetWindowUserPointer(window, w.get());
+  glfwSetCursorPosCallback(window, onCursor);
+  glfwSetMouseButtonCallback(window, onButton);
+  glfwSetScrollCallback(window, onScroll);
+  glfwSetKeyCallback(window, onKey);
+  glfwSetCharCallback(window, onChar);
   glfwMakeContextCurrent(window);
   w->setVsync(options.vsync);
   w->setInfo("GLFW window");
@@ -78,6 +123,27 @@ GlfwWindow::~GlfwWindow() {
 bool GlfwWindow::makeCurrent() {
   glfwMakeContextCurrent(window_);
   return glfwGetCurrentContext() == window_;
+}
+
+void GlfwWindow::releaseCurrent() {
+  if (glfwGetCurrentContext() == window_) glfwMakeContextCurrent(nullptr);
+}
+
+std::unique_ptr<gl::Context> GlfwWindow::createShared(std::string* error) {
+  glfwDefaultWindowHints();
+  coreContextHints(debug_);
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+  lastGlfwError().clear();
+  GLFWwindow* hidden = glfwCreateWindow(1, 1, "csmhair simulation", nullptr, window_);
+  if (!hidden) {
+    if (error)
+      *error = "cannot create a shared context (" +
+               (lastGlfwError().empty() ? std::string("glfwCreateWindow failed")
+                                        : lastGlfwError()) +
+               ")";
+    return nullptr;
+  }
+  return std::make_unique<SharedWindowContext>(hidden, *this);
 }
 
 bool GlfwWindow::shouldClose() const {

@@ -2,6 +2,7 @@
 // gl::Context, so everything in render/ and sim/gpu works in it as in the headless context.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -30,6 +31,10 @@ class GlfwWindow final : public gl::Context {
   ~GlfwWindow() override;
 
   bool makeCurrent() override;
+  void releaseCurrent() override;
+  // A hidden 1x1 window whose context shares this one's objects: the simulation thread's.
+  // Call on the main thread (GLFW makes windows there only), and destroy it there too.
+  std::unique_ptr<gl::Context> createShared(std::string* error) override;
 
   GLFWwindow* handle() const { return window_; }
   bool shouldClose() const;
@@ -40,11 +45,17 @@ class GlfwWindow final : public gl::Context {
   void setTitle(const std::string& title);
   // The default framebuffer's size in pixels (differs from the window's on HiDPI screens).
   WindowSize framebufferSize() const;
+  // When the user last moved the mouse, clicked, scrolled or typed in the window (input
+  // seen by glfwPollEvents or glfwWaitEvents*): the main loop runs at full rate after it.
+  std::chrono::steady_clock::time_point lastInput() const { return lastInput_; }
+  void noteInput() { lastInput_ = std::chrono::steady_clock::now(); }
 
  private:
   GlfwWindow() = default;
   GLFWwindow* window_ = nullptr;
   bool vsync_ = true;
+  bool debug_ = false;
+  std::chrono::steady_clock::time_point lastInput_{};
 };
 
 }  // namespace csm

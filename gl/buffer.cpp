@@ -91,6 +91,13 @@ void Buffer::copyTo(Buffer& dst, GLintptr srcOffset, GLintptr dstOffset, GLsizei
   maybeCheckErrors("Buffer::copyTo");
 }
 
+void copyBuffer(GLuint src, GLuint dst, GLsizeiptr bytes) {
+  glBindBuffer(GL_COPY_READ_BUFFER, src);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, dst);
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, bytes);
+  maybeCheckErrors("copyBuffer");
+}
+
 void Buffer::bindBase(GLenum target, GLuint index) const {
   glBindBufferBase(target, index, id_);
   maybeCheckErrors("Buffer::bindBase");

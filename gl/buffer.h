@@ -80,4 +80,8 @@ class Buffer {
   GLenum usage_ = GL_DYNAMIC_DRAW;
 };
 
+// GPU-side copy of `bytes` from the start of buffer `src` to the start of `dst`, by name: for
+// a buffer another module owns (a solver's positions).
+void copyBuffer(GLuint src, GLuint dst, GLsizeiptr bytes);
+
 }  // namespace csm::gl

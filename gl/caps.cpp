@@ -43,6 +43,8 @@ Caps queryCaps() {
   c.maxArrayTextureLayers = integer(GL_MAX_ARRAY_TEXTURE_LAYERS);
   c.maxColorAttachments = integer(GL_MAX_COLOR_ATTACHMENTS);
   c.maxSamples = integer(GL_MAX_SAMPLES);
+  c.maxColorTextureSamples = integer(GL_MAX_COLOR_TEXTURE_SAMPLES);
+  c.maxDepthTextureSamples = integer(GL_MAX_DEPTH_TEXTURE_SAMPLES);
   int version = c.major * 10 + c.minor;
   c.timerQuery = version >= 33 || epoxy_has_gl_extension("GL_ARB_timer_query");
   c.khrDebug = version >= 43 || epoxy_has_gl_extension("GL_KHR_debug");

@@ -25,6 +25,8 @@ struct Caps {
   GLint maxArrayTextureLayers = 0;
   GLint maxColorAttachments = 0;
   GLint maxSamples = 0;
+  GLint maxColorTextureSamples = 0;  // multisample textures
+  GLint maxDepthTextureSamples = 0;
   bool timerQuery = false;  // GL_TIME_ELAPSED (core since 3.3)
   bool khrDebug = false;
 

@@ -115,7 +115,29 @@ std::vector<Device> enumerateDevices(std::string* note) {
 struct Made {
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
+  EGLConfig config = EGL_NO_CONFIG_KHR;
 };
+
+// A GL 4.3+ core context on an initialized display, sharing objects with `share` (or none);
+// EGL_NO_CONTEXT with the last EGL error in `lastError` when no version from 4.6 down works.
+EGLContext createCoreContext(EGLDisplay display, EGLConfig config, EGLContext share, bool debug,
+                             std::string* lastError) {
+  EGLContext context = EGL_NO_CONTEXT;
+  for (int v = 6; v >= 3 && context == EGL_NO_CONTEXT; --v) {
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION_KHR,
+                              4,
+                              EGL_CONTEXT_MINOR_VERSION_KHR,
+                              v,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK_KHR,
+                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT_KHR,
+                              EGL_CONTEXT_FLAGS_KHR,
+                              debug ? EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR : 0,
+                              EGL_NONE};
+    context = eglCreateContext(display, config, share, attribs);
+    if (context == EGL_NO_CONTEXT) *lastError = eglErrorName(eglGetError());
+  }
+  return context;
+}
 
 // Initializes `display` and makes a current GL 4.3+ core context on it; on failure returns
 // an empty Made and says why in `note`.
@@ -153,21 +175,8 @@ Made makeContext(EGLDisplay display, bool debug, std::string* note) {
       return fail("no EGLConfig renders desktop OpenGL");
   }
 
-  EGLContext context = EGL_NO_CONTEXT;
   std::string lastError;
-  for (int v = 6; v >= 3 && context == EGL_NO_CONTEXT; --v) {
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION_KHR,
-                              4,
-                              EGL_CONTEXT_MINOR_VERSION_KHR,
-                              v,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK_KHR,
-                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT_KHR,
-                              EGL_CONTEXT_FLAGS_KHR,
-                              debug ? EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR : 0,
-                              EGL_NONE};
-    context = eglCreateContext(display, config, EGL_NO_CONTEXT, attribs);
-    if (context == EGL_NO_CONTEXT) lastError = eglErrorName(eglGetError());
-  }
+  EGLContext context = createCoreContext(display, config, EGL_NO_CONTEXT, debug, &lastError);
   if (context == EGL_NO_CONTEXT)
     return fail("no OpenGL 4.3 core context (tried 4.6 down to 4.3: " + lastError + ")");
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
@@ -183,7 +192,7 @@ Made makeContext(EGLDisplay display, bool debug, std::string* note) {
     eglDestroyContext(display, context);
     return fail(why);
   }
-  return {display, context};
+  return {display, context, config};
 }
 
 }  // namespace
@@ -195,6 +204,12 @@ void Context::setInfo(std::string platform) {
   };
   renderer_ = str(GL_RENDERER);
   version_ = str(GL_VERSION);
+  platform_ = std::move(platform);
+}
+
+void Context::copyInfo(const Context& from, std::string platform) {
+  renderer_ = from.renderer_;
+  version_ = from.version_;
   platform_ = std::move(platform);
 }
 
@@ -230,6 +245,8 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(const Options& options,
     result.reset(new HeadlessContext);
     result->display_ = made.display;
     result->context_ = made.context;
+    result->config_ = made.config;
+    result->debug_ = options.debug;
     result->setInfo(label);
     return true;
   };
@@ -288,6 +305,32 @@ HeadlessContext::~HeadlessContext() {
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display, context);
   releaseDisplay(display);
+}
+
+std::unique_ptr<Context> HeadlessContext::createShared(std::string* error) {
+  auto display = static_cast<EGLDisplay>(display_);
+  std::string lastError;
+  EGLContext context = createCoreContext(display, static_cast<EGLConfig>(config_),
+                                         static_cast<EGLContext>(context_), debug_, &lastError);
+  if (context == EGL_NO_CONTEXT) {
+    if (error) *error = "eglCreateContext with a shared context failed (" + lastError + ")";
+    return nullptr;
+  }
+  retainDisplay(display);
+  std::unique_ptr<HeadlessContext> shared(new HeadlessContext);
+  shared->display_ = display;
+  shared->context_ = context;
+  shared->config_ = config_;
+  shared->debug_ = debug_;
+  // The renderer and version strings are the parent's: the same display and driver.
+  shared->copyInfo(*this, platform() + ", shared");
+  return shared;
+}
+
+void HeadlessContext::releaseCurrent() {
+  auto display = static_cast<EGLDisplay>(display_);
+  if (eglGetCurrentContext() == static_cast<EGLContext>(context_))
+    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 }
 
 bool HeadlessContext::makeCurrent() {

@@ -47,6 +47,10 @@ bool Fence::wait(std::uint64_t timeoutNs) const {
   return r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED;
 }
 
+void Fence::waitOnGpu() const {
+  if (sync_) glWaitSync(sync_, 0, GL_TIMEOUT_IGNORED);
+}
+
 ReadbackStats readbackStats() {
   return {gBytes.load(), gReads.load(), gWaits.load()};
 }

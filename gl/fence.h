@@ -27,6 +27,10 @@ class Fence {
   // Waits up to `timeoutNs` for it; true when passed. Counts a wait that had to block in
   // readbackStats().waits.
   bool wait(std::uint64_t timeoutNs = ~std::uint64_t(0)) const;
+  // Makes the current context's later commands wait for it on the GPU (glWaitSync): for a
+  // fence from another context of the share group, without blocking the CPU. The fence's own
+  // context must have flushed it (insert() does).
+  void waitOnGpu() const;
 
  private:
   GLsync sync_ = nullptr;

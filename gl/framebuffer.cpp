@@ -124,6 +124,10 @@ void Framebuffer::bindDefault(GLenum target) {
   glBindFramebuffer(target, 0);
 }
 
+void Framebuffer::bindRaw(GLenum target, GLuint id) {
+  glBindFramebuffer(target, id);
+}
+
 void Framebuffer::clearColor(GLint drawBuffer, const std::array<float, 4>& rgba) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, id_);
   glClearBufferfv(GL_COLOR, drawBuffer, rgba.data());

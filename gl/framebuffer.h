@@ -51,6 +51,8 @@ class Framebuffer {
   void bind(GLenum target = GL_FRAMEBUFFER) const;
   // The window's framebuffer (or none, headless).
   static void bindDefault(GLenum target = GL_FRAMEBUFFER);
+  // A framebuffer by name (0: the default one), e.g. one a caller passed down.
+  static void bindRaw(GLenum target, GLuint id);
 
   // Clear one draw buffer (index into setDrawBuffers) or the depth attachment. Scissor and
   // write masks apply as usual.

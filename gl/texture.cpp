@@ -78,7 +78,10 @@ Texture Texture::create2DMultisample(GLenum internalFormat, GLsizei width, GLsiz
   t.internalFormat_ = internalFormat;
   t.width_ = width;
   t.height_ = height;
-  t.samples_ = samples;
+  // The driver may round the count up: keep what it made.
+  GLint made = samples;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &made);
+  t.samples_ = made > 0 ? made : samples;
   maybeCheckErrors("Texture::create2DMultisample");
   return t;
 }

@@ -34,7 +34,7 @@ class Texture {
   GLsizei height() const { return height_; }
   GLsizei layers() const { return layers_; }  // 1 unless a 2D array
   GLsizei levels() const { return levels_; }
-  GLsizei samples() const { return samples_; }  // 0 unless multisample
+  GLsizei samples() const { return samples_; }  // 0 unless multisample; what the driver made
 
   // Sampler state; not valid on multisample textures.
   Texture& setFilter(GLenum minFilter, GLenum magFilter);

@@ -9,6 +9,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "render/camera.h"
 #include "render/view_config.h"
 #include "sim/config.h"
 #include "sim/groom.h"
@@ -16,6 +17,18 @@
 #include "sim/solver.h"
 
 namespace csm {
+
+// How much of the look to draw. Full for captures and a still view; the viewer's interactive
+// quality (RenderConfig::interactive*) while the camera moves or the hair simulates.
+struct DrawAmount {
+  float strands = 1.0f;   // share of the drawn strands: follow hairs go first, then guides
+  int subdivision = 0;    // spline segments per simulated segment; 0: render.subdivision
+  int samples = 0;        // MSAA samples; 0: render.samples
+  int shadowMapSize = 0;  // 0: render.shadow_map_size
+  bool operator==(const DrawAmount&) const = default;
+};
+// The interactive amount a look asks for (full when render.interactive is off).
+DrawAmount interactiveAmount(const RenderConfig& render);
 
 struct FrameView {
   const Config* scene = nullptr;     // head.spheres, hairstyle.follow_*
@@ -26,6 +39,7 @@ struct FrameView {
   unsigned positionBuffer = 0;       // SSBO: vec4 per particle, world positions
   int width = 1280, height = 720;    // target size in pixels
   unsigned targetFramebuffer = 0;    // GL framebuffer to draw into (0 = the window's)
+  DrawAmount amount;                 // all of it unless the viewer asks for less
   // Camera: when `useCameraMatrices` is false, derived from look->camera.
   bool useCameraMatrices = false;
   glm::mat4 view{1.0f}, projection{1.0f};
@@ -43,10 +57,6 @@ class Renderer {
   // Recompiles the shaders from disk; on failure keeps the old programs, `log` says why.
   virtual bool reloadShaders(std::string* log) = 0;
 };
-
-// View and projection matrices of the preset's orbit camera.
-glm::mat4 cameraView(const CameraConfig& camera);
-glm::mat4 cameraProjection(const CameraConfig& camera, float aspect);
 
 // Strands on screen for `simulatedStrands` guides: each one plus its hairstyle.follow_count
 // render-only follow hairs. For the stats next to the simulated count.

@@ -25,6 +25,14 @@ struct RenderConfig {
   glm::vec3 headColor{0.80f, 0.62f, 0.52f};
   glm::vec3 background{0.55f, 0.60f, 0.66f};
   int samples = 4;  // multisampling
+  // Interactive quality, while the camera moves or the hair simulates (the viewer; captures
+  // and a still view are drawn in full): a share of the strands, follow hairs first, wider
+  // to keep the coverage; a plainer curve; fewer samples; a smaller shadow map.
+  bool interactive = true;
+  float interactiveAmount = 0.3f;
+  int interactiveSubdivision = 1;
+  int interactiveSamples = 1;
+  int interactiveShadowMapSize = 256;
 };
 
 struct CameraConfig {

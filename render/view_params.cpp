@@ -3,6 +3,10 @@
 namespace csm {
 namespace {
 
+bool interactiveQuality(const ViewConfig& v) {
+  return v.render.interactive;
+}
+
 std::vector<Param<ViewConfig>> build() {
   return {
       param("render.shadows", "Shadows", "Rendering", &ViewConfig::render, &RenderConfig::shadows,
@@ -60,6 +64,32 @@ std::vector<Param<ViewConfig>> build() {
       param("render.samples", "MSAA samples", "Rendering", &ViewConfig::render,
             &RenderConfig::samples, 1, 16, "Multisampling for hair thinner than a pixel.",
             Effect::Render),
+      param("render.interactive", "Interactive quality", "Rendering|Interactive",
+            &ViewConfig::render, &RenderConfig::interactive, 0, 1,
+            "While the camera moves or the hair simulates, draw less: a share of the strands, "
+            "a plainer curve, fewer samples, a smaller shadow map. A still view and every capture are drawn in "
+            "full.",
+            Effect::Render),
+      param("render.interactive_amount", "Strands drawn", "Rendering|Interactive",
+            &ViewConfig::render, &RenderConfig::interactiveAmount, 0.01, 1.0,
+            "Interactive quality: the share of the strands drawn (follow hairs go first; the "
+            "rest are drawn wider to keep the coverage).",
+            Effect::Render)
+          .onlyWhen(interactiveQuality),
+      param("render.interactive_subdivision", "Subdivision", "Rendering|Interactive",
+            &ViewConfig::render, &RenderConfig::interactiveSubdivision, 1, 16,
+            "Interactive quality: spline segments drawn per simulated segment (1: straight "
+            "segments between the particles).",
+            Effect::Render)
+          .onlyWhen(interactiveQuality),
+      param("render.interactive_samples", "Samples", "Rendering|Interactive", &ViewConfig::render,
+            &RenderConfig::interactiveSamples, 1, 16, "Interactive quality: MSAA samples.",
+            Effect::Render)
+          .onlyWhen(interactiveQuality),
+      param("render.interactive_shadow_map_size", "Shadow map size", "Rendering|Interactive",
+            &ViewConfig::render, &RenderConfig::interactiveShadowMapSize, 64, 4096,
+            "Interactive quality: resolution of the deep opacity maps.", Effect::Render)
+          .onlyWhen(interactiveQuality),
       param("camera.target", "Target", "Camera", &ViewConfig::camera, &CameraConfig::target, -10,
             10, "Point the camera looks at (m).", Effect::Render),
       param("camera.distance", "Distance", "Camera", &ViewConfig::camera, &CameraConfig::distance,

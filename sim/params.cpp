@@ -248,6 +248,12 @@ const Param<Config>* findSimParam(std::string_view key) {
   return findParam(simParams(), key);
 }
 
+bool sameScene(const Config& a, const Config& b) {
+  for (const Param<Config>& p : simParams())
+    if (!sameValue(p, a, b)) return false;
+  return true;
+}
+
 bool needsRegrow(const Config& a, const Config& b) {
   for (const Param<Config>& p : simParams())
     if (p.effect == Effect::Rebuild && !sameValue(p, a, b)) return true;

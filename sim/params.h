@@ -16,5 +16,7 @@ const Param<Config>* findSimParam(std::string_view key);
 
 // True when going from `a` to `b` changes a parameter whose change regrows the hair.
 bool needsRegrow(const Config& a, const Config& b);
+// True when no parameter differs between `a` and `b`.
+bool sameScene(const Config& a, const Config& b);
 
 }  // namespace csm

@@ -25,7 +25,7 @@ bool Simulation::regrow(const Config& config, const std::string& baseDir, std::s
   groomReport_ = report;
   config_ = config;
   baseDir_ = baseDir;
-  groom_ = std::move(groom);
+  groom_ = std::make_shared<const Groom>(std::move(groom));
   ++generation_;
   return true;
 }
@@ -35,7 +35,7 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     // Keep the clock and the camera: only the hair starts again from rest.
     if (!regrow(config, baseDir_, error)) return false;
     lastPose_ = headPoseAt(time_);
-    solver_->reset(groom_, config_, lastPose_);
+    solver_->reset(*groom_, config_, lastPose_);
     return true;
   }
   config_ = config;
@@ -47,7 +47,7 @@ void Simulation::reset() {
   time_ = 0.0;
   frame_ = 0;
   lastPose_ = headPoseAt(0.0);
-  solver_->reset(groom_, config_, lastPose_);
+  solver_->reset(*groom_, config_, lastPose_);
 }
 
 Pose Simulation::headPoseAt(double t) const {

@@ -36,7 +36,10 @@ class Simulation {
   Solver& solver() { return *solver_; }
   const Solver& solver() const { return *solver_; }
   const Config& config() const { return config_; }
-  const Groom& groom() const { return groom_; }
+  const Groom& groom() const { return *groom_; }
+  // The same groom, for a reader on another thread that keeps it past a regrow (the
+  // viewer's renderer): a regrow makes a new one and leaves this one as it is.
+  std::shared_ptr<const Groom> sharedGroom() const { return groom_; }
   const GroomReport& groomReport() const { return groomReport_; }
   const std::string& baseDir() const { return baseDir_; }
   double time() const { return time_; }
@@ -51,7 +54,7 @@ class Simulation {
   std::unique_ptr<Solver> solver_;
   Config config_;
   std::string baseDir_;
-  Groom groom_;
+  std::shared_ptr<const Groom> groom_ = std::make_shared<const Groom>();
   GroomReport groomReport_;
   Pose userPose_;
   Pose lastPose_;

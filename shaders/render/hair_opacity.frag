@@ -9,5 +9,6 @@ out vec4 fragLayers;
 void main() {
   float z0 = texelFetch(uLightDepth, ivec2(gl_FragCoord.xy), 0).r;
   float t = (gl_FragCoord.z - z0) * (uLightRange.x / uSpecStrength.w);
-  fragLayers = uTipColor.a * vec4(step(t, 1.0), step(t, 2.0), step(t, 3.0), 1.0);
+  // uFollow.z: more opacity per strand when only a share of the strands is drawn.
+  fragLayers = uTipColor.a * uFollow.z * vec4(step(t, 1.0), step(t, 2.0), step(t, 3.0), 1.0);
 }

@@ -10,6 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "gl/caps.h"
+#include "gl/draw.h"
 #include "gl/debug.h"
 #include "gl/shader_source.h"
 #include "sim/hair_state.h"
@@ -367,7 +368,7 @@ void GpuSolver::endStage() {
   if (openStage_ < 0) return;
   FrameTimers& f = timers_[timerFrame_];
   if (cpuTiming_) {
-    glFinish();  // a no-op on llvmpipe, whose dispatches have already run
+    gl::finish();  // a no-op on llvmpipe, whose dispatches have already run
     f.cpuMs[openStage_] +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stageStart_)
             .count();
@@ -501,7 +502,7 @@ void GpuSolver::scan(uint32_t blocks) {
 }
 
 void GpuSolver::finish() {
-  glFinish();
+  gl::finish();
 }
 
 void GpuSolver::readPositions(std::vector<glm::vec4>& out) {

@@ -1,6 +1,7 @@
 #include "sim/gpu/make_solver.h"
 
 #include "gl/caps.h"
+#include "gl/draw.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/gpu/gpu_solver.h"
 
@@ -15,7 +16,7 @@ std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error) 
 
 std::unique_ptr<Solver> makeGpuSolver(std::string* error) {
   // Without a current context GL calls go to the dispatcher's no-op stubs: GL_VERSION is null.
-  if (glGetString(GL_VERSION) == nullptr) {
+  if (gl::versionString() == nullptr) {
     if (error)
       *error =
           "the GPU solver needs a current OpenGL 4.3 context and none is current "

@@ -3,6 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <thread>
 
 #include <unistd.h>
 
@@ -57,6 +61,7 @@ std::unique_ptr<Viewer> makeViewer(SolverFactory factory = {}) {
   o.height = 720;
   o.vsync = false;
   o.quiet = true;
+  o.paced = false;  // as fast as it goes
   o.makeSolver = std::move(factory);
   std::string error;
   std::unique_ptr<Viewer> v = Viewer::create(o, &error);
@@ -65,13 +70,30 @@ std::unique_ptr<Viewer> makeViewer(SolverFactory factory = {}) {
   return v;
 }
 
+using Clock = std::chrono::steady_clock;
+
 void runFrames(Viewer& v, int n) {
   for (int i = 0; i < n; ++i) v.runFrame();
 }
 
+// UI frames until the simulation, on its own thread, has stepped `n` frames more (or can go
+// no further: paused, stopped on NaN).
+void runSimFrames(Viewer& v, long n) {
+  REQUIRE(v.sync());
+  const long target = v.simFrame().frame + n;
+  const auto deadline = Clock::now() + std::chrono::minutes(2);
+  while (v.simFrame().frame < target && !v.simFrame().idle && Clock::now() < deadline) {
+    v.runFrame();
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  REQUIRE((v.simFrame().frame >= target || v.simFrame().idle));
+}
+
+// A screenshot of the first frame that shows every change made so far.
 Image screenshot(Viewer& v, const fs::path& path) {
   v.requestScreenshot(path.string());
-  v.runFrame();
+  const auto deadline = Clock::now() + std::chrono::minutes(2);
+  while (v.screenshotPending() && Clock::now() < deadline) v.runFrame();
   REQUIRE(v.lastScreenshotPath() == path.string());
   return v.lastScreenshot();
 }
@@ -167,6 +189,51 @@ class NanAfter final : public Solver {
   long frames_ = 0;
 };
 
+// A CPU solver whose frames wait for the test to let them through: a simulation as slow as
+// the test likes.
+class GatedSolver final : public Solver {
+ public:
+  struct Gate {
+    std::mutex m;
+    std::condition_variable cv;
+    long allowed = 0;  // frames that may run
+    std::atomic<long> started{0};
+  };
+  explicit GatedSolver(std::shared_ptr<Gate> gate) : gate_(std::move(gate)) {}
+  std::string_view name() const override { return "gated"; }
+  void reset(const Groom& g, const Config& c, const Pose& h) override { inner_.reset(g, c, h); }
+  void setConfig(const Config& c) override { inner_.setConfig(c); }
+  void stepFrame(const Pose& from, const Pose& to) override {
+    const long n = ++gate_->started;
+    std::unique_lock lock(gate_->m);
+    gate_->cv.wait(lock, [&] { return gate_->allowed >= n; });
+    inner_.stepFrame(from, to);
+  }
+  size_t strandCount() const override { return inner_.strandCount(); }
+  size_t particleCount() const override { return inner_.particleCount(); }
+  double time() const override { return inner_.time(); }
+  void readPositions(std::vector<glm::vec4>& out) override { inner_.readPositions(out); }
+  void readVelocities(std::vector<glm::vec4>& out) override { inner_.readVelocities(out); }
+  void requestSample(long frame) override { inner_.requestSample(frame); }
+  std::optional<FrameSample> takeSample(bool wait) override { return inner_.takeSample(wait); }
+  void dropSamples() override { inner_.dropSamples(); }
+  void writeState(const std::vector<glm::vec4>& x, const std::vector<glm::vec4>& v) override {
+    inner_.writeState(x, v);
+  }
+
+ private:
+  std::shared_ptr<Gate> gate_;
+  CpuSolver inner_;
+};
+
+void allow(GatedSolver::Gate& gate, long frames) {
+  {
+    std::lock_guard lock(gate.m);
+    gate.allowed += frames;
+  }
+  gate.cv.notify_all();
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -176,34 +243,41 @@ TEST_CASE(
   const fs::path dir = tempDir();
   std::unique_ptr<Viewer> v = makeViewer();
   REQUIRE(v->loadPreset((kSource / "presets/short_shake.json").string()));
+  REQUIRE(v->sync());
   REQUIRE(v->presetErrors().empty());
-  runFrames(*v, 3);
-  const size_t before = v->simulation().solver().strandCount();
+  runSimFrames(*v, 3);
+  const size_t before = v->simFrame().strands;
   CHECK(before == 6000);
   const CameraConfig camera = v->preset().view.camera;
-  const double t = v->simulation().time();
+  // Paused, so the clock can be compared across the change.
+  v->setPaused(true);
+  REQUIRE(v->sync());
+  const double t = v->simFrame().time;
 
   // The same setter the panels call (Viewer::applyConfig), by parameter name.
   REQUIRE(v->setParam("hairstyle.strands", "1500"));
   REQUIRE(v->setParam("wind.strength", "8"));
   REQUIRE(v->setParam("wind.direction", "0,0,1"));
   // Strand count is live within a frame: no restart, same camera, same clock.
-  CHECK(v->simulation().solver().strandCount() == 1500);
-  CHECK(v->simulation().config().hairstyle.strands == 1500);
-  CHECK(v->simulation().config().wind.strength == 8.0f);
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().strands == 1500);
+  CHECK(v->simFrame().config.hairstyle.strands == 1500);
+  CHECK(v->simFrame().config.wind.strength == 8.0f);
   const CameraConfig& now = v->preset().view.camera;
   CHECK((now.target == camera.target && now.distance == camera.distance && now.yaw == camera.yaw &&
          now.pitch == camera.pitch && now.fov == camera.fov));
-  CHECK(v->simulation().time() == Approx(t));
+  CHECK(v->simFrame().time == Approx(t));
   const auto changed = v->modifiedKeys();
   CHECK(std::find(changed.begin(), changed.end(), "hairstyle.strands") != changed.end());
   CHECK(std::find(changed.begin(), changed.end(), "wind.strength") != changed.end());
 
-  runFrames(*v, 10);
-  CHECK(v->stats().strands == 1500);
-  CHECK(v->stats().particles == v->simulation().solver().particleCount());
-  CHECK(v->stats().sampledFrame >= 0);
-  CHECK(std::isfinite(v->stats().accuracy.maxStrain));
+  v->setPaused(false);
+  runSimFrames(*v, 10);
+  CHECK(v->simFrame().strands == 1500);
+  CHECK(v->simFrame().particles > 1500);
+  REQUIRE(v->simFrame().sample.has_value());
+  CHECK(v->simFrame().sample->frame > 0);
+  CHECK(std::isfinite(v->simFrame().sample->accuracy.maxStrain));
   CHECK_FALSE(v->nanStopped());
 
   const fs::path shot = dir / "viewer.png";
@@ -256,10 +330,11 @@ TEST_CASE(
 TEST_CASE("window: the stiffness window changes live; a capped stiffness is said", "[window]") {
   std::unique_ptr<Viewer> v = makeViewer();
   REQUIRE(v->loadPreset((kSource / "presets/default.json").string()));
+  REQUIRE(v->sync());
   REQUIRE(v->setParam("hairstyle.strands", "300"));
-  runFrames(*v, 2);
-  const long generation = v->simulation().generation();
-  const StiffnessInfo before = v->simulation().solver().stiffness();
+  runSimFrames(*v, 2);
+  const long generation = v->simFrame().generation;
+  const StiffnessInfo before = v->simFrame().stiffness;
   CHECK(before.model == StiffnessModel::Calibrated);
   CHECK(before.windowMax == 2);  // 4 cm on 2 cm segments
   CHECK(before.plan.substeps == 4);
@@ -267,16 +342,18 @@ TEST_CASE("window: the stiffness window changes live; a capped stiffness is said
 
   // Half the window: one particle a side, a stiffer rate, more steps; live, not regrown.
   REQUIRE(v->setParam("sim.window_length", "0.02"));
-  const StiffnessInfo half = v->simulation().solver().stiffness();
-  CHECK(v->simulation().generation() == generation);
+  REQUIRE(v->sync());
+  const StiffnessInfo half = v->simFrame().stiffness;
+  CHECK(v->simFrame().generation == generation);
   CHECK(half.windowMax == 1);
   CHECK(half.rateMax > 10.0 * before.rateMax);
   CHECK(half.plan.substeps > before.plan.substeps);
-  runFrames(*v, 2);
+  runSimFrames(*v, 2);
 
   // Capped: a warning in the log, once.
   REQUIRE(v->setParam("sim.max_substeps", "5"));
-  CHECK(v->simulation().solver().stiffness().plan.capped);
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().stiffness.plan.capped);
   auto warnings = [&] {
     return std::count_if(v->messages().begin(), v->messages().end(), [](const ViewerMessage& m) {
       return m.level == MessageLevel::Warning && m.text.find("max_substeps") != std::string::npos;
@@ -284,22 +361,25 @@ TEST_CASE("window: the stiffness window changes live; a capped stiffness is said
   };
   CHECK(warnings() == 1);
   REQUIRE(v->setParam("wind.strength", "2"));  // another live change: no second warning
+  REQUIRE(v->sync());
   CHECK(warnings() == 1);
-  runFrames(*v, 2);
+  runSimFrames(*v, 2);
   CHECK_FALSE(v->nanStopped());
 
   // The paper model takes its window in particles and sim.substeps as they are.
   REQUIRE(v->setParam("sim.stiffness_model", "paper"));
-  const StiffnessInfo paper = v->simulation().solver().stiffness();
+  REQUIRE(v->sync());
+  const StiffnessInfo paper = v->simFrame().stiffness;
   CHECK(paper.model == StiffnessModel::Paper);
-  CHECK(paper.plan.substeps == v->simulation().config().sim.substeps);
-  CHECK(paper.windowMax == v->simulation().config().sim.stiffnessWindow);
+  CHECK(paper.plan.substeps == v->simFrame().config.sim.substeps);
+  CHECK(paper.windowMax == v->simFrame().config.sim.stiffnessWindow);
 }
 
 TEST_CASE("window: a broken preset shows its messages and the scene keeps running", "[window]") {
   const fs::path dir = tempDir();
   std::unique_ptr<Viewer> v = makeViewer();
   REQUIRE(v->loadPreset((kSource / "presets/short_shake.json").string()));
+  REQUIRE(v->sync());
   REQUIRE(v->setParam("hairstyle.strands", "500"));
   const std::string opened = v->presetPath();
   const fs::path broken = dir / "broken.json";
@@ -314,9 +394,10 @@ TEST_CASE("window: a broken preset shows its messages and the scene keeps runnin
   CHECK(all.find("strenght") != std::string::npos);
   CHECK(all.find("broken.json") != std::string::npos);
   CHECK(v->presetPath() == opened);
-  CHECK(v->simulation().solver().strandCount() == 500);
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().strands == 500);
 
-  runFrames(*v, 2);
+  runSimFrames(*v, 2);
   const Image img = screenshot(*v, dir / "broken.png");
   // The "Preset problems" window has a red title bar.
   const std::array<int, 3> red = {int(0.75f * 255 + 0.5f), int(0.08f * 255 + 0.5f),
@@ -329,7 +410,9 @@ TEST_CASE("window: a broken preset shows its messages and the scene keeps runnin
 
   // A value the panel could hold but the scene cannot: refused with a message, nothing lost.
   CHECK_FALSE(v->setParam("hairstyle.min_particles", "40"));
-  CHECK(v->simulation().config().hairstyle.minParticles == 5);
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().config.hairstyle.minParticles == 5);
+  CHECK(v->preset().scene.hairstyle.minParticles == 5);
   v->dismissPresetErrors();
   CHECK(v->presetErrors().empty());
   removeTemp(dir);
@@ -343,12 +426,16 @@ TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[win
   c.scene.hairstyle.strands = 300;
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
-  runFrames(*v, 8);
+  // The samples come a few frames late: the thread stops within a few frames of the bad one.
+  REQUIRE(v->waitForSimFrame(40));
   REQUIRE(v->nanStopped());
   CHECK(v->paused());
-  const long frame = v->simulation().frame();
+  CHECK(v->nanFrame() >= 4);
+  const long frame = v->simFrame().frame;
+  CHECK(frame < 40);
   runFrames(*v, 3);
-  CHECK(v->simulation().frame() == frame);  // stopped: no garbage steps
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().frame == frame);  // stopped: no garbage steps
 
   const Image img = screenshot(*v, dir / "nan.png");
   // The red banner at the top centre.
@@ -420,8 +507,11 @@ TEST_CASE("window: save as writes the preset and clears the modified marker", "[
   CHECK(back.scene.hairstyle.strands == 200);
   // Revert goes back to what was saved.
   REQUIRE(v->setParam("sim.damping", "3"));
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().config.sim.damping == 3.0f);
   v->revert();
-  CHECK(v->simulation().config().sim.damping == back.scene.sim.damping);
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().config.sim.damping == back.scene.sim.damping);
   removeTemp(dir);
 }
 
@@ -476,4 +566,87 @@ TEST_CASE("camera control: orbit, zoom and head drag stay in range and keep the 
   const glm::dvec3 pivot(c.head.pivot);
   CHECK(glm::length(turned.apply(pivot) - pivot) < 1e-9);
   CHECK(glm::length(turned.apply(glm::dvec3(0.0, 0.1, 0.0)) - glm::dvec3(0.0, 0.1, 0.0)) > 0.01);
+}
+
+TEST_CASE("window: the UI runs while a frame of simulation does not end", "[window]") {
+  auto gate = std::make_shared<GatedSolver::Gate>();
+  // Opened at the end whatever happens (declared after the viewer, so destroyed before
+  // it), or the viewer's destructor would wait for the frame forever.
+  struct Opener {
+    GatedSolver::Gate& g;
+    ~Opener() { allow(g, 1000000); }
+  };
+  std::unique_ptr<Viewer> v = makeViewer([gate](const std::string&, std::string*) {
+    return std::unique_ptr<Solver>(new GatedSolver(gate));
+  });
+  Preset c = defaultPreset();
+  c.scene.hairstyle.strands = 200;
+  std::string error;
+  const Opener opener{*gate};
+  REQUIRE(v->open(c, "", "", &error));
+  // The thread is now inside its first frame, which does not end until the gate opens: the
+  // window still draws, takes edits and moves the camera.
+  const auto deadline = Clock::now() + std::chrono::seconds(30);
+  while (gate->started < 1 && Clock::now() < deadline) std::this_thread::yield();
+  REQUIRE(gate->started == 1);
+  const long drawn = v->framesDrawn();
+  runFrames(*v, 20);
+  CHECK(v->framesDrawn() == drawn + 20);
+  CHECK(v->simFrame().frame == 0);
+  REQUIRE(v->setParam("camera.yaw", "75"));
+  REQUIRE(v->setParam("wind.strength", "3"));  // queued for the thread, between frames
+  runFrames(*v, 2);
+  CHECK(v->preset().view.camera.yaw == 75.0f);
+  CHECK(v->simFrame().config.wind.strength != 3.0f);  // not yet applied: the frame runs on
+
+  // The frame ends: the edit is applied before the next one, and the view shows it.
+  allow(*gate, 3);
+  REQUIRE(v->waitForSimFrame(3));
+  CHECK(v->simFrame().frame == 3);
+  CHECK(v->simFrame().config.wind.strength == 3.0f);
+}
+
+TEST_CASE("window: interactive quality while simulating, full when still and for screenshots",
+          "[window]") {
+  const fs::path dir = tempDir();
+  std::unique_ptr<Viewer> v = makeViewer();
+  Preset c = defaultPreset();
+  c.scene.hairstyle.strands = 400;
+  c.scene.hairstyle.followCount = 3;
+  std::string error;
+  REQUIRE(v->open(c, "", "", &error));
+  REQUIRE(v->preset().view.render.interactive);
+  runSimFrames(*v, 3);
+  runFrames(*v, 1);
+  CHECK(v->lastQuality() == DrawQuality::Interactive);
+  // A share of the strands: render.interactive_amount of 400 x 4 drawn.
+  const double amount = v->preset().view.render.interactiveAmount;
+  CHECK(double(v->stats().drawnStrands) < 0.6 * 1600.0);
+  CHECK(double(v->stats().drawnStrands) >= 0.5 * amount * 1600.0);
+
+  // A screenshot is drawn in full even while the hair runs.
+  screenshot(*v, dir / "running.png");
+  CHECK(v->lastQuality() == DrawQuality::Full);
+  CHECK(v->stats().drawnStrands == 1600);
+
+  // Paused and still: full quality, and then no new picture while nothing changes.
+  v->setPaused(true);
+  REQUIRE(v->sync());
+  runFrames(*v, 2);
+  CHECK(v->lastQuality() == DrawQuality::Full);
+  const long scenes = v->scenesDrawn();
+  runFrames(*v, 5);
+  CHECK(v->scenesDrawn() == scenes);
+  // A change of the look draws again.
+  REQUIRE(v->setParam("render.strand_width", "2.5"));
+  runFrames(*v, 1);
+  CHECK(v->scenesDrawn() == scenes + 1);
+
+  // Interactive quality off: full while running too.
+  REQUIRE(v->setParam("render.interactive", "false"));
+  v->setPaused(false);
+  runSimFrames(*v, 2);
+  runFrames(*v, 1);
+  CHECK(v->lastQuality() == DrawQuality::Full);
+  removeTemp(dir);
 }

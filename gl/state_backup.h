@@ -7,17 +7,17 @@
 
 #include "gl/gl.h"
 
-namespace csm {
+namespace csm::gl {
 
-class GlStateBackup {
+class StateBackup {
  public:
-  GlStateBackup();
-  ~GlStateBackup();
-  GlStateBackup(const GlStateBackup&) = delete;
-  GlStateBackup& operator=(const GlStateBackup&) = delete;
+  StateBackup();
+  ~StateBackup();
+  StateBackup(const StateBackup&) = delete;
+  StateBackup& operator=(const StateBackup&) = delete;
 
  private:
-  static constexpr int kUnits = 5;  // texture units the passes bind (render/bindings.h)
+  static constexpr int kUnits = 8;  // texture units saved: the first eight
   GLint drawFramebuffer_ = 0, readFramebuffer_ = 0;
   std::array<GLint, 4> viewport_{};
   GLint program_ = 0, vertexArray_ = 0, arrayBuffer_ = 0, activeTexture_ = 0;
@@ -30,4 +30,4 @@ class GlStateBackup {
   std::array<GLboolean, 10> enabled_{};
 };
 
-}  // namespace csm
+}  // namespace csm::gl

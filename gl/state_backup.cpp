@@ -1,6 +1,6 @@
-#include "render/gl_state.h"
+#include "gl/state_backup.h"
 
-namespace csm {
+namespace csm::gl {
 namespace {
 
 constexpr std::array<GLenum, 10> kCapabilities = {GL_BLEND,
@@ -23,7 +23,7 @@ void setEnabled(GLenum cap, GLboolean on) {
 
 }  // namespace
 
-GlStateBackup::GlStateBackup() {
+StateBackup::StateBackup() {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
   glGetIntegerv(GL_VIEWPORT, viewport_.data());
@@ -53,7 +53,7 @@ GlStateBackup::GlStateBackup() {
     enabled_[i] = glIsEnabled(kCapabilities[i]);
 }
 
-GlStateBackup::~GlStateBackup() {
+StateBackup::~StateBackup() {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer_));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer_));
   glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
@@ -78,4 +78,4 @@ GlStateBackup::~GlStateBackup() {
   for (std::size_t i = 0; i < kCapabilities.size(); ++i) setEnabled(kCapabilities[i], enabled_[i]);
 }
 
-}  // namespace csm
+}  // namespace csm::gl

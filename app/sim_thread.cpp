@@ -1,0 +1,401 @@
+#include "app/sim_thread.h"
+
+#include <future>
+
+#include "app/frame_driver.h"
+#include "sim/simulation.h"
+
+namespace csm {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Behind real time by more than this, the paced clock starts again from now rather than
+// running flat out to catch up.
+constexpr double kMaxLagSeconds = 0.25;
+
+}  // namespace
+
+std::unique_ptr<SimThread> SimThread::start(Options options, Started* started,
+                                             std::string* error) {
+  std::unique_ptr<SimThread> t(new SimThread(std::move(options)));
+  std::string startError;
+  Started info;
+  // The thread writes startError and info before its first publication or its end, both of
+  // which the wait below sees; it touches neither after.
+  t->thread_ = std::thread([raw = t.get(), &startError, &info] { raw->run(&startError, &info); });
+  {
+    std::unique_lock lock(t->mutex_);
+    t->published_.wait(lock, [&] { return t->latest_ != nullptr || !t->running_; });
+  }
+  if (!t->latest_) {
+    t->thread_.join();
+    t->thread_ = {};
+    if (error) *error = startError;
+    return nullptr;
+  }
+  if (started) *started = info;
+  return t;
+}
+
+SimThread::SimThread(Options options) : options_(std::move(options)) {
+  if (options_.frameLimit >= 0) frameLimit_ = options_.frameLimit;
+}
+
+SimThread::~SimThread() {
+  if (thread_.joinable()) {
+    post([](Pending& p, long) { p.quit = true; });
+    thread_.join();
+  }
+  options_.context.reset();
+}
+
+// --- The thread ----------------------------------------------------------------------------
+
+bool SimThread::makeSolver(std::string* error, Started* started) {
+  std::string why;
+  std::unique_ptr<Solver> solver;
+  if (options_.solver != "gpu" || gl_)
+    solver = options_.makeSolver(options_.solver, &why);
+  else
+    why = "no GL context for the simulation thread";
+  if (!solver && options_.solver == "gpu") {
+    started->warning = "The GPU solver did not start (" + why + "); using the CPU solver.";
+    solver = options_.makeSolver("cpu", &why);
+  }
+  if (!solver) {
+    *error = "no solver: " + why;
+    return false;
+  }
+  started->solver = std::string(solver->name());
+  sim_ = std::make_unique<Simulation>(std::move(solver));
+  DriverOptions driving;
+  // Every frame sampled: a few numbers per work group, fenced; the Stats panel's strain and
+  // the NaN check follow each frame a few frames late.
+  driving.sampleEvery = 1;
+  // This thread may wait for its own GPU work: the wall times are then honest, and the
+  // commands it queues stay one frame deep.
+  driving.timeToCompletion = true;
+  driver_ = std::make_unique<FrameDriver>(*sim_, driving);
+  return true;
+}
+
+void SimThread::run(std::string* startError, Started* started) {
+  gl_ = options_.context && options_.context->makeCurrent();
+  const bool ok = makeSolver(startError, started);
+  if (ok) publish(0);  // the empty frame: start() returns
+  if (!ok) {
+    std::lock_guard lock(mutex_);
+    running_ = false;
+    published_.notify_all();
+  }
+  while (ok) {
+    Pending p;
+    long ticket = 0;
+    {
+      std::unique_lock lock(mutex_);
+      for (;;) {
+        if (pending_.any()) break;
+        if (canStep()) {
+          if (!options_.paced || paused_) break;
+          const auto due = anchorWall_ + std::chrono::duration_cast<Clock::duration>(
+                                             std::chrono::duration<double>(sim_->time() - anchorSim_));
+          const auto now = Clock::now();
+          if (now >= due) {
+            if (std::chrono::duration<double>(now - due).count() > kMaxLagSeconds) {
+              anchorWall_ = now;
+              anchorSim_ = sim_->time();
+            }
+            break;
+          }
+          wakeThread_.wait_until(lock, due);
+          continue;
+        }
+        wakeThread_.wait(lock);
+      }
+      p = std::move(pending_);
+      pending_ = {};
+      ticket = posted_;
+    }
+    if (p.quit) break;
+    if (p.any()) {
+      apply(p, ticket);
+      publish(ticket);
+      continue;  // commands first: a burst of slider moves is applied before a frame
+    }
+    stepFrame();
+    publish(applied_);
+  }
+  // GL objects go while the context is current.
+  {
+    std::lock_guard lock(mutex_);
+    for (Slot& s : slots_) s = Slot{};
+    running_ = false;
+    published_.notify_all();
+  }
+  driver_.reset();
+  sim_.reset();
+  if (gl_) options_.context->releaseCurrent();
+}
+
+void SimThread::apply(Pending& p, long ticket) {
+  std::string error;
+  const long generation = sim_->generation();
+  if (p.open) {
+    const auto& [config, baseDir] = *p.open;
+    sim_->setUserPose(Pose{});
+    if (sim_->load(config, baseDir, &error)) {
+      loaded_ = true;
+      driver_->restart();
+      event(SimEvent::Kind::Opened, p.openTicket, counts());
+    } else {
+      event(SimEvent::Kind::OpenFailed, p.openTicket, error);
+    }
+  }
+  if (p.config && loaded_) {
+    if (!sim_->setConfig(*p.config, &error))
+      event(SimEvent::Kind::ConfigRefused, p.configTicket, error);
+    else if (sim_->generation() != generation && !p.open)
+      event(SimEvent::Kind::Regrew, p.configTicket, counts());
+  }
+  if (p.reset && loaded_) {
+    sim_->reset();
+    driver_->restart();
+  }
+  if (p.userPose) sim_->setUserPose(*p.userPose);
+  if (p.paused) paused_ = *p.paused;
+  steps_ += p.steps;
+  if (p.frameLimit) frameLimit_ = *p.frameLimit;
+  const bool restarted = sim_->generation() != generation || p.reset || p.open;
+  if (restarted) {
+    driver_->restart();
+    nanReported_ = -1;
+    maxStrain_.clear();
+  }
+  // The paced clock starts again from here when the hair starts again or starts moving; not
+  // on every command (a drag posts one a frame), which would let it run ahead of real time.
+  if (restarted || (p.paused && !*p.paused) || p.steps > 0) {
+    anchorWall_ = Clock::now();
+    anchorSim_ = sim_->time();
+  }
+  applied_ = ticket;
+}
+
+bool SimThread::canStep() const {
+  if (!loaded_ || driver_->stopped()) return false;
+  if (frameLimit_ >= 0 && sim_->frame() >= frameLimit_) return false;
+  return !paused_ || steps_ > 0;
+}
+
+void SimThread::stepFrame() {
+  if (paused_ && steps_ > 0) --steps_;
+  driver_->step();
+  std::vector<FrameSample> samples = driver_->takeSamples();
+  for (const FrameSample& s : samples) maxStrain_.push(float(s.accuracy.maxStrain));
+  if (options_.recordMetrics) {
+    std::lock_guard lock(mutex_);
+    recorder_.addFrame(driver_->lastStepMs(), sim_->solver().stageTimes());
+    for (const FrameSample& s : samples) recorder_.addSample(s);
+  }
+  if (driver_->stopped() && nanReported_ != driver_->nanFrame()) {
+    nanReported_ = driver_->nanFrame();
+    event(SimEvent::Kind::Nan, applied_,
+          "the simulation produced NaN at frame " + std::to_string(driver_->nanFrame()) + " (" +
+              std::to_string(driver_->nanParticles()) + " particles)");
+  }
+}
+
+std::string SimThread::counts() const {
+  return std::to_string(sim_->solver().strandCount()) + " strands, " +
+         std::to_string(sim_->solver().particleCount()) + " particles";
+}
+
+void SimThread::event(SimEvent::Kind kind, long ticket, std::string text) {
+  std::lock_guard lock(mutex_);
+  events_.push_back({kind, ticket, std::move(text)});
+}
+
+int SimThread::writeSlot(unsigned source, std::size_t bytes) {
+  int s = -1;
+  gl::Fence readDone;
+  {
+    std::lock_guard lock(mutex_);
+    for (int i = 0; i < int(slots_.size()); ++i)
+      if (i != latestSlot_ && i != heldSlot_) {
+        s = i;
+        break;
+      }
+    readDone = std::move(slots_[s].read);
+  }
+  // The UI's draws from this buffer, if any, are done (usually long since).
+  readDone.wait();
+  readDone = gl::Fence();
+  Slot& slot = slots_[s];
+  if (slot.buffer.id() == 0) slot.buffer = gl::Buffer();
+  if (std::size_t(slot.buffer.size()) != bytes)
+    slot.buffer.setData(GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
+  // The solver wrote the positions from compute shaders.
+  gl::memoryBarrier(gl::Barrier::BufferUpdate);
+  gl::copyBuffer(source, slot.buffer.id(), GLsizeiptr(bytes));
+  slot.written = gl::Fence::insert();
+  return s;
+}
+
+void SimThread::publish(long ticket) {
+  auto f = std::make_shared<SimFrame>();
+  f->ticket = ticket;
+  f->loaded = loaded_;
+  Solver& solver = sim_->solver();
+  f->solver = std::string(solver.name());
+  if (loaded_) {
+    f->frame = sim_->frame();
+    f->time = sim_->time();
+    f->generation = sim_->generation();
+    f->config = sim_->config();
+    f->groom = sim_->sharedGroom();
+    f->groomReport = sim_->groomReport();
+    f->head = sim_->headPose();
+    f->strands = solver.strandCount();
+    f->particles = solver.particleCount();
+    f->stiffness = solver.stiffness();
+    f->stepMs = driver_->lastStepMs();
+    f->stages = solver.stageTimes();
+    f->sample = driver_->latestSample();
+    f->maxStrain = maxStrain_;
+    f->nanFrame = driver_->nanFrame();
+    f->nanParticles = driver_->nanParticles();
+    f->paused = paused_;
+    f->atLimit = frameLimit_ >= 0 && sim_->frame() >= frameLimit_;
+    f->idle = !canStep();
+    const unsigned buffer = gl_ ? solver.positionBuffer() : 0;
+    if (buffer != 0 && f->particles > 0) {
+      f->slot = writeSlot(buffer, f->particles * sizeof(glm::vec4));
+      f->positionBuffer = slots_[f->slot].buffer.id();
+    } else {
+      auto host = std::make_shared<std::vector<glm::vec4>>();
+      solver.readPositions(*host);
+      f->hostPositions = std::move(host);
+    }
+  }
+  {
+    std::lock_guard lock(mutex_);
+    f->serial = ++serial_;
+    if (f->slot >= 0) latestSlot_ = f->slot;
+    latest_ = std::move(f);
+  }
+  published_.notify_all();
+  if (options_.wake) options_.wake();
+}
+
+// --- Commands ------------------------------------------------------------------------------
+
+long SimThread::post(const std::function<void(Pending&, long)>& edit) {
+  long ticket;
+  {
+    std::lock_guard lock(mutex_);
+    ticket = ++posted_;
+    edit(pending_, ticket);
+  }
+  wakeThread_.notify_all();
+  return ticket;
+}
+
+long SimThread::open(const Config& config, const std::string& baseDir) {
+  return post([&](Pending& p, long ticket) {
+    // A new scene makes what was posted for the old one moot.
+    p.config.reset();
+    p.configTicket = 0;
+    p.reset = false;
+    p.userPose.reset();
+    p.open = std::make_pair(config, baseDir);
+    p.openTicket = ticket;
+  });
+}
+
+long SimThread::setConfig(const Config& config) {
+  return post([&](Pending& p, long ticket) {
+    p.config = config;
+    p.configTicket = ticket;
+  });
+}
+
+long SimThread::reset() {
+  return post([](Pending& p, long) { p.reset = true; });
+}
+
+long SimThread::setUserPose(const Pose& pose) {
+  return post([&](Pending& p, long) { p.userPose = pose; });
+}
+
+long SimThread::setPaused(bool paused) {
+  return post([&](Pending& p, long) { p.paused = paused; });
+}
+
+long SimThread::step() {
+  return post([](Pending& p, long) { ++p.steps; });
+}
+
+long SimThread::setFrameLimit(long frame) {
+  return post([&](Pending& p, long) { p.frameLimit = frame; });
+}
+
+long SimThread::latestSerial() const {
+  std::lock_guard lock(mutex_);
+  return latest_ ? latest_->serial : 0;
+}
+
+long SimThread::ticket() const {
+  std::lock_guard lock(mutex_);
+  return posted_;
+}
+
+bool SimThread::sync(double timeoutSeconds) {
+  return waitForTicket(ticket(), timeoutSeconds);
+}
+
+bool SimThread::waitForTicket(long ticket, double timeoutSeconds) {
+  std::unique_lock lock(mutex_);
+  return published_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds), [&] {
+    return !running_ || (latest_ && latest_->ticket >= ticket);
+  }) && running_;
+}
+
+bool SimThread::waitFor(const std::function<bool(const SimFrame&)>& done, double timeoutSeconds) {
+  if (!sync(timeoutSeconds)) return false;
+  std::unique_lock lock(mutex_);
+  return published_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds), [&] {
+    // Nothing more will come when the thread is idle (paused with no step asked for, stopped
+    // on NaN, at the limit) and no command is waiting.
+    return !running_ || done(*latest_) || (latest_->idle && !pending_.any());
+  });
+}
+
+// --- The UI's side -------------------------------------------------------------------------
+
+std::shared_ptr<const SimFrame> SimThread::acquire() {
+  std::lock_guard lock(mutex_);
+  if (latest_ && latest_->slot >= 0 && latest_->slot != heldSlot_) {
+    heldSlot_ = latest_->slot;
+    slots_[heldSlot_].written.waitOnGpu();
+  }
+  return latest_;
+}
+
+void SimThread::drawn() {
+  std::lock_guard lock(mutex_);
+  if (heldSlot_ >= 0) slots_[heldSlot_].read = gl::Fence::insert();
+}
+
+std::vector<SimEvent> SimThread::takeEvents() {
+  std::lock_guard lock(mutex_);
+  std::vector<SimEvent> out;
+  out.swap(events_);
+  return out;
+}
+
+MetricsRecorder SimThread::metrics() const {
+  std::lock_guard lock(mutex_);
+  return recorder_;
+}
+
+}  // namespace csm

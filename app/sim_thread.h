@@ -1,0 +1,227 @@
+// The window's simulation on a thread of its own, with a GL context shared with the window's:
+// the UI draws at display rate whatever a frame of simulation costs, and shows the latest
+// frame the simulation finished. The thread steps a FrameDriver, the loop headless runs
+// step, so the window samples the same measures under the same NaN policy.
+//
+// Commands from the UI (open, set the config, reset, pause, ...) are applied between frames
+// in the order they were posted. Each returns a ticket, and every published frame carries
+// the last ticket applied before it, so the UI and tests know when a change has taken effect
+// (sync()).
+//
+// Positions pass from the simulation's context to the window's through three GPU buffers
+// with fences: the simulation copies each finished frame into a buffer that is neither the
+// one the UI draws nor the latest one handed over, after the UI's fence says its draws from
+// that buffer are done. Nothing is read back to the CPU. A CPU solver's positions are handed
+// over as a host copy instead.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "app/history.h"
+#include "app/metrics.h"
+#include "gl/buffer.h"
+#include "gl/context.h"
+#include "gl/fence.h"
+#include "sim/config.h"
+#include "sim/groom.h"
+#include "sim/head.h"
+#include "sim/hairstyle.h"
+#include "sim/solver.h"
+#include "sim/stiffness.h"
+
+namespace csm {
+
+class FrameDriver;
+class Simulation;
+
+using SolverFactory = std::function<std::unique_ptr<Solver>(const std::string&, std::string*)>;
+
+// One finished frame as the simulation thread hands it over. Immutable once published.
+struct SimFrame {
+  long ticket = 0;  // the last command applied before this frame was published
+  long serial = 0;  // counts publications
+  bool loaded = false;
+  long frame = 0;
+  double time = 0.0;
+  long generation = 0;  // changes when the groom is regrown
+  Config config;
+  std::shared_ptr<const Groom> groom;
+  GroomReport groomReport;
+  Pose head;  // where the head was at the end of the frame
+  std::size_t strands = 0, particles = 0;
+  StiffnessInfo stiffness;
+  std::string solver;  // the solver's name
+  // The simulation's own figures: the last step's wall time (to completion) and stages, the
+  // latest sample (a few frames old) and one max strain per sample.
+  double stepMs = 0.0;
+  std::vector<StageTime> stages;
+  std::optional<FrameSample> sample;
+  History maxStrain{120};
+  // The NaN policy: the first frame whose sample counted non-finite particles; the thread
+  // steps no further until a reset or a regrow.
+  long nanFrame = -1;
+  uint64_t nanParticles = 0;
+  bool paused = false;
+  bool atLimit = false;  // stopped at Options::frameLimit
+  bool idle = false;     // will step no further without a command (paused, stopped, limit)
+  // This frame's positions (vec4 per particle): a buffer of the share group, to draw after
+  // SimThread::acquire() (which orders the window's context after the copy), or a host copy.
+  unsigned positionBuffer = 0;
+  int slot = -1;
+  std::shared_ptr<const std::vector<glm::vec4>> hostPositions;
+};
+
+// What the thread has to say, in order; the UI shows them and keeps its own state in step.
+struct SimEvent {
+  enum class Kind {
+    Opened,         // text: "N strands, M particles"
+    OpenFailed,     // text: why
+    ConfigRefused,  // text: why; the frames carry the config that still runs
+    Regrew,         // text: "N strands, M particles"
+    Nan,            // text: the frame and the particle count
+  };
+  Kind kind;
+  long ticket = 0;
+  std::string text;
+};
+
+class SimThread {
+ public:
+  struct Options {
+    SolverFactory makeSolver;  // by name; the thread makes its solver with its context current
+    std::string solver = "gpu";  // falls back to "cpu", with a warning, when it fails
+    // The thread's context, sharing objects with the UI's; null for CPU solvers only. The
+    // SimThread owns it and destroys it on the thread that destroys the SimThread.
+    std::unique_ptr<gl::Context> context;
+    // Keep to real time: a frame of dt seconds starts no earlier than dt after the last one
+    // (behind real time it runs flat out). Off for scripted runs and tests.
+    bool paced = true;
+    // Stop stepping after this frame (-1: never). For runs that end at a frame.
+    long frameLimit = -1;
+    // Record every frame's time and sample for metrics().
+    bool recordMetrics = false;
+    // Called after each publication, from the simulation thread (glfwPostEmptyEvent).
+    std::function<void()> wake;
+  };
+  struct Started {
+    std::string solver;   // the name of the solver it runs
+    std::string warning;  // the fallback, when the wanted solver did not start
+  };
+
+  // Starts the thread and waits until it has made its solver. Null with `error` when none.
+  static std::unique_ptr<SimThread> start(Options options, Started* started, std::string* error);
+  // Stops the thread (after the frame it is in) and joins it.
+  ~SimThread();
+  SimThread(const SimThread&) = delete;
+  SimThread& operator=(const SimThread&) = delete;
+
+  // --- Commands: each returns its ticket -------------------------------------------------
+  // A new scene, from rest at time 0, the user's head pose cleared.
+  long open(const Config& config, const std::string& baseDir);
+  // Live parameters, or a regrow when a Rebuild parameter changed (the clock runs on).
+  long setConfig(const Config& config);
+  long reset();  // back to rest, time 0; clears a NaN stop
+  long setUserPose(const Pose& pose);
+  long setPaused(bool paused);
+  long step();  // one frame, while paused
+  long setFrameLimit(long frame);
+
+  // Waits until every command posted so far is applied and published; false on timeout.
+  bool sync(double timeoutSeconds = 120.0);
+  // Waits until the command with this ticket (and every one before it) is applied.
+  bool waitForTicket(long ticket, double timeoutSeconds = 120.0);
+  // Waits until `done` holds for the latest frame, or the thread can step no further
+  // (paused, stopped on NaN, at the frame limit); false on timeout.
+  bool waitFor(const std::function<bool(const SimFrame&)>& done, double timeoutSeconds = 120.0);
+
+  // --- The UI's side ---------------------------------------------------------------------
+  // The latest frame; its positions buffer is the UI's until a later acquire(), and the
+  // window's context waits on the GPU for the copy into it. Null before the first frame.
+  std::shared_ptr<const SimFrame> acquire();
+  // After the draws that read the acquired frame's positions are issued: a fence, so the
+  // thread overwrites that buffer only once they are done.
+  void drawn();
+  // Events since the last call, oldest first.
+  std::vector<SimEvent> takeEvents();
+  // Every frame's time and sample so far (with Options::recordMetrics).
+  MetricsRecorder metrics() const;
+  long ticket() const;  // the last ticket handed out
+  long latestSerial() const;  // of the latest frame published (0 before the first)
+
+ private:
+  struct Pending {
+    std::optional<std::pair<Config, std::string>> open;
+    std::optional<Config> config;
+    long openTicket = 0, configTicket = 0;  // the commands' own tickets, for their events
+    bool reset = false;
+    std::optional<Pose> userPose;
+    std::optional<bool> paused;
+    int steps = 0;
+    std::optional<long> frameLimit;
+    bool quit = false;
+    bool any() const {
+      return open || config || reset || userPose || paused || steps > 0 || frameLimit || quit;
+    }
+  };
+  struct Slot {
+    gl::Buffer buffer{gl::NoCreate};
+    gl::Fence written, read;
+  };
+
+  explicit SimThread(Options options);
+  void run(std::string* startError, Started* started);
+  bool makeSolver(std::string* error, Started* started);
+  long post(const std::function<void(Pending&, long ticket)>& edit);
+  void apply(Pending& p, long ticket);
+  bool canStep() const;
+  void stepFrame();
+  void publish(long ticket);
+  int writeSlot(unsigned source, std::size_t bytes);
+  void event(SimEvent::Kind kind, long ticket, std::string text);
+  std::string counts() const;
+
+  Options options_;
+  std::thread thread_;
+
+  // Shared with the UI, under mutex_.
+  mutable std::mutex mutex_;
+  std::condition_variable wakeThread_, published_;
+  Pending pending_;
+  long posted_ = 0;
+  std::shared_ptr<const SimFrame> latest_;
+  std::vector<SimEvent> events_;
+  std::array<Slot, 3> slots_;
+  int latestSlot_ = -1, heldSlot_ = -1;
+  MetricsRecorder recorder_;
+  bool running_ = true;  // false once the thread has left its loop
+
+  // The thread's own.
+  bool gl_ = false;  // its context is current
+  std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<FrameDriver> driver_;
+  bool loaded_ = false;
+  bool paused_ = false;
+  int steps_ = 0;
+  long frameLimit_ = -1;
+  long applied_ = 0;
+  long serial_ = 0;
+  long nanReported_ = -1;  // the frame whose NaN event went out
+  History maxStrain_{120};
+  // Real-time pacing: the wall time and sim time the clock last started from.
+  std::chrono::steady_clock::time_point anchorWall_;
+  double anchorSim_ = 0.0;
+};
+
+}  // namespace csm

@@ -1,0 +1,37 @@
+// Times the passes of a frame: with GL timer queries on a GPU (no stall; results a few frames
+// late), or with glFinish and the CPU clock between passes where queries are not to be
+// trusted (software rasterizers; see HairRenderer::setSynchronousTiming), which stalls.
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "gl/query.h"
+#include "sim/solver.h"
+
+namespace csm {
+
+class PassClock {
+ public:
+  explicit PassClock(bool timerQueries) : queries_(timerQueries) {}
+  void setSynchronous(bool on) { synchronous_ = on; }
+  bool synchronous() const { return synchronous_; }
+
+  void beginFrame();
+  // Ends the open pass, if any, and starts `name`.
+  void begin(const char* name);
+  void endFrame();
+  // The latest times per pass.
+  std::vector<StageTime> times();
+
+ private:
+  bool queries_;
+  bool synchronous_ = false;
+  gl::StageTimer timer_;
+  std::string open_;
+  std::chrono::steady_clock::time_point openStart_;
+  std::vector<StageTime> frame_, last_;
+};
+
+}  // namespace csm

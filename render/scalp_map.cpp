@@ -1,0 +1,104 @@
+#include "render/scalp_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace csm {
+namespace {
+
+constexpr int kSize = 128;
+
+// Two passes of a 5x5 box over each layer: roots a few millimetres apart merge into one
+// scalp.
+template <class T>
+void blur(std::vector<T>& v, int layers) {
+  std::vector<T> tmp = v;
+  auto at = [](int l, int y, int x) {
+    return (std::size_t(l) * kSize + std::size_t(y)) * kSize + std::size_t(x);
+  };
+  for (int pass = 0; pass < 2; ++pass)
+    for (int axis = 0; axis < 2; ++axis) {
+      for (int l = 0; l < layers; ++l)
+        for (int y = 0; y < kSize; ++y)
+          for (int x = 0; x < kSize; ++x) {
+            T sum = v[0] * 0.0f;
+            for (int o = -2; o <= 2; ++o) {
+              const int xx = axis == 0 ? std::clamp(x + o, 0, kSize - 1) : x;
+              const int yy = axis == 1 ? std::clamp(y + o, 0, kSize - 1) : y;
+              sum += v[at(l, yy, xx)];
+            }
+            tmp[at(l, y, x)] = sum / 5.0f;
+          }
+      std::swap(v, tmp);
+    }
+}
+
+std::uint8_t unorm8(float c) {
+  return std::uint8_t(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
+}
+
+}  // namespace
+
+glm::vec2 octahedral(glm::vec3 d) {
+  d /= std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+  glm::vec2 p(d.x, d.y);
+  if (d.z < 0.0f)
+    p = glm::vec2((1.0f - std::abs(d.y)) * (d.x >= 0.0f ? 1.0f : -1.0f),
+                  (1.0f - std::abs(d.x)) * (d.y >= 0.0f ? 1.0f : -1.0f));
+  return p * 0.5f + 0.5f;
+}
+
+ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres) {
+  const int layers = std::max<int>(1, int(std::min<std::size_t>(spheres.size(), 64)));
+  std::vector<float> count(std::size_t(layers) * kSize * kSize, 0.0f);
+  std::vector<glm::vec3> colour(count.size(), glm::vec3(0.0f));
+  const bool groomColours = groom.color.size() == groom.strandCount();
+  for (std::size_t s = 0; s < groom.strandCount(); ++s) {
+    if (groom.strandSize(s) == 0) continue;
+    const glm::vec3 root = groom.points[groom.first[s]];
+    int best = -1;
+    float bestGap = 0.0f;
+    for (int k = 0; k < layers && k < int(spheres.size()); ++k) {
+      const float gap = std::abs(glm::length(root - spheres[k].center) - spheres[k].radius);
+      if (best < 0 || gap < bestGap) best = k, bestGap = gap;
+    }
+    if (best < 0 || bestGap > 0.02f) continue;  // not on any sphere
+    const glm::vec3 d = root - spheres[best].center;
+    if (glm::length(d) < 1e-9f) continue;
+    const glm::vec2 uv = octahedral(glm::normalize(d));
+    const int x = std::clamp(int(uv.x * kSize), 0, kSize - 1);
+    const int y = std::clamp(int(uv.y * kSize), 0, kSize - 1);
+    const std::size_t i = (std::size_t(best) * kSize + std::size_t(y)) * kSize + std::size_t(x);
+    count[i] += 1.0f;
+    if (groomColours) colour[i] += groom.color[s];
+  }
+  blur(count, layers);
+  if (groomColours) blur(colour, layers);
+  ScalpTexels out;
+  out.size = kSize;
+  out.layers = layers;
+  out.rgba.resize(count.size() * 4);
+  for (std::size_t i = 0; i < count.size(); ++i) {
+    // One root per ten texels already reads as a covered scalp.
+    const float coverage = std::clamp(count[i] / 0.1f, 0.0f, 1.0f);
+    const glm::vec3 c = groomColours && count[i] > 0.0f ? colour[i] / count[i] : glm::vec3(0.0f);
+    out.rgba[i * 4 + 0] = unorm8(c.r);
+    out.rgba[i * 4 + 1] = unorm8(c.g);
+    out.rgba[i * 4 + 2] = unorm8(c.b);
+    out.rgba[i * 4 + 3] = unorm8(coverage);
+  }
+  return out;
+}
+
+gl::Texture makeScalpMap(const Groom& groom, const std::vector<Sphere>& spheres) {
+  const ScalpTexels t = scalpTexels(groom, spheres);
+  gl::Texture map = gl::Texture::create2DArray(GL_RGBA8, t.size, t.size, t.layers);
+  map.setFilter(GL_LINEAR, GL_LINEAR).setWrap(GL_CLAMP_TO_EDGE);
+  map.setSubImage(0, 0, 0, 0, t.size, t.size, t.layers, GL_RGBA, GL_UNSIGNED_BYTE,
+                  t.rgba.data());
+  return map;
+}
+
+}  // namespace csm

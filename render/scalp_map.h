@@ -1,0 +1,31 @@
+// Where hair grows on each head sphere, as a texture the head shader paints the scalp from:
+// the gaps between strands then show hair-coloured scalp rather than bare skin, as on a real
+// head.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "gl/texture.h"
+#include "sim/groom.h"
+#include "sim/head.h"
+
+namespace csm {
+
+// Octahedral mapping of a unit vector to [0,1]^2 (Cigolle et al. 2014): no poles, so the
+// crown and the back of the head get texels like everywhere else. head.frag mirrors it.
+glm::vec2 octahedral(glm::vec3 d);
+
+struct ScalpTexels {
+  int size = 0, layers = 0;
+  std::vector<std::uint8_t> rgba;  // layer-major, rows of `size`: root colour, coverage
+};
+// The roots binned per sphere (the nearest one within 2 cm) and blurred into a density.
+ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres);
+// An RGBA8 2D array, one layer per sphere.
+gl::Texture makeScalpMap(const Groom& groom, const std::vector<Sphere>& spheres);
+
+}  // namespace csm
