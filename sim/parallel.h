@@ -1,20 +1,27 @@
-// A parallel loop over index ranges on all cores. Each index is handled by exactly one thread
-// and writes only its own outputs, so results do not depend on the thread count.
+// A parallel loop over index ranges on all cores, run by one pool of threads that lives as
+// long as the program (no thread is started or joined per loop). Each index is handled by
+// exactly one chunk, and a chunk writes only its own outputs, so results do not depend on the
+// thread count or on which thread ran a chunk.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
-#include <thread>
-#include <vector>
+#include <functional>
 
 namespace csm {
 
-inline size_t coreCount() {
-  return std::max(1u, std::thread::hardware_concurrency());
-}
+size_t coreCount();
 
-// Calls body(begin, end, chunk) on contiguous chunks of [0, count), chunk < coreCount(), in
-// order of chunk. Runs inline when the work is too small to pay for starting threads.
+// Runs task(0) ... task(count - 1), each once, on the shared pool's threads and the calling
+// one, and returns when all have finished. Called from inside a task, or while another thread
+// holds the pool, it runs the tasks in order on the calling thread.
+void runOnPool(size_t count, const std::function<void(size_t)>& task);
+
+// Threads the shared pool has started so far (none until a loop needs them), for tests.
+size_t poolThreadsStarted();
+
+// Calls body(begin, end, chunk) on contiguous chunks of [0, count), chunk < coreCount().
+// Runs inline when the work is too small to pay for waking the pool.
 template <class Body>
 void parallelChunks(size_t count, size_t minChunk, Body&& body) {
   const size_t chunks = std::min(coreCount(), count / std::max<size_t>(1, minChunk));
@@ -22,12 +29,7 @@ void parallelChunks(size_t count, size_t minChunk, Body&& body) {
     body(size_t(0), count, size_t(0));
     return;
   }
-  std::vector<std::thread> threads;
-  threads.reserve(chunks - 1);
-  for (size_t c = 1; c < chunks; ++c)
-    threads.emplace_back([&, c] { body(count * c / chunks, count * (c + 1) / chunks, c); });
-  body(size_t(0), count / chunks, size_t(0));
-  for (std::thread& t : threads) t.join();
+  runOnPool(chunks, [&](size_t c) { body(count * c / chunks, count * (c + 1) / chunks, c); });
 }
 
 // body(begin, end) over chunks of [0, count).

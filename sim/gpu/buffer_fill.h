@@ -1,0 +1,38 @@
+// Filling the GPU solver's storage buffers: created on first use, at least one element (a
+// zero-sized buffer cannot be bound to a storage point usefully), texel views kept attached.
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/buffer_texture.h"
+
+namespace csm::gpu {
+
+template <class T>
+void fill(gl::Buffer& buffer, const std::vector<T>& data) {
+  if (data.empty()) {
+    fill(buffer, std::vector<T>(1));
+    return;
+  }
+  if (buffer.id() == 0)
+    buffer = gl::Buffer(data);
+  else
+    buffer.upload(data);
+}
+
+template <class T>
+void zeroed(gl::Buffer& buffer, size_t count) {
+  fill(buffer, std::vector<T>(std::max<size_t>(count, 1)));
+}
+
+// A texelFetch view of `buffer` (see gl/buffer_texture.h).
+inline void view(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format) {
+  if (tex.id() == 0)
+    tex = gl::BufferTexture(buffer, format);
+  else
+    tex.attach(buffer, format);
+}
+
+}  // namespace csm::gpu

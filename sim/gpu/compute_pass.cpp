@@ -1,0 +1,34 @@
+#include "sim/gpu/compute_pass.h"
+
+#include <algorithm>
+#include <optional>
+
+namespace csm::gpu {
+
+bool ComputePass::build(const char* path, uint32_t groupSize,
+                        const std::vector<gl::Define>& defines, std::string* error) {
+  std::string log;
+  std::optional<gl::Program> p =
+      gl::buildProgram(path, {{GL_COMPUTE_SHADER, path}}, defines, &log);
+  if (!p) {
+    if (error) *error = std::string("GPU solver: ") + path + " does not build:\n" + log;
+    return false;
+  }
+  program_ = std::move(*p);
+  groupSize_ = groupSize;
+  return true;
+}
+
+void ComputePass::run(uint32_t items) const {
+  const uint32_t groups = gl::Program::groupsFor(items, groupSize_);
+  if (groups == 0) return;
+  const uint32_t x = std::min<uint32_t>(groups, 65535u);
+  program_.dispatch(x, (groups + x - 1) / x);
+}
+
+void ComputePass::runSubstep(uint32_t items, unsigned substep) {
+  program_.setUniform("substep", substep);
+  run(items);
+}
+
+}  // namespace csm::gpu

@@ -1,0 +1,41 @@
+// One compute shader of the GPU solver and the work it covers: a pass is built for one kind
+// of item (particles, strands, grid entries, scan blocks) with that kind's group size, so a
+// dispatch names how many items it runs on, never a group count.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gl/program.h"
+#include "gl/shader_source.h"
+
+namespace csm::gpu {
+
+class ComputePass {
+ public:
+  ComputePass() = default;
+
+  // Compiles shaders/<path>; false, with the compiler's log in `error`, when it does not build.
+  bool build(const char* path, uint32_t groupSize, const std::vector<gl::Define>& defines,
+             std::string* error);
+  bool built() const { return program_.id() != 0; }
+
+  // Enough groups for `items` invocations (none for 0); beyond GL 4.3's 65535 groups per
+  // dimension, a 2D grid of groups that globalIndex() in common.glsl flattens.
+  void run(uint32_t items) const;
+  // The same pass for each step of a frame: its `substep` uniform, then run.
+  void runSubstep(uint32_t items, unsigned substep);
+
+  template <class T>
+  ComputePass& set(const char* uniform, const T& value) {
+    program_.setUniform(uniform, value);
+    return *this;
+  }
+
+ private:
+  gl::Program program_{gl::NoCreate};
+  uint32_t groupSize_ = 1;
+};
+
+}  // namespace csm::gpu

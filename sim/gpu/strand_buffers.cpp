@@ -1,0 +1,85 @@
+#include "sim/gpu/strand_buffers.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "sim/gpu/buffer_fill.h"
+#include "shaders/sim/bindings.glsl"
+
+namespace csm::gpu {
+
+void StrandBuffers::upload(const HairState& st, const glm::dquat& head) {
+  particles = st.particleCount();
+  strands = st.strandCount();
+  longestStrand = 0;
+  segments = 0;
+  std::vector<uint32_t> order(strands);
+  std::iota(order.begin(), order.end(), 0u);
+  for (size_t s = 0; s < strands; ++s) {
+    const int size = int(st.strandFirst[s + 1] - st.strandFirst[s]);
+    longestStrand = std::max(longestStrand, size);
+    segments += uint32_t(std::max(0, size - 1));
+  }
+  // Strands of equal length side by side: a SIMD group of the per-strand passes then runs
+  // loops of one length (the state itself keeps the groom's order).
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t l, uint32_t r) {
+    return st.strandFirst[l + 1] - st.strandFirst[l] < st.strandFirst[r + 1] - st.strandFirst[r];
+  });
+  double restSum = 0.0;
+  for (size_t i = 0; i + 1 < particles; ++i)
+    if (st.particleStrand[i] == st.particleStrand[i + 1])
+      restSum += glm::length(glm::dvec3(st.rest[i + 1]) - glm::dvec3(st.rest[i]));
+  meanSegment = segments > 0 ? restSum / segments : 0.0;
+
+  fill(rest, st.rest);
+  fill(position, st.position);
+  fill(velocity, st.velocity);
+  fill(strandFirst, st.strandFirst);
+  fill(particleStrand, st.particleStrand);
+  fill(predicted, st.position);
+  fill(strandOrder, order);
+  fill(rotation,
+       std::vector<glm::vec4>(particles, glm::vec4(head.x, head.y, head.z, head.w)));
+  view(positionTex, position, GL_RGBA32F);
+  view(velocityTex, velocity, GL_RGBA32F);
+  view(restTex, rest, GL_RGBA32F);
+  view(predictedTex, predicted, GL_RGBA32F);
+}
+
+void StrandBuffers::uploadRegions(const Regions& regions, size_t particleCount,
+                                  size_t strandCount) {
+  std::vector<glm::vec4> perParticle(particleCount);
+  for (size_t i = 0; i < particleCount; ++i) {
+    const double J = regions.inertia[i];
+    perParticle[i] = glm::vec4(float(regions.mass[i]), J > 0.0 ? float(1.0 / J) : 0.0f,
+                               float(regions.lo[i]), float(regions.hi[i]));
+  }
+  fill(region, perParticle);
+  std::vector<glm::vec4> perStrand(strandCount);
+  for (size_t s = 0; s < strandCount; ++s)
+    perStrand[s] = glm::vec4(float(regions.rate[s]), float(regions.ghostMass[s]),
+                             float(regions.pinned[s]), 0.0f);
+  fill(strandStiffness, perStrand);
+  view(regionTex, region, GL_RGBA32F);
+}
+
+void StrandBuffers::bind() const {
+  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
+  rest.bindBase(ssbo, CSM_BIND_REST);
+  position.bindBase(ssbo, CSM_BIND_POSITION);
+  velocity.bindBase(ssbo, CSM_BIND_VELOCITY);
+  strandFirst.bindBase(ssbo, CSM_BIND_STRAND_FIRST);
+  particleStrand.bindBase(ssbo, CSM_BIND_PARTICLE_STRAND);
+  predicted.bindBase(ssbo, CSM_BIND_PREDICTED);
+  rotation.bindBase(ssbo, CSM_BIND_ROTATION);
+  strandOrder.bindBase(ssbo, CSM_BIND_STRAND_ORDER);
+  region.bindBase(ssbo, CSM_BIND_REGION);
+  strandStiffness.bindBase(ssbo, CSM_BIND_STRAND_STIFFNESS);
+  positionTex.bind(CSM_TEX_POSITION);
+  velocityTex.bind(CSM_TEX_VELOCITY);
+  restTex.bind(CSM_TEX_REST);
+  predictedTex.bind(CSM_TEX_PREDICTED);
+  regionTex.bind(CSM_TEX_REGION);
+}
+
+}  // namespace csm::gpu
