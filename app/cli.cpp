@@ -33,7 +33,9 @@ usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx] [options]
   --video FILE.mp4       headless: pipe frames to ffmpeg
   --export-hair FILE     write the final strands as a cyHair .hair file
   --screenshot FILE.png  window: save what the window shows after --exit-after frames
-  --exit-after N         window: run N frames, then exit
+                         (at full quality)
+  --exit-after N         window: simulate N frames as fast as they come (not paced to
+                         real time), then exit
   --quiet                no progress on stderr
   --help                 this text
 

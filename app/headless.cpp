@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "app/capture.h"
-#include "app/frame_driver.h"
+#include "sim/frame_driver.h"
 #include "app/metrics.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"

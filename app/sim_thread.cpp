@@ -2,7 +2,7 @@
 
 #include <future>
 
-#include "app/frame_driver.h"
+#include "sim/frame_driver.h"
 #include "sim/simulation.h"
 
 namespace csm {

@@ -1,24 +1,32 @@
-#include "app/frame_driver.h"
+#include "sim/frame_driver.h"
 
 namespace csm {
 
 using Clock = std::chrono::steady_clock;
 
+FrameDriver::FrameDriver(Simulation& sim, const DriverOptions& options)
+    : FrameDriver(
+          sim.solver(),
+          [&sim] {
+            sim.stepFrame();
+            return sim.frame();
+          },
+          options) {}
+
 void FrameDriver::step() {
   if (stopped()) return;
   const auto t0 = Clock::now();
-  sim_.stepFrame();
-  if (options_.timeToCompletion) sim_.solver().finish();
+  const long frame = stepFrame_();
+  if (options_.timeToCompletion) solver_.finish();
   lastStepMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-  const long frame = sim_.frame();
-  const bool due =
-      options_.waitForSamples || options_.sampleEvery <= 1 || frame % options_.sampleEvery == 0;
-  if (due) sim_.solver().requestSample(frame);
+  const bool due = options_.waitForSamples || options_.sampleEvery == 1 ||
+                   (options_.sampleEvery > 1 && frame % options_.sampleEvery == 0);
+  if (due) solver_.requestSample(frame);
   take(options_.waitForSamples);
 }
 
 void FrameDriver::take(bool wait) {
-  while (std::optional<FrameSample> s = sim_.solver().takeSample(wait)) accept(*s);
+  while (std::optional<FrameSample> s = solver_.takeSample(wait)) accept(*s);
 }
 
 void FrameDriver::accept(const FrameSample& sample) {
@@ -35,7 +43,7 @@ void FrameDriver::drain() {
 }
 
 void FrameDriver::restart() {
-  sim_.solver().dropSamples();
+  solver_.dropSamples();
   latest_.reset();
   resume();
 }

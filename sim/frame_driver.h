@@ -1,11 +1,12 @@
-// One frame of the program, the same for the window's simulation thread, headless runs and
-// the benchmarks that run them: step the simulation, sample its measures without waiting (the
-// solver's fenced ring, read a few frames late), and stop on NaN. Nothing here reads the
-// hair's state back: a sample is a few numbers per work group (Solver::requestSample).
+// One frame, the same for the window's simulation thread, headless runs and the benchmarks:
+// step, sample the measures without waiting (the solver's fenced ring, read a few frames
+// late), and stop on NaN. Nothing here reads the hair's state back: a sample is a few numbers
+// per work group (Solver::requestSample).
 #pragma once
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -14,7 +15,8 @@
 namespace csm {
 
 struct DriverOptions {
-  // Frames between samples; 1 samples every frame (metrics), more only watches for NaN.
+  // Frames between samples; 1 samples every frame (metrics), more only watches for NaN, 0
+  // takes none (timing runs that check their results themselves).
   int sampleEvery = 10;
   // Take each frame's sample before the next frame (waiting for it): for runs that write
   // frames out, so that none is written before its NaN check.
@@ -26,7 +28,12 @@ struct DriverOptions {
 
 class FrameDriver {
  public:
-  FrameDriver(Simulation& sim, const DriverOptions& options) : sim_(sim), options_(options) {}
+  // Steps `sim` (the program).
+  FrameDriver(Simulation& sim, const DriverOptions& options);
+  // Steps whatever `stepFrame` steps on `solver` (a benchmark's scene runner); it returns the
+  // number of the frame it finished.
+  FrameDriver(Solver& solver, std::function<long()> stepFrame, const DriverOptions& options)
+      : solver_(solver), stepFrame_(std::move(stepFrame)), options_(options) {}
 
   // One frame, unless stopped on NaN. Takes whatever samples are ready; with waitForSamples,
   // this frame's.
@@ -55,7 +62,8 @@ class FrameDriver {
   void take(bool wait);
   void accept(const FrameSample& sample);
 
-  Simulation& sim_;
+  Solver& solver_;
+  std::function<long()> stepFrame_;
   DriverOptions options_;
   std::vector<FrameSample> taken_;
   std::optional<FrameSample> latest_;

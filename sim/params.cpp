@@ -6,6 +6,9 @@ namespace {
 bool paperModel(const Config& c) {
   return c.sim.stiffnessModel == StiffnessModel::Paper;
 }
+bool hasFollowHairs(const Config& c) {
+  return c.hairstyle.followCount > 0;
+}
 bool calibratedModel(const Config& c) {
   return c.sim.stiffnessModel == StiffnessModel::Calibrated;
 }
@@ -93,13 +96,14 @@ std::vector<Param<Config>> build() {
             "Render-only strands drawn around each simulated strand.", Effect::Render),
       param("hairstyle.follow_spread", "Follow spread", "Hairstyle|Follow", &Config::hairstyle,
             &HairstyleConfig::followSpread, 0.0, 0.05,
-            "Distance (m) of follow hairs from their guide at the root.", Effect::Render),
+            "Distance (m) of follow hairs from their guide at the root.", Effect::Render)
+          .onlyWhen(hasFollowHairs),
       param("head.spheres", "Head spheres", "Head", &Config::head, &HeadConfig::spheres, -10, 10,
             "Spheres (centre in the head frame, radius) that the hair collides with; the first is "
             "the scalp the hair grows from.",
             Effect::Rebuild),
       param("head.motion", "Motion", "Head", &Config::head, &HeadConfig::motion, 0, 0,
-            "How the head moves: none, nod, shake, spin, sway or bounce.", Effect::Live)
+            "How the head moves: none, nod, shake, spin, sway or bounce.", Effect::Info)
           .choices({"none", "nod", "shake", "spin", "sway", "bounce"}),
       param("head.amplitude", "Amplitude", "Head", &Config::head, &HeadConfig::amplitude, 0.0,
             180.0, "Amplitude of the motion: degrees, or centimetres for bounce.", Effect::Live),
@@ -117,7 +121,7 @@ std::vector<Param<Config>> build() {
           "substeps, particle count and density (DESIGN.md section 4). paper: a window in "
           "particles and alpha per step, as the paper does: more substeps stiffen the hair, more "
           "particles soften it.",
-          Effect::Live)
+          Effect::Info)
           .choices({"paper", "calibrated"}),
       param("sim.substeps", "Substeps", "Simulation", &Config::sim, &SimConfig::substeps, 1, 64,
             "Steps per frame (paper); the fewest steps per frame (calibrated: more when the "
@@ -127,7 +131,7 @@ std::vector<Param<Config>> build() {
             1, 256,
             "Calibrated: the most steps per frame the stiffness may ask for. When it binds, the "
             "stiffest strands are softer than asked, and the log and the panel say so.",
-            Effect::Live)
+            Effect::Info)
           .onlyWhen(calibratedModel),
       param("sim.window_length", "Stiffness window", "Simulation", &Config::sim,
             &SimConfig::windowLength, 0.002, 1.0,
@@ -163,28 +167,29 @@ std::vector<Param<Config>> build() {
           .display(1.0, "particles"),
       param("sim.stiffness", "Stiffness alpha", "Simulation", &Config::sim, &SimConfig::stiffness,
             0.0, 1.0, "Paper: how far particles move toward their goals each step (1 = the paper).",
-            Effect::Live)
+            Effect::Info)
           .onlyWhen(paperModel),
       param("sim.damping", "Damping", "Simulation", &Config::sim, &SimConfig::damping, 0.0, 100.0,
             "Linear velocity damping (1/s): velocities fall by exp(-damping t).", Effect::Live),
       param("sim.strain_limiting", "Strain limiting", "Simulation", &Config::sim,
             &SimConfig::strainLimiting, 0, 1,
-            "Limit segment stretch root to tip after shape matching.", Effect::Live),
+            "Limit segment stretch root to tip after shape matching.", Effect::Info),
       param("sim.strain_limit", "Strain limit", "Simulation", &Config::sim, &SimConfig::strainLimit,
-            0.0, 1.0, "Largest relative stretch of a segment, epsilon.", Effect::Live),
+            0.0, 1.0, "Largest relative stretch of a segment, epsilon.", Effect::Info),
       param("sim.pinned", "Pinned particles", "Simulation", &Config::sim, &SimConfig::pinned, 1, 4,
             "Particles from the root that follow the head rigidly (calibrated: at least this many; "
             "see root length).",
-            Effect::Live),
+            Effect::Info),
       param("sim.gravity", "Gravity", "Simulation", &Config::sim, &SimConfig::gravity, -100, 100,
-            "Gravity (m/s^2).", Effect::Live),
+            "Gravity (m/s^2).", Effect::Info),
       param(
           "sim.density", "Linear density", "Simulation", &Config::sim, &SimConfig::density, 1e-7,
           1.0,
-          "Mass per metre of strand (kg/m); particle masses follow segment lengths. Shape matching "
-          "and every acceleration are independent of it; it sets EI = bending stiffness x "
-          "density.",
-          Effect::Live)
+          "Mass per metre of strand (kg/m); particle masses follow segment lengths. It describes "
+          "the hair and changes nothing in its motion: shape matching, gravity, wind drag and "
+          "the contact accelerations are all per unit mass, so a uniform mass scale cancels "
+          "(DESIGN.md section 4); the panel shows EI = bending stiffness x density from it.",
+          Effect::Info)
           .logScale(),
       param("sim.dftl", "DFTL correction", "Simulation", &Config::sim, &SimConfig::dftl, 0.0, 1.0,
             "Dynamic follow-the-leader velocity correction after strain limiting (Mueller et al. "

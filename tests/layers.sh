@@ -22,6 +22,10 @@ check render '#include "(app|tools)/' "render/ includes neither app/ nor tools/"
 # Only the GPU solver talks to GL, and only through gl/.
 hits=$(grep -rnE '#include [<"](epoxy|GL|EGL)/|#include "gl/' "$src/sim" --include='*.h' --include='*.cpp' | grep -v "^$src/sim/gpu/")
 if [ -n "$hits" ]; then echo "FAIL: GL outside sim/gpu:"; echo "$hits"; fail=1; else echo "ok: GL in sim/ only under sim/gpu"; fi
+# GL calls behind gl/: no raw gl* entry point (glFoo( or epoxy's) in sim/, render/, app/ or
+# tools/; they call gl/'s wrappers.
+hits=$(grep -rnE '\bgl[A-Z][A-Za-z0-9]*\(' "$src/sim" "$src/render" "$src/app" "$src/tools" --include='*.h' --include='*.cpp')
+if [ -n "$hits" ]; then echo "FAIL: raw GL calls outside gl/:"; echo "$hits"; fail=1; else echo "ok: GL calls only in gl/"; fi
 libs=$(ldd "$cpu_tests" | grep -iE 'libepoxy|libEGL|libGL|libOpenGL|libglfw|libimgui|libX11')
 if [ -n "$libs" ]; then
   echo "FAIL: the CPU tests link GL, window or GUI libraries:"; echo "$libs"; fail=1

@@ -72,7 +72,9 @@ class RenderScene {
 
   // Renders the current frame as `preset` says (default: the scene's own) and reads it back.
   // `withHair` false draws no strands: the backdrop and the head alone.
-  Image render(int width, int height, const Preset* preset = nullptr, bool withHair = true) {
+  // `amount`: how much of it to draw (default: everything, at the preset's quality).
+  Image render(int width, int height, const Preset* preset = nullptr, bool withHair = true,
+               const DrawAmount& amount = {}) {
     if (!target_ || target_->width() != width || target_->height() != height)
       target_ = std::make_unique<CaptureTarget>(width, height);
     const unsigned buffer = withHair ? positions_.update(sim_->solver()) : 0;
@@ -82,6 +84,7 @@ class RenderScene {
       view.scene = &preset->scene;
       view.look = &preset->view;
     }
+    view.amount = amount;
     renderer_->render(view);
     Image image;
     image.width = width;

@@ -230,6 +230,19 @@ CantileverRun runCantilever(const Setting& s, int particles, int window, double 
   return r;
 }
 
+FrameDriver timingDriver(SceneRunner& run) {
+  DriverOptions options;
+  options.sampleEvery = 0;  // timing only: no measure pass in the timed frames
+  options.timeToCompletion = true;
+  return FrameDriver(
+      run.solver(),
+      [&run] {
+        run.frame();
+        return run.frames();
+      },
+      options);
+}
+
 double msPerSimulatedSecond(const Setting& s, const Scene& scene, int frames) {
   Scene sc = scene;
   s.apply(sc.config);
@@ -239,13 +252,13 @@ double msPerSimulatedSecond(const Setting& s, const Scene& scene, int frames) {
     std::unique_ptr<Solver> solver = s.make();
     if (!solver) return NAN;
     SceneRunner run(*solver, sc);
-    run.frame();
-    solver->finish();
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int f = 0; f < frames; ++f) run.frame();
-    solver->finish();
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    FrameDriver driver = timingDriver(run);
+    driver.step();
+    double ms = 0.0;
+    for (int f = 0; f < frames; ++f) {
+      driver.step();
+      ms += driver.lastStepMs();
+    }
     best = std::min(best, ms / (frames * double(sc.config.sim.dt)));
   }
   return best;

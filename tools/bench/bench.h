@@ -10,6 +10,7 @@
 
 #include "sim/baselines/baseline_solver.h"
 #include "sim/config.h"
+#include "sim/frame_driver.h"
 #include "sim/measure.h"
 #include "sim/solver.h"
 
@@ -77,6 +78,9 @@ inline constexpr double kSagGravity = 1.0;
 
 // Wall-clock ms per simulated second of a setting on a scene: `frames` frames after one
 // warm-up frame, timed alone, the best of three runs.
+// The program's frame driver over a scene runner, for timing: each frame waits for its GPU
+// work to end, and takes no samples.
+FrameDriver timingDriver(SceneRunner& run);
 double msPerSimulatedSecond(const Setting& s, const Scene& scene, int frames);
 
 // Runs `count` jobs on o.threads workers; job(i) must only touch its own results.

@@ -10,22 +10,18 @@
 namespace csm::bench {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // The fastest frame's ms over at least `minFrames` frames and `minMs` ms, after one warm-up
 // frame: the scene does the same work every frame, the machine is shared, and other work
-// only ever adds time.
+// only ever adds time. Frames run on the program's frame driver, each timed to completion.
 double msPerFrame(Solver& solver, const Scene& scene, int minFrames, double minMs, int maxFrames) {
   SceneRunner run(solver, scene);
-  run.frame();
-  solver.finish();
+  FrameDriver driver = timingDriver(run);
+  driver.step();
   std::vector<double> frames;
   double total = 0.0;
   while (int(frames.size()) < maxFrames && (int(frames.size()) < minFrames || total < minMs)) {
-    const auto t0 = Clock::now();
-    run.frame();
-    solver.finish();
-    frames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    driver.step();
+    frames.push_back(driver.lastStepMs());
     total += frames.back();
   }
   return *std::min_element(frames.begin(), frames.end());
