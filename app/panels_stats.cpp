@@ -66,7 +66,9 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
   ImGui::Text("%.1f fps   %.1f ms a frame", s.fps, s.frameMs.mean());
   ImGui::Text("solver %s, %s", f.solver.c_str(), viewer.window().renderer().c_str());
   ImGui::Text("t = %.2f s, frame %ld%s", f.time, f.frame,
-              viewer.loading() ? "  (loading)" : viewer.paused() ? "  (paused)" : "");
+              viewer.loading()  ? "  (loading)"
+              : viewer.paused() ? "  (paused)"
+                                : "");
   ImGui::TextDisabled("picture: %s quality",
                       viewer.lastQuality() == DrawQuality::Interactive ? "interactive" : "full");
   if (ImGui::IsItemHovered())
@@ -97,8 +99,7 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
   }
   ImGui::Separator();
   const FrameSample sample = f.sample.value_or(FrameSample{});
-  ImGui::Text("hair contacts %llu, penetrations %llu",
-              (unsigned long long)sample.contacts.contacts,
+  ImGui::Text("hair contacts %llu, penetrations %llu", (unsigned long long)sample.contacts.contacts,
               (unsigned long long)sample.contacts.penetrations);
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);

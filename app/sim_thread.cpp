@@ -16,8 +16,7 @@ constexpr double kMaxLagSeconds = 0.25;
 
 }  // namespace
 
-std::unique_ptr<SimThread> SimThread::start(Options options, Started* started,
-                                             std::string* error) {
+std::unique_ptr<SimThread> SimThread::start(Options options, Started* started, std::string* error) {
   std::unique_ptr<SimThread> t(new SimThread(std::move(options)));
   std::string startError;
   Started info;
@@ -98,8 +97,9 @@ void SimThread::run(std::string* startError, Started* started) {
         if (pending_.any()) break;
         if (canStep()) {
           if (!options_.paced || paused_) break;
-          const auto due = anchorWall_ + std::chrono::duration_cast<Clock::duration>(
-                                             std::chrono::duration<double>(sim_->time() - anchorSim_));
+          const auto due =
+              anchorWall_ + std::chrono::duration_cast<Clock::duration>(
+                                std::chrono::duration<double>(sim_->time() - anchorSim_));
           const auto now = Clock::now();
           if (now >= due) {
             if (std::chrono::duration<double>(now - due).count() > kMaxLagSeconds) {

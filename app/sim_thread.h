@@ -100,7 +100,7 @@ struct SimEvent {
 class SimThread {
  public:
   struct Options {
-    SolverFactory makeSolver;  // by name; the thread makes its solver with its context current
+    SolverFactory makeSolver;    // by name; the thread makes its solver with its context current
     std::string solver = "gpu";  // falls back to "cpu", with a warning, when it fails
     // The thread's context, sharing objects with the UI's; null for CPU solvers only. The
     // SimThread owns it and destroys it on the thread that destroys the SimThread.
@@ -157,7 +157,7 @@ class SimThread {
   std::vector<SimEvent> takeEvents();
   // Every frame's time and sample so far (with Options::recordMetrics).
   MetricsRecorder metrics() const;
-  long ticket() const;  // the last ticket handed out
+  long ticket() const;        // the last ticket handed out
   long latestSerial() const;  // of the latest frame published (0 before the first)
 
  private:

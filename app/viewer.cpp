@@ -170,9 +170,9 @@ void Viewer::handle(const SimEvent& e) {
         pendingOpen_.reset();
         userPose_ = Pose{};
         afterSceneChange();
-        log(MessageLevel::Info,
-            "opened " + (presetPath_.empty() ? "the built-in preset" : presetPath_) + ": " +
-                e.text);
+        log(MessageLevel::Info, "opened " +
+                                    (presetPath_.empty() ? "the built-in preset" : presetPath_) +
+                                    ": " + e.text);
         stiffnessWarning_.clear();
       }
       break;
@@ -585,9 +585,9 @@ void Viewer::renderScene(bool capture) {
       stats_.renderStages = renderer_->stageTimes();
       stats_.drawnStrands = renderer_->drawnStrands();
     } else {
-      sceneFbo_.clearColor(0, std::array<float, 4>{look.render.background.x,
-                                                   look.render.background.y,
-                                                   look.render.background.z, 1.0f});
+      sceneFbo_.clearColor(0,
+                           std::array<float, 4>{look.render.background.x, look.render.background.y,
+                                                look.render.background.z, 1.0f});
     }
     drawnKey_ = key;
     lastQuality_ = quality;
@@ -719,9 +719,9 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
                  "csmhair: %ld simulated frames in %.2f s (%.1f ms a frame, the last step "
                  "%.1f ms); %ld UI frames, %.1f ms apart on average; %zu strands, %zu particles, "
                  "solver %s, %s\n",
-                 f.frame, seconds, f.frame > 0 ? 1000.0 * seconds / double(f.frame) : 0.0,
-                 f.stepMs, viewer->framesDrawn(), s.frameMs.mean(), f.strands, f.particles,
-                 f.solver.c_str(), viewer->window().renderer().c_str());
+                 f.frame, seconds, f.frame > 0 ? 1000.0 * seconds / double(f.frame) : 0.0, f.stepMs,
+                 viewer->framesDrawn(), s.frameMs.mean(), f.strands, f.particles, f.solver.c_str(),
+                 viewer->window().renderer().c_str());
   }
   if (!options.metrics.empty()) {
     RunDescription d;

@@ -111,7 +111,7 @@ class Viewer {
   // --- Running ---------------------------------------------------------------------------
   void setPaused(bool paused);
   bool paused() const { return paused_; }
-  void stepOnce();  // one frame, paused
+  void stepOnce();   // one frame, paused
   void resetHair();  // back to rest, time 0; clears a NaN stop
   void resetView();  // the preset's camera
   void frameHead();

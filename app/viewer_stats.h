@@ -11,8 +11,8 @@
 namespace csm {
 
 struct ViewerStats {
-  History frameMs{600};  // wall time between UI frames: 10 s at 60 fps
-  double fps = 0.0;      // over the last second
+  History frameMs{600};                 // wall time between UI frames: 10 s at 60 fps
+  double fps = 0.0;                     // over the last second
   std::vector<StageTime> renderStages;  // of the last scene picture drawn
   std::size_t drawnStrands = 0;         // in the last scene picture
 };

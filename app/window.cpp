@@ -59,11 +59,21 @@ class SharedWindowContext final : public gl::Context {
 void noteInput(GLFWwindow* w) {
   if (auto* window = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))) window->noteInput();
 }
-void onCursor(GLFWwindow* w, double, double) { noteInput(w); }
-void onButton(GLFWwindow* w, int, int, int) { noteInput(w); }
-void onScroll(GLFWwindow* w, double, double) { noteInput(w); }
-void onKey(GLFWwindow* w, int, int, int, int) { noteInput(w); }
-void onChar(GLFWwindow* w, unsigned) { noteInput(w); }
+void onCursor(GLFWwindow* w, double, double) {
+  noteInput(w);
+}
+void onButton(GLFWwindow* w, int, int, int) {
+  noteInput(w);
+}
+void onScroll(GLFWwindow* w, double, double) {
+  noteInput(w);
+}
+void onKey(GLFWwindow* w, int, int, int, int) {
+  noteInput(w);
+}
+void onChar(GLFWwindow* w, unsigned) {
+  noteInput(w);
+}
 
 }  // namespace
 
@@ -137,10 +147,10 @@ std::unique_ptr<gl::Context> GlfwWindow::createShared(std::string* error) {
   GLFWwindow* hidden = glfwCreateWindow(1, 1, "csmhair simulation", nullptr, window_);
   if (!hidden) {
     if (error)
-      *error = "cannot create a shared context (" +
-               (lastGlfwError().empty() ? std::string("glfwCreateWindow failed")
-                                        : lastGlfwError()) +
-               ")";
+      *error =
+          "cannot create a shared context (" +
+          (lastGlfwError().empty() ? std::string("glfwCreateWindow failed") : lastGlfwError()) +
+          ")";
     return nullptr;
   }
   return std::make_unique<SharedWindowContext>(hidden, *this);

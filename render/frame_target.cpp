@@ -27,7 +27,8 @@ void FrameTarget::resize(int width, int height, int samples) {
       .attach(GL_DEPTH_ATTACHMENT, depth_)
       .setDrawBuffers({GL_COLOR_ATTACHMENT0});
   std::string message;
-  if (!fbo_.checkComplete(&message)) gl::logMessage(gl::LogLevel::Error, "frame target: " + message);
+  if (!fbo_.checkComplete(&message))
+    gl::logMessage(gl::LogLevel::Error, "frame target: " + message);
 }
 
 }  // namespace csm

@@ -91,8 +91,8 @@ Selection select(std::size_t guides, int followCount, float share) {
   if (wanted >= double(guides)) {
     // Follow hairs go first: whole guides with fewer of their followers.
     s.guides = guides;
-    s.instances = std::clamp(int(std::floor(wanted / double(std::max<std::size_t>(guides, 1)))),
-                             1, perGuide);
+    s.instances =
+        std::clamp(int(std::floor(wanted / double(std::max<std::size_t>(guides, 1)))), 1, perGuide);
   } else {
     s.guides = std::size_t(wanted);
     s.instances = 1;
@@ -136,8 +136,7 @@ struct HairRenderer::Programs {
     one(p->hair, "hair", "render/hair.vert", "render/hair.frag", defines);
     one(p->headDepth, "head depth", "render/head.vert", "render/depth_only.frag", shadowDefines);
     one(p->head, "head", "render/head.vert", "render/head.frag", defines);
-    one(p->background, "background", "render/fullscreen.vert", "render/background.frag",
-        defines);
+    one(p->background, "background", "render/fullscreen.vert", "render/background.frag", defines);
     one(p->post, "post", "render/fullscreen.vert", "render/post.frag", defines);
     if (log) *log = all;
     return ok ? std::move(p) : nullptr;
@@ -161,8 +160,8 @@ std::unique_ptr<Renderer> Renderer::create(std::string* error) {
 
 HairRenderer::HairRenderer() : clock_(gl::queryCaps().timerQuery) {
   const gl::Caps caps = gl::queryCaps();
-  maxSamples_ = std::max(1, std::min({caps.maxSamples, caps.maxColorTextureSamples,
-                                      caps.maxDepthTextureSamples}));
+  maxSamples_ = std::max(
+      1, std::min({caps.maxSamples, caps.maxColorTextureSamples, caps.maxDepthTextureSamples}));
   clock_.setSynchronous(caps.software);
   emptyVao_ = gl::VertexArray();
   frameUniforms_ = gl::Buffer(GLsizeiptr(sizeof(FrameUniforms)), nullptr, GL_DYNAMIC_DRAW);
@@ -199,7 +198,7 @@ FrameTarget& HairRenderer::targetFor(int width, int height, int samples) {
   if (targets_.size() > 2)
     for (auto it = targets_.begin(); it != targets_.end();)
       it = it->second.get() != t.get() && it->second.get() != target_ ? targets_.erase(it)
-                                                                       : std::next(it);
+                                                                      : std::next(it);
   return *t;
 }
 
@@ -209,7 +208,7 @@ StrandGeometry& HairRenderer::geometryFor(int subdivision) {
   if (geometries_.size() > 2)
     for (auto it = geometries_.begin(); it != geometries_.end();)
       it = it->second.get() != g.get() && it->second.get() != geometry_ ? geometries_.erase(it)
-                                                                         : std::next(it);
+                                                                        : std::next(it);
   geometry_ = g.get();
   return *g;
 }
@@ -223,7 +222,7 @@ ShadowMaps& HairRenderer::shadowFor(int size) {
   if (shadowMaps_.size() > 2)
     for (auto it = shadowMaps_.begin(); it != shadowMaps_.end();)
       it = it->second.get() != m.get() && it->second.get() != shadow_ ? shadowMaps_.erase(it)
-                                                                       : std::next(it);
+                                                                      : std::next(it);
   shadow_ = m.get();
   return *m;
 }

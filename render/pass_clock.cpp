@@ -13,7 +13,8 @@ void PassClock::begin(const char* name) {
     gl::finish();
     const auto now = std::chrono::steady_clock::now();
     if (!open_.empty())
-      frame_.push_back({open_, std::chrono::duration<double, std::milli>(now - openStart_).count()});
+      frame_.push_back(
+          {open_, std::chrono::duration<double, std::milli>(now - openStart_).count()});
     open_ = name;
     openStart_ = now;
   } else if (queries_) {

@@ -96,8 +96,7 @@ gl::Texture makeScalpMap(const Groom& groom, const std::vector<Sphere>& spheres)
   const ScalpTexels t = scalpTexels(groom, spheres);
   gl::Texture map = gl::Texture::create2DArray(GL_RGBA8, t.size, t.size, t.layers);
   map.setFilter(GL_LINEAR, GL_LINEAR).setWrap(GL_CLAMP_TO_EDGE);
-  map.setSubImage(0, 0, 0, 0, t.size, t.size, t.layers, GL_RGBA, GL_UNSIGNED_BYTE,
-                  t.rgba.data());
+  map.setSubImage(0, 0, 0, 0, t.size, t.size, t.layers, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba.data());
   return map;
 }
 

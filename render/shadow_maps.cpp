@@ -33,8 +33,7 @@ void ShadowMaps::resize(int size) {
   opacityFbo_.attach(GL_COLOR_ATTACHMENT0, opacityLayers_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
   for (const gl::Framebuffer* f : {&lightDepthFbo_, &headShadowFbo_, &opacityFbo_}) {
     std::string message;
-    if (!f->checkComplete(&message))
-      gl::logMessage(gl::LogLevel::Error, "shadow maps: " + message);
+    if (!f->checkComplete(&message)) gl::logMessage(gl::LogLevel::Error, "shadow maps: " + message);
   }
 }
 

@@ -67,7 +67,8 @@ std::vector<Param<ViewConfig>> build() {
       param("render.interactive", "Interactive quality", "Rendering|Interactive",
             &ViewConfig::render, &RenderConfig::interactive, 0, 1,
             "While the camera moves or the hair simulates, draw less: a share of the strands, "
-            "a plainer curve, fewer samples, a smaller shadow map. A still view and every capture are drawn in "
+            "a plainer curve, fewer samples, a smaller shadow map. A still view and every capture "
+            "are drawn in "
             "full.",
             Effect::Render),
       param("render.interactive_amount", "Strands drawn", "Rendering|Interactive",

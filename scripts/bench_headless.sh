@@ -2,14 +2,16 @@
 # Headless ms per frame of a preset, per binary, the binaries alternated in one run: each
 # binary runs the preset for A and for B frames, and (wall(B) - wall(A)) / (B - A) is its cost
 # per frame without start-up (context, shaders, growing the groom). Two modes: simulation
-# only (--no-render) and simulation with the frame drawn off-screen (the capture path, no
-# files written).
+# only (--no-render), and the capture path (--out: every frame drawn off-screen and written
+# as a PNG to a temporary folder).
 #   scripts/bench_headless.sh PRESET A B BIN...
-# OLD_PRESETS=DIR OLD_BIN=BIN: that binary reads its presets from DIR.
+# OLD_PRESETS=DIR OLD_BIN=BIN: that binary reads its presets from DIR. MODES: a subset.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 preset=$1 a=$2 b=$3
 shift 3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
 wall() {  # wall BIN FILE FRAMES ARGS...
   local bin=$1 file=$2 frames=$3
   shift 3
@@ -23,9 +25,9 @@ echo "Load before: $(uptime | sed 's/.*load average: //')"
 echo
 echo "| preset | mode | binary | wall $a frames (s) | wall $b frames (s) | ms / frame |"
 echo "|---|---|---|---|---|---|"
-for mode in no-render render; do
-  args=()
-  [ "$mode" = render ] || args=(--no-render)
+for mode in ${MODES:-no-render capture}; do
+  args=(--no-render)
+  [ "$mode" != capture ] || args=(--out "$tmp/frames")
   for bin in "$@"; do
     file="$root/presets/$preset.json"
     [ "$bin" != "${OLD_BIN:-}" ] || file="$OLD_PRESETS/$preset.json"

@@ -143,38 +143,39 @@ struct Param : ParamInfo {
   }
 };
 
+namespace detail {
+template <class Root, class T>
+Param<Root> row(std::string_view key, std::string_view label, std::string_view group, double min,
+                double max, std::string_view description, Effect effect,
+                std::function<void*(Root&)> at) {
+  Param<Root> p;
+  p.key = key;
+  p.label = label;
+  p.group = group;
+  p.type = paramTypeOf<T>();
+  p.min = min;
+  p.max = max;
+  p.description = description;
+  p.effect = effect;
+  p.at = std::move(at);
+  return p;
+}
+}  // namespace detail
+
 // A row for the field `Root::*member` or `Root::*outer.*inner`: its type from the field's.
 template <class Root, class T>
 Param<Root> param(std::string_view key, std::string_view label, std::string_view group,
                   T Root::*member, double min, double max, std::string_view description,
                   Effect effect) {
-  Param<Root> p;
-  p.key = key;
-  p.label = label;
-  p.group = group;
-  p.type = detail::paramTypeOf<T>();
-  p.min = min;
-  p.max = max;
-  p.description = description;
-  p.effect = effect;
-  p.at = [member](Root& r) -> void* { return &(r.*member); };
-  return p;
+  return detail::row<Root, T>(key, label, group, min, max, description, effect,
+                              [member](Root& r) -> void* { return &(r.*member); });
 }
 template <class Root, class A, class T>
 Param<Root> param(std::string_view key, std::string_view label, std::string_view group,
                   A Root::*outer, T A::*inner, double min, double max, std::string_view description,
                   Effect effect) {
-  Param<Root> p;
-  p.key = key;
-  p.label = label;
-  p.group = group;
-  p.type = detail::paramTypeOf<T>();
-  p.min = min;
-  p.max = max;
-  p.description = description;
-  p.effect = effect;
-  p.at = [outer, inner](Root& r) -> void* { return &((r.*outer).*inner); };
-  return p;
+  return detail::row<Root, T>(key, label, group, min, max, description, effect,
+                              [outer, inner](Root& r) -> void* { return &((r.*outer).*inner); });
 }
 
 // The rows of a part of `Outer` (its member `part`), as rows of `Outer`.

@@ -182,14 +182,13 @@ std::vector<Param<Config>> build() {
             Effect::Info),
       param("sim.gravity", "Gravity", "Simulation", &Config::sim, &SimConfig::gravity, -100, 100,
             "Gravity (m/s^2).", Effect::Info),
-      param(
-          "sim.density", "Linear density", "Simulation", &Config::sim, &SimConfig::density, 1e-7,
-          1.0,
-          "Mass per metre of strand (kg/m); particle masses follow segment lengths. It describes "
-          "the hair and changes nothing in its motion: shape matching, gravity, wind drag and "
-          "the contact accelerations are all per unit mass, so a uniform mass scale cancels "
-          "(DESIGN.md section 4); the panel shows EI = bending stiffness x density from it.",
-          Effect::Info)
+      param("sim.density", "Linear density", "Simulation", &Config::sim, &SimConfig::density, 1e-7,
+            1.0,
+            "Mass per metre of strand (kg/m); particle masses follow segment lengths. It describes "
+            "the hair and changes nothing in its motion: shape matching, gravity, wind drag and "
+            "the contact accelerations are all per unit mass, so a uniform mass scale cancels "
+            "(DESIGN.md section 4); the panel shows EI = bending stiffness x density from it.",
+            Effect::Info)
           .logScale(),
       param("sim.dftl", "DFTL correction", "Simulation", &Config::sim, &SimConfig::dftl, 0.0, 1.0,
             "Dynamic follow-the-leader velocity correction after strain limiting (Mueller et al. "

@@ -44,7 +44,7 @@ inline Config liveScene(bool paper = false) {
 }
 
 struct LiveCheck {
-  std::vector<std::string> tested;     // keys
+  std::vector<std::string> tested;    // keys
   std::vector<std::string> noEffect;  // keys none of whose values changed the motion
 };
 

@@ -25,8 +25,7 @@ constexpr gl::Barrier kPassBarrier = gl::Barrier::Storage | gl::Barrier::Texture
 }  // namespace
 
 GpuSolver::GpuSolver(bool cpuClock)
-    : timer_(cpuClock),
-      samples_([this](const uint32_t* counters) {
+    : timer_(cpuClock), samples_([this](const uint32_t* counters) {
         sampledContacts_ =
             ContactStats{counters[CSM_COUNTER_CONTACTS], counters[CSM_COUNTER_PENETRATIONS]};
         grid_.countersSeen(counters);
@@ -266,15 +265,13 @@ ContactStats GpuSolver::readContactStats() {
 }
 
 void GpuSolver::requestSample(long frame) {
-  const uint32_t groups =
-      uint32_t((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);
+  const uint32_t groups = uint32_t((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);
   samples_.request(
       frame, groups,
       [&] {
         bindAll();
         passes_.measure
-            .set("sphereBase",
-                 unsigned((lastSubsteps_ - 1) * int(config_.head.spheres.size())))
+            .set("sphereBase", unsigned((lastSubsteps_ - 1) * int(config_.head.spheres.size())))
             .run(uint32_t(hair_.particles));
       },
       measure_, grid_.counters());

@@ -40,7 +40,7 @@ class SampleRing {
 
   CountersSeen seen_;
   std::array<Slot, kSlots> slots_;
-  std::deque<int> pending_;         // oldest first
+  std::deque<int> pending_;        // oldest first
   std::deque<FrameSample> ready_;  // read off a full ring, not taken yet
 };
 

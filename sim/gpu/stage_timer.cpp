@@ -4,8 +4,8 @@
 
 namespace csm::gpu {
 namespace {
-constexpr const char* kStageNames[kStageCount] = {"integrate", "shape_matching",
-                                                  "strain_limiting", "grid", "contacts"};
+constexpr const char* kStageNames[kStageCount] = {"integrate", "shape_matching", "strain_limiting",
+                                                  "grid", "contacts"};
 }
 
 void StageTimer::beginFrame() {

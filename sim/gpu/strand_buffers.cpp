@@ -38,8 +38,7 @@ void StrandBuffers::upload(const HairState& st, const glm::dquat& head) {
   fill(particleStrand, st.particleStrand);
   fill(predicted, st.position);
   fill(strandOrder, order);
-  fill(rotation,
-       std::vector<glm::vec4>(particles, glm::vec4(head.x, head.y, head.z, head.w)));
+  fill(rotation, std::vector<glm::vec4>(particles, glm::vec4(head.x, head.y, head.z, head.w)));
   view(positionTex, position, GL_RGBA32F);
   view(velocityTex, velocity, GL_RGBA32F);
   view(restTex, rest, GL_RGBA32F);

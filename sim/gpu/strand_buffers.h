@@ -24,7 +24,7 @@ struct StrandBuffers {
 
   size_t particles = 0, strands = 0;
   uint32_t segments = 0;
-  int longestStrand = 0;    // particles
+  int longestStrand = 0;     // particles
   double meanSegment = 0.0;  // mean rest length of a segment (m)
 
   gl::Buffer rest{gl::NoCreate}, position{gl::NoCreate}, velocity{gl::NoCreate},
