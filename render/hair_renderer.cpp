@@ -291,14 +291,15 @@ void HairRenderer::render(const FrameView& frame) {
     scalp_ = makeScalpMap(*frame.groom, c.head.spheres);
     scalpKey_ = {frame.groom, frame.generation};
   }
+  FrameTarget& target = targetFor(frame.width, frame.height, samples);
+  target_ = &target;
+  // The programs for the samples the driver made, which may be more than asked for.
   std::string log;
-  const Programs* programs = programsFor(samples, &log);
+  const Programs* programs = programsFor(target.samples(), &log);
   if (!programs) {
     gl::logMessage(gl::LogLevel::Error, "HairRenderer: " + log);
     return;
   }
-  FrameTarget& target = targetFor(frame.width, frame.height, samples);
-  target_ = &target;
   ShadowMaps& shadow = shadowFor(shadowSize);
   head_.update(worldSpheres(c.head.spheres, frame.head));
 
@@ -320,8 +321,8 @@ void HairRenderer::render(const FrameView& frame) {
   // Shadow: deep opacity maps and the head's depth, from the light. Each stage's timer
   // starts after its first framebuffer is bound: llvmpipe times a query from the first
   // rasterizer command after the begin, and one begun before a bind never starts.
-  shadow.clear();
   if (look.shadows) {
+    shadow.clear();
     clock_.begin("shadow");
     gl::setViewport(0, 0, shadow.size(), shadow.size());
     gl::applyDrawState({.depthTest = true});

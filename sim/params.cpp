@@ -103,7 +103,7 @@ std::vector<Param<Config>> build() {
             "the scalp the hair grows from.",
             Effect::Rebuild),
       param("head.motion", "Motion", "Head", &Config::head, &HeadConfig::motion, 0, 0,
-            "How the head moves: none, nod, shake, spin, sway or bounce.", Effect::Info)
+            "How the head moves: none, nod, shake, spin, sway or bounce.", Effect::Live)
           .choices({"none", "nod", "shake", "spin", "sway", "bounce"}),
       param("head.amplitude", "Amplitude", "Head", &Config::head, &HeadConfig::amplitude, 0.0,
             180.0, "Amplitude of the motion: degrees, or centimetres for bounce.", Effect::Live),
@@ -121,7 +121,7 @@ std::vector<Param<Config>> build() {
           "substeps, particle count and density (DESIGN.md section 4). paper: a window in "
           "particles and alpha per step, as the paper does: more substeps stiffen the hair, more "
           "particles soften it.",
-          Effect::Info)
+          Effect::Live)
           .choices({"paper", "calibrated"}),
       param("sim.substeps", "Substeps", "Simulation", &Config::sim, &SimConfig::substeps, 1, 64,
             "Steps per frame (paper); the fewest steps per frame (calibrated: more when the "
@@ -131,7 +131,7 @@ std::vector<Param<Config>> build() {
             1, 256,
             "Calibrated: the most steps per frame the stiffness may ask for. When it binds, the "
             "stiffest strands are softer than asked, and the log and the panel say so.",
-            Effect::Info)
+            Effect::Live)
           .onlyWhen(calibratedModel),
       param("sim.window_length", "Stiffness window", "Simulation", &Config::sim,
             &SimConfig::windowLength, 0.002, 1.0,
@@ -167,21 +167,21 @@ std::vector<Param<Config>> build() {
           .display(1.0, "particles"),
       param("sim.stiffness", "Stiffness alpha", "Simulation", &Config::sim, &SimConfig::stiffness,
             0.0, 1.0, "Paper: how far particles move toward their goals each step (1 = the paper).",
-            Effect::Info)
+            Effect::Live)
           .onlyWhen(paperModel),
       param("sim.damping", "Damping", "Simulation", &Config::sim, &SimConfig::damping, 0.0, 100.0,
             "Linear velocity damping (1/s): velocities fall by exp(-damping t).", Effect::Live),
       param("sim.strain_limiting", "Strain limiting", "Simulation", &Config::sim,
             &SimConfig::strainLimiting, 0, 1,
-            "Limit segment stretch root to tip after shape matching.", Effect::Info),
+            "Limit segment stretch root to tip after shape matching.", Effect::Live),
       param("sim.strain_limit", "Strain limit", "Simulation", &Config::sim, &SimConfig::strainLimit,
-            0.0, 1.0, "Largest relative stretch of a segment, epsilon.", Effect::Info),
+            0.0, 1.0, "Largest relative stretch of a segment, epsilon.", Effect::Live),
       param("sim.pinned", "Pinned particles", "Simulation", &Config::sim, &SimConfig::pinned, 1, 4,
             "Particles from the root that follow the head rigidly (calibrated: at least this many; "
             "see root length).",
-            Effect::Info),
+            Effect::Live),
       param("sim.gravity", "Gravity", "Simulation", &Config::sim, &SimConfig::gravity, -100, 100,
-            "Gravity (m/s^2).", Effect::Info),
+            "Gravity (m/s^2).", Effect::Live),
       param("sim.density", "Linear density", "Simulation", &Config::sim, &SimConfig::density, 1e-7,
             1.0,
             "Mass per metre of strand (kg/m); particle masses follow segment lengths. It describes "

@@ -7,7 +7,7 @@ using namespace csm;
 
 TEST_CASE("every live parameter changes the motion when changed live (CPU)", "[params][live]") {
   const test::LiveCheck check = test::checkLiveParams(std::make_unique<CpuSolver>());
-  CHECK(check.tested.size() >= 25);
+  CHECK(check.tested.size() >= 33);
   INFO("no effect: " << Catch::Detail::stringify(check.noEffect));
   CHECK(check.noEffect.empty());
 }

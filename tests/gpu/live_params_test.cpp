@@ -15,7 +15,7 @@ TEST_CASE("every live parameter changes the motion when changed live (GPU)", "[p
   INFO(error);
   REQUIRE(gpu);
   const test::LiveCheck check = test::checkLiveParams(std::move(gpu));
-  CHECK(check.tested.size() >= 25);
+  CHECK(check.tested.size() >= 33);
   INFO("no effect: " << Catch::Detail::stringify(check.noEffect));
   CHECK(check.noEffect.empty());
 }
