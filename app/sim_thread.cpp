@@ -1,7 +1,5 @@
 #include "app/sim_thread.h"
 
-#include <future>
-
 #include "sim/frame_driver.h"
 #include "sim/simulation.h"
 
@@ -37,9 +35,7 @@ std::unique_ptr<SimThread> SimThread::start(Options options, Started* started, s
   return t;
 }
 
-SimThread::SimThread(Options options) : options_(std::move(options)) {
-  if (options_.frameLimit >= 0) frameLimit_ = options_.frameLimit;
-}
+SimThread::SimThread(Options options) : options_(std::move(options)) {}
 
 SimThread::~SimThread() {
   if (thread_.joinable()) {
@@ -141,12 +137,13 @@ void SimThread::run(std::string* startError, Started* started) {
 void SimThread::apply(Pending& p, long ticket) {
   std::string error;
   const long generation = sim_->generation();
+  bool opened = false;
   if (p.open) {
     const auto& [config, baseDir] = *p.open;
-    sim_->setUserPose(Pose{});
     if (sim_->load(config, baseDir, &error)) {
+      opened = true;
       loaded_ = true;
-      driver_->restart();
+      sim_->setUserPose(Pose{});
       event(SimEvent::Kind::Opened, p.openTicket, counts());
     } else {
       event(SimEvent::Kind::OpenFailed, p.openTicket, error);
@@ -158,18 +155,13 @@ void SimThread::apply(Pending& p, long ticket) {
     else if (sim_->generation() != generation && !p.open)
       event(SimEvent::Kind::Regrew, p.configTicket, counts());
   }
-  if (p.reset && loaded_) {
-    sim_->reset();
-    driver_->restart();
-  }
+  if (p.reset && loaded_) sim_->reset();
   if (p.userPose) sim_->setUserPose(*p.userPose);
   if (p.paused) paused_ = *p.paused;
   steps_ += p.steps;
-  if (p.frameLimit) frameLimit_ = *p.frameLimit;
-  const bool restarted = sim_->generation() != generation || p.reset || p.open;
+  const bool restarted = sim_->generation() != generation || (p.reset && loaded_) || opened;
   if (restarted) {
     driver_->restart();
-    nanReported_ = -1;
     maxStrain_.clear();
   }
   // The paced clock starts again from here when the hair starts again or starts moving; not
@@ -183,7 +175,7 @@ void SimThread::apply(Pending& p, long ticket) {
 
 bool SimThread::canStep() const {
   if (!loaded_ || driver_->stopped()) return false;
-  if (frameLimit_ >= 0 && sim_->frame() >= frameLimit_) return false;
+  if (options_.frameLimit >= 0 && sim_->frame() >= options_.frameLimit) return false;
   return !paused_ || steps_ > 0;
 }
 
@@ -197,8 +189,8 @@ void SimThread::stepFrame() {
     recorder_.addFrame(driver_->lastStepMs(), sim_->solver().stageTimes());
     for (const FrameSample& s : samples) recorder_.addSample(s);
   }
-  if (driver_->stopped() && nanReported_ != driver_->nanFrame()) {
-    nanReported_ = driver_->nanFrame();
+  // canStep() held before this step, so a stop now is new.
+  if (driver_->stopped()) {
     event(SimEvent::Kind::Nan, applied_,
           "the simulation produced NaN at frame " + std::to_string(driver_->nanFrame()) + " (" +
               std::to_string(driver_->nanParticles()) + " particles)");
@@ -264,8 +256,6 @@ void SimThread::publish(long ticket) {
     f->maxStrain = maxStrain_;
     f->nanFrame = driver_->nanFrame();
     f->nanParticles = driver_->nanParticles();
-    f->paused = paused_;
-    f->atLimit = frameLimit_ >= 0 && sim_->frame() >= frameLimit_;
     f->idle = !canStep();
     const unsigned buffer = gl_ ? solver.positionBuffer() : 0;
     if (buffer != 0 && f->particles > 0) {
@@ -333,10 +323,6 @@ long SimThread::setPaused(bool paused) {
 
 long SimThread::step() {
   return post([](Pending& p, long) { ++p.steps; });
-}
-
-long SimThread::setFrameLimit(long frame) {
-  return post([&](Pending& p, long) { p.frameLimit = frame; });
 }
 
 long SimThread::latestSerial() const {

@@ -73,9 +73,7 @@ struct SimFrame {
   // steps no further until a reset or a regrow.
   long nanFrame = -1;
   uint64_t nanParticles = 0;
-  bool paused = false;
-  bool atLimit = false;  // stopped at Options::frameLimit
-  bool idle = false;     // will step no further without a command (paused, stopped, limit)
+  bool idle = false;  // will step no further without a command (paused, stopped, limit)
   // This frame's positions (vec4 per particle): a buffer of the share group, to draw after
   // SimThread::acquire() (which orders the window's context after the copy), or a host copy.
   unsigned positionBuffer = 0;
@@ -136,7 +134,6 @@ class SimThread {
   long setUserPose(const Pose& pose);
   long setPaused(bool paused);
   long step();  // one frame, while paused
-  long setFrameLimit(long frame);
 
   // Waits until every command posted so far is applied and published; false on timeout.
   bool sync(double timeoutSeconds = 120.0);
@@ -169,11 +166,8 @@ class SimThread {
     std::optional<Pose> userPose;
     std::optional<bool> paused;
     int steps = 0;
-    std::optional<long> frameLimit;
     bool quit = false;
-    bool any() const {
-      return open || config || reset || userPose || paused || steps > 0 || frameLimit || quit;
-    }
+    bool any() const { return open || config || reset || userPose || paused || steps > 0 || quit; }
   };
   struct Slot {
     gl::Buffer buffer{gl::NoCreate};
@@ -214,10 +208,8 @@ class SimThread {
   bool loaded_ = false;
   bool paused_ = false;
   int steps_ = 0;
-  long frameLimit_ = -1;
   long applied_ = 0;
   long serial_ = 0;
-  long nanReported_ = -1;  // the frame whose NaN event went out
   History maxStrain_{120};
   // Real-time pacing: the wall time and sim time the clock last started from.
   std::chrono::steady_clock::time_point anchorWall_;

@@ -93,7 +93,6 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   v->sim_ = SimThread::start(std::move(so), &started, error);
   if (!v->sim_) return nullptr;
   if (!started.warning.empty()) v->log(MessageLevel::Warning, started.warning);
-  v->solverName_ = started.solver;
   v->takeSimFrame();
   v->panels_ = std::make_unique<PanelState>();
   v->lastFrameStart_ = v->fpsWindowStart_ = Clock::now();
@@ -198,8 +197,7 @@ void Viewer::handle(const SimEvent& e) {
       break;
     case SimEvent::Kind::Nan:
       if (e.ticket >= resetTicket_) {
-        paused_ = true;
-        sim_->setPaused(true);
+        setPaused(true);
         log(MessageLevel::Error, e.text + "; paused. R resets the hair to rest.");
       }
       break;
@@ -232,8 +230,7 @@ void Viewer::startOpen(const Preset& preset, const std::string& baseDir, const s
   p.path = path;
   // Running, from the new scene's first frame on (posted first: the open is the last
   // command open() waits for).
-  paused_ = false;
-  sim_->setPaused(false);
+  setPaused(false);
   p.ticket = sim_->open(preset.scene, baseDir);
   pendingOpen_ = std::move(p);
   // A NaN of the old scene goes with it.
@@ -483,8 +480,8 @@ bool Viewer::screenshotDue() const {
   return screenshotFrame_ < 0 || frame_->frame >= screenshotFrame_ || frame_->idle;
 }
 
-void Viewer::viewChanged(bool moved) {
-  if (moved) lastMotion_ = Clock::now();
+void Viewer::viewChanged() {
+  lastMotion_ = Clock::now();
 }
 
 void Viewer::handleKeys() {
@@ -513,23 +510,23 @@ void Viewer::handleMouse() {
     // Turn the head about the neck: the hair reacts on the next step.
     userPose_ = dragHead(userPose_, current_.view.camera, current_.scene.head, d.x, d.y);
     sim_->setUserPose(userPose_);
-    viewChanged(true);
+    viewChanged();
   } else if (moved && (middle || (left && io.KeyShift))) {
     Preset next = current_;
     panCamera(next.view.camera, d.x, d.y, window_->framebufferSize().height);
     applyConfig(next);
-    viewChanged(true);
+    viewChanged();
   } else if (moved && left) {
     Preset next = current_;
     orbitCamera(next.view.camera, d.x, d.y);
     applyConfig(next);
-    viewChanged(true);
+    viewChanged();
   }
   if (io.MouseWheel != 0.0f) {
     Preset next = current_;
     zoomCamera(next.view.camera, io.MouseWheel);
     applyConfig(next);
-    viewChanged(true);
+    viewChanged();
   }
 }
 

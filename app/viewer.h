@@ -140,7 +140,6 @@ class Viewer {
   // The latest frame of the simulation the window has taken in: what is drawn and what the
   // Stats panel shows (time, counts, stiffness, samples, NaN).
   const SimFrame& simFrame() const { return *frame_; }
-  const std::string& solverName() const { return solverName_; }
   const Preset& preset() const { return current_; }  // what runs and is shown
   Preset& editedConfig() { return edited_; }         // what the widgets edit
   const Preset& loadedConfig() const { return loaded_; }
@@ -206,7 +205,7 @@ class Viewer {
   void afterSceneChange();
   void updateTitle();
   void checkStiffness();
-  void viewChanged(bool moved);
+  void viewChanged();
 
   ViewerOptions options_;
   std::unique_ptr<GlfwWindow> window_;
@@ -214,7 +213,6 @@ class Viewer {
   std::unique_ptr<HairRenderer> renderer_;
   std::string rendererError_;
   std::unique_ptr<SimThread> sim_;
-  std::string solverName_;
   std::shared_ptr<const SimFrame> frame_ = std::make_shared<SimFrame>();
   gl::Buffer uploaded_{gl::NoCreate};  // a CPU solver's positions
   long uploadedSerial_ = -1;

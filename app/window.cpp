@@ -45,10 +45,6 @@ class SharedWindowContext final : public gl::Context {
   void releaseCurrent() override {
     if (glfwGetCurrentContext() == window_) glfwMakeContextCurrent(nullptr);
   }
-  std::unique_ptr<gl::Context> createShared(std::string* error) override {
-    if (error) *error = "a shared context shares no further";
-    return nullptr;
-  }
 
  private:
   GLFWwindow* window_;

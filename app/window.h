@@ -32,9 +32,11 @@ class GlfwWindow final : public gl::Context {
 
   bool makeCurrent() override;
   void releaseCurrent() override;
-  // A hidden 1x1 window whose context shares this one's objects: the simulation thread's.
-  // Call on the main thread (GLFW makes windows there only), and destroy it there too.
-  std::unique_ptr<gl::Context> createShared(std::string* error) override;
+  // A hidden 1x1 window whose context shares this one's objects (buffers, textures, programs,
+  // sync objects; not vertex arrays, framebuffers or queries): the simulation thread's,
+  // current nowhere on return. Call on the main thread (GLFW makes windows there only), and
+  // destroy it there too, after the thread using it has released it.
+  std::unique_ptr<gl::Context> createShared(std::string* error);
 
   GLFWwindow* handle() const { return window_; }
   bool shouldClose() const;

@@ -245,8 +245,6 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(const Options& options,
     result.reset(new HeadlessContext);
     result->display_ = made.display;
     result->context_ = made.context;
-    result->config_ = made.config;
-    result->debug_ = options.debug;
     result->setInfo(label);
     return true;
   };
@@ -305,26 +303,6 @@ HeadlessContext::~HeadlessContext() {
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display, context);
   releaseDisplay(display);
-}
-
-std::unique_ptr<Context> HeadlessContext::createShared(std::string* error) {
-  auto display = static_cast<EGLDisplay>(display_);
-  std::string lastError;
-  EGLContext context = createCoreContext(display, static_cast<EGLConfig>(config_),
-                                         static_cast<EGLContext>(context_), debug_, &lastError);
-  if (context == EGL_NO_CONTEXT) {
-    if (error) *error = "eglCreateContext with a shared context failed (" + lastError + ")";
-    return nullptr;
-  }
-  retainDisplay(display);
-  std::unique_ptr<HeadlessContext> shared(new HeadlessContext);
-  shared->display_ = display;
-  shared->context_ = context;
-  shared->config_ = config_;
-  shared->debug_ = debug_;
-  // The renderer and version strings are the parent's: the same display and driver.
-  shared->copyInfo(*this, platform() + ", shared");
-  return shared;
 }
 
 void HeadlessContext::releaseCurrent() {

@@ -17,11 +17,6 @@ class Context {
   // Makes no context current on the calling thread, if this one is (before another thread
   // takes it, or before it is destroyed on another thread).
   virtual void releaseCurrent() = 0;
-  // A new context sharing this one's objects (buffers, textures, programs, sync objects; not
-  // vertex arrays, framebuffers or queries), for another thread: current nowhere on return,
-  // and the calling thread's current context is unchanged. Null with `error` on failure.
-  // Destroy it after the thread using it has released it.
-  virtual std::unique_ptr<Context> createShared(std::string* error) = 0;
 
   // GL_RENDERER and GL_VERSION, read when the context was made.
   const std::string& renderer() const { return renderer_; }
@@ -64,15 +59,12 @@ class HeadlessContext final : public Context {
 
   bool makeCurrent() override;
   void releaseCurrent() override;
-  std::unique_ptr<Context> createShared(std::string* error) override;
 
  private:
   HeadlessContext() = default;
-  // EGLDisplay, EGLContext and EGLConfig, kept as void* so this header needs no EGL.
+  // EGLDisplay and EGLContext, kept as void* so this header needs no EGL.
   void* display_ = nullptr;
   void* context_ = nullptr;
-  void* config_ = nullptr;
-  bool debug_ = false;
 };
 
 }  // namespace csm::gl

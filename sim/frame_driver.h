@@ -55,8 +55,6 @@ class FrameDriver {
   void resume();
 
   double lastStepMs() const { return lastStepMs_; }
-  const DriverOptions& options() const { return options_; }
-  void setOptions(const DriverOptions& options) { options_ = options; }
 
  private:
   void take(bool wait);

@@ -22,8 +22,6 @@ constexpr uint32_t kMaxSegmentCells = 64;
 // more, the pass skips that frame and the buffers grow (see growEntries).
 constexpr uint32_t kEntriesPerSegment = 10;
 
-constexpr gl::Barrier kPassBarrier = gl::Barrier::Storage | gl::Barrier::TextureFetch;
-
 }  // namespace
 
 bool CollisionGrid::build(std::string* error) {
@@ -130,9 +128,11 @@ void CollisionGrid::scan(uint32_t blocks) {
   gl::memoryBarrier(kPassBarrier);
 }
 
-void CollisionGrid::countersSeen(const uint32_t* c) {
+bool CollisionGrid::countersSeen(const uint32_t* c) {
   // The grid did not fit that frame (it applied no hair-hair forces): room for the next.
-  if (c[CSM_COUNTER_ENTRIES] > entryCapacity_) growEntries(c[CSM_COUNTER_ENTRIES]);
+  if (c[CSM_COUNTER_ENTRIES] <= entryCapacity_) return false;
+  growEntries(c[CSM_COUNTER_ENTRIES]);
+  return true;
 }
 
 void CollisionGrid::growEntries(uint64_t needed) {

@@ -32,8 +32,8 @@ class CollisionGrid {
   // One collision pass on the bound state, timed as the grid and contacts stages.
   void run(StageTimer& timer);
   void clearCounters() { counters_.clearToZero(); }
-  // Grows the entry buffers when `counters` (read back by a sample) say they did not fit.
-  void countersSeen(const uint32_t* counters);
+  // Grows the entry buffers when `counters` (read back) say they did not fit; true if it grew.
+  bool countersSeen(const uint32_t* counters);
 
   const gl::Buffer& counters() const { return counters_; }
   uint32_t entryCapacity() const { return entryCapacity_; }
@@ -44,9 +44,9 @@ class CollisionGrid {
   void setPairCapacity(size_t capacity);
   std::vector<std::pair<uint32_t, uint32_t>> readPairs(bool* overflow) const;
   std::vector<uint32_t> readSegmentContactCounts() const;
-  void growEntries(uint64_t needed);
 
  private:
+  void growEntries(uint64_t needed);
   void scan(uint32_t blocks);
 
   size_t particles_ = 0;

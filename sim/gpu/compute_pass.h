@@ -12,6 +12,9 @@
 
 namespace csm::gpu {
 
+// Between passes: storage writes become visible to storage reads and to texel fetches.
+constexpr gl::Barrier kPassBarrier = gl::Barrier::Storage | gl::Barrier::TextureFetch;
+
 class ComputePass {
  public:
   ComputePass() = default;
@@ -19,7 +22,6 @@ class ComputePass {
   // Compiles shaders/<path>; false, with the compiler's log in `error`, when it does not build.
   bool build(const char* path, uint32_t groupSize, const std::vector<gl::Define>& defines,
              std::string* error);
-  bool built() const { return program_.id() != 0; }
 
   // Enough groups for `items` invocations (none for 0); beyond GL 4.3's 65535 groups per
   // dimension, a 2D grid of groups that globalIndex() in common.glsl flattens.

@@ -19,9 +19,6 @@ namespace {
 // Strand lengths are rounded up to this step for MAX_N, so a regrown groom rarely recompiles.
 constexpr int kMaxNStep = 8;
 
-// Between passes: storage writes become visible to storage reads and to texel fetches.
-constexpr gl::Barrier kPassBarrier = gl::Barrier::Storage | gl::Barrier::TextureFetch;
-
 }  // namespace
 
 GpuSolver::GpuSolver(bool cpuClock)
@@ -87,7 +84,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
 
 void GpuSolver::uploadRegions() {
   regions_ = buildRegions(state_, config_.sim);
-  hair_.uploadRegions(regions_, hair_.particles, hair_.strands);
+  hair_.uploadRegions(regions_);
 }
 
 void GpuSolver::setConfig(const Config& config) {
@@ -168,7 +165,6 @@ void GpuSolver::bindAll() {
 void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   const FramePlan plan = planFrame(config_.sim, regions_.maxRate);
   const int substeps = plan.substeps;
-  lastSubsteps_ = substeps;
   const double h = plan.h;
   std::vector<Pose> poses(substeps), before(substeps);
   for (int k = 0; k < substeps; ++k) {
@@ -188,13 +184,13 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   for (int k = 0; k < substeps; ++k) {
     timer_.stage(gpu::kIntegrate);
     passes_.predict.runSubstep(particles, unsigned(k));
-    gl::memoryBarrier(kPassBarrier);
+    gl::memoryBarrier(gpu::kPassBarrier);
     timer_.stage(gpu::kShapeMatching);
     passes_.shapeMatch.runSubstep(strands, unsigned(k));
-    gl::memoryBarrier(kPassBarrier);
+    gl::memoryBarrier(gpu::kPassBarrier);
     timer_.stage(gpu::kStrainLimiting);
     passes_.strainLimit.runSubstep(strands, unsigned(k));
-    gl::memoryBarrier(kPassBarrier);
+    gl::memoryBarrier(gpu::kPassBarrier);
     time_ += h;
   }
   timer_.endStage();
@@ -223,9 +219,7 @@ void GpuSolver::detectContacts() {
   grid_.run(timer_);
   // A tool asks for this pass's contacts: when the grid did not fit, grow it and run again
   // (stepFrame instead grows it when a sample sees the total).
-  const uint32_t needed = grid_.readCounters()[CSM_COUNTER_ENTRIES];
-  if (needed > grid_.entryCapacity()) {
-    grid_.growEntries(needed);
+  if (grid_.countersSeen(grid_.readCounters().data())) {
     writeParams({head_}, {head_});
     bindAll();
     grid_.run(timer_);
@@ -264,15 +258,21 @@ ContactStats GpuSolver::readContactStats() {
   return ContactStats{c[CSM_COUNTER_CONTACTS], c[CSM_COUNTER_PENETRATIONS]};
 }
 
+unsigned GpuSolver::lastSubstepSpheres() const {
+  // The spheres buffer holds the head's spheres for each step of the last writeParams: the
+  // measures use the last step's.
+  if (config_.head.spheres.empty()) return 0;
+  const size_t uploaded = size_t(spheres_.size()) / sizeof(glm::vec4);
+  return unsigned(uploaded - std::min(uploaded, config_.head.spheres.size()));
+}
+
 void GpuSolver::requestSample(long frame) {
   const uint32_t groups = uint32_t((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);
   samples_.request(
       frame, groups,
       [&] {
         bindAll();
-        passes_.measure
-            .set("sphereBase", unsigned((lastSubsteps_ - 1) * int(config_.head.spheres.size())))
-            .run(uint32_t(hair_.particles));
+        passes_.measure.set("sphereBase", lastSubstepSpheres()).run(uint32_t(hair_.particles));
       },
       measure_, grid_.counters());
 }

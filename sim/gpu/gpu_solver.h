@@ -73,8 +73,6 @@ class GpuSolver final : public Solver {
   }
   // Per segment (by its first particle): the contacts it summed, both sides counted.
   std::vector<uint32_t> readSegmentContactCounts() { return grid_.readSegmentContactCounts(); }
-  // Hash table size of the grid (a power of two).
-  uint32_t bucketCount() const { return grid_.bucketCount(); }
   // The grid of the last collision pass (reads back): entries it needed, entries the buffers
   // hold (over it, the pass applied no forces), segments in no cell (not finite, or a box
   // over the cell cap), and the cell edge in metres.
@@ -90,6 +88,7 @@ class GpuSolver final : public Solver {
   void uploadRegions();
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
+  unsigned lastSubstepSpheres() const;  // the first sphere of the last step's
 
   Config config_;
   double time_ = 0.0;
@@ -98,7 +97,6 @@ class GpuSolver final : public Solver {
   Regions regions_;
   bool forcesValid_ = false;
   int builtMaxN_ = 0;
-  int lastSubsteps_ = 1;
   gpu::SimParams params_{};
 
   struct Passes {

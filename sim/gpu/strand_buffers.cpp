@@ -45,8 +45,8 @@ void StrandBuffers::upload(const HairState& st, const glm::dquat& head) {
   view(predictedTex, predicted, GL_RGBA32F);
 }
 
-void StrandBuffers::uploadRegions(const Regions& regions, size_t particleCount,
-                                  size_t strandCount) {
+void StrandBuffers::uploadRegions(const Regions& regions) {
+  const size_t particleCount = particles, strandCount = strands;
   std::vector<glm::vec4> perParticle(particleCount);
   for (size_t i = 0; i < particleCount; ++i) {
     const double J = regions.inertia[i];
@@ -64,7 +64,6 @@ void StrandBuffers::uploadRegions(const Regions& regions, size_t particleCount,
 
 void StrandBuffers::bind() const {
   const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
-  rest.bindBase(ssbo, CSM_BIND_REST);
   position.bindBase(ssbo, CSM_BIND_POSITION);
   velocity.bindBase(ssbo, CSM_BIND_VELOCITY);
   strandFirst.bindBase(ssbo, CSM_BIND_STRAND_FIRST);
@@ -72,7 +71,6 @@ void StrandBuffers::bind() const {
   predicted.bindBase(ssbo, CSM_BIND_PREDICTED);
   rotation.bindBase(ssbo, CSM_BIND_ROTATION);
   strandOrder.bindBase(ssbo, CSM_BIND_STRAND_ORDER);
-  region.bindBase(ssbo, CSM_BIND_REGION);
   strandStiffness.bindBase(ssbo, CSM_BIND_STRAND_STIFFNESS);
   positionTex.bind(CSM_TEX_POSITION);
   velocityTex.bind(CSM_TEX_VELOCITY);

@@ -19,7 +19,8 @@ struct StrandBuffers {
   // The state and layout of `state`; each region's rotation starts at the head's.
   void upload(const HairState& state, const glm::dquat& head);
   // Region masses, inertia and ranges, and each strand's stiffness rate.
-  void uploadRegions(const Regions& regions, size_t particles, size_t strands);
+  void uploadRegions(const Regions& regions);
+  // Storage views where the shaders declare them (rest and regions are read as texels).
   void bind() const;
 
   size_t particles = 0, strands = 0;
