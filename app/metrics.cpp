@@ -46,6 +46,13 @@ void MetricsRecorder::addSample(const FrameSample& sample) {
   contactsLast_ = contacts.contacts;
   penetrationsLast_ = contacts.penetrations;
   penetrationsMax_ = std::max(penetrationsMax_, contacts.penetrations);
+  if (sample.frame == 1) restPenetrations_ = int64_t(contacts.penetrations);
+  ++contactSamples_;
+  contactSum_.candidates += contacts.candidates;
+  contactSum_.crossings += contacts.crossings;
+  contactSum_.dropped += contacts.dropped;
+  contactSum_.maxDepth = std::max(contactSum_.maxDepth, contacts.maxDepth);
+  for (int i = 0; i < kDepthBins; ++i) contactSum_.depth[i] += contacts.depth[i];
 }
 
 void MetricsRecorder::addRender(double renderMs, const std::vector<StageTime>& stages) {
@@ -96,6 +103,21 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
       {"hair_penetrations", penetrationsLast_},
       {"hair_penetrations_max", penetrationsMax_},
   };
+  if (contactSamples_ > 0) {
+    // Each sample's crossings are those of its frame (against the frame before): per second
+    // over the sampled frames.
+    const double dt = j.value("frame_dt", 0.0);
+    const double seconds = dt * double(contactSamples_);
+    nlohmann::json& a = j["accuracy"];
+    a["hair_crossings"] = contactSum_.crossings;
+    a["hair_crossings_per_s"] = seconds > 0.0 ? double(contactSum_.crossings) / seconds : 0.0;
+    a["hair_depth_p50"] = contactSum_.depthQuantile(0.50);
+    a["hair_depth_p99"] = contactSum_.depthQuantile(0.99);
+    a["hair_depth_max"] = contactSum_.maxDepth;
+    a["hair_candidates_mean"] = double(contactSum_.candidates) / double(contactSamples_);
+    a["hair_candidates_dropped"] = contactSum_.dropped;
+    if (restPenetrations_ >= 0) a["hair_penetrations_rest"] = restPenetrations_;
+  }
   return j;
 }
 
@@ -141,9 +163,7 @@ nlohmann::json describeRun(const RunDescription& r) {
         {"particles_per_side", {r.stiffness.windowMin, r.stiffness.windowMax}},
         {"rate", {r.stiffness.rateMin, r.stiffness.rateMax}}}},
       {"stiffness_window", c.sim.stiffnessWindow},
-      {"collision_mode", c.collision.mode == CollisionMode::Off    ? "off"
-                         : c.collision.mode == CollisionMode::Head ? "head"
-                                                                   : "full"},
+      {"collision_mode", collisionModeName(c.collision.mode)},
       {"solver", r.solver},
       {"groom",
        {{"file_strands", r.groom.fileStrands},

@@ -99,8 +99,20 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
   }
   ImGui::Separator();
   const FrameSample sample = f.sample.value_or(FrameSample{});
-  ImGui::Text("hair contacts %llu, penetrations %llu", (unsigned long long)sample.contacts.contacts,
-              (unsigned long long)sample.contacts.penetrations);
+  const ContactStats& contacts = sample.contacts;
+  ImGui::Text("hair contacts %llu, closer than r %llu", (unsigned long long)contacts.contacts,
+              (unsigned long long)contacts.penetrations);
+  if (strandContacts(f.config.collision.mode)) {
+    // The measures of the candidate list the sampled frame started from.
+    ImGui::Text("crossings %llu (%.0f/s), candidates %llu", (unsigned long long)contacts.crossings,
+                double(contacts.crossings) / std::max(1e-6, double(f.config.sim.dt)),
+                (unsigned long long)contacts.candidates);
+    ImGui::Text("penetration depth p50 %.2f r, p99 %.2f r, max %.2f r", contacts.depthQuantile(0.5),
+                contacts.depthQuantile(0.99), double(contacts.maxDepth));
+    if (contacts.dropped > 0)
+      ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "%llu candidates did not fit their lists",
+                         (unsigned long long)contacts.dropped);
+  }
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);
   ImGui::Text("particles %zu", f.particles);

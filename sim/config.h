@@ -17,7 +17,20 @@ struct Sphere {
   bool operator==(const Sphere&) const = default;
 };
 
-enum class CollisionMode : int { Off = 0, Head = 1, Full = 2 };
+// What the hair collides with. Strands: the head and segment contacts between strands, as
+// constraints in every substep (sim/contacts.h).
+enum class CollisionMode : int { Off = 0, Head = 1, Strands = 2 };
+inline bool collidesWithHead(CollisionMode m) {
+  return m != CollisionMode::Off;
+}
+inline bool strandContacts(CollisionMode m) {
+  return m == CollisionMode::Strands;
+}
+// The name presets and metrics use (collision.mode's choices).
+inline const char* collisionModeName(CollisionMode m) {
+  constexpr const char* names[] = {"off", "head", "strands"};
+  return names[int(m)];
+}
 enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
 // How stiffness is given (sim/stiffness.h). Paper: a window in particles and alpha = the pull
 // toward the goals per step, as the paper does; the hair gets stiffer with more substeps and
@@ -91,14 +104,14 @@ struct SimConfig {
 };
 
 struct CollisionConfig {
-  CollisionMode mode = CollisionMode::Full;
-  float radius = 0.001f;  // hair radius, metres
-  // Penalty forces act one frame late and sum over a segment's contacts: strong normal
-  // damping then overshoots and flings strands out of dense hair (20/s reached 16 m/s on the
-  // Fig. 1 scene, 5/s stays under 3 m/s).
-  float stiffness = 4000.0f;  // penalty, acceleration per metre of overlap (1/s^2)
-  float damping = 5.0f;       // normal damping, 1/s
-  float friction = 0.3f;      // hair-hair tangential damping, 0..1
+  CollisionMode mode = CollisionMode::Strands;
+  float radius = 0.001f;  // hair radius, metres: two strands touch at 2r
+  // Strand contacts (sim/contacts.h): the pairs within 2r + margin at the start of a frame are
+  // the candidates its substeps resolve, so the margin must cover how far two strands close
+  // in on each other in one frame.
+  float margin = 0.0005f;     // m
+  float compliance = 0.0f;    // m/N: 0 = hard contacts
+  float friction = 0.3f;      // Coulomb coefficient between strands
   float headFriction = 0.3f;  // Coulomb friction coefficient against the head
 };
 

@@ -123,6 +123,11 @@ std::string valueFromJson(const ParamInfo& p, void* field, const nlohmann::json&
           (*static_cast<int*>(field)) = static_cast<int>(i);
           return {};
         }
+      for (const auto& [name, value] : p.aliases)
+        if (name == s) {
+          (*static_cast<int*>(field)) = value;
+          return {};
+        }
       return "\"" + s + "\" is not " + describeType(p);
     }
     case P::String:

@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -42,7 +43,9 @@ struct ParamInfo {
   std::string_view description;
   Effect effect = Effect::Live;
   std::vector<std::string_view> options;  // names of enum values, in enum order
-  bool logarithmic = false;               // a slider hint for wide ranges
+  // Further names read as a value (older spellings); never written.
+  std::vector<std::pair<std::string_view, int>> aliases;
+  bool logarithmic = false;  // a slider hint for wide ranges
   // How the panels show a number: value x displayScale, in `unit` (the key's unit stays SI).
   double displayScale = 1.0;
   std::string_view unit;
@@ -123,6 +126,11 @@ struct Param : ParamInfo {
   Param choices(std::vector<std::string_view> names) const {
     Param p = *this;
     p.options = std::move(names);
+    return p;
+  }
+  Param alias(std::string_view name, int value) const {
+    Param p = *this;
+    p.aliases.emplace_back(name, value);
     return p;
   }
   Param onlyWhen(bool (*predicate)(const Root&)) const {

@@ -200,22 +200,30 @@ std::vector<Param<Config>> build() {
             Effect::Live),
       param("collision.mode", "Collisions", "Simulation|Collision", &Config::collision,
             &CollisionConfig::mode, 0, 0,
-            "off: none; head: hair against the head spheres; full: head and hair against hair.",
+            "off: none; head: hair against the head spheres; strands: and contacts between strands "
+            "that hold them apart. \"full\" (older presets) reads as strands.",
             Effect::Live)
-          .choices({"off", "head", "full"}),
+          .choices({"off", "head", "strands"})
+          .alias("full", int(CollisionMode::Strands)),
       param("collision.radius", "Hair radius", "Simulation|Collision", &Config::collision,
-            &CollisionConfig::radius, 1e-5, 0.02, "Collision radius of a strand (m).", Effect::Live)
+            &CollisionConfig::radius, 1e-5, 0.02,
+            "Collision radius of a strand (m): two strands touch at twice this.", Effect::Live)
           .logScale(),
-      param("collision.stiffness", "Penalty stiffness", "Simulation|Collision", &Config::collision,
-            &CollisionConfig::stiffness, 0.0, 1e6,
-            "Hair-hair penalty: acceleration per metre of overlap (1/s^2).", Effect::Live)
-          .logScale(),
-      param("collision.damping", "Normal damping", "Simulation|Collision", &Config::collision,
-            &CollisionConfig::damping, 0.0, 1000.0,
-            "Hair-hair damping of the approaching speed (1/s).", Effect::Live),
+      param("collision.margin", "Contact margin", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::margin, 0.0, 0.01,
+            "Strand contacts: pairs within 2 radii + this at the start of a frame are the ones its "
+            "substeps hold apart (m). Larger catches faster motion and costs more.",
+            Effect::Live)
+          .display(1000.0, "mm"),
+      param("collision.compliance", "Contact compliance", "Simulation|Collision",
+            &Config::collision, &CollisionConfig::compliance, 0.0, 100.0,
+            "Strand contacts: give of a contact, metres per newton (XPBD); 0 = hard.",
+            Effect::Live),
       param("collision.friction", "Hair friction", "Simulation|Collision", &Config::collision,
-            &CollisionConfig::friction, 0.0, 1.0,
-            "Hair-hair friction: share of sliding speed removed per contact.", Effect::Live),
+            &CollisionConfig::friction, 0.0, 2.0,
+            "Coulomb friction coefficient between strands: sliding is held back by at most this "
+            "times the push that keeps them apart.",
+            Effect::Live),
       param("collision.head_friction", "Head friction", "Simulation|Collision", &Config::collision,
             &CollisionConfig::headFriction, 0.0, 2.0,
             "Coulomb friction coefficient between hair and head: sliding slows by at most this "

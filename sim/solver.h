@@ -11,6 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include "sim/config.h"
+#include "sim/contacts.h"
 #include "sim/groom.h"
 #include "sim/head.h"
 #include "sim/metrics.h"
@@ -23,17 +24,12 @@ struct StageTime {
   double ms = 0.0;   // per frame, all substeps
 };
 
-struct ContactStats {
-  uint64_t contacts = 0;      // segment pairs closer than 2r in the last collision pass
-  uint64_t penetrations = 0;  // segment pairs closer than r: real crossings
-};
-
 // What a solver measures of one frame's state (sim/metrics.h's measures, with each strand's
 // own pinned particles and the head where it was at the end of the frame).
 struct FrameSample {
   long frame = -1;
   Accuracy accuracy;
-  ContactStats contacts;  // of that frame's collision pass
+  ContactStats contacts;  // of the candidate list that frame began with
 };
 
 class Solver {

@@ -34,7 +34,7 @@ inline Config liveScene(bool paper = false) {
   c.wind.gusts = 0.5f;
   c.wind.gustFrequency = 1.0f;
   c.wind.turbulence = 0.5f;
-  c.collision.mode = CollisionMode::Full;
+  c.collision.mode = CollisionMode::Strands;
   c.sim.substeps = 1;
   if (paper) {
     c.sim.stiffnessModel = StiffnessModel::Paper;

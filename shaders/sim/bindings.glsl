@@ -3,7 +3,7 @@
 // Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
 // bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
 // (no pass here declares more) but only 8 binding points; every driver we run on has more
-// than the 25 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+// than the 27 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
@@ -31,11 +31,13 @@
                             // group (measure.comp), read back behind a fence
 #define CSM_BIND_SPHERES 9  // vec4: world head spheres (centre, radius) per substep
 // Hair-hair collision.
-#define CSM_BIND_SEGMENT_FORCE 10  // vec4 x2 per segment: forces on its two particles
+#define CSM_BIND_CORRECTION \
+  10  // vec4 x2 per segment: this substep's strand-contact corrections of
+      // its two particles (w: how many contacts sent each)
 #define CSM_BIND_SEGMENT_CELLS 11  // uint per particle: cells its segment entered (0: none)
 #define CSM_BIND_SEGMENT_BASE \
   12                            // uint per particle + 4: exclusive scan of those, where its
-                                // cells' partial forces start
+                                // cells' candidate slots start
 #define CSM_BIND_GRID_COUNT 13  // uint per bucket: entries in it (back to 0 after scatter)
 #define CSM_BIND_GRID_START \
   14                             // uint per bucket + 4: exclusive scan of the counts; entry
@@ -47,11 +49,19 @@
   18                                  // uint[8]: entries needed, contacts, penetrations, recorded
                                       // pairs, segments in no cell (see segmentCells)
 #define CSM_BIND_PAIRS 19             // uvec2: recorded contact pairs (tests)
-#define CSM_BIND_SEGMENT_CONTACTS 20  // uint per segment: its contacts, both sides counted
-#define CSM_BIND_PARTIAL_FORCE \
-  21  // vec4 x2 per grid entry: forces of the segment's contacts
-      // owned by that cell, at its SEGMENT_BASE + cell index
-      // (w of the first: how many)
+#define CSM_BIND_CANDIDATE_COUNT \
+  20  // uint per particle, twice (this frame's half and the last
+      // frame's, P.grid.w says which): candidates of each segment
+#define CSM_BIND_SLOT_CANDIDATES \
+  21  // uvec2 x CSM_SLOT_CANDIDATES per grid entry: the candidates
+      // of the segment that cell owns, at its SEGMENT_BASE + cell
+      // index (a candidate: see CSM_BIND_CANDIDATES)
+#define CSM_BIND_SLOT_COUNT 25  // uint per grid entry: how many of those
+#define CSM_BIND_CANDIDATES \
+  26  // uvec2 x CSM_SEGMENT_CANDIDATES per particle, twice (halves as
+      // CANDIDATE_COUNT): a segment's candidates in ascending order,
+      // x the other segment | flags << 29 (sim/contacts.h), y the
+      // contact distance (float bits)
 
 // Texture units of buffer textures (samplerBuffer views of the buffers above), for reads
 // that differ per invocation: on llvmpipe a texel fetch is a vector gather where a storage
@@ -71,12 +81,25 @@
 #define CSM_COUNTER_PENETRATIONS 2
 #define CSM_COUNTER_PAIRS 3
 #define CSM_COUNTER_OVERSIZE 4
-#define CSM_COUNTERS 8
+#define CSM_COUNTER_CANDIDATES 5  // pairs within 2r + margin
+#define CSM_COUNTER_CROSSINGS 6   // pairs whose orientation flipped since the last frame
+#define CSM_COUNTER_DROPPED 7     // candidates that did not fit a slot or a segment's list
+#define CSM_COUNTER_MAX_DEPTH 8   // deepest penetration in r (float bits: positive floats
+                                  // order as their bits)
+#define CSM_COUNTER_DEPTH 16      // csm::kDepthBins bins of penetration depth (sim/contacts.h)
+#define CSM_DEPTH_BINS 64
+#define CSM_DEPTH_BINS_PER_R 32
+#define CSM_COUNTERS 80
+
+// Candidate lists (sim/contacts.h).
+#define CSM_SLOT_CANDIDATES 8      // per grid entry
+#define CSM_SEGMENT_CANDIDATES 16  // per segment
+#define CSM_CANDIDATE_SHIFT 29     // the flags' place in a candidate
 
 // Work group sizes.
 #define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes
 #define CSM_STRAND_GROUP 64     // per-strand passes
-#define CSM_CONTACT_GROUP 64    // the contact pass (its contact lists fill shared memory)
+#define CSM_CONTACT_GROUP 64    // the candidate pass (its lists fill shared memory)
 #define CSM_MEASURE_GROUP 256   // the measure pass: particles reduced into one record
 #define CSM_SCAN_GROUP 256      // invocations of the block-sum scan group; each scans 2 sums
 #define CSM_SCAN_BLOCK 512      // block sums per round of that scan (2 x CSM_SCAN_GROUP)

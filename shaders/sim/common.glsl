@@ -9,13 +9,14 @@ struct SimParams {
   vec4 windDir;    // xyz unit direction, w strength (m/s)
   vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
   vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
-  vec4 contact;    // x penalty stiffness (1/s^2), y normal damping (1/s), z friction, w frame dt
+  vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction, w dt
   vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
   ivec4 ints;      // x unused (pinned particles are per strand), y stiffness model (0 paper,
                    // 1 calibrated), z rotation iterations, w head spheres
-  uvec4 flags;     // x strain limiting, y head collision, z wind, w contact forces valid
+  uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
   uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = do not record)
-  uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z most cells per segment
+  uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z most cells per segment,
+                   // w this frame's half of the candidate lists (0 or 1)
   vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
 };
@@ -114,9 +115,32 @@ float closestSegmentPoints(vec3 p0, vec3 p1, vec3 q0, vec3 q1, out float s, out 
   return dot(diff, diff);
 }
 
+// Strand contacts (sim/contacts.h): the histogram bin of a penetration depth (in r), and the
+// orientation flags of a pair (csm::pairFlags): closest points inside both segments, closer
+// than 2r, sign of the triple product.
+int depthBin(float depthInR) {
+  return clamp(int(depthInR * float(CSM_DEPTH_BINS_PER_R)), 0, CSM_DEPTH_BINS - 1);
+}
+
+const uint kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u;
+
+uint pairFlags(vec3 a0, vec3 a1, vec3 b0, vec3 b1, float s, float t, float dist, float twoR) {
+  const float inside = 1e-6;
+  uint f = 0u;
+  if (s > inside && s < 1.0 - inside && t > inside && t < 1.0 - inside) f |= kPairInterior;
+  if (dist < twoR) f |= kPairNear;
+  if (dot(cross(a1 - a0, b1 - b0), a0 - b0) > 0.0) f |= kPairPositive;
+  return f;
+}
+
+bool crossed(uint before, uint now) {
+  return (before & now & kPairInterior) != 0u && ((before | now) & kPairNear) != 0u &&
+         ((before ^ now) & kPairPositive) != 0u;
+}
+
 // The collision grid (DESIGN.md section 1.7): cells of edge P.cells.x, at least twice the
 // contact distance and half a mean segment. Each segment is entered in every cell its box,
-// padded by P.cells.z (r and 1% for rounding), touches; a pair is tested only in the cell that
+// padded by P.cells.z (half the candidate distance and 1% for rounding), touches; a pair is tested only in the cell that
 // holds the lowest corner of the overlap of the two boxes, so it is found exactly once. Every
 // pass computes boxes and cells with these functions from the same positions, so they agree
 // to the bit (the owner cell of an overlapping pair always lies in both cell ranges).

@@ -1,6 +1,5 @@
 // Step 1-2 of DESIGN.md section 1, one invocation per particle: kinematic roots follow the
-// head; free particles get gravity, wind drag and the hair-hair penalty of the last collision
-// pass, and move to x* = x + h (v + h f / m). The velocity itself is not written: integration
+// head; free particles get gravity and wind drag, and move to x* = x + h (v + h f / m). The velocity itself is not written: integration
 // (at the end of shape_match.comp) recomputes it from the positions, as the CPU solver does.
 #include "sim/common.glsl"
 #include "sim/wind.glsl"
@@ -16,7 +15,6 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
   uint particleStrand[];
 };
 layout(std430, binding = CSM_BIND_PREDICTED) writeonly buffer Predicted { vec4 pred[]; };
-layout(std430, binding = CSM_BIND_SEGMENT_FORCE) readonly buffer SegmentForce { vec4 segForce[]; };
 layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
   vec4 strandStiffness[];
 };
@@ -38,14 +36,6 @@ void main() {
   vec3 x = texelFetch(posTex, int(i)).xyz;
   vec3 v = texelFetch(velTex, int(i)).xyz;
   vec3 acc = P.gravity.xyz;
-  if (P.flags.w != 0u) {
-    // Deterministic gather: the particle's share of the forces its (at most two) segments
-    // collected, segment i's on its first particle and segment i-1's on its second.
-    vec3 f = vec3(0.0);
-    if (i + 1u < b) f += segForce[2u * i].xyz;
-    if (i > a) f += segForce[2u * (i - 1u) + 1u].xyz;
-    acc += f / r.w;
-  }
   if (P.flags.z != 0u) {
     // Drag acts on the wind across the strand, not along it; implicit in the velocity
     // (c / (1 + h c) instead of c), as CpuSolver::windDrag.

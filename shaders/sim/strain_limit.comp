@@ -1,5 +1,6 @@
-// Step 6 of DESIGN.md section 1, one invocation per strand: strain limiting in one sweep from
-// root to tip (paper section 3.2: each segment is fixed against an already final parent, so
+// Step 6 of DESIGN.md section 1, one invocation per strand: the strand contacts' corrections
+// (contact_solve.comp: each particle moves by the mean of what its segments sent), strain
+// limiting in one sweep from root to tip (paper section 3.2: each segment is fixed against an already final parent, so
 // no iteration), pushing out of the head spheres, Coulomb friction against the head and DFTL
 // (Mueller et al. 2012) on the strain-limit correction, as CpuSolver::limitStrain. The sweep
 // is sequential by nature; a strand is one invocation and the particle's parent stays in
@@ -17,6 +18,7 @@ layout(std430, binding = CSM_BIND_SPHERES) readonly buffer Spheres { vec4 sphere
 layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
   vec4 strandStiffness[];
 };
+layout(std430, binding = CSM_BIND_CORRECTION) readonly buffer Correction { vec4 correction[]; };
 
 uniform uint substep;
 
@@ -63,6 +65,7 @@ void main() {
   float h = st.time.y;
   bool limit = P.flags.x != 0u;
   bool headCollide = P.flags.y != 0u;
+  bool contacts = P.flags.w != 0u;
   float epsilon = P.stepping.y;
   float r = P.stepping.z;
   float friction = P.stepping.w;
@@ -79,6 +82,16 @@ void main() {
     vec3 restHere = texelFetch(restTex, int(p)).xyz;
     vec3 x = pos[p].xyz;
     vec3 v = vel[p].xyz;
+    if (contacts) {
+      // A change of velocity too, as CpuSolver::limitStrain.
+      vec4 c = correction[2u * (p - 1u) + 1u];
+      if (i + 1 < n) c += correction[2u * p];
+      if (c.w > 0.0) {
+        vec3 moved = c.xyz / c.w;
+        x += moved;
+        v += moved / h;
+      }
+    }
     vec3 start = x;
     float maxLength = limit ? (1.0 + epsilon) * length(restHere - restPrev) : 0.0;
     if (limit) {

@@ -150,7 +150,8 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   xOld_ = x_;
   xPred_ = x_;
   goal_ = x_;
-  contactForce_.assign(n, glm::dvec3(0.0));
+  candidates_ = {};
+  correction_.clear();
   q_.assign(n, toEigen(head.rotation));
   contacts_ = {};
   stages_.clear();
@@ -170,6 +171,10 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
 
 void CpuSolver::rebuildRegions() {
   regions_ = ::csm::buildRegions(state_, config_.sim);
+  invMass_.resize(mass_.size());
+  for (size_t s = 0; s + 1 < first_.size(); ++s)
+    for (uint32_t i = first_[s]; i < first_[s + 1]; ++i)
+      invMass_[i] = int(i - first_[s]) < regions_.pinned[s] ? 0.0 : 1.0 / mass_[i];
   // Static prefix sums: per-region masses and mass-weighted rest positions (root-relative).
   for (size_t s = 0; s + 1 < first_.size(); ++s) {
     const uint32_t a = first_[s], b = first_[s + 1];
@@ -197,16 +202,23 @@ void CpuSolver::clearStages() {
 void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   clearStages();
   const FramePlan plan = planFrame(config_.sim, regions_.maxRate);
-  for (int k = 0; k < plan.substeps; ++k)
-    step(plan.h, interpolate(from, to, double(k + 1) / plan.substeps));
+  // The frame's contact candidates, from where it starts (DESIGN.md section 1.7).
   auto t0 = Clock::now();
-  if (config_.collision.mode == CollisionMode::Full) {
-    collide();
+  if (strandContacts(config_.collision.mode)) {
+    ContactCandidates previous = std::move(candidates_);
+    candidates_ = findCandidates(x_, rest_, strandOf_, contactSettings(), previous, contacts_);
   } else {
-    std::fill(contactForce_.begin(), contactForce_.end(), glm::dvec3(0.0));
+    candidates_ = {};
     contacts_ = {};
   }
   stages_[3].ms += msSince(t0);
+  for (int k = 0; k < plan.substeps; ++k)
+    step(plan.h, interpolate(from, to, double(k + 1) / plan.substeps));
+}
+
+ContactSettings CpuSolver::contactSettings() const {
+  const CollisionConfig& c = config_.collision;
+  return {c.radius, c.margin, c.compliance, c.friction};
 }
 
 void CpuSolver::step(double h, const Pose& head) {
@@ -223,6 +235,13 @@ void CpuSolver::step(double h, const Pose& head) {
   integrate(h);
   stages_[0].ms += msSince(t0);
   t0 = Clock::now();
+  if (strandContacts(config_.collision.mode) && !candidates_.start.empty()) {
+    solveContacts(candidates_, x_, v_, invMass_, h, contactSettings(), correction_);
+    stages_[3].ms += msSince(t0);
+    t0 = Clock::now();
+  } else {
+    correction_.clear();
+  }
   limitStrain(h, spheres, head, before);
   stages_[2].ms += msSince(t0);
   time_ += h;
@@ -255,7 +274,7 @@ void CpuSolver::predict(double h, const Pose& head) {
           xPred_[i] = head.apply(rest_[i]);
           continue;
         }
-        glm::dvec3 acc = gravity + contactForce_[i] / mass_[i];
+        glm::dvec3 acc = gravity;
         if (wind) acc += windDrag(i, b, h);
         v_[i] += h * acc;
         xPred_[i] = x_[i] + h * v_[i];
@@ -386,7 +405,8 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
                             const Pose& before) {
   const SimConfig& sim = config_.sim;
   const bool limit = sim.strainLimiting;
-  const bool headCollide = config_.collision.mode != CollisionMode::Off;
+  const bool headCollide = collidesWithHead(config_.collision.mode);
+  const bool contacts = !correction_.empty();
   const double r = config_.collision.radius;
   const double friction = config_.collision.headFriction;
   const double dftl = sim.dftl;
@@ -398,6 +418,12 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
       // no iteration is needed (paper section 3.2).
       for (uint32_t i = a + std::max(1, pinned); i < b; ++i) {
         const double maxLength = limit ? (1.0 + sim.strainLimit) * restLength_[i - 1] : 0.0;
+        if (contacts) {
+          // The strand contacts' correction (sim/contacts.h), a change of velocity too.
+          const glm::dvec3 moved = particleCorrection(correction_, i, a, b);
+          x_[i] += moved;
+          v_[i] += moved / h;
+        }
         const glm::dvec3 start = x_[i];
         if (limit) {
           const glm::dvec3 d = x_[i] - x_[i - 1];
@@ -447,45 +473,6 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
       }
     }
   });
-}
-
-void CpuSolver::collide() {
-  const CollisionConfig& col = config_.collision;
-  const double r = col.radius;
-  const double dt = config_.sim.dt;
-  std::fill(contactForce_.begin(), contactForce_.end(), glm::dvec3(0.0));
-  const std::vector<SegmentPair> pairs = findContactsGrid(x_, strandOf_, 2.0 * r);
-  contacts_ = {pairs.size(), 0};
-  for (const SegmentPair& p : pairs) {
-    if (p.distance < r) ++contacts_.penetrations;
-    const glm::dvec3 pa = glm::mix(x_[p.a], x_[p.a + 1], p.s);
-    const glm::dvec3 pb = glm::mix(x_[p.b], x_[p.b + 1], p.t);
-    glm::dvec3 n = pa - pb;
-    if (p.distance > 1e-12) {
-      n /= p.distance;
-    } else {
-      // Crossing exactly: push apart across both directions.
-      n = glm::cross(x_[p.a + 1] - x_[p.a], x_[p.b + 1] - x_[p.b]);
-      const double len = glm::length(n);
-      n = len > 1e-15 ? n / len : glm::dvec3(0, 1, 0);
-    }
-    const glm::dvec3 va = glm::mix(v_[p.a], v_[p.a + 1], p.s);
-    const glm::dvec3 vb = glm::mix(v_[p.b], v_[p.b + 1], p.t);
-    const glm::dvec3 rel = va - vb;
-    const double vn = glm::dot(rel, n);
-    const double an = std::max(0.0, col.stiffness * (2.0 * r - p.distance) - col.damping * vn);
-    const glm::dvec3 vt = rel - vn * n;
-    const double vtLen = glm::length(vt);
-    glm::dvec3 acc = an * n;
-    if (vtLen > 1e-12) acc -= std::min(col.friction * an, vtLen / dt) * (vt / vtLen);
-    const double massA = 0.5 * (mass_[p.a] + mass_[p.a + 1]);
-    const double massB = 0.5 * (mass_[p.b] + mass_[p.b + 1]);
-    const glm::dvec3 f = 0.5 * (massA + massB) * acc;
-    contactForce_[p.a] += (1.0 - p.s) * f;
-    contactForce_[p.a + 1] += p.s * f;
-    contactForce_[p.b] -= (1.0 - p.t) * f;
-    contactForce_[p.b + 1] -= p.t * f;
-  }
 }
 
 void CpuSolver::readPositions(std::vector<glm::vec4>& out) {

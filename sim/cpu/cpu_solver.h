@@ -10,7 +10,7 @@
 #include <Eigen/Geometry>
 #include <glm/vec3.hpp>
 
-#include "sim/collision.h"
+#include "sim/contacts.h"
 #include "sim/hair_state.h"
 #include "sim/solver.h"
 
@@ -86,7 +86,7 @@ class CpuSolver final : public Solver {
   void integrate(double h);
   void limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
                    const Pose& headBefore);
-  void collide();
+  ContactSettings contactSettings() const;
 
   RegionSums sums_;
   Config config_;
@@ -99,10 +99,12 @@ class CpuSolver final : public Solver {
   Regions regions_;               // shape-matching regions, per-region masses, rates
   std::vector<glm::dvec3> rest_;  // head frame
   std::vector<double> mass_;
+  std::vector<double> invMass_;     // 0 for the particles the head holds (strand contacts)
   std::vector<double> restLength_;  // segment i -> i+1; 0 for a strand's last particle
   std::vector<glm::dvec3> x_, v_, xOld_, xPred_, goal_;
-  std::vector<glm::dvec3> contactForce_;  // hair-hair penalty from the last collision pass
-  std::vector<Eigen::Quaterniond> q_;     // rotation of each region, warm start
+  ContactCandidates candidates_;        // this frame's strand contacts (sim/contacts.h)
+  std::vector<glm::dvec4> correction_;  // their corrections of this step, 2 per segment
+  std::vector<Eigen::Quaterniond> q_;   // rotation of each region, warm start
   ContactStats contacts_;
   std::vector<StageTime> stages_;
   std::deque<FrameSample> samples_;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <bit>
 
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
 #include "gl/draw.h"
 #include "sim/gpu/buffer_fill.h"
 #include "shaders/sim/bindings.glsl"
@@ -10,8 +13,8 @@
 namespace csm::gpu {
 namespace {
 
-// Boxes are padded by r (half the contact distance) and 1%, so that a pair the contact pass
-// finds closer than 2r in float always has overlapping boxes.
+// Boxes are padded by half the candidate distance (2r + margin) and 1%, so that a pair the
+// candidate pass finds closer than that in float always has overlapping boxes.
 constexpr float kPadSlack = 1.01f;
 // A segment enters at most this many cells (4 x 4 x 4): a box of a strain-limited segment
 // spans at most 3 cells per axis (cells are at least half a mean segment), so only a segment
@@ -19,7 +22,7 @@ constexpr float kPadSlack = 1.01f;
 // (counted as oversize), which keeps the pass bounded when a simulation explodes.
 constexpr uint32_t kMaxSegmentCells = 64;
 // Entry buffers start at this many entries per segment (Fig. 1 needs ~7); when a frame needs
-// more, the pass skips that frame and the buffers grow (see growEntries).
+// more, that frame has no strand contacts and the buffers grow (see growEntries).
 constexpr uint32_t kEntriesPerSegment = 10;
 
 }  // namespace
@@ -30,8 +33,9 @@ bool CollisionGrid::build(std::string* error) {
          passes_.scanSums.build("sim/scan_sums.comp", CSM_SCAN_GROUP, {}, error) &&
          passes_.scanAdd.build("sim/scan_add.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scatter.build("sim/grid_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.contacts.build("sim/contacts.comp", CSM_CONTACT_GROUP, {}, error) &&
-         passes_.segmentForces.build("sim/segment_forces.comp", CSM_PARTICLE_GROUP, {}, error);
+         passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, {}, error) &&
+         passes_.lists.build("sim/candidate_lists.comp", CSM_PARTICLE_GROUP, {}, error) &&
+         passes_.solve.build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {}, error);
 }
 
 void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegment) {
@@ -45,7 +49,11 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   // The per-segment scan (where each segment's partial forces start) runs on the same scan
   // passes, over one count per particle.
   segmentScan_ = std::max<uint32_t>(64, std::bit_ceil(uint32_t(particles)));
-  zeroed<glm::vec4>(segmentForce_, 2 * particles);
+  zeroed<glm::vec4>(correction_, 2 * particles);
+  zeroed<glm::uvec2>(candidates_, 2 * particles * CSM_SEGMENT_CANDIDATES);
+  zeroed<uint32_t>(candidateCount_, 2 * particles);
+  half_ = 0;
+  lastFrameListed_ = false;
   zeroed<uint32_t>(gridCount_, buckets_);
   zeroed<uint32_t>(gridStart_, buckets_ + 4);  // + the total, as a uvec4
   zeroed<uint32_t>(scanBlockSums_, scanBlocks_ + 1);
@@ -54,25 +62,53 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<uint32_t>(segmentBase_, segmentScan_ + 4);
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
   zeroed<glm::uvec2>(pairs_, pairCapacity_);
-  zeroed<uint32_t>(segmentContacts_, particles);
   view(gridStartTex_, gridStart_, GL_R32UI);
   entryCapacity_ = 0;
   growEntries(std::max<uint64_t>(1, uint64_t(segments) * kEntriesPerSegment));
 }
 
-void CollisionGrid::writeParams(SimParams& p, float radius) const {
-  p.counts.w = uint32_t(pairCapacity_);
-  p.grid = glm::uvec4(buckets_ - 1, entryCapacity_, kMaxSegmentCells, 0);
-  // Cells of at least twice the contact distance and half a mean segment, as the CPU
+double CollisionGrid::cellSize(float reach) const {
+  // Cells of at least twice the candidate distance and half a mean segment, as the CPU
   // reference (findContactsGrid): a segment then enters ~2-12 cells, and a cell holds about a
   // sixteenth of what a cell as long as a segment holds.
-  const double cell = std::max({4.0 * double(radius), 0.5 * meanSegment_, 1e-6});
-  p.cells = glm::vec4(float(cell), float(1.0 / cell), radius * kPadSlack + 1e-7f, 0.0f);
+  return std::max({2.0 * double(reach), 0.5 * meanSegment_, 1e-6});
+}
+
+void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uint32_t> strand,
+                               float reach, const glm::vec3& origin) {
+  const double cell = cellSize(reach), pad = 0.5 * reach * kPadSlack;
+  uint64_t entries = 0;
+  for (size_t i = 0; i + 1 < x.size(); ++i) {
+    if (strand[i] != strand[i + 1]) continue;
+    const glm::dvec3 p0 = glm::dvec3(glm::vec3(x[i]) - origin);
+    const glm::dvec3 p1 = glm::dvec3(glm::vec3(x[i + 1]) - origin);
+    const glm::dvec3 lo = glm::floor((glm::min(p0, p1) - pad) / cell);
+    const glm::dvec3 hi = glm::floor((glm::max(p0, p1) + pad) / cell);
+    const glm::dvec3 span = hi - lo + 1.0;
+    entries += std::min<uint64_t>(kMaxSegmentCells, uint64_t(span.x * span.y * span.z));
+  }
+  growEntries(entries + entries / 2);
+}
+
+void CollisionGrid::beginFrame(bool contacts) {
+  if (contacts && !lastFrameListed_) {
+    // No last list: nothing to count crossings against.
+    candidateCount_.clearToZero();
+  }
+  half_ ^= 1u;
+  lastFrameListed_ = contacts;
+}
+
+void CollisionGrid::writeParams(SimParams& p, float reach) const {
+  p.counts.w = uint32_t(pairCapacity_);
+  p.grid = glm::uvec4(buckets_ - 1, entryCapacity_, kMaxSegmentCells, half_);
+  const double cell = cellSize(reach);
+  p.cells = glm::vec4(float(cell), float(1.0 / cell), 0.5f * reach * kPadSlack + 1e-7f, 0.0f);
 }
 
 void CollisionGrid::bind() const {
   const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
-  segmentForce_.bindBase(ssbo, CSM_BIND_SEGMENT_FORCE);
+  correction_.bindBase(ssbo, CSM_BIND_CORRECTION);
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
@@ -80,16 +116,18 @@ void CollisionGrid::bind() const {
   entryLow_.bindBase(ssbo, CSM_BIND_ENTRY_LOW);
   counters_.bindBase(ssbo, CSM_BIND_COUNTERS);
   pairs_.bindBase(ssbo, CSM_BIND_PAIRS);
-  segmentContacts_.bindBase(ssbo, CSM_BIND_SEGMENT_CONTACTS);
   segmentCells_.bindBase(ssbo, CSM_BIND_SEGMENT_CELLS);
   segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
-  partialForce_.bindBase(ssbo, CSM_BIND_PARTIAL_FORCE);
+  slotCandidates_.bindBase(ssbo, CSM_BIND_SLOT_CANDIDATES);
+  slotCount_.bindBase(ssbo, CSM_BIND_SLOT_COUNT);
+  candidates_.bindBase(ssbo, CSM_BIND_CANDIDATES);
+  candidateCount_.bindBase(ssbo, CSM_BIND_CANDIDATE_COUNT);
   entryLowTex_.bind(CSM_TEX_ENTRY_LOW);
   gridStartTex_.bind(CSM_TEX_GRID_START);
   entryHighTex_.bind(CSM_TEX_ENTRY_HIGH);
 }
 
-void CollisionGrid::run(StageTimer& timer) {
+void CollisionGrid::findCandidates(StageTimer& timer) {
   if (segments_ == 0) return;
   const uint32_t particles = uint32_t(particles_);
   timer.stage(kGrid);
@@ -109,12 +147,17 @@ void CollisionGrid::run(StageTimer& timer) {
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
   passes_.scatter.run(particles);
   gl::memoryBarrier(kPassBarrier);
-  timer.stage(kContacts);
   // One invocation per entry slot: how many are used is known on the GPU only (no read-back
   // inside a frame); the others return at once.
-  passes_.contacts.run(entryCapacity_);
+  passes_.candidates.run(entryCapacity_);
   gl::memoryBarrier(kPassBarrier);
-  passes_.segmentForces.run(particles);
+  passes_.lists.run(particles);
+  gl::memoryBarrier(kPassBarrier);
+}
+
+void CollisionGrid::solve(unsigned substep) {
+  if (segments_ == 0) return;
+  passes_.solve.runSubstep(uint32_t(particles_), substep);
   gl::memoryBarrier(kPassBarrier);
 }
 
@@ -144,7 +187,8 @@ void CollisionGrid::growEntries(uint64_t needed) {
   entryCapacity_ = uint32_t(want);
   zeroed<glm::uvec4>(entryLow_, entryCapacity_);
   zeroed<glm::uvec4>(entryHigh_, entryCapacity_);
-  zeroed<glm::vec4>(partialForce_, 2 * size_t(entryCapacity_));
+  zeroed<glm::uvec2>(slotCandidates_, size_t(entryCapacity_) * CSM_SLOT_CANDIDATES);
+  zeroed<uint32_t>(slotCount_, entryCapacity_);
   view(entryLowTex_, entryLow_, GL_RGBA32UI);
   view(entryHighTex_, entryHigh_, GL_RGBA32UI);
 }
@@ -169,8 +213,31 @@ std::vector<std::pair<uint32_t, uint32_t>> CollisionGrid::readPairs(bool* overfl
   return out;
 }
 
-std::vector<uint32_t> CollisionGrid::readSegmentContactCounts() const {
-  return segmentContacts_.download<uint32_t>(particles_);
+std::vector<std::vector<std::pair<uint32_t, float>>> CollisionGrid::readCandidates() const {
+  const size_t n = particles_, first = size_t(half_) * n;
+  const std::vector<uint32_t> count = candidateCount_.download<uint32_t>(2 * n);
+  const std::vector<glm::uvec2> all =
+      candidates_.download<glm::uvec2>(2 * n * CSM_SEGMENT_CANDIDATES);
+  std::vector<std::vector<std::pair<uint32_t, float>>> out(n);
+  for (size_t i = 0; i < n; ++i)
+    for (uint32_t k = 0; k < count[first + i]; ++k) {
+      const glm::uvec2 c = all[(first + i) * CSM_SEGMENT_CANDIDATES + k];
+      out[i].emplace_back(c.x & ((1u << CSM_CANDIDATE_SHIFT) - 1u), std::bit_cast<float>(c.y));
+    }
+  return out;
+}
+
+ContactStats contactStatsOf(const uint32_t* c) {
+  ContactStats s;
+  s.candidates = c[CSM_COUNTER_CANDIDATES];
+  s.contacts = c[CSM_COUNTER_CONTACTS];
+  s.penetrations = c[CSM_COUNTER_PENETRATIONS];
+  s.crossings = c[CSM_COUNTER_CROSSINGS];
+  s.dropped = c[CSM_COUNTER_DROPPED];
+  s.maxDepth = std::bit_cast<float>(c[CSM_COUNTER_MAX_DEPTH]);
+  static_assert(CSM_DEPTH_BINS == kDepthBins && CSM_DEPTH_BINS_PER_R == kDepthBinsPerR);
+  for (int i = 0; i < kDepthBins; ++i) s.depth[i] = c[CSM_COUNTER_DEPTH + i];
+  return s;
 }
 
 }  // namespace csm::gpu

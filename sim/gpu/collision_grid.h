@@ -1,15 +1,21 @@
-// Hair-hair contacts on the GPU (DESIGN.md section 1.7): a hash grid of segment boxes built by
-// counting sort (grid_count, a three-level parallel scan of the buckets and one of the
-// segments' cell counts, grid_scatter), contacts.comp per grid entry and segment_forces.comp,
-// whose per-segment forces the next frame's predict passes gather. Its capacity follows what
-// the samples' counters report it needed; a frame over capacity applies no hair-hair forces
-// and says so in the counters (entries needed > capacity).
+// Strand contacts on the GPU (DESIGN.md section 1.7; sim/contacts.h is the CPU reference).
+// Once per frame, the candidates: a hash grid of segment boxes built by counting sort
+// (grid_count, a three-level parallel scan of the buckets and one of the segments' cell
+// counts, grid_scatter), candidates.comp per grid entry and candidate_lists.comp per segment.
+// Every substep, contact_solve.comp: each segment's corrections, which strain_limit.comp
+// applies. The grid's capacity follows what the samples' counters report it needed; a frame
+// over capacity has no strand contacts and says so in the counters (entries needed >
+// capacity).
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "gl/buffer.h"
 #include "gl/buffer_texture.h"
@@ -20,17 +26,32 @@
 
 namespace csm::gpu {
 
+// The contact measures in a counters buffer (CSM_COUNTER_*).
+ContactStats contactStatsOf(const uint32_t* counters);
+
 class CollisionGrid {
  public:
   bool build(std::string* error);
   // Sizes the grid for `segments` segments over `particles` particles, mean rest length
-  // `meanSegment` (m); clears the counters and forces.
+  // `meanSegment` (m); clears the counters and lists.
   void reset(size_t particles, uint32_t segments, double meanSegment);
+  // Sizes the entry buffers for the boxes of `position` (a state the coming frames start near,
+  // the head at `origin`) with candidate distance `reach`, and half again: the buffers then
+  // rarely need to grow while the hair moves (a frame over them has no strand contacts, says
+  // so in the counters, and grows them when a sample reads those).
+  void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
+                  float reach, const glm::vec3& origin);
+  // Before a frame's writeParams: the lists swap halves (this frame's becomes last frame's);
+  // `contacts` says whether this frame builds them (when the last one did not, there is no
+  // last list to count crossings against).
+  void beginFrame(bool contacts);
   // The grid's part of the parameters: counts.w, grid, cells.
-  void writeParams(SimParams& p, float radius) const;
+  void writeParams(SimParams& p, float reach) const;
   void bind() const;
-  // One collision pass on the bound state, timed as the grid and contacts stages.
-  void run(StageTimer& timer);
+  // The frame's candidates from the bound state, timed as the grid and candidates stages.
+  void findCandidates(StageTimer& timer);
+  // One substep's corrections (the timer's stage is the caller's).
+  void solve(unsigned substep);
   void clearCounters() { counters_.clearToZero(); }
   // Grows the entry buffers when `counters` (read back) say they did not fit; true if it grew.
   bool countersSeen(const uint32_t* counters);
@@ -43,10 +64,13 @@ class CollisionGrid {
   std::vector<uint32_t> readCounters() const;
   void setPairCapacity(size_t capacity);
   std::vector<std::pair<uint32_t, uint32_t>> readPairs(bool* overflow) const;
-  std::vector<uint32_t> readSegmentContactCounts() const;
+  // This frame's candidates of each segment (other segment, contact distance), as
+  // findCandidates lists them.
+  std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates() const;
 
  private:
   void growEntries(uint64_t needed);
+  double cellSize(float reach) const;
   void scan(uint32_t blocks);
 
   size_t particles_ = 0;
@@ -56,15 +80,17 @@ class CollisionGrid {
   uint32_t segmentScan_ = 0;    // counts in the per-segment scan (a power of two)
   uint32_t entryCapacity_ = 0;  // grid entries the entry buffers hold
   size_t pairCapacity_ = 0;
+  uint32_t half_ = 0;             // this frame's half of the candidate lists
+  bool lastFrameListed_ = false;  // whether the other half holds last frame's lists
 
   struct Passes {
-    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, contacts, segmentForces;
+    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, candidates, lists, solve;
   } passes_;
-  gl::Buffer segmentForce_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
+  gl::Buffer correction_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
       scanBlockSums_{gl::NoCreate}, entryLow_{gl::NoCreate}, entryHigh_{gl::NoCreate},
-      counters_{gl::NoCreate}, pairs_{gl::NoCreate}, segmentContacts_{gl::NoCreate},
-      segmentCells_{gl::NoCreate}, segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate},
-      partialForce_{gl::NoCreate};
+      counters_{gl::NoCreate}, pairs_{gl::NoCreate}, segmentCells_{gl::NoCreate},
+      segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate}, slotCandidates_{gl::NoCreate},
+      slotCount_{gl::NoCreate}, candidates_{gl::NoCreate}, candidateCount_{gl::NoCreate};
   gl::BufferTexture entryLowTex_{gl::NoCreate}, entryHighTex_{gl::NoCreate},
       gridStartTex_{gl::NoCreate};
 };

@@ -16,12 +16,14 @@ struct SimParams {
   glm::vec4 windDir;    // xyz unit direction, w strength (m/s)
   glm::vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
   glm::vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
-  glm::vec4 contact;    // x penalty stiffness (1/s^2), y normal damping (1/s), z friction, w dt
+  glm::vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction,
+                        // w dt
   glm::vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
   glm::ivec4 ints;      // x unused, y stiffness model, z rotation iterations, w head spheres
-  glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w contact forces valid
+  glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
   glm::uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = off)
-  glm::uvec4 grid;      // x bucket mask, y entry capacity, z most cells per segment, w unused
+  glm::uvec4 grid;      // x bucket mask, y entry capacity, z most cells per segment, w this frame's
+                        // half of the candidate lists
   glm::vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   glm::vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
 };

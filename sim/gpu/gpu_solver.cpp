@@ -23,8 +23,7 @@ constexpr int kMaxNStep = 8;
 
 GpuSolver::GpuSolver(bool cpuClock)
     : timer_(cpuClock), samples_([this](const uint32_t* counters) {
-        sampledContacts_ =
-            ContactStats{counters[CSM_COUNTER_CONTACTS], counters[CSM_COUNTER_PENETRATIONS]};
+        sampledContacts_ = gpu::contactStatsOf(counters);
         grid_.countersSeen(counters);
       }) {}
 
@@ -70,11 +69,14 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   // Rest lengths set the cell edge (DESIGN.md section 1.7): strain limiting keeps the current
   // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
   grid_.reset(hair_.particles, hair_.segments, hair_.meanSegment);
+  grid_.reserveFor(state_.position, state_.particleStrand,
+                   2.0f * config.collision.radius + config.collision.margin,
+                   glm::vec3(head.translation));
   uploadRegions();
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
 
-  forcesValid_ = false;
+  countersLive_ = false;
   sampledContacts_ = ContactStats{};
   samples_.drop();
   gpu::zeroed<glm::uvec4>(measure_,
@@ -114,14 +116,16 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.windDir = glm::vec4(glm::vec3(dir), wind.strength);
   p.windShape = glm::vec4(wind.gusts, wind.gustFrequency, wind.turbulence, wind.turbulenceScale);
   p.stepping = glm::vec4(sim.stiffness, sim.strainLimit, col.radius, col.headFriction);
-  p.contact = glm::vec4(col.stiffness, col.damping, col.friction, sim.dt);
+  const float reach = 2.0f * col.radius + col.margin;
+  p.contact = glm::vec4(reach, col.compliance, col.friction, sim.dt);
   p.misc = glm::vec4(sim.dftl, wind.drag, 0.0f, 0.0f);
   p.ints = glm::ivec4(0, int(sim.stiffnessModel), sim.rotationIterations,
                       int(config_.head.spheres.size()));
   const bool windOn = wind.strength > 0.0f && wind.drag > 0.0f;
-  p.flags = glm::uvec4(sim.strainLimiting, col.mode != CollisionMode::Off, windOn, forcesValid_);
+  p.flags =
+      glm::uvec4(sim.strainLimiting, collidesWithHead(col.mode), windOn, strandContacts(col.mode));
   p.counts = glm::uvec4(hair_.particles, hair_.strands, hair_.segments, 0u);
-  grid_.writeParams(p, col.radius);
+  grid_.writeParams(p, reach);
   // Cells count from the head, so the clamped 10-bit cell coordinates (common.glsl) cover
   // +-512 cells around it wherever it moves.
   p.origin = glm::vec4(glm::vec3(poses.back().translation), 0.0f);
@@ -176,9 +180,20 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     head_ = poses.back();
     return;
   }
+  const bool contacts = strandContacts(config_.collision.mode);
+  grid_.beginFrame(contacts);
   writeParams(poses, before);
   bindAll();
   timer_.beginFrame();
+  if (contacts) {
+    // The frame's candidates, from where it starts (DESIGN.md section 1.7).
+    grid_.findCandidates(timer_);
+    countersLive_ = true;
+  } else if (countersLive_) {
+    // Nothing to report: the counters of a last pass are cleared once, on the GPU.
+    grid_.clearCounters();
+    countersLive_ = false;
+  }
 
   const uint32_t particles = uint32_t(hair_.particles), strands = uint32_t(hair_.strands);
   for (int k = 0; k < substeps; ++k) {
@@ -188,6 +203,10 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     timer_.stage(gpu::kShapeMatching);
     passes_.shapeMatch.runSubstep(strands, unsigned(k));
     gl::memoryBarrier(gpu::kPassBarrier);
+    if (contacts) {
+      timer_.stage(gpu::kContacts);
+      grid_.solve(unsigned(k));
+    }
     timer_.stage(gpu::kStrainLimiting);
     passes_.strainLimit.runSubstep(strands, unsigned(k));
     gl::memoryBarrier(gpu::kPassBarrier);
@@ -195,15 +214,6 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   }
   timer_.endStage();
   head_ = poses.back();
-  if (config_.collision.mode == CollisionMode::Full) {
-    grid_.run(timer_);
-    forcesValid_ = true;
-  } else {
-    // No collision pass: nothing to report either (the counters of a last pass are cleared
-    // once, on the GPU).
-    if (forcesValid_) grid_.clearCounters();
-    forcesValid_ = false;
-  }
   timer_.endFrame();
   // The renderer reads the positions as vertex data or storage; read-backs and clears follow.
   gl::memoryBarrier(gl::Barrier::All);
@@ -213,19 +223,20 @@ void GpuSolver::detectContacts() {
   if (hair_.particles == 0) return;
   // Parameters as they stand, at the current time (no step is taken); timed as a frame of
   // its own.
+  grid_.beginFrame(true);
   writeParams({head_}, {head_});
   bindAll();
   timer_.beginFrame();
-  grid_.run(timer_);
-  // A tool asks for this pass's contacts: when the grid did not fit, grow it and run again
+  grid_.findCandidates(timer_);
+  // A tool asks for this pass's candidates: when the grid did not fit, grow it and run again
   // (stepFrame instead grows it when a sample sees the total).
   if (grid_.countersSeen(grid_.readCounters().data())) {
     writeParams({head_}, {head_});
     bindAll();
-    grid_.run(timer_);
+    grid_.findCandidates(timer_);
   }
   timer_.endFrame();
-  forcesValid_ = true;
+  countersLive_ = true;
   gl::memoryBarrier(gl::Barrier::All);
 }
 
@@ -255,7 +266,7 @@ void GpuSolver::writeState(const std::vector<glm::vec4>& positions,
 ContactStats GpuSolver::readContactStats() {
   const std::vector<uint32_t> c = grid_.readCounters();
   grid_.countersSeen(c.data());
-  return ContactStats{c[CSM_COUNTER_CONTACTS], c[CSM_COUNTER_PENETRATIONS]};
+  return gpu::contactStatsOf(c.data());
 }
 
 unsigned GpuSolver::lastSubstepSpheres() const {

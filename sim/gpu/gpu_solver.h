@@ -59,23 +59,26 @@ class GpuSolver final : public Solver {
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
   // --- For tests and tools (these read back at once). ---
-  // The contacts of the last collision pass; also grows the grid when it did not fit.
+  // The measures of the last candidate list; also grows the grid when it did not fit.
   ContactStats readContactStats();
-  // Runs the collision pass on the current state now (stepFrame does it at the end of each
-  // frame when collision.mode is full); its forces act during the next frame.
+  // Builds the candidate list of the current state now (stepFrame does it at the start of
+  // each frame with strand contacts); the next frame builds its own.
   void detectContacts();
-  // Records the contact pairs (a < b) the collision pass finds, up to `capacity` (0: off).
+  // Records the pairs (a < b) closer than 2r the candidate pass finds, up to `capacity`
+  // (0: off).
   void setPairCapacity(size_t capacity) { grid_.setPairCapacity(capacity); }
-  // The pairs of the last collision pass, in no particular order; `overflow` when there were
+  // The pairs of the last candidate pass, in no particular order; `overflow` when there were
   // more than the capacity.
   std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr) {
     return grid_.readPairs(overflow);
   }
-  // Per segment (by its first particle): the contacts it summed, both sides counted.
-  std::vector<uint32_t> readSegmentContactCounts() { return grid_.readSegmentContactCounts(); }
-  // The grid of the last collision pass (reads back): entries it needed, entries the buffers
-  // hold (over it, the pass applied no forces), segments in no cell (not finite, or a box
-  // over the cell cap), and the cell edge in metres.
+  // Per segment (by its first particle): its candidates (other segment, contact distance).
+  std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates() {
+    return grid_.readCandidates();
+  }
+  // The grid of the last candidate pass (reads back): entries it needed, entries the buffers
+  // hold (over it, the frame had no strand contacts), segments in no cell (not finite, or a
+  // box over the cell cap), and the cell edge in metres.
   struct GridStats {
     uint32_t entries = 0, capacity = 0, oversize = 0, buckets = 0;
     float cell = 0.0f;
@@ -95,7 +98,7 @@ class GpuSolver final : public Solver {
   Pose head_;
   HairState state_;  // the layout the regions are built from
   Regions regions_;
-  bool forcesValid_ = false;
+  bool countersLive_ = false;  // the counters hold a candidate pass's measures
   int builtMaxN_ = 0;
   gpu::SimParams params_{};
 

@@ -6,6 +6,7 @@
 
 #include "gl/draw.h"
 #include "shaders/sim/bindings.glsl"
+#include "sim/gpu/collision_grid.h"
 
 namespace csm::gpu {
 
@@ -77,7 +78,7 @@ FrameSample SampleRing::readOldest() {
     a.meanStrain = strainSum / double(segments);
   }
   const uint32_t* c = reinterpret_cast<const uint32_t*>(&data[size_t(slot.groups) * 2]);
-  sample.contacts = ContactStats{c[CSM_COUNTER_CONTACTS], c[CSM_COUNTER_PENETRATIONS]};
+  sample.contacts = contactStatsOf(c);
   seen_(c);
   return sample;
 }

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/collision.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/head.h"
 #include "test_scenes.h"
@@ -173,7 +174,7 @@ TEST_CASE("without head collisions the same scene does go inside the head") {
 
 TEST_CASE("the same preset gives bit-identical results twice") {
   Config c = test::smallScene(200);
-  c.collision.mode = CollisionMode::Full;
+  c.collision.mode = CollisionMode::Strands;
   c.wind.strength = 4.0f;
   c.head.motion = HeadMotion::Shake;
   const Groom g = test::growFor(c);
@@ -216,7 +217,7 @@ TEST_CASE("hair-hair collision keeps strands apart") {
     return pairs.size();
   };
   const size_t without = penetrations(CollisionMode::Head);
-  const size_t with = penetrations(CollisionMode::Full);
+  const size_t with = penetrations(CollisionMode::Strands);
   INFO("penetrating pairs without " << without << ", with " << with);
   CHECK(without > 20);
   CHECK(with * 2 < without);

@@ -88,7 +88,7 @@ TEST_CASE("bad presets are refused with the file and the JSON path") {
       Catch::Contains("sim.stifness_window: unknown key (did you mean \"stiffness_window\"?)"));
   CHECK_THAT(parseErrors(R"({"sim": {"stifness_window": 3}})"), Catch::Contains("substeps"));
   CHECK_THAT(parseErrors(R"({"collision": {"mode": "sometimes"}})"),
-             Catch::Contains("collision.mode: \"sometimes\" is not one of off|head|full"));
+             Catch::Contains("collision.mode: \"sometimes\" is not one of off|head|strands"));
   CHECK_THAT(parseErrors("{\n  \"sim\": {\"dt\": 0.01,,}\n}"), Catch::Contains("bad.json:2:"));
   CHECK_THAT(parseErrors("{\n  \"sim\": {\"dt\": 0.01,,}\n}"), Catch::Contains("invalid JSON"));
   CHECK_THAT(parseErrors(R"({"head": {"spheres": [{"center": [0,0,0], "radius": -1}]}})"),
@@ -157,6 +157,8 @@ TEST_CASE("command-line values are parsed per type") {
   CHECK(c.scene.wind.strength == 3.5f);
   CHECK(paramFromText(*findParam("collision.mode"), c, "head") == "");
   CHECK(c.scene.collision.mode == CollisionMode::Head);
+  CHECK(paramFromText(*findParam("collision.mode"), c, "full") == "");  // older presets
+  CHECK(c.scene.collision.mode == CollisionMode::Strands);
   CHECK(paramFromText(*findParam("wind.direction"), c, "0,0,1") == "");
   CHECK(c.scene.wind.direction == glm::vec3(0, 0, 1));
   CHECK(paramFromText(*findParam("render.shadows"), c, "false") == "");

@@ -88,7 +88,7 @@ std::vector<Setting> methodSettings(const Options& o) {
   }
   {
     Setting x = csm("CSM, hair-hair collisions", 2, 4);
-    x.collision = CollisionMode::Full;
+    x.collision = CollisionMode::Strands;
     out.push_back(x);
   }
   if (o.gpu) {

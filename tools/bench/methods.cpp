@@ -184,7 +184,7 @@ void runMethods(const Options& o) {
     csv.add(csmLike ? (calibrated ? "calibrated" : "paper") : "");
     csv.add(calibrated ? double(s.windowLength) : NAN).add(s.substeps).add(r.substepsUsed);
     csv.add(csmLike ? double(s.window) : NAN).add(s.strainLimiting).add(double(s.dftl));
-    csv.add(s.collision == CollisionMode::Full ? "full" : "head");
+    csv.add(collisionModeName(s.collision));
     csv.add(s.solver.rfind("ms-", 0) == 0 ? s.params.stretchStiffness : NAN);
     csv.add(s.solver == "pbd" ? double(s.params.iterations) : NAN);
     csv.add(scene.groom.strandCount()).add(scene.groom.pointCount());

@@ -69,12 +69,12 @@ void runScaling(const Options& o) {
   std::vector<Series> series = {
       {"CPU reference, head collisions", "cpu", "csm", CollisionMode::Head,
        o.quick ? 400.0 : 1500.0},
-      {"CPU reference, hair-hair collisions", "cpu", "csm", CollisionMode::Full,
+      {"CPU reference, hair-hair collisions", "cpu", "csm", CollisionMode::Strands,
        o.quick ? 400.0 : 1000.0},
   };
   if (o.gpu) {
     series.push_back({"GPU, head collisions", "gpu", "gpu", CollisionMode::Head, 2500.0});
-    series.push_back({"GPU, hair-hair collisions", "gpu", "gpu", CollisionMode::Full, 2500.0});
+    series.push_back({"GPU, hair-hair collisions", "gpu", "gpu", CollisionMode::Strands, 2500.0});
   }
   for (const Series& se : series) {
     for (int n : counts) {

@@ -147,15 +147,11 @@ void runSceneChoices(const Options& o) {
     row("particles", "fixed 32 (reference)", refRun, {0.0, 0.0});
   }
   // Collision modes.
-  for (CollisionMode m : {CollisionMode::Off, CollisionMode::Head, CollisionMode::Full}) {
+  for (CollisionMode m : {CollisionMode::Off, CollisionMode::Head, CollisionMode::Strands}) {
     Scene s = base;
     s.config.collision.mode = m;
     const Outcome r = run(s, duration);
-    row("collisions",
-        m == CollisionMode::Off    ? "off"
-        : m == CollisionMode::Head ? "head"
-                                   : "full",
-        r, {NAN, NAN});
+    row("collisions", collisionModeName(m), r, {NAN, NAN});
   }
   // Substeps, against 32. The preset's calibrated stiffness needs 4: fewer are not asked for.
   {

@@ -1,20 +1,19 @@
-// Collision pass, contacts (DESIGN.md section 1 step 7, paper section 3.3): one invocation
-// per grid entry (a segment in one of its cells), in grid order, so the invocations of a SIMD
-// group usually share a bucket and read the same candidates (one cache line per gather; a
-// pass per segment over its own cells measured 1.9x slower on llvmpipe, its lanes reading
-// different buckets). An entry tests a candidate only when the candidate is of the same cell
-// (buckets can hold several), this cell holds the lowest corner of the overlap of the two
-// padded boxes (the owner: a pair is met once from each side, with no dedup), the boxes
-// overlap, and the pair passes the same-strand gap rule. It sums the penalty, normal damping
-// and Coulomb-limited friction of its contacts into its partial slot (the segment's base +
-// the cell's index in its box), and segment_forces.comp adds a segment's partials in cell
-// order. Every pair is met from both sides, and both sides evaluate it with the lower
-// segment index first, so the two forces are exact opposites. No float atomics. The scatter
-// leaves each bucket in the order of its atomics, so an entry sums its contacts in ascending
-// segment index (a sorted list), which makes the sums deterministic whatever the schedule:
-// sorting an entry's few contacts costs far less than sorting the ~100 entries of each bucket
-// (DESIGN.md section 1.7). Formulas: CpuSolver::collide. Closest points: Ericson, Real-Time
-// Collision Detection, 5.1.9.
+// Strand contacts, candidate pass (DESIGN.md section 1.7; the CPU reference is
+// csm::findCandidates in sim/contacts.cpp): the segment pairs closer than 2r + margin at the
+// start of the frame, one invocation per grid entry (a segment in one of its cells), in grid
+// order, so the invocations of a SIMD group usually share a bucket and read the same
+// candidates (one cache line per gather; a pass per segment over its own cells measured 1.9x
+// slower on llvmpipe, its lanes reading different buckets). An entry tests a candidate only
+// when the candidate is of the same cell (buckets can hold several), this cell holds the
+// lowest corner of the overlap of the two padded boxes (the owner: a pair is met once from
+// each side), the boxes overlap, and the pair passes the same-strand gap rule. It writes its
+// pairs in ascending segment index into its slot (the segment's base + the cell's index in
+// its box); candidate_lists.comp merges a segment's slots into its list. The scatter leaves
+// each bucket in the order of its atomics, so the entry sorts its own pairs, which makes
+// every list the same whatever the schedule (sorting an entry's few pairs costs far less than
+// sorting the ~100 entries of each bucket). Closest points: Ericson, Real-Time Collision
+// Detection, 5.1.9. From the lower segment's side it also measures the pair (contacts,
+// penetrations, the depth histogram: integer atomics, the same sums in any order).
 //
 // Phases, because a SIMD lane that skips work still waits for the others (and on llvmpipe a
 // branch is only a mask: both sides always run, and a loop body runs at least once), so rare
@@ -23,19 +22,19 @@
 //     and half of the box overlap test (a bit per candidate that may touch);
 //  2. the flagged ones (entryHigh): the other half of the overlap, the gap rule, and segment a
 //     against b's box (a slab test);
-//  3. the remaining ones: closest points of the two segments; contacts go into a list in
-//     shared memory sorted by segment index (a private array indexed by a per-lane count
-//     measured 40% slower on llvmpipe);
-//  4. the list: forces. Should an entry have more than kMaxContacts contacts, the list keeps
-//     the lowest indices and the scan runs again for the next ones (rounds).
+//  3. the remaining ones: closest points of the two segments; pairs within the candidate
+//     distance go into a list in shared memory sorted by segment index (a private array
+//     indexed by a per-lane count measured 40% slower on llvmpipe);
+//  4. the list: rest distance, flags and measures, into the slot. Should an entry have more
+//     than kMaxContacts pairs, the list keeps the lowest indices and the scan runs again for
+//     the next ones (rounds).
 // When the grid did not fit its buffers this frame (see grid_scatter.comp), no entry runs and
-// segment_forces.comp writes zero forces: the pass is skipped as a whole.
+// every segment's list is empty: the frame has no strand contacts, and the counters say so.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_CONTACT_GROUP) in;
 
 layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
-layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
 layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
 layout(binding = CSM_TEX_ENTRY_LOW) uniform usamplerBuffer entryLowTex;
 layout(binding = CSM_TEX_ENTRY_HIGH) uniform usamplerBuffer entryHighTex;
@@ -46,17 +45,19 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
   uint particleStrand[];
 };
 layout(std430, binding = CSM_BIND_SEGMENT_BASE) readonly buffer SegmentBase { uint segBase[]; };
-layout(std430, binding = CSM_BIND_PARTIAL_FORCE) writeonly buffer PartialForce {
-  vec4 partialForce[];
+layout(std430, binding = CSM_BIND_SLOT_CANDIDATES) writeonly buffer SlotCandidates {
+  uvec2 slotCandidates[];
 };
+layout(std430, binding = CSM_BIND_SLOT_COUNT) writeonly buffer SlotCount { uint slotCount[]; };
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
 layout(std430, binding = CSM_BIND_PAIRS) writeonly buffer Pairs { uvec2 pairs[]; };
 
 const uint kStrandGap = 2u;     // csm::kStrandGap: neighbours along one strand are not contacts
 const uint kChunk = 128u;       // candidates per phase-1 bit mask (a uvec4)
-const uint kMaxContacts = 96u;  // contacts per round (Fig. 1: at most ~110 per segment)
+const uint kMaxContacts = 96u;  // pairs per round (Fig. 1: at most ~110 per segment)
 
-shared uint groupContacts, groupPenetrations;
+shared uint groupContacts, groupPenetrations, groupCandidates, groupDropped;
+shared uint groupDepth[CSM_DEPTH_BINS];
 shared uint contactList[kMaxContacts * CSM_CONTACT_GROUP];  // [k * group size + lane], 24 KiB
 
 vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
@@ -75,9 +76,13 @@ void main() {
   if (lid == 0u) {
     groupContacts = 0u;
     groupPenetrations = 0u;
+    groupCandidates = 0u;
+    groupDropped = 0u;
   }
+  if (lid < uint(CSM_DEPTH_BINS)) groupDepth[lid] = 0u;
   barrier();
-  uint pairsHere = 0u, penetrationsHere = 0u;
+  uint pairsHere = 0u, penetrationsHere = 0u, candidatesHere = 0u, droppedHere = 0u;
+  float deepest = 0.0;
   uint total = texelFetch(gridStartTex, int(P.grid.x + 1u)).x;
   if (e < total && total <= P.grid.y) {
     uvec4 meLow = texelFetch(entryLowTex, int(e)), meHigh = texelFetch(entryHighTex, int(e));
@@ -98,15 +103,13 @@ void main() {
     uint sFirst = strandFirst[strandA], sLast = strandFirst[strandA + 1u] - 1u;
     float r = P.stepping.z;
     float twoR = 2.0 * r;
-    float stiffness = P.contact.x, damping = P.contact.y, friction = P.contact.z;
-    float dt = P.contact.w;
-    float massA = 0.5 * (texelFetch(restTex, int(a)).w + texelFetch(restTex, int(a + 1u)).w);
+    float reach = P.contact.x;  // 2r + margin
+    vec3 restA0 = texelFetch(restTex, int(a)).xyz, restA1 = texelFetch(restTex, int(a + 1u)).xyz;
+    uint written = 0u;
     uint bucket = bucketOf(key);
     uint lo = texelFetch(gridStartTex, int(bucket)).x;
     uint hi = texelFetch(gridStartTex, int(bucket + 1u)).x;
 
-    vec3 f0 = vec3(0.0), f1 = vec3(0.0);
-    uint count = 0u;
     uint from = 0u;  // this round lists contacts with segments from this index on
     bool more = true;
     while (more) {
@@ -155,7 +158,7 @@ void main() {
           float s, t;
           float d2 = closestSegmentPoints(lower ? a0 : b0, lower ? a1 : b1,
                                           lower ? b0 : a0, lower ? b1 : a1, s, t);
-          if (d2 >= twoR * twoR) continue;
+          if (d2 >= reach * reach) continue;
           // Into the sorted list; when it is full, the highest index waits for the
           // next round.
           uint last = (kMaxContacts - 1u) * CSM_CONTACT_GROUP + lid;
@@ -182,54 +185,55 @@ void main() {
         bool lower = a < b;
         vec3 p0 = lower ? a0 : b0, p1 = lower ? a1 : b1;
         vec3 q0 = lower ? b0 : a0, q1 = lower ? b1 : a1;
-        uint pl = lower ? a : b, ql = lower ? b : a;
         float s, t;
         float dist = sqrt(closestSegmentPoints(p0, p1, q0, q1, s, t));
-        vec3 nrm = mix(p0, p1, s) - mix(q0, q1, t);
-        if (dist > 1e-12) {
-          nrm /= dist;
+        // Pairs the groom put closer than 2r keep their rest distance (the rest positions
+        // are in the head frame, which moves rigidly).
+        vec3 rb0 = texelFetch(restTex, int(b)).xyz, rb1 = texelFetch(restTex, int(b + 1u)).xyz;
+        float rs, rt;
+        float restD = sqrt(closestSegmentPoints(lower ? restA0 : rb0, lower ? restA1 : rb1,
+                                                lower ? rb0 : restA0, lower ? rb1 : restA1, rs,
+                                                rt));
+        float d0 = min(twoR, restD);
+        uint flags = pairFlags(p0, p1, q0, q1, s, t, dist, twoR);
+        if (written < uint(CSM_SLOT_CANDIDATES)) {
+          slotCandidates[slot * uint(CSM_SLOT_CANDIDATES) + written] =
+              uvec2(b | (flags << uint(CSM_CANDIDATE_SHIFT)), floatBitsToUint(d0));
+          ++written;
         } else {
-          // Crossing exactly: push apart across both directions.
-          nrm = cross(p1 - p0, q1 - q0);
-          float len = length(nrm);
-          nrm = len > 1e-15 ? nrm / len : vec3(0.0, 1.0, 0.0);
+          ++droppedHere;
         }
-        vec3 vp = mix(texelFetch(velTex, int(pl)).xyz, texelFetch(velTex, int(pl + 1u)).xyz, s);
-        vec3 vq = mix(texelFetch(velTex, int(ql)).xyz, texelFetch(velTex, int(ql + 1u)).xyz, t);
-        vec3 rel = vp - vq;
-        float vn = dot(rel, nrm);
-        float an = max(0.0, stiffness * (twoR - dist) - damping * vn);
-        vec3 vt = rel - vn * nrm;
-        float vtLen = length(vt);
-        vec3 acc = an * nrm;
-        if (vtLen > 1e-12) acc -= min(friction * an, vtLen / dt) * (vt / vtLen);
-        float massB = 0.5 * (texelFetch(restTex, int(b)).w + texelFetch(restTex, int(b + 1u)).w);
-        vec3 f = 0.5 * ((lower ? massA : massB) + (lower ? massB : massA)) * acc;
         if (lower) {
-          f0 += (1.0 - s) * f;
-          f1 += s * f;
-          ++pairsHere;
+          ++candidatesHere;
+          if (dist < twoR) ++pairsHere;
+          if (dist < d0) {
+            float depth = (d0 - dist) / r;
+            deepest = max(deepest, depth);
+            atomicAdd(groupDepth[depthBin(depth)], 1u);
+          }
           if (dist < r) ++penetrationsHere;
-          if (P.counts.w > 0u) {
+          if (P.counts.w > 0u && dist < twoR) {
             uint pairSlot = atomicAdd(counters[CSM_COUNTER_PAIRS], 1u);
             if (pairSlot < P.counts.w) pairs[pairSlot] = uvec2(a, b);
           }
-        } else {
-          f0 -= (1.0 - t) * f;
-          f1 -= t * f;
         }
-        ++count;
       }
       if (more) from = contactList[(kMaxContacts - 1u) * CSM_CONTACT_GROUP + lid] + 1u;
     }
-    partialForce[2u * slot] = vec4(f0, float(count));
-    partialForce[2u * slot + 1u] = vec4(f1, 0.0);
+    slotCount[slot] = written;
   }
   if (pairsHere > 0u) atomicAdd(groupContacts, pairsHere);
   if (penetrationsHere > 0u) atomicAdd(groupPenetrations, penetrationsHere);
+  if (candidatesHere > 0u) atomicAdd(groupCandidates, candidatesHere);
+  if (droppedHere > 0u) atomicAdd(groupDropped, droppedHere);
+  if (deepest > 0.0) atomicMax(counters[CSM_COUNTER_MAX_DEPTH], floatBitsToUint(deepest));
   barrier();
   if (lid == 0u) {
     if (groupContacts > 0u) atomicAdd(counters[CSM_COUNTER_CONTACTS], groupContacts);
     if (groupPenetrations > 0u) atomicAdd(counters[CSM_COUNTER_PENETRATIONS], groupPenetrations);
+    if (groupCandidates > 0u) atomicAdd(counters[CSM_COUNTER_CANDIDATES], groupCandidates);
+    if (groupDropped > 0u) atomicAdd(counters[CSM_COUNTER_DROPPED], groupDropped);
   }
+  if (lid < uint(CSM_DEPTH_BINS) && groupDepth[lid] > 0u)
+    atomicAdd(counters[CSM_COUNTER_DEPTH + lid], groupDepth[lid]);
 }

@@ -1,0 +1,107 @@
+// Strand contacts, one substep (DESIGN.md section 1.7; the CPU reference is csm::solveContacts
+// in sim/contacts.cpp), one invocation per segment, after shape matching: each of the
+// segment's candidates closer than its contact distance is a compliant position constraint
+// (XPBD, one Jacobi iteration: lambda = -C / (W + compliance / h^2)) with Coulomb friction on
+// the contact points' relative sliding this step, removed up to mu times the normal
+// correction. The segment writes what its two particles move by (and how many contacts sent
+// it); strain_limit.comp moves each particle by the mean of what its segments sent. Both
+// sides of a pair evaluate it with the lower index first, so their corrections are exact
+// opposites; the list's order fixes the order of the sums.
+#include "sim/common.glsl"
+
+layout(local_size_x = CSM_PARTICLE_GROUP) in;
+
+layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
+layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
+layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
+
+layout(std430, binding = CSM_BIND_CANDIDATES) readonly buffer Candidates { uvec2 candidates[]; };
+layout(std430, binding = CSM_BIND_CANDIDATE_COUNT) readonly buffer CandidateCount {
+  uint candidateCount[];
+};
+layout(std430, binding = CSM_BIND_CORRECTION) writeonly buffer Correction { vec4 correction[]; };
+layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
+layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
+  uint particleStrand[];
+};
+layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
+  vec4 strandStiffness[];
+};
+
+uniform uint substep;
+
+const uint kList = uint(CSM_SEGMENT_CANDIDATES);
+const uint kIndex = (1u << uint(CSM_CANDIDATE_SHIFT)) - 1u;
+
+vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
+vec3 fetchVel(uint i) { return texelFetch(velTex, int(i)).xyz; }
+// Inverse masses of segment i's two particles: 0 for those the head holds (the strand's first
+// strandStiffness.z), as CpuSolver's invMass_.
+vec2 inverseMasses(uint i) {
+  uint s = particleStrand[i];
+  int held = int(strandStiffness[s].z), k = int(i - strandFirst[s]);
+  return vec2(k < held ? 0.0 : 1.0 / texelFetch(restTex, int(i)).w,
+              k + 1 < held ? 0.0 : 1.0 / texelFetch(restTex, int(i + 1u)).w);
+}
+
+void main() {
+  uint a = globalIndex();
+  if (a >= P.counts.x) return;
+  uint here = P.grid.w * P.counts.x + a;
+  uint n = candidateCount[here];
+  vec3 c0 = vec3(0.0), c1 = vec3(0.0);
+  float count = 0.0;
+  if (n > 0u) {
+    float h = S[substep].time.y;
+    float tilde = P.contact.y / (h * h);
+    float mu = P.contact.z;
+    vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
+    vec3 va0 = fetchVel(a), va1 = fetchVel(a + 1u);
+    vec2 wa = inverseMasses(a);
+    for (uint k = 0u; k < n; ++k) {
+      uvec2 c = candidates[here * kList + k];
+      uint b = c.x & kIndex;
+      float d0 = uintBitsToFloat(c.y);
+      vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
+      // The pair as both of its segments see it: the lower index first (s on it). The
+      // operands are chosen before the call: under a SIMD mask both sides of a ?: would run it.
+      bool lower = a < b;
+      vec3 p0 = lower ? a0 : b0, p1 = lower ? a1 : b1;
+      vec3 q0 = lower ? b0 : a0, q1 = lower ? b1 : a1;
+      float s, t;
+      float d = sqrt(closestSegmentPoints(p0, p1, q0, q1, s, t));
+      float C = d - d0;
+      if (C >= 0.0) continue;
+      vec3 nrm = mix(p0, p1, s) - mix(q0, q1, t);
+      if (d > 1e-12) {
+        nrm /= d;
+      } else {
+        nrm = cross(p1 - p0, q1 - q0);
+        float len = length(nrm);
+        nrm = len > 1e-15 ? nrm / len : vec3(0.0, 1.0, 0.0);
+      }
+      vec2 wb = inverseMasses(b);
+      vec2 wp = lower ? wa : wb, wq = lower ? wb : wa;
+      float W = (1.0 - s) * (1.0 - s) * wp.x + s * s * wp.y + (1.0 - t) * (1.0 - t) * wq.x +
+                t * t * wq.y;
+      if (W <= 0.0) continue;  // both held
+      float lambda = -C / (W + tilde);
+      vec3 vb0 = fetchVel(b), vb1 = fetchVel(b + 1u);
+      vec3 vp = lower ? mix(va0, va1, s) : mix(vb0, vb1, s);
+      vec3 vq = lower ? mix(vb0, vb1, t) : mix(va0, va1, t);
+      vec3 slide = h * (vp - vq);
+      vec3 tangent = slide - dot(slide, nrm) * nrm;
+      float slideLen = length(tangent);
+      float taken = min(slideLen, mu * W * lambda);
+      tangent = slideLen > 1e-15 ? tangent * (taken / (slideLen * W)) : vec3(0.0);
+      vec3 push = lambda * nrm - tangent;
+      if (!lower) push = -push;
+      float g0 = lower ? 1.0 - s : 1.0 - t, g1 = lower ? s : t;
+      c0 += push * (g0 * wa.x);
+      c1 += push * (g1 * wa.y);
+      count += 1.0;
+    }
+  }
+  correction[2u * a] = vec4(c0, count);
+  correction[2u * a + 1u] = vec4(c1, count);
+}

@@ -1,0 +1,151 @@
+#include "sim/contacts.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "sim/collision.h"
+#include "sim/parallel.h"
+
+namespace csm {
+
+double ContactStats::depthQuantile(double q) const {
+  uint64_t total = 0;
+  for (uint32_t n : depth) total += n;
+  if (total == 0) return 0.0;
+  // The rank's place inside its bin, linearly; never past the deepest pair measured.
+  const double rank = q * double(total);
+  double below = 0.0;
+  for (int i = 0; i < kDepthBins; ++i) {
+    if (below + depth[i] >= rank && depth[i] > 0) {
+      const double within = (rank - below) / depth[i];
+      return std::min<double>(maxDepth, (i + within) / kDepthBinsPerR);
+    }
+    below += depth[i];
+  }
+  return maxDepth;
+}
+
+uint32_t pairFlags(const glm::dvec3& a0, const glm::dvec3& a1, const glm::dvec3& b0,
+                   const glm::dvec3& b1, double s, double t, double distance, double twoR) {
+  constexpr double kInside = 1e-6;
+  uint32_t f = 0;
+  if (s > kInside && s < 1.0 - kInside && t > kInside && t < 1.0 - kInside) f |= kPairInterior;
+  if (distance < twoR) f |= kPairNear;
+  if (glm::dot(glm::cross(a1 - a0, b1 - b0), a0 - b0) > 0.0) f |= kPairPositive;
+  return f;
+}
+
+ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,
+                                 std::span<const uint32_t> strand, const ContactSettings& settings,
+                                 const ContactCandidates& previous, ContactStats& stats) {
+  const double r = settings.radius, twoR = 2.0 * r;
+  const std::vector<SegmentPair> pairs = findContactsGrid(x, strand, twoR + settings.margin);
+  stats = ContactStats{};
+  stats.candidates = pairs.size();
+  ContactCandidates out;
+  const size_t n = x.size();
+  out.start.assign(n + 1, 0);
+  out.flags.reserve(pairs.size());
+  std::vector<double> contactDistance(pairs.size());
+  size_t seen = 0;  // merge with the previous list, both sorted by (a, b)
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const SegmentPair& p = pairs[k];
+    // Pairs the groom put closer than 2r keep their rest distance (rest is in the head frame,
+    // which moves rigidly).
+    double s, t;
+    const double restD =
+        std::sqrt(closestSegmentPoints(rest[p.a], rest[p.a + 1], rest[p.b], rest[p.b + 1], s, t));
+    const double d0 = std::min(twoR, restD);
+    contactDistance[k] = d0;
+    if (p.distance < twoR) ++stats.contacts;
+    if (p.distance < d0) {
+      const double depth = (d0 - p.distance) / r;
+      ++stats.depth[depthBin(depth)];
+      stats.maxDepth = std::max(stats.maxDepth, float(depth));
+    }
+    if (p.distance < r) ++stats.penetrations;
+    const uint32_t f =
+        pairFlags(x[p.a], x[p.a + 1], x[p.b], x[p.b + 1], p.s, p.t, p.distance, twoR);
+    const uint64_t key = (uint64_t(p.a) << 32) | p.b;
+    out.flags.emplace_back(key, f);
+    while (seen < previous.flags.size() && previous.flags[seen].first < key) ++seen;
+    if (seen < previous.flags.size() && previous.flags[seen].first == key &&
+        crossed(previous.flags[seen].second, f))
+      ++stats.crossings;
+    ++out.start[p.a + 1];
+    ++out.start[p.b + 1];
+  }
+  for (size_t i = 0; i < n; ++i) out.start[i + 1] += out.start[i];
+  out.other.resize(out.start[n]);
+  out.distance.resize(out.start[n]);
+  // Pairs come sorted by (a, b): a segment's partners below it (as b) all come before those
+  // above it (as a), each in ascending order, so filling in pair order sorts every list.
+  std::vector<uint32_t> fill(out.start.begin(), out.start.end() - 1);
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const SegmentPair& p = pairs[k];
+    out.other[fill[p.a]] = p.b;
+    out.distance[fill[p.a]++] = contactDistance[k];
+    out.other[fill[p.b]] = p.a;
+    out.distance[fill[p.b]++] = contactDistance[k];
+  }
+  return out;
+}
+
+void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
+                   std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
+                   const ContactSettings& settings, std::vector<glm::dvec4>& correction) {
+  const size_t n = x.size();
+  correction.assign(2 * n, glm::dvec4(0.0));
+  if (c.start.size() != n + 1) return;
+  const double tilde = settings.compliance / (h * h);
+  const double mu = settings.friction;
+  parallelFor(n, 512, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      glm::dvec3 c0(0.0), c1(0.0);
+      double count = 0.0;
+      for (uint32_t k = c.start[i]; k < c.start[i + 1]; ++k) {
+        const uint32_t a = uint32_t(i), b = c.other[k];
+        // The pair as both of its segments see it: the lower index first (s on it).
+        const bool lower = a < b;
+        const uint32_t p = lower ? a : b, q = lower ? b : a;
+        double s, t;
+        const double d = std::sqrt(closestSegmentPoints(x[p], x[p + 1], x[q], x[q + 1], s, t));
+        const double C = d - c.distance[k];
+        if (C >= 0.0) continue;
+        glm::dvec3 nrm = glm::mix(x[p], x[p + 1], s) - glm::mix(x[q], x[q + 1], t);
+        if (d > 1e-12) {
+          nrm /= d;
+        } else {
+          nrm = glm::cross(x[p + 1] - x[p], x[q + 1] - x[q]);
+          const double len = glm::length(nrm);
+          nrm = len > 1e-15 ? nrm / len : glm::dvec3(0.0, 1.0, 0.0);
+        }
+        const double wp0 = invMass[p], wp1 = invMass[p + 1];
+        const double wq0 = invMass[q], wq1 = invMass[q + 1];
+        const double W =
+            wp0 * (1 - s) * (1 - s) + wp1 * s * s + wq0 * (1 - t) * (1 - t) + wq1 * t * t;
+        if (W <= 0.0) continue;  // both held
+        const double lambda = -C / (W + tilde);
+        // Coulomb friction on the relative sliding of the contact points this step: removed
+        // up to mu times the normal correction.
+        const glm::dvec3 slide = h * (glm::mix(v[p], v[p + 1], s) - glm::mix(v[q], v[q + 1], t));
+        glm::dvec3 tangent = slide - glm::dot(slide, nrm) * nrm;
+        const double slideLen = glm::length(tangent);
+        const double taken = std::min(slideLen, mu * W * lambda);
+        tangent = slideLen > 1e-15 ? tangent * (taken / (slideLen * W)) : glm::dvec3(0.0);
+        // Along n for p, against n for q; the friction against the sliding for both.
+        const glm::dvec3 push = lower ? lambda * nrm - tangent : -(lambda * nrm - tangent);
+        const double g0 = lower ? 1 - s : 1 - t, g1 = lower ? s : t;
+        c0 += push * (g0 * invMass[a]);
+        c1 += push * (g1 * invMass[a + 1]);
+        count += 1.0;
+      }
+      correction[2 * i] = glm::dvec4(c0, count);
+      correction[2 * i + 1] = glm::dvec4(c1, count);
+    }
+  });
+}
+
+}  // namespace csm

@@ -1,0 +1,98 @@
+// Strand contacts as constraints (DESIGN.md section 1.7), the CPU reference of the GPU passes
+// (shaders/sim/candidates*.comp, contact_solve.comp):
+//  - once per frame, the candidate pairs: segments closer than 2r + margin, each listed on
+//    both of its segments, with its contact distance (2r, or the pair's rest distance when the
+//    groom put it closer) and what the contact measures need;
+//  - every substep, after shape matching, each segment's correction from its candidates as
+//    compliant position constraints (XPBD, one Jacobi iteration) with Coulomb friction; the
+//    strain-limit sweep then moves each particle by the mean of the corrections its two
+//    segments sent it, before limiting it.
+// Every sum runs in a fixed order (a segment's candidates by their index), so the result does
+// not depend on the schedule.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace csm {
+
+// Penetration depth histogram: (contact distance - distance) / r in kDepthBins bins of
+// 1/kDepthBinsPerR r each (the last bin holds everything deeper).
+inline constexpr int kDepthBinsPerR = 32;
+inline constexpr int kDepthBins = 64;
+
+// What one candidate list measured of the state it was built from.
+struct ContactStats {
+  uint64_t candidates = 0;    // pairs within 2r + margin
+  uint64_t contacts = 0;      // pairs closer than 2r
+  uint64_t penetrations = 0;  // pairs closer than r
+  uint64_t crossings = 0;     // pairs whose orientation flipped since the previous list
+  uint64_t dropped = 0;       // candidates that did not fit a segment's list (GPU)
+  float maxDepth = 0.0f;      // deepest penetration, in r
+  std::array<uint32_t, kDepthBins> depth{};
+  // Penetration depth: how far a pair is inside its contact distance (2r, or the rest
+  // distance of a pair the groom put closer), in r. The q-quantile (0..1) over the pairs
+  // inside it; 0 when none.
+  double depthQuantile(double q) const;
+};
+
+// The bin of a depth (in r).
+inline int depthBin(double depthInR) {
+  const int bin = int(depthInR * kDepthBinsPerR);
+  return bin < 0 ? 0 : bin >= kDepthBins ? kDepthBins - 1 : bin;
+}
+
+// The orientation flags of a pair: whether its closest points are inside both segments (only
+// then can the sign of the triple product flip by one passing through the other), whether it
+// is closer than 2r, and the sign.
+inline constexpr uint32_t kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u;
+uint32_t pairFlags(const glm::dvec3& a0, const glm::dvec3& a1, const glm::dvec3& b0,
+                   const glm::dvec3& b1, double s, double t, double distance, double twoR);
+// A crossing between two lists: the pair was interior in both, near in one, and flipped.
+inline bool crossed(uint32_t before, uint32_t now) {
+  return (before & now & kPairInterior) && ((before | now) & kPairNear) &&
+         ((before ^ now) & kPairPositive);
+}
+
+// One frame's candidates, by segment: segment i's are [start[i], start[i+1]).
+struct ContactCandidates {
+  std::vector<uint32_t> start;   // per particle + 1
+  std::vector<uint32_t> other;   // the other segment, ascending within a segment
+  std::vector<double> distance;  // contact distance
+  // Pairs a < b with their flags, sorted, for the next list's crossings.
+  std::vector<std::pair<uint64_t, uint32_t>> flags;
+};
+
+struct ContactSettings {
+  double radius = 0.001, margin = 0.001, compliance = 0.0, friction = 0.3;
+};
+
+// The candidates of positions x (rest: the same particles in the head frame, for rest
+// distances), measured; `previous` is the last frame's list (crossings), or empty.
+ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,
+                                 std::span<const uint32_t> particleStrand,
+                                 const ContactSettings& settings, const ContactCandidates& previous,
+                                 ContactStats& stats);
+
+// The corrections of one substep of length h: for each segment i, correction[2i] goes to
+// particle i and correction[2i+1] to particle i+1 (w: how many contacts sent it). x and v after
+// shape matching; invMass per particle, 0 for the held ones (they follow the head).
+void solveContacts(const ContactCandidates& candidates, std::span<const glm::dvec3> x,
+                   std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
+                   const ContactSettings& settings, std::vector<glm::dvec4>& correction);
+
+// What particle i of the strand [first, end) moves by: the mean of what its segments sent.
+inline glm::dvec3 particleCorrection(std::span<const glm::dvec4> correction, uint32_t i,
+                                     uint32_t first, uint32_t end) {
+  glm::dvec4 c(0.0);
+  if (i + 1 < end) c += correction[2 * size_t(i)];
+  if (i > first) c += correction[2 * size_t(i - 1) + 1];
+  return c.w > 0.0 ? glm::dvec3(c) / c.w : glm::dvec3(0.0);
+}
+
+}  // namespace csm

@@ -1,0 +1,107 @@
+// Strand contacts on the CPU reference (sim/contacts.h): candidates, measures, and contacts
+// that hold one strand on another.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "sim/contacts.h"
+#include "sim/cpu/cpu_solver.h"
+#include "sim/hairstyle.h"
+#include "tests/strand_contact_scenes.h"
+
+using namespace csm;
+
+namespace {
+
+std::vector<glm::vec4> positions(Solver& s) {
+  std::vector<glm::vec4> x;
+  s.readPositions(x);
+  return x;
+}
+
+test::Drape drape(CollisionMode mode, double seconds) {
+  Config c = test::drapeConfig();
+  c.collision.mode = mode;
+  CpuSolver solver;
+  solver.reset(test::drapeGroom(), c, Pose{});
+  for (int f = 0; f < int(std::lround(seconds / c.sim.dt)); ++f) solver.stepFrame(Pose{}, Pose{});
+  return test::measureDrape(positions(solver));
+}
+
+}  // namespace
+
+TEST_CASE("a strand dropped across another stays on top for 2 s") {
+  const test::Drape on = drape(CollisionMode::Strands, 2.0);
+  const test::Drape off = drape(CollisionMode::Head, 2.0);
+  INFO("with contacts: " << on.distance * 1e3 << " mm apart, " << on.height * 1e3
+                         << " mm above; without: " << off.distance * 1e3 << " mm apart, "
+                         << off.height * 1e3 << " mm above");
+  const double r = test::drapeConfig().collision.radius;
+  CHECK(on.height > 1.5 * r);    // on top
+  CHECK(on.distance > 1.5 * r);  // less than half r inside the contact distance
+  // Without strand contacts it falls through.
+  CHECK(off.height < 0.0);
+}
+
+TEST_CASE("with gravity off the rest groom stays still for 1 s with strand contacts") {
+  Config c;
+  c.hairstyle.strands = 300;
+  c.sim.gravity = glm::vec3(0.0f);
+  c.collision.mode = CollisionMode::Strands;
+  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  CpuSolver solver;
+  solver.reset(g, c, Pose{});
+  const std::vector<glm::vec4> rest = positions(solver);
+  for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
+  const std::vector<glm::vec4> x = positions(solver);
+  double moved = 0.0;
+  for (size_t i = 0; i < x.size(); ++i)
+    moved = std::max(moved, double(glm::length(glm::vec3(x[i]) - glm::vec3(rest[i]))));
+  INFO("farthest particle moved " << moved * 1e3 << " mm; " << solver.contactStats().candidates
+                                  << " candidate pairs");
+  CHECK(solver.contactStats().candidates > 0);
+  CHECK(moved < 1e-4);
+}
+
+TEST_CASE("candidates: both sides listed, rest distance kept, crossings counted") {
+  // Two segments of two strands crossing as an X 1 mm apart at rest (r = 1 mm: closer than
+  // 2r), and a third strand 3 mm away from the first.
+  std::vector<glm::dvec3> rest = {{-0.01, 0.0, 0.0},    {0.01, 0.0, 0.0},      // strand 0
+                                  {0.0, 0.001, -0.01},  {0.0, 0.001, 0.01},    // strand 1
+                                  {-0.01, -0.003, 0.0}, {0.01, -0.003, 0.0}};  // strand 2
+  const std::vector<uint32_t> strand = {0, 0, 1, 1, 2, 2};
+  ContactSettings settings;
+  settings.radius = 0.001;
+  settings.margin = 0.0015;
+  ContactStats stats;
+  const ContactCandidates first = findCandidates(rest, rest, strand, settings, {}, stats);
+  REQUIRE(first.start.size() == 7);
+  // Segment 0 has both others (1 mm and 3 mm < 2r + margin = 3.5 mm); 2 and 4 (4 mm apart)
+  // have segment 0 only.
+  CHECK(first.start[1] - first.start[0] == 2);
+  CHECK(first.other[first.start[0]] == 2);
+  CHECK(first.other[first.start[0] + 1] == 4);
+  CHECK(first.distance[first.start[0]] == Approx(0.001));  // its rest distance, not 2r
+  CHECK(first.distance[first.start[0] + 1] == Approx(0.002));
+  CHECK(first.start[3] - first.start[2] == 1);
+  CHECK(first.start[5] - first.start[4] == 1);
+  CHECK(stats.candidates == 2);
+  CHECK(stats.contacts == 1);  // 0-2 closer than 2r
+  CHECK(stats.penetrations == 0);
+  CHECK(stats.depthQuantile(0.5) == 0.0);  // at rest nothing is inside its contact distance
+  CHECK(stats.crossings == 0);
+
+  // Strand 1 passes through strand 0: the pair's orientation flips.
+  std::vector<glm::dvec3> x = rest;
+  x[2].y = x[3].y = -0.0005;
+  ContactStats after;
+  const ContactCandidates second = findCandidates(x, rest, strand, settings, first, after);
+  CHECK(after.crossings == 1);
+  CHECK(after.penetrations == 1);                     // 0.5 mm < r
+  CHECK(after.maxDepth == Approx(0.5).margin(0.01));  // 1 mm contact distance - 0.5 mm
+  CHECK(after.depthQuantile(0.5) == Approx(0.5).margin(1.0 / kDepthBinsPerR));
+  (void)second;
+}
