@@ -48,11 +48,7 @@ void MetricsRecorder::addSample(const FrameSample& sample) {
   penetrationsMax_ = std::max(penetrationsMax_, contacts.penetrations);
   if (sample.frame == 1) restPenetrations_ = int64_t(contacts.penetrations);
   ++contactSamples_;
-  contactSum_.candidates += contacts.candidates;
-  contactSum_.crossings += contacts.crossings;
-  contactSum_.dropped += contacts.dropped;
-  contactSum_.maxDepth = std::max(contactSum_.maxDepth, contacts.maxDepth);
-  for (int i = 0; i < kDepthBins; ++i) contactSum_.depth[i] += contacts.depth[i];
+  contactSum_.add(contacts);
 }
 
 void MetricsRecorder::addRender(double renderMs, const std::vector<StageTime>& stages) {

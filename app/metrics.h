@@ -44,8 +44,8 @@ class MetricsRecorder {
   Accuracy worst_;  // max strain, max speed, max NaN count, summed head penetrations
   double meanStrainSum_ = 0.0;
   uint64_t contactsLast_ = 0, penetrationsLast_ = 0, penetrationsMax_ = 0;
-  // Strand contacts over the samples: crossings, the depth histograms summed, the deepest;
-  // pairs closer than r in the list of the first frame (built from the rest state).
+  // Strand contacts summed over the samples (ContactStats::add); pairs closer than r in the
+  // list of the first frame (built from the rest state).
   ContactStats contactSum_;
   long contactSamples_ = 0;
   int64_t restPenetrations_ = -1;

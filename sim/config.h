@@ -26,10 +26,10 @@ inline bool collidesWithHead(CollisionMode m) {
 inline bool strandContacts(CollisionMode m) {
   return m == CollisionMode::Strands;
 }
-// The name presets and metrics use (collision.mode's choices).
+// The names presets and metrics use, in enum order (collision.mode's choices).
+inline constexpr const char* kCollisionModeNames[] = {"off", "head", "strands"};
 inline const char* collisionModeName(CollisionMode m) {
-  constexpr const char* names[] = {"off", "head", "strands"};
-  return names[int(m)];
+  return kCollisionModeNames[int(m)];
 }
 enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
 // How stiffness is given (sim/stiffness.h). Paper: a window in particles and alpha = the pull

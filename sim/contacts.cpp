@@ -27,6 +27,16 @@ double ContactStats::depthQuantile(double q) const {
   return maxDepth;
 }
 
+void ContactStats::add(const ContactStats& o) {
+  candidates += o.candidates;
+  contacts += o.contacts;
+  penetrations += o.penetrations;
+  crossings += o.crossings;
+  dropped += o.dropped;
+  maxDepth = std::max(maxDepth, o.maxDepth);
+  for (int i = 0; i < kDepthBins; ++i) depth[i] += o.depth[i];
+}
+
 uint32_t pairFlags(const glm::dvec3& a0, const glm::dvec3& a1, const glm::dvec3& b0,
                    const glm::dvec3& b1, double s, double t, double distance, double twoR) {
   constexpr double kInside = 1e-6;
@@ -91,6 +101,16 @@ ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const 
     out.distance[fill[p.b]++] = contactDistance[k];
   }
   return out;
+}
+
+std::vector<double> contactInverseMass(const HairState& state, const Regions& regions) {
+  std::vector<double> w(state.particleCount(), 0.0);
+  for (size_t s = 0; s < state.strandCount(); ++s) {
+    const uint32_t first = state.strandFirst[s];
+    for (uint32_t i = first; i < state.strandFirst[s + 1]; ++i)
+      if (int(i - first) >= regions.pinned[s]) w[i] = 1.0 / double(state.rest[i].w);
+  }
+  return w;
 }
 
 void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,

@@ -19,6 +19,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "sim/hair_state.h"
+#include "sim/stiffness.h"
+
 namespace csm {
 
 // Penetration depth histogram: (contact distance - distance) / r in kDepthBins bins of
@@ -35,6 +38,8 @@ struct ContactStats {
   uint64_t dropped = 0;       // candidates that did not fit a segment's list (GPU)
   float maxDepth = 0.0f;      // deepest penetration, in r
   std::array<uint32_t, kDepthBins> depth{};
+  // Sums another list's counts and depths into these (the deepest is the larger).
+  void add(const ContactStats& o);
   // Penetration depth: how far a pair is inside its contact distance (2r, or the rest
   // distance of a pair the groom put closer), in r. The q-quantile (0..1) over the pairs
   // inside it; 0 when none.
@@ -78,6 +83,10 @@ ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const 
                                  std::span<const uint32_t> particleStrand,
                                  const ContactSettings& settings, const ContactCandidates& previous,
                                  ContactStats& stats);
+
+// The inverse mass of each particle as the contacts see it: 0 for the particles the head
+// holds (each strand's first regions.pinned), which follow the head whatever pushes them.
+std::vector<double> contactInverseMass(const HairState& state, const Regions& regions);
 
 // The corrections of one substep of length h: for each segment i, correction[2i] goes to
 // particle i and correction[2i+1] to particle i+1 (w: how many contacts sent it). x and v after

@@ -1,5 +1,7 @@
 #include "sim/params.h"
 
+#include <iterator>
+
 namespace csm {
 namespace {
 
@@ -203,7 +205,7 @@ std::vector<Param<Config>> build() {
             "off: none; head: hair against the head spheres; strands: and contacts between strands "
             "that hold them apart. \"full\" (older presets) reads as strands.",
             Effect::Live)
-          .choices({"off", "head", "strands"})
+          .choices({std::begin(kCollisionModeNames), std::end(kCollisionModeNames)})
           .alias("full", int(CollisionMode::Strands)),
       param("collision.radius", "Hair radius", "Simulation|Collision", &Config::collision,
             &CollisionConfig::radius, 1e-5, 0.02,

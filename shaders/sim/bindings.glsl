@@ -3,7 +3,7 @@
 // Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
 // bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
 // (no pass here declares more) but only 8 binding points; every driver we run on has more
-// than the 27 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+// than the 28 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
@@ -57,6 +57,9 @@
       // of the segment that cell owns, at its SEGMENT_BASE + cell
       // index (a candidate: see CSM_BIND_CANDIDATES)
 #define CSM_BIND_SLOT_COUNT 25  // uint per grid entry: how many of those
+#define CSM_BIND_INVERSE_MASS \
+  27  // float per particle: its inverse mass as the strand contacts
+      // see it, 0 when the head holds it (csm::contactInverseMass)
 #define CSM_BIND_CANDIDATES \
   26  // uvec2 x CSM_SEGMENT_CANDIDATES per particle, twice (halves as
       // CANDIDATE_COUNT): a segment's candidates in ascending order,
@@ -74,6 +77,7 @@
 #define CSM_TEX_ENTRY_HIGH 5
 #define CSM_TEX_PREDICTED 6
 #define CSM_TEX_REGION 7
+#define CSM_TEX_INVERSE_MASS 8
 
 // Slots of the COUNTERS buffer.
 #define CSM_COUNTER_ENTRIES 0

@@ -21,8 +21,6 @@ layout(std430, binding = CSM_BIND_CANDIDATE_COUNT) buffer CandidateCount {
 };
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
 
-const uint kList = uint(CSM_SEGMENT_CANDIDATES);
-const uint kIndex = (1u << uint(CSM_CANDIDATE_SHIFT)) - 1u;
 
 void main() {
   uint a = globalIndex();

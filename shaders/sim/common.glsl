@@ -133,6 +133,11 @@ uint pairFlags(vec3 a0, vec3 a1, vec3 b0, vec3 b1, float s, float t, float dist,
   return f;
 }
 
+// A candidate list entry (CSM_BIND_CANDIDATES): the other segment in the low bits, the
+// pair's flags above them; kList entries per segment.
+const uint kList = uint(CSM_SEGMENT_CANDIDATES);
+const uint kIndex = (1u << uint(CSM_CANDIDATE_SHIFT)) - 1u;
+
 bool crossed(uint before, uint now) {
   return (before & now & kPairInterior) != 0u && ((before | now) & kPairNear) != 0u &&
          ((before ^ now) & kPairPositive) != 0u;

@@ -13,35 +13,22 @@ layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
 layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
-layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
+layout(binding = CSM_TEX_INVERSE_MASS) uniform samplerBuffer inverseMassTex;
 
 layout(std430, binding = CSM_BIND_CANDIDATES) readonly buffer Candidates { uvec2 candidates[]; };
 layout(std430, binding = CSM_BIND_CANDIDATE_COUNT) readonly buffer CandidateCount {
   uint candidateCount[];
 };
 layout(std430, binding = CSM_BIND_CORRECTION) writeonly buffer Correction { vec4 correction[]; };
-layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
-layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
-  uint particleStrand[];
-};
-layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
-  vec4 strandStiffness[];
-};
 
 uniform uint substep;
 
-const uint kList = uint(CSM_SEGMENT_CANDIDATES);
-const uint kIndex = (1u << uint(CSM_CANDIDATE_SHIFT)) - 1u;
 
 vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
 vec3 fetchVel(uint i) { return texelFetch(velTex, int(i)).xyz; }
-// Inverse masses of segment i's two particles: 0 for those the head holds (the strand's first
-// strandStiffness.z), as CpuSolver's invMass_.
+// Inverse masses of segment i's two particles (0 for those the head holds).
 vec2 inverseMasses(uint i) {
-  uint s = particleStrand[i];
-  int held = int(strandStiffness[s].z), k = int(i - strandFirst[s]);
-  return vec2(k < held ? 0.0 : 1.0 / texelFetch(restTex, int(i)).w,
-              k + 1 < held ? 0.0 : 1.0 / texelFetch(restTex, int(i + 1u)).w);
+  return vec2(texelFetch(inverseMassTex, int(i)).x, texelFetch(inverseMassTex, int(i + 1u)).x);
 }
 
 void main() {

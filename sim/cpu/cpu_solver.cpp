@@ -171,10 +171,7 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
 
 void CpuSolver::rebuildRegions() {
   regions_ = ::csm::buildRegions(state_, config_.sim);
-  invMass_.resize(mass_.size());
-  for (size_t s = 0; s + 1 < first_.size(); ++s)
-    for (uint32_t i = first_[s]; i < first_[s + 1]; ++i)
-      invMass_[i] = int(i - first_[s]) < regions_.pinned[s] ? 0.0 : 1.0 / mass_[i];
+  invMass_ = contactInverseMass(state_, regions_);
   // Static prefix sums: per-region masses and mass-weighted rest positions (root-relative).
   for (size_t s = 0; s + 1 < first_.size(); ++s) {
     const uint32_t a = first_[s], b = first_[s + 1];

@@ -21,9 +21,6 @@ constexpr float kPadSlack = 1.01f;
 // stretched to ~1.5 mean lengths or more misses it. Such a segment is in no cell this frame
 // (counted as oversize), which keeps the pass bounded when a simulation explodes.
 constexpr uint32_t kMaxSegmentCells = 64;
-// Entry buffers start at this many entries per segment (Fig. 1 needs ~7); when a frame needs
-// more, that frame has no strand contacts and the buffers grow (see growEntries).
-constexpr uint32_t kEntriesPerSegment = 10;
 
 }  // namespace
 
@@ -63,8 +60,7 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
   zeroed<glm::uvec2>(pairs_, pairCapacity_);
   view(gridStartTex_, gridStart_, GL_R32UI);
-  entryCapacity_ = 0;
-  growEntries(std::max<uint64_t>(1, uint64_t(segments) * kEntriesPerSegment));
+  entryCapacity_ = 0;  // reserveFor sizes the entry buffers
 }
 
 double CollisionGrid::cellSize(float reach) const {
@@ -87,13 +83,16 @@ void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uin
     const glm::dvec3 span = hi - lo + 1.0;
     entries += std::min<uint64_t>(kMaxSegmentCells, uint64_t(span.x * span.y * span.z));
   }
-  growEntries(entries + entries / 2);
+  growEntries(std::max<uint64_t>(1, entries + entries / 2));
 }
 
 void CollisionGrid::beginFrame(bool contacts) {
   if (contacts && !lastFrameListed_) {
     // No last list: nothing to count crossings against.
     candidateCount_.clearToZero();
+  } else if (!contacts && lastFrameListed_) {
+    // Nothing to report this frame.
+    counters_.clearToZero();
   }
   half_ ^= 1u;
   lastFrameListed_ = contacts;

@@ -33,7 +33,7 @@ class CollisionGrid {
  public:
   bool build(std::string* error);
   // Sizes the grid for `segments` segments over `particles` particles, mean rest length
-  // `meanSegment` (m); clears the counters and lists.
+  // `meanSegment` (m); clears the counters and lists. reserveFor then sizes the entries.
   void reset(size_t particles, uint32_t segments, double meanSegment);
   // Sizes the entry buffers for the boxes of `position` (a state the coming frames start near,
   // the head at `origin`) with candidate distance `reach`, and half again: the buffers then
@@ -43,7 +43,8 @@ class CollisionGrid {
                   float reach, const glm::vec3& origin);
   // Before a frame's writeParams: the lists swap halves (this frame's becomes last frame's);
   // `contacts` says whether this frame builds them (when the last one did not, there is no
-  // last list to count crossings against).
+  // last list to count crossings against; when this one does not, the last one's measures
+  // are cleared, once, on the GPU).
   void beginFrame(bool contacts);
   // The grid's part of the parameters: counts.w, grid, cells.
   void writeParams(SimParams& p, float reach) const;
@@ -52,7 +53,6 @@ class CollisionGrid {
   void findCandidates(StageTimer& timer);
   // One substep's corrections (the timer's stage is the caller's).
   void solve(unsigned substep);
-  void clearCounters() { counters_.clearToZero(); }
   // Grows the entry buffers when `counters` (read back) say they did not fit; true if it grew.
   bool countersSeen(const uint32_t* counters);
 
@@ -81,7 +81,8 @@ class CollisionGrid {
   uint32_t entryCapacity_ = 0;  // grid entries the entry buffers hold
   size_t pairCapacity_ = 0;
   uint32_t half_ = 0;             // this frame's half of the candidate lists
-  bool lastFrameListed_ = false;  // whether the other half holds last frame's lists
+  bool lastFrameListed_ = false;  // whether the other half holds last frame's lists (and the
+                                  // counters its measures)
 
   struct Passes {
     ComputePass count, scanBlocks, scanSums, scanAdd, scatter, candidates, lists, solve;

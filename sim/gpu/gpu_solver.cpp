@@ -76,7 +76,6 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
 
-  countersLive_ = false;
   sampledContacts_ = ContactStats{};
   samples_.drop();
   gpu::zeroed<glm::uvec4>(measure_,
@@ -86,7 +85,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
 
 void GpuSolver::uploadRegions() {
   regions_ = buildRegions(state_, config_.sim);
-  hair_.uploadRegions(regions_);
+  hair_.uploadRegions(state_, regions_);
 }
 
 void GpuSolver::setConfig(const Config& config) {
@@ -185,15 +184,8 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   writeParams(poses, before);
   bindAll();
   timer_.beginFrame();
-  if (contacts) {
-    // The frame's candidates, from where it starts (DESIGN.md section 1.7).
-    grid_.findCandidates(timer_);
-    countersLive_ = true;
-  } else if (countersLive_) {
-    // Nothing to report: the counters of a last pass are cleared once, on the GPU.
-    grid_.clearCounters();
-    countersLive_ = false;
-  }
+  // The frame's candidates, from where it starts (DESIGN.md section 1.7).
+  if (contacts) grid_.findCandidates(timer_);
 
   const uint32_t particles = uint32_t(hair_.particles), strands = uint32_t(hair_.strands);
   for (int k = 0; k < substeps; ++k) {
@@ -236,7 +228,6 @@ void GpuSolver::detectContacts() {
     grid_.findCandidates(timer_);
   }
   timer_.endFrame();
-  countersLive_ = true;
   gl::memoryBarrier(gl::Barrier::All);
 }
 

@@ -98,7 +98,6 @@ class GpuSolver final : public Solver {
   Pose head_;
   HairState state_;  // the layout the regions are built from
   Regions regions_;
-  bool countersLive_ = false;  // the counters hold a candidate pass's measures
   int builtMaxN_ = 0;
   gpu::SimParams params_{};
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "sim/contacts.h"
 #include "sim/gpu/buffer_fill.h"
 #include "shaders/sim/bindings.glsl"
 
@@ -45,7 +46,7 @@ void StrandBuffers::upload(const HairState& st, const glm::dquat& head) {
   view(predictedTex, predicted, GL_RGBA32F);
 }
 
-void StrandBuffers::uploadRegions(const Regions& regions) {
+void StrandBuffers::uploadRegions(const HairState& state, const Regions& regions) {
   const size_t particleCount = particles, strandCount = strands;
   std::vector<glm::vec4> perParticle(particleCount);
   for (size_t i = 0; i < particleCount; ++i) {
@@ -60,6 +61,9 @@ void StrandBuffers::uploadRegions(const Regions& regions) {
                              float(regions.pinned[s]), 0.0f);
   fill(strandStiffness, perStrand);
   view(regionTex, region, GL_RGBA32F);
+  const std::vector<double> w = contactInverseMass(state, regions);
+  fill(inverseMass, std::vector<float>(w.begin(), w.end()));
+  view(inverseMassTex, inverseMass, GL_R32F);
 }
 
 void StrandBuffers::bind() const {
@@ -77,6 +81,7 @@ void StrandBuffers::bind() const {
   restTex.bind(CSM_TEX_REST);
   predictedTex.bind(CSM_TEX_PREDICTED);
   regionTex.bind(CSM_TEX_REGION);
+  inverseMassTex.bind(CSM_TEX_INVERSE_MASS);
 }
 
 }  // namespace csm::gpu

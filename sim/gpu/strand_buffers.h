@@ -18,8 +18,9 @@ namespace csm::gpu {
 struct StrandBuffers {
   // The state and layout of `state`; each region's rotation starts at the head's.
   void upload(const HairState& state, const glm::dquat& head);
-  // Region masses, inertia and ranges, and each strand's stiffness rate.
-  void uploadRegions(const Regions& regions);
+  // Region masses, inertia and ranges, each strand's stiffness rate, and the inverse masses
+  // the strand contacts use (0 for held particles), for the regions of `state`.
+  void uploadRegions(const HairState& state, const Regions& regions);
   // Storage views where the shaders declare them (rest and regions are read as texels).
   void bind() const;
 
@@ -31,10 +32,10 @@ struct StrandBuffers {
   gl::Buffer rest{gl::NoCreate}, position{gl::NoCreate}, velocity{gl::NoCreate},
       predicted{gl::NoCreate}, rotation{gl::NoCreate}, strandFirst{gl::NoCreate},
       particleStrand{gl::NoCreate}, strandOrder{gl::NoCreate}, region{gl::NoCreate},
-      strandStiffness{gl::NoCreate};
+      strandStiffness{gl::NoCreate}, inverseMass{gl::NoCreate};
   // texelFetch views for reads that differ per invocation (see gl/buffer_texture.h).
   gl::BufferTexture positionTex{gl::NoCreate}, velocityTex{gl::NoCreate}, restTex{gl::NoCreate},
-      predictedTex{gl::NoCreate}, regionTex{gl::NoCreate};
+      predictedTex{gl::NoCreate}, regionTex{gl::NoCreate}, inverseMassTex{gl::NoCreate};
 };
 
 }  // namespace csm::gpu

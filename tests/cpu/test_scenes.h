@@ -1,4 +1,4 @@
-// Small scenes shared by the CPU tests.
+// Small scenes shared by the tests (the GPU suite runs the same against the CPU reference).
 #pragma once
 
 #include "sim/config.h"

@@ -14,6 +14,7 @@
 #include "sim/gpu/gpu_solver.h"
 #include "sim/hairstyle.h"
 #include "app/preset.h"
+#include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
 #include "tests/strand_contact_scenes.h"
 
@@ -30,21 +31,16 @@ std::unique_ptr<GpuSolver> makeGpu() {
   return gpu;
 }
 
+// The CPU tests' small scene with strands of up to 20 particles (the tolerance below).
 Config smallScene(int strands) {
-  Config c;
-  c.hairstyle.strands = strands;
-  c.hairstyle.particlesPerStrand = 0;
-  c.hairstyle.minParticles = 6;
+  Config c = test::smallScene(strands);
   c.hairstyle.maxParticles = 20;
-  c.hairstyle.lengthMin = 0.12f;
   c.hairstyle.lengthMax = 0.30f;
-  c.wind.strength = 0.0f;
-  c.head.motion = HeadMotion::None;
   return c;
 }
 
 Groom grow(const Config& c) {
-  return growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  return test::growFor(c);
 }
 
 struct Difference {
