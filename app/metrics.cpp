@@ -43,6 +43,7 @@ void MetricsRecorder::addSample(const FrameSample& sample) {
   worst_.nanCount = std::max(worst_.nanCount, a.nanCount);
   worst_.headPenetrations += a.headPenetrations;
   meanStrainSum_ += a.meanStrain;
+  if (!sample.contactsMeasured) return;
   contactsLast_ = contacts.contacts;
   penetrationsLast_ = contacts.penetrations;
   penetrationsMax_ = std::max(penetrationsMax_, contacts.penetrations);
@@ -95,16 +96,18 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
       {"head_penetrations", worst_.headPenetrations},
       {"max_speed", worst_.maxSpeed},
       {"nan_count", worst_.nanCount},
-      {"hair_contacts", contactsLast_},
-      {"hair_penetrations", penetrationsLast_},
-      {"hair_penetrations_max", penetrationsMax_},
   };
+  // Hair-hair measures only where a sample measured them (a mode without hair-hair measures
+  // them only when asked: Solver::setContactMeasures), never zeros for "not measured".
   if (contactSamples_ > 0) {
     // Each sample's crossings are those of its frame (against the frame before): per second
     // over the sampled frames.
     const double dt = j.value("frame_dt", 0.0);
     const double seconds = dt * double(contactSamples_);
     nlohmann::json& a = j["accuracy"];
+    a["hair_contacts"] = contactsLast_;
+    a["hair_penetrations"] = penetrationsLast_;
+    a["hair_penetrations_max"] = penetrationsMax_;
     a["hair_crossings"] = contactSum_.crossings;
     a["hair_crossings_per_s"] = seconds > 0.0 ? double(contactSum_.crossings) / seconds : 0.0;
     a["hair_depth_p50"] = contactSum_.depthQuantile(0.50);

@@ -100,9 +100,10 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
   ImGui::Separator();
   const FrameSample sample = f.sample.value_or(FrameSample{});
   const ContactStats& contacts = sample.contacts;
-  ImGui::Text("hair contacts %llu, closer than r %llu", (unsigned long long)contacts.contacts,
-              (unsigned long long)contacts.penetrations);
-  if (strandContacts(f.config.collision.mode)) {
+  if (!sample.contactsMeasured) ImGui::TextDisabled("hair contacts: not measured (hair-hair off)");
+  if (sample.contactsMeasured) {
+    ImGui::Text("hair contacts %llu, closer than r %llu", (unsigned long long)contacts.contacts,
+                (unsigned long long)contacts.penetrations);
     // The measures of the candidate list the sampled frame started from.
     ImGui::Text("crossings %llu (%.0f/s), candidates %llu", (unsigned long long)contacts.crossings,
                 double(contacts.crossings) / std::max(1e-6, double(f.config.sim.dt)),

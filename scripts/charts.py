@@ -4,7 +4,7 @@
 usage: /usr/bin/python3 scripts/charts.py DIR
 
 Reads DIR/{methods,stability,resolution,region_sums,scaling,scene_choices,window_coefficient,
-window_sag}.csv (whichever are there) and writes PNG and SVG charts next to them. Needs only Debian's python3-matplotlib.
+window_sag,modes}.csv (whichever are there) and writes PNG and SVG charts next to them. Needs only Debian's python3-matplotlib.
 """
 import csv
 import json
@@ -363,6 +363,46 @@ def window_chart(coefficients, sags, out):
     save(fig, out, "window")
 
 
+MODE_STYLE = {"off": ("#7f7f7f", "v"), "head": ("#1f77b4", "o"), "strands": ("#9467bd", "P"),
+              "volume": ("#2ca02c", "s"), "volume+strands": ("#d62728", "D")}
+
+
+def modes_chart(rows, out):
+    """scripts/bench_modes.sh: cost against strand count, and against what hair-hair leaves
+    (pairs closer than r per strand, crossings per second), for every collision mode."""
+    fig, axes = plt.subplots(1, 3, figsize=(12, 4))
+    modes = []
+    for r in rows:
+        if r["mode"] not in modes:
+            modes.append(r["mode"])
+    for m in modes:
+        color, marker = MODE_STYLE.get(m, ("#bcbd22", "o"))
+        pts = sorted((num(r, "strands"), num(r, "sim_ms"), num(r, "pairs_r"),
+                      num(r, "crossings_per_s")) for r in rows if r["mode"] == m)
+        xs = [p[0] for p in pts]
+        axes[0].plot(xs, [p[1] for p in pts], marker=marker, color=color, label=m)
+        axes[1].plot([p[2] / p[0] for p in pts], [p[1] for p in pts], marker=marker,
+                     color=color, label=m)
+        axes[2].plot([max(p[3], 1.0) for p in pts], [p[1] for p in pts], marker=marker,
+                     color=color, label=m)
+        for p in pts:
+            axes[1].annotate(f"{p[0] / 1000:g}k", (p[2] / p[0], p[1]), fontsize=6,
+                             xytext=(3, 0), textcoords="offset points")
+    axes[0].set_xscale("log")
+    axes[0].set_xlabel("strands")
+    axes[0].set_title("Cost against strand count", fontsize=9)
+    axes[1].set_xlabel("pairs closer than r, per strand (end of run)")
+    axes[1].set_title("Cost against penetration", fontsize=9)
+    axes[2].set_xscale("log")
+    axes[2].set_xlabel("crossings per second (1 where none)")
+    axes[2].set_title("Cost against crossings", fontsize=9)
+    for ax in axes:
+        ax.set_yscale("log")
+        ax.set_ylabel("simulation ms per frame")
+        ax.legend(fontsize=7)
+    save(fig, out, "modes")
+
+
 def main():
     if len(sys.argv) != 2:
         print(__doc__, file=sys.stderr)
@@ -379,7 +419,7 @@ def main():
         cost_charts(methods, out, note)
     for name, fn in (("stability", stability_chart), ("scaling", scaling_chart),
                      ("region_sums", region_chart), ("resolution", resolution_chart),
-                     ("scene_choices", scene_chart)):
+                     ("scene_choices", scene_chart), ("modes", modes_chart)):
         rows = read(os.path.join(out, f"{name}.csv"))
         if rows:
             fn(rows, out)

@@ -19,15 +19,19 @@ struct Sphere {
 
 // What the hair collides with. Strands: the head and segment contacts between strands, as
 // constraints in every substep (sim/contacts.h).
-enum class CollisionMode : int { Off = 0, Head = 1, Strands = 2 };
+enum class CollisionMode : int { Off = 0, Head = 1, Strands = 2, Volume = 3, VolumeStrands = 4 };
 inline bool collidesWithHead(CollisionMode m) {
   return m != CollisionMode::Off;
 }
 inline bool strandContacts(CollisionMode m) {
-  return m == CollisionMode::Strands;
+  return m == CollisionMode::Strands || m == CollisionMode::VolumeStrands;
+}
+inline bool volumeForces(CollisionMode m) {
+  return m == CollisionMode::Volume || m == CollisionMode::VolumeStrands;
 }
 // The names presets and metrics use, in enum order (collision.mode's choices).
-inline constexpr const char* kCollisionModeNames[] = {"off", "head", "strands"};
+inline constexpr const char* kCollisionModeNames[] = {"off", "head", "strands", "volume",
+                                                      "volume+strands"};
 inline const char* collisionModeName(CollisionMode m) {
   return kCollisionModeNames[int(m)];
 }
@@ -113,6 +117,11 @@ struct CollisionConfig {
   float compliance = 0.0f;    // m/N: 0 = hard contacts
   float friction = 0.3f;      // Coulomb coefficient between strands
   float headFriction = 0.3f;  // Coulomb friction coefficient against the head
+  // The volume mode (sim/volume.h).
+  float volumeCell = 0.01f;      // m
+  float volumeFriction = 5.0f;   // 1/s
+  float volumeStiffness = 2.0f;  // m^2/s^2
+  float volumeFraction = 0.2f;   // volume fraction hair may fill before it is pushed
 };
 
 struct WindConfig {

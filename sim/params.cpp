@@ -15,6 +15,10 @@ bool calibratedModel(const Config& c) {
   return c.sim.stiffnessModel == StiffnessModel::Calibrated;
 }
 
+bool volumeMode(const Config& c) {
+  return volumeForces(c.collision.mode);
+}
+
 std::vector<Param<Config>> build() {
   return {
       param("hairstyle.file", "Groom file", "Hairstyle", &Config::hairstyle, &HairstyleConfig::file,
@@ -203,7 +207,9 @@ std::vector<Param<Config>> build() {
       param("collision.mode", "Collisions", "Simulation|Collision", &Config::collision,
             &CollisionConfig::mode, 0, 0,
             "off: none; head: hair against the head spheres; strands: and contacts between strands "
-            "that hold them apart. \"full\" (older presets) reads as strands.",
+            "that hold them apart; volume: and hair as a continuum on a grid (friction between "
+            "neighbours, a push out of over-dense places; cost linear in particles); "
+            "volume+strands: both. \"full\" (older presets) reads as strands.",
             Effect::Live)
           .choices({std::begin(kCollisionModeNames), std::end(kCollisionModeNames)})
           .alias("full", int(CollisionMode::Strands)),
@@ -231,6 +237,31 @@ std::vector<Param<Config>> build() {
             "Coulomb friction coefficient between hair and head: sliding slows by at most this "
             "times the push the head gives.",
             Effect::Live),
+      param("collision.volume_cell", "Volume cell", "Simulation|Collision|Volume",
+            &Config::collision, &CollisionConfig::volumeCell, 0.002, 0.05,
+            "Volume mode: node spacing of the grid hair is splatted to (m). Finer resolves "
+            "thinner gaps and costs more memory.",
+            Effect::Live)
+          .onlyWhen(volumeMode)
+          .display(1000.0, "mm"),
+      param("collision.volume_friction", "Volume friction", "Simulation|Collision|Volume",
+            &Config::collision, &CollisionConfig::volumeFriction, 0.0, 100.0,
+            "Volume mode: rate (1/s) at which each particle's velocity joins the mean velocity "
+            "of the hair around it.",
+            Effect::Live)
+          .onlyWhen(volumeMode),
+      param("collision.volume_stiffness", "Volume stiffness", "Simulation|Collision|Volume",
+            &Config::collision, &CollisionConfig::volumeStiffness, 0.0, 100.0,
+            "Volume mode: push out of over-dense places, m/s^2 per unit gradient (1/m) of the "
+            "volume fraction over what is allowed.",
+            Effect::Live)
+          .onlyWhen(volumeMode),
+      param("collision.volume_fraction", "Volume fraction", "Simulation|Collision|Volume",
+            &Config::collision, &CollisionConfig::volumeFraction, 0.01, 1.0,
+            "Volume mode: the fraction of space hair may fill before it is pushed (or what the "
+            "groom packed at rest, where that is more).",
+            Effect::Live)
+          .onlyWhen(volumeMode),
       param("wind.strength", "Strength", "Wind", &Config::wind, &WindConfig::strength, 0.0, 50.0,
             "Mean wind speed (m/s).", Effect::Live),
       param("wind.direction", "Direction", "Wind", &Config::wind, &WindConfig::direction, -1, 1,

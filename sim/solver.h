@@ -30,6 +30,9 @@ struct FrameSample {
   long frame = -1;
   Accuracy accuracy;
   ContactStats contacts;  // of the candidate list that frame began with
+  // Whether `contacts` measured anything: false when the mode builds no candidate lists
+  // (hair-hair off) and the solver was not asked to measure contacts anyway.
+  bool contactsMeasured = false;
 };
 
 class Solver {
@@ -80,6 +83,11 @@ class Solver {
   // Hair-hair contacts of the last collision pass (zeros when collisions are off). The GPU
   // solver's are those of its latest sample: it reads nothing back for them.
   virtual ContactStats contactStats() { return {}; }
+  // Contact measures in every mode: where hair-hair is off, each sampled frame also runs the
+  // candidate search on its end state, outside the frame's timing, for the measures alone
+  // (pairs, penetration depth, crossings between samples). Off by default: it costs a
+  // candidate search per sample. Solvers without contacts ignore it.
+  virtual void setContactMeasures(bool always) { (void)always; }
   // The stiffness it runs with: steps per frame, alpha, windows (CSM solvers).
   virtual StiffnessInfo stiffness() const { return {}; }
 };

@@ -17,8 +17,8 @@
 namespace csm::test {
 
 // A small scene with every live feature in play: the head nods, wind with gusts and
-// turbulence, hair-hair contacts, strain limiting, calibrated stiffness asking for more steps
-// than the fewest (so the cap on steps can bind). `paper`: the paper's stiffness model.
+// turbulence, hair-hair contacts and volume, strain limiting, calibrated stiffness asking for more
+// steps than the fewest (so the cap on steps can bind). `paper`: the paper's stiffness model.
 inline Config liveScene(bool paper = false) {
   Config c;
   c.hairstyle.strands = 40;
@@ -34,7 +34,8 @@ inline Config liveScene(bool paper = false) {
   c.wind.gusts = 0.5f;
   c.wind.gustFrequency = 1.0f;
   c.wind.turbulence = 0.5f;
-  c.collision.mode = CollisionMode::Strands;
+  c.collision.mode = CollisionMode::VolumeStrands;  // both kinds of hair-hair
+  c.collision.volumeFraction = 0.02f;               // pushes
   c.sim.substeps = 1;
   if (paper) {
     c.sim.stiffnessModel = StiffnessModel::Paper;

@@ -65,6 +65,11 @@
       // CANDIDATE_COUNT): a segment's candidates in ascending order,
       // x the other segment | flags << 29 (sim/contacts.h), y the
       // contact distance (float bits)
+#define CSM_BIND_VOLUME_SUMS \
+  28  // int x4 per node of the volume grid: strand length (2^-24 m), length
+      // times velocity (2^-24 m^2/s), x y z (sim/volume.h)
+#define CSM_BIND_VOLUME_LENGTH 29  // float per particle: its share of strand length (m)
+#define CSM_BIND_VOLUME_REST 30    // float per node: the volume fraction the rest groom fills
 
 // Texture units of buffer textures (samplerBuffer views of the buffers above), for reads
 // that differ per invocation: on llvmpipe a texel fetch is a vector gather where a storage

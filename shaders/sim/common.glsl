@@ -19,6 +19,13 @@ struct SimParams {
                    // w this frame's half of the candidate lists (0 or 1)
   vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
+  // The volume mode (sim/volume.h): its grid is fixed to the head where the frame starts.
+  mat4 volumeToHead;  // world to that head frame
+  mat4 volumeToWorld;  // and back
+  vec4 volumeOrigin;  // xyz the grid's lowest node (head frame), w node spacing (m)
+  uvec4 volumeDims;   // xyz nodes per axis, w volume forces this frame
+  vec4 volume;        // x friction (1/s), y stiffness (m^2/s^2), z fraction allowed, w volume
+                      // fraction per fixed-point unit of strand length at a node
 };
 
 struct Substep {
@@ -200,4 +207,20 @@ uint bucketOf(uint key) {
   h *= 0x7feb352du;
   h ^= h >> 15u;
   return h & P.grid.x;
+}
+
+// --- The volume grid (sim/volume.h, csm::VolumeGrid). ---
+
+const float kVolumeUnit = 16777216.0;  // csm::kVolumeUnit
+
+// The trilinear cell of head-frame position x: its lowest node and the fractions.
+void volumeLocate(vec3 x, out ivec3 base, out vec3 f) {
+  vec3 u = (x - P.volumeOrigin.xyz) / P.volumeOrigin.w;
+  ivec3 top = ivec3(P.volumeDims.xyz) - 2;
+  base = clamp(ivec3(floor(u)), ivec3(0), top);
+  f = clamp(u - vec3(base), 0.0, 1.0);
+}
+
+uint volumeNode(ivec3 n) {
+  return (uint(n.z) * P.volumeDims.y + uint(n.y)) * P.volumeDims.x + uint(n.x);
 }

@@ -19,7 +19,59 @@ layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffn
   vec4 strandStiffness[];
 };
 
+layout(std430, binding = CSM_BIND_VOLUME_SUMS) readonly buffer VolumeSums { int volumeSums[]; };
+layout(std430, binding = CSM_BIND_VOLUME_REST) readonly buffer VolumeRest { float volumeRest[]; };
+
 uniform uint substep;
+
+// The volume fraction over what is allowed at head-frame x (csm::VolumeGrid::excessAt).
+float volumeExcess(vec3 x) {
+  ivec3 base;
+  vec3 f;
+  volumeLocate(x, base, f);
+  float excess = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
+    vec3 a = mix(1.0 - f, f, vec3(d));
+    uint node = volumeNode(base + d);
+    float allowed = max(P.volume.z, volumeRest[node]);
+    excess += a.x * a.y * a.z * max(0.0, float(volumeSums[4u * node]) * P.volume.w - allowed);
+  }
+  return excess;
+}
+
+// The volume mode (csm::VolumeGrid::velocityChange): toward the hair's mean velocity here, and
+// down the gradient of the volume fraction over what is allowed (central differences half a
+// cell apart: continuous across cell faces).
+vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
+  vec3 x = (P.volumeToHead * vec4(xWorld, 1.0)).xyz;
+  ivec3 base;
+  vec3 f;
+  volumeLocate(x, base, f);
+  float len = 0.0;
+  vec3 momentum = vec3(0.0);
+  for (int c = 0; c < 8; ++c) {
+    ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
+    vec3 a = mix(1.0 - f, f, vec3(d));
+    float w = a.x * a.y * a.z;
+    uint k = 4u * volumeNode(base + d);
+    len += w * float(volumeSums[k]);
+    momentum += w * vec3(volumeSums[k + 1u], volumeSums[k + 2u], volumeSums[k + 3u]);
+  }
+  vec3 dv = vec3(0.0);
+  if (len > 0.0) dv += (1.0 - exp(-P.volume.x * h)) * (momentum / len - v);
+  if (P.volume.y > 0.0) {
+    float offset = 0.5 * P.volumeOrigin.w;
+    vec3 gradient;
+    for (int axis = 0; axis < 3; ++axis) {
+      vec3 e = vec3(0.0);
+      e[axis] = offset;
+      gradient[axis] = (volumeExcess(x + e) - volumeExcess(x - e)) / (2.0 * offset);
+    }
+    dv -= h * P.volume.y * mat3(P.volumeToWorld) * gradient;
+  }
+  return dv;
+}
 
 void main() {
   uint i = globalIndex();
@@ -47,6 +99,7 @@ void main() {
     float c = P.misc.y;
     acc += c / (1.0 + h * c) * (rel - dot(rel, t) * t);
   }
+  if (P.volumeDims.w != 0u) v += volumeVelocityChange(x, v, h);
   v += h * acc;
   pred[i] = vec4(x + h * v, 1.0);
 }

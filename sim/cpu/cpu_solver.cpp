@@ -154,6 +154,9 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   correction_.clear();
   q_.assign(n, toEigen(head.rotation));
   contacts_ = {};
+  measured_ = {};
+  resetVolume();
+  volumePose_ = head;
   stages_.clear();
   samples_.clear();
 
@@ -187,13 +190,28 @@ void CpuSolver::rebuildRegions() {
 
 void CpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
+  const bool regrid = config.collision.volumeCell != config_.collision.volumeCell ||
+                      config.collision.radius != config_.collision.radius;
   config_ = config;
   if (rebuild) rebuildRegions();
+  if (regrid) resetVolume();
+}
+
+VolumeSettings CpuSolver::volumeSettings() const {
+  const CollisionConfig& c = config_.collision;
+  return {c.volumeCell, c.radius, c.volumeFriction, c.volumeStiffness, c.volumeFraction};
+}
+
+void CpuSolver::resetVolume() {
+  volume_.reset(rest_, first_, config_.collision.volumeCell, config_.collision.radius);
 }
 
 void CpuSolver::clearStages() {
-  stages_ = {
-      {"integrate", 0.0}, {"shape_matching", 0.0}, {"strain_limiting", 0.0}, {"contacts", 0.0}};
+  stages_ = {{"integrate", 0.0},
+             {"shape_matching", 0.0},
+             {"strain_limiting", 0.0},
+             {"contacts", 0.0},
+             {"volume", 0.0}};
 }
 
 void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
@@ -209,6 +227,16 @@ void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
     contacts_ = {};
   }
   stages_[3].ms += msSince(t0);
+  // The volume mode's grid, from where the frame starts, fixed to the head there.
+  t0 = Clock::now();
+  volumePose_ = head_;
+  if (volumeForces(config_.collision.mode)) {
+    std::vector<glm::dvec3> local(x_.size());
+    const glm::dquat toHead = glm::conjugate(head_.rotation);
+    for (size_t i = 0; i < x_.size(); ++i) local[i] = toHead * (x_[i] - head_.translation);
+    volume_.splat(local, v_);
+  }
+  stages_[4].ms += msSince(t0);
   for (int k = 0; k < plan.substeps; ++k)
     step(plan.h, interpolate(from, to, double(k + 1) / plan.substeps));
 }
@@ -219,7 +247,7 @@ ContactSettings CpuSolver::contactSettings() const {
 }
 
 void CpuSolver::step(double h, const Pose& head) {
-  if (stages_.size() < 4) clearStages();  // a single step called directly
+  if (stages_.size() < 5) clearStages();  // a single step called directly
   const Pose before = head_;
   const std::vector<Sphere> spheres = worldSpheres(config_.head.spheres, head);
   auto t0 = Clock::now();
@@ -260,6 +288,9 @@ void CpuSolver::predict(double h, const Pose& head) {
   const SimConfig& sim = config_.sim;
   const glm::dvec3 gravity(sim.gravity);
   const bool wind = config_.wind.strength > 0.0f && config_.wind.drag > 0.0f;
+  const bool volume = volumeForces(config_.collision.mode) && !volume_.empty();
+  const VolumeSettings vs = volumeSettings();
+  const glm::dquat toHead = glm::conjugate(volumePose_.rotation);
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
@@ -273,6 +304,9 @@ void CpuSolver::predict(double h, const Pose& head) {
         }
         glm::dvec3 acc = gravity;
         if (wind) acc += windDrag(i, b, h);
+        if (volume)
+          v_[i] += volume_.velocityChange(toHead * (x_[i] - volumePose_.translation), v_[i], h, vs,
+                                          volumePose_.rotation);
         v_[i] += h * acc;
         xPred_[i] = x_[i] + h * v_[i];
       }
@@ -495,7 +529,13 @@ void CpuSolver::requestSample(long frame) {
   sample.frame = frame;
   sample.accuracy = measureAccuracy(x_, v_, first_, restLength_,
                                     worldSpheres(config_.head.spheres, head_), regions_.pinned);
-  sample.contacts = contacts_;
+  if (strandContacts(config_.collision.mode)) {
+    sample.contacts = contacts_;
+    sample.contactsMeasured = true;
+  } else if (measureContacts_) {
+    measured_ = findCandidates(x_, rest_, strandOf_, contactSettings(), measured_, sample.contacts);
+    sample.contactsMeasured = true;
+  }
   samples_.push_back(sample);
 }
 

@@ -13,6 +13,7 @@
 #include "sim/contacts.h"
 #include "sim/hair_state.h"
 #include "sim/solver.h"
+#include "sim/volume.h"
 
 namespace csm {
 
@@ -66,6 +67,7 @@ class CpuSolver final : public Solver {
   void dropSamples() override { samples_.clear(); }
   std::vector<StageTime> stageTimes() override { return stages_; }
   ContactStats contactStats() override { return contacts_; }
+  void setContactMeasures(bool always) override { measureContacts_ = always; }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
   // One step of length h ending at head pose `head` (exposed for tests).
@@ -87,6 +89,8 @@ class CpuSolver final : public Solver {
   void limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
                    const Pose& headBefore);
   ContactSettings contactSettings() const;
+  VolumeSettings volumeSettings() const;
+  void resetVolume();
 
   RegionSums sums_;
   Config config_;
@@ -106,6 +110,10 @@ class CpuSolver final : public Solver {
   std::vector<glm::dvec4> correction_;  // their corrections of this step, 2 per segment
   std::vector<Eigen::Quaterniond> q_;   // rotation of each region, warm start
   ContactStats contacts_;
+  bool measureContacts_ = false;
+  VolumeGrid volume_;           // the volume mode's grid, splatted at the start of each frame
+  Pose volumePose_;             // the head pose at the frame's start: the grid is fixed to it
+  ContactCandidates measured_;  // the last sample's list, with hair-hair off (crossings)
   std::vector<StageTime> stages_;
   std::deque<FrameSample> samples_;
 

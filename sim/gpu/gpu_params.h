@@ -26,6 +26,13 @@ struct SimParams {
                         // half of the candidate lists
   glm::vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   glm::vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
+  // The volume mode (sim/volume.h): its grid is fixed to the head where the frame starts.
+  glm::mat4 volumeToHead;   // world to that head frame
+  glm::mat4 volumeToWorld;  // and back
+  glm::vec4 volumeOrigin;   // xyz the grid's lowest node (head frame), w node spacing (m)
+  glm::uvec4 volumeDims;    // xyz nodes per axis, w volume forces this frame
+  glm::vec4 volume;         // x friction (1/s), y stiffness (m^2/s^2), z fraction allowed, w volume
+                            // fraction per fixed-point unit of strand length at a node
 };
 
 struct Substep {
@@ -34,7 +41,7 @@ struct Substep {
   glm::vec4 time;       // x time at the start, y h, z twist step, w velocity kept by damping
 };
 
-static_assert(sizeof(SimParams) == 12 * 16);
+static_assert(sizeof(SimParams) == 12 * 16 + 2 * 64 + 3 * 16);
 static_assert(offsetof(SimParams, cells) == 10 * 16);
 static_assert(sizeof(Substep) == 144);
 

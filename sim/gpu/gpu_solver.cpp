@@ -22,7 +22,7 @@ constexpr int kMaxNStep = 8;
 }  // namespace
 
 GpuSolver::GpuSolver(bool cpuClock)
-    : timer_(cpuClock), samples_([this](const uint32_t* counters) {
+    : timer_(cpuClock), measureTimer_(cpuClock), samples_([this](const uint32_t* counters) {
         sampledContacts_ = gpu::contactStatsOf(counters);
         grid_.countersSeen(counters);
       }) {}
@@ -41,6 +41,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
     if (!passes_.predict.build("sim/predict.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !passes_.strainLimit.build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
         !passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, {}, error) ||
+        !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !grid_.build(error))
       return false;
   }
@@ -73,6 +74,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
                    2.0f * config.collision.radius + config.collision.margin,
                    glm::vec3(head.translation));
   uploadRegions();
+  resetVolume();
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
 
@@ -90,8 +92,23 @@ void GpuSolver::uploadRegions() {
 
 void GpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
+  const bool regrid = config.collision.volumeCell != config_.collision.volumeCell ||
+                      config.collision.radius != config_.collision.radius;
   config_ = config;
   if (rebuild && hair_.particles > 0) uploadRegions();
+  if (regrid) resetVolume();
+}
+
+void GpuSolver::resetVolume() {
+  // The grid's geometry, each particle's length and the rest fraction come from the CPU
+  // reference (set up once per groom); the GPU splats each frame.
+  std::vector<glm::dvec3> rest(state_.rest.size());
+  for (size_t i = 0; i < rest.size(); ++i) rest[i] = glm::dvec3(glm::vec3(state_.rest[i]));
+  volume_.reset(rest, state_.strandFirst, config_.collision.volumeCell, config_.collision.radius);
+  std::vector<float> length(volume_.particleLength().begin(), volume_.particleLength().end());
+  gpu::fill(volumeLength_, length);
+  gpu::fill(volumeRest_, volume_.restFraction());
+  gpu::zeroed<glm::ivec4>(volumeSums_, volume_.nodes());
 }
 
 GpuSolver::GridStats GpuSolver::gridStats() {
@@ -128,6 +145,16 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   // Cells count from the head, so the clamped 10-bit cell coordinates (common.glsl) cover
   // +-512 cells around it wherever it moves.
   p.origin = glm::vec4(glm::vec3(poses.back().translation), 0.0f);
+  // The volume grid, fixed to the head where the frame starts.
+  glm::dmat4 toWorld = glm::mat4_cast(head_.rotation);
+  toWorld[3] = glm::dvec4(head_.translation, 1.0);
+  p.volumeToWorld = glm::mat4(toWorld);
+  p.volumeToHead = glm::mat4(glm::inverse(toWorld));
+  p.volumeOrigin = glm::vec4(glm::vec3(volume_.origin()), float(volume_.cell()));
+  p.volumeDims =
+      glm::uvec4(glm::uvec3(volume_.dims()), volumeForces(col.mode) && !volume_.empty() ? 1u : 0u);
+  p.volume = glm::vec4(col.volumeFriction, col.volumeStiffness, col.volumeFraction,
+                       float(volume_.fillPerUnit()));
 
   const int substeps = int(poses.size());
   const double h = double(sim.dt) / substeps;
@@ -161,6 +188,9 @@ void GpuSolver::bindAll() {
   hair_.bind();
   grid_.bind();
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
+  volumeSums_.bindBase(ssbo, CSM_BIND_VOLUME_SUMS);
+  volumeLength_.bindBase(ssbo, CSM_BIND_VOLUME_LENGTH);
+  volumeRest_.bindBase(ssbo, CSM_BIND_VOLUME_REST);
   spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
   measure_.bindBase(ssbo, CSM_BIND_MEASURE);
 }
@@ -180,7 +210,8 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     return;
   }
   const bool contacts = strandContacts(config_.collision.mode);
-  grid_.beginFrame(contacts);
+  // Measuring contacts with hair-hair off, the grid keeps the last sample's list (crossings).
+  if (contacts || !measureContacts_) grid_.beginFrame(contacts);
   writeParams(poses, before);
   bindAll();
   timer_.beginFrame();
@@ -188,6 +219,15 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   if (contacts) grid_.findCandidates(timer_);
 
   const uint32_t particles = uint32_t(hair_.particles), strands = uint32_t(hair_.strands);
+
+  // The volume mode's grid, from where the frame starts (sim/volume.h).
+  if (params_.volumeDims.w != 0u) {
+    timer_.stage(gpu::kVolume);
+    volumeSums_.clearToZero();
+    gl::memoryBarrier(gpu::kPassBarrier);
+    passes_.volumeSplat.run(particles);
+    gl::memoryBarrier(gpu::kPassBarrier);
+  }
   for (int k = 0; k < substeps; ++k) {
     timer_.stage(gpu::kIntegrate);
     passes_.predict.runSubstep(particles, unsigned(k));
@@ -269,6 +309,17 @@ unsigned GpuSolver::lastSubstepSpheres() const {
 }
 
 void GpuSolver::requestSample(long frame) {
+  const bool listed = strandContacts(config_.collision.mode);
+  if (!listed && measureContacts_ && hair_.particles > 0) {
+    // The end state's candidates, for the measures alone (outside the frame's timing).
+    grid_.beginFrame(true);
+    writeParams({head_}, {head_});
+    bindAll();
+    measureTimer_.beginFrame();
+    grid_.findCandidates(measureTimer_);
+    measureTimer_.endFrame();
+    gl::memoryBarrier(gl::Barrier::All);
+  }
   const uint32_t groups = uint32_t((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);
   samples_.request(
       frame, groups,
@@ -276,7 +327,7 @@ void GpuSolver::requestSample(long frame) {
         bindAll();
         passes_.measure.set("sphereBase", lastSubstepSpheres()).run(uint32_t(hair_.particles));
       },
-      measure_, grid_.counters());
+      measure_, grid_.counters(), listed || measureContacts_);
 }
 
 std::optional<FrameSample> GpuSolver::takeSample(bool wait) {

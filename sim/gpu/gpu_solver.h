@@ -21,6 +21,7 @@
 #include "sim/gpu/compute_pass.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/sample_ring.h"
+#include "sim/volume.h"
 #include "sim/gpu/stage_timer.h"
 #include "sim/gpu/strand_buffers.h"
 #include "sim/hair_state.h"
@@ -53,6 +54,7 @@ class GpuSolver final : public Solver {
   std::vector<StageTime> stageTimes() override { return timer_.times(); }
   // Those of the latest sample taken: nothing is read back for them.
   ContactStats contactStats() override { return sampledContacts_; }
+  void setContactMeasures(bool always) override { measureContacts_ = always; }
   void requestSample(long frame) override;
   std::optional<FrameSample> takeSample(bool wait = false) override;
   void dropSamples() override { samples_.drop(); }
@@ -89,6 +91,7 @@ class GpuSolver final : public Solver {
   explicit GpuSolver(bool cpuClock);
   bool build(int maxStrandSize, std::string* error);
   void uploadRegions();
+  void resetVolume();
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
   unsigned lastSubstepSpheres() const;  // the first sphere of the last step's
@@ -102,12 +105,18 @@ class GpuSolver final : public Solver {
   gpu::SimParams params_{};
 
   struct Passes {
-    gpu::ComputePass predict, shapeMatch, strainLimit, measure;
+    gpu::ComputePass predict, shapeMatch, strainLimit, measure, volumeSplat;
   } passes_;
   gpu::StrandBuffers hair_;
   gpu::CollisionGrid grid_;
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
+  // The volume mode: the grid's geometry (the CPU reference's), its sums, per-particle
+  // lengths and rest fractions.
+  VolumeGrid volume_;
+  gl::Buffer volumeSums_{gl::NoCreate}, volumeLength_{gl::NoCreate}, volumeRest_{gl::NoCreate};
   gpu::StageTimer timer_;
+  bool measureContacts_ = false;
+  gpu::StageTimer measureTimer_;  // the measure-only candidate searches, never reported
   gpu::SampleRing samples_;
   ContactStats sampledContacts_;
 };

@@ -11,7 +11,8 @@
 namespace csm::gpu {
 
 void SampleRing::request(long frame, uint32_t groups, const std::function<void()>& measure,
-                         const gl::Buffer& records, const gl::Buffer& counters) {
+                         const gl::Buffer& records, const gl::Buffer& counters,
+                         bool contactsMeasured) {
   if (pending_.size() == slots_.size()) {
     slots_[pending_.front()].fence.wait();
     ready_.push_back(readOldest());
@@ -21,6 +22,7 @@ void SampleRing::request(long frame, uint32_t groups, const std::function<void()
   Slot& slot = slots_[index];
   slot.frame = frame;
   slot.groups = groups;
+  slot.contactsMeasured = contactsMeasured;
   const GLsizeiptr recordBytes = GLsizeiptr(groups) * 2 * sizeof(glm::uvec4);
   const GLsizeiptr bytes = recordBytes + CSM_COUNTERS * sizeof(uint32_t);
   if (slot.staging.id() == 0) slot.staging = gl::Buffer();
@@ -58,6 +60,7 @@ FrameSample SampleRing::readOldest() {
   // The records in order (measure.comp), as measureAccuracy adds them.
   FrameSample sample;
   sample.frame = slot.frame;
+  sample.contactsMeasured = slot.contactsMeasured;
   Accuracy& a = sample.accuracy;
   uint32_t strainKey = 0;
   uint64_t segments = 0;

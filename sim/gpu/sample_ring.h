@@ -24,7 +24,7 @@ class SampleRing {
   // Copies `groups` measure records (two uvec4 each) and the counters, then fences. `measure`
   // runs the measure pass first (only when there are records).
   void request(long frame, uint32_t groups, const std::function<void()>& measure,
-               const gl::Buffer& records, const gl::Buffer& counters);
+               const gl::Buffer& records, const gl::Buffer& counters, bool contactsMeasured);
   std::optional<FrameSample> take(bool wait);
   void drop();
 
@@ -34,6 +34,7 @@ class SampleRing {
     gl::Fence fence;
     long frame = -1;
     uint32_t groups = 0;
+    bool contactsMeasured = false;  // the counters hold a candidate list's measures
   };
   static constexpr int kSlots = 4;
   FrameSample readOldest();  // its fence has passed

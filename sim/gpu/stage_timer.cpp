@@ -5,7 +5,7 @@
 namespace csm::gpu {
 namespace {
 constexpr const char* kStageNames[kStageCount] = {"integrate", "shape_matching", "strain_limiting",
-                                                  "grid", "contacts"};
+                                                  "grid",      "contacts",       "volume"};
 }
 
 void StageTimer::beginFrame() {

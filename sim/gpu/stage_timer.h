@@ -15,7 +15,15 @@
 
 namespace csm::gpu {
 
-enum Stage { kIntegrate = 0, kShapeMatching, kStrainLimiting, kGrid, kContacts, kStageCount };
+enum Stage {
+  kIntegrate = 0,
+  kShapeMatching,
+  kStrainLimiting,
+  kGrid,
+  kContacts,
+  kVolume,
+  kStageCount
+};
 
 class StageTimer {
  public:

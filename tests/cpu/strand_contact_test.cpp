@@ -3,10 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "sim/collision.h"
 #include "sim/contacts.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/hairstyle.h"
@@ -104,4 +106,41 @@ TEST_CASE("candidates: both sides listed, rest distance kept, crossings counted"
   CHECK(after.maxDepth == Approx(0.5).margin(0.01));  // 1 mm contact distance - 0.5 mm
   CHECK(after.depthQuantile(0.5) == Approx(0.5).margin(1.0 / kDepthBinsPerR));
   (void)second;
+}
+
+TEST_CASE("with hair-hair off, samples measure contacts only when asked, and then all of them") {
+  Config c;
+  c.hairstyle.strands = 400;
+  c.collision.mode = CollisionMode::Head;
+  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  CpuSolver solver;
+  solver.reset(g, c, Pose{});
+  solver.stepFrame(Pose{}, Pose{});
+  solver.requestSample(1);
+  const FrameSample off = solver.takeSample().value();
+  CHECK_FALSE(off.contactsMeasured);
+  CHECK(off.contacts.contacts == 0);
+
+  solver.setContactMeasures(true);
+  solver.stepFrame(Pose{}, Pose{});
+  solver.requestSample(2);
+  const FrameSample on = solver.takeSample().value();
+  std::vector<uint32_t> strandOf(g.pointCount());
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) strandOf[i] = uint32_t(s);
+  const double r = c.collision.radius;
+  const size_t within2r = findContactsGrid(solver.positions(), strandOf, 2.0 * r).size();
+  const size_t withinR = findContactsGrid(solver.positions(), strandOf, r).size();
+  INFO("pairs closer than 2r " << within2r << ", than r " << withinR);
+  CHECK(on.contactsMeasured);
+  CHECK(withinR > 0);
+  CHECK(on.contacts.contacts == within2r);
+  CHECK(on.contacts.penetrations == withinR);
+  // The simulation is the same with the measures on: they change no state.
+  CpuSolver plain;
+  plain.reset(g, c, Pose{});
+  plain.stepFrame(Pose{}, Pose{});
+  plain.stepFrame(Pose{}, Pose{});
+  const std::vector<glm::vec4> a = positions(solver), b = positions(plain);
+  CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)) == 0);
 }

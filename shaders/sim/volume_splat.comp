@@ -1,0 +1,37 @@
+// The volume mode, once per frame (the CPU reference is csm::VolumeGrid::splat in
+// sim/volume.cpp), one invocation per particle: its share of strand length, and that length
+// times its velocity, onto the 8 nodes around it (trilinear weights) of the grid fixed to the
+// head where the frame starts. Fixed-point integer atomics: the sums do not depend on the
+// order (the grid is cleared before).
+#include "sim/common.glsl"
+
+layout(local_size_x = CSM_PARTICLE_GROUP) in;
+
+layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
+layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
+layout(std430, binding = CSM_BIND_VOLUME_LENGTH) readonly buffer VolumeLength {
+  float particleLength[];
+};
+layout(std430, binding = CSM_BIND_VOLUME_SUMS) buffer VolumeSums { int volumeSums[]; };
+
+void main() {
+  uint i = globalIndex();
+  if (i >= P.counts.x) return;
+  vec3 x = texelFetch(posTex, int(i)).xyz;
+  if (any(isnan(x)) || any(isinf(x))) return;
+  vec3 v = texelFetch(velTex, int(i)).xyz;
+  ivec3 base;
+  vec3 f;
+  volumeLocate((P.volumeToHead * vec4(x, 1.0)).xyz, base, f);
+  float len = particleLength[i] * kVolumeUnit;
+  for (int c = 0; c < 8; ++c) {
+    ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
+    vec3 w3 = mix(1.0 - f, f, vec3(d));
+    float wl = w3.x * w3.y * w3.z * len;
+    uint k = 4u * volumeNode(base + d);
+    atomicAdd(volumeSums[k], int(round(wl)));
+    atomicAdd(volumeSums[k + 1u], int(round(wl * v.x)));
+    atomicAdd(volumeSums[k + 2u], int(round(wl * v.y)));
+    atomicAdd(volumeSums[k + 3u], int(round(wl * v.z)));
+  }
+}

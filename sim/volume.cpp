@@ -1,0 +1,141 @@
+#include "sim/volume.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+namespace csm {
+namespace {
+
+constexpr int kMaxNodesPerAxis = 256;
+
+// Trilinear cell of x: the lower node and the fractions, clamped to the grid.
+void locate(const glm::dvec3& x, const glm::dvec3& origin, double cell, const glm::ivec3& dims,
+            glm::ivec3& base, glm::dvec3& f) {
+  const glm::dvec3 u = (x - origin) / cell;
+  base = glm::clamp(glm::ivec3(glm::floor(u)), glm::ivec3(0), dims - 2);
+  f = glm::clamp(u - glm::dvec3(base), 0.0, 1.0);
+}
+
+}  // namespace
+
+void VolumeGrid::reset(std::span<const glm::dvec3> rest, std::span<const uint32_t> first,
+                       double cell, double radius) {
+  length_.assign(rest.size(), 0.0);
+  glm::dvec3 lo(1e30), hi(-1e30);
+  double longest = 0.0;
+  for (size_t s = 0; s + 1 < first.size(); ++s) {
+    const uint32_t a = first[s], b = first[s + 1];
+    if (a == b) continue;
+    lo = glm::min(lo, rest[a]);
+    hi = glm::max(hi, rest[a]);
+    double along = 0.0;
+    for (uint32_t i = a; i + 1 < b; ++i) {
+      const double l = glm::length(rest[i + 1] - rest[i]);
+      length_[i] += 0.5 * l;
+      length_[i + 1] += 0.5 * l;
+      along += l;
+    }
+    longest = std::max(longest, along);
+  }
+  if (lo.x > hi.x) {
+    dims_ = glm::ivec3(0);
+    sums_.clear();
+    restFraction_.clear();
+    return;
+  }
+  // Everything a strand can reach from its root (and a cell more), with nodes no finer than
+  // the cap allows.
+  lo -= longest + cell;
+  hi += longest + cell;
+  const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  cell_ = std::max(cell, extent / (kMaxNodesPerAxis - 1));
+  origin_ = lo;
+  dims_ = glm::ivec3(glm::ceil((hi - lo) / cell_)) + 1;
+  dims_ = glm::max(dims_, glm::ivec3(2));
+  fillPerUnit_ = glm::pi<double>() * radius * radius / (cell_ * cell_ * cell_) / kVolumeUnit;
+  sums_.assign(4 * nodes(), 0);
+  splat(rest, std::vector<glm::dvec3>(rest.size(), glm::dvec3(0.0)));
+  restFraction_.resize(nodes());
+  for (size_t n = 0; n < nodes(); ++n) restFraction_[n] = float(fractionAt(n));
+}
+
+double VolumeGrid::fractionAt(size_t node) const {
+  return double(sums_[4 * node]) * fillPerUnit_;
+}
+
+void VolumeGrid::splat(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v) {
+  std::fill(sums_.begin(), sums_.end(), 0);
+  for (size_t i = 0; i < x.size() && i < length_.size(); ++i) {
+    if (!std::isfinite(x[i].x + x[i].y + x[i].z)) continue;
+    glm::ivec3 base;
+    glm::dvec3 f;
+    locate(x[i], origin_, cell_, dims_, base, f);
+    for (int c = 0; c < 8; ++c) {
+      const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);
+      const double w = (d.x ? f.x : 1.0 - f.x) * (d.y ? f.y : 1.0 - f.y) * (d.z ? f.z : 1.0 - f.z);
+      const glm::ivec3 n = base + d;
+      const size_t k = 4 * ((size_t(n.z) * dims_.y + n.y) * dims_.x + n.x);
+      const double wl = w * length_[i] * kVolumeUnit;
+      sums_[k] += std::llround(wl);
+      sums_[k + 1] += std::llround(wl * v[i].x);
+      sums_[k + 2] += std::llround(wl * v[i].y);
+      sums_[k + 3] += std::llround(wl * v[i].z);
+    }
+  }
+}
+
+double VolumeGrid::excessAt(const glm::dvec3& x, double allowedFraction) const {
+  glm::ivec3 base;
+  glm::dvec3 f;
+  locate(x, origin_, cell_, dims_, base, f);
+  double excess = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);
+    const double w = (d.x ? f.x : 1.0 - f.x) * (d.y ? f.y : 1.0 - f.y) * (d.z ? f.z : 1.0 - f.z);
+    const glm::ivec3 n = base + d;
+    const size_t node = (size_t(n.z) * dims_.y + n.y) * dims_.x + n.x;
+    const double allowed = std::max(allowedFraction, double(restFraction_[node]));
+    excess += w * std::max(0.0, fractionAt(node) - allowed);
+  }
+  return excess;
+}
+
+glm::dvec3 VolumeGrid::velocityChange(const glm::dvec3& x, const glm::dvec3& v, double h,
+                                      const VolumeSettings& s, const glm::dquat& toWorld) const {
+  if (empty()) return glm::dvec3(0.0);
+  glm::ivec3 base;
+  glm::dvec3 f;
+  locate(x, origin_, cell_, dims_, base, f);
+  double length = 0.0;
+  glm::dvec3 momentum(0.0);
+  for (int c = 0; c < 8; ++c) {
+    const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);
+    const double w = (d.x ? f.x : 1.0 - f.x) * (d.y ? f.y : 1.0 - f.y) * (d.z ? f.z : 1.0 - f.z);
+    const glm::ivec3 n = base + d;
+    const int64_t* q = &sums_[4 * ((size_t(n.z) * dims_.y + n.y) * dims_.x + n.x)];
+    length += w * double(q[0]);
+    momentum += w * glm::dvec3(double(q[1]), double(q[2]), double(q[3]));
+  }
+  glm::dvec3 dv(0.0);
+  if (length > 0.0) dv += (1.0 - std::exp(-s.friction * h)) * (momentum / length - v);
+  if (s.stiffness > 0.0) {
+    // The gradient of the (trilinear) excess by central differences half a cell apart: a
+    // push that is continuous across cell faces, as the gradient of the trilinear field
+    // itself is not.
+    const double half = 0.5 * cell_;
+    glm::dvec3 gradient;
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::dvec3 e(0.0);
+      e[axis] = half;
+      gradient[axis] = (excessAt(x + e, s.fraction) - excessAt(x - e, s.fraction)) / (2.0 * half);
+    }
+    dv -= h * s.stiffness * (toWorld * gradient);
+  }
+  return dv;
+}
+
+}  // namespace csm

@@ -1,0 +1,162 @@
+// The volume mode (sim/volume.h): the grid's sums, the model's two terms, and what it does to
+// a groom.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include "sim/cpu/cpu_solver.h"
+#include "sim/hairstyle.h"
+#include "sim/volume.h"
+
+using namespace csm;
+
+namespace {
+
+// A straight strand of n particles from `from` along `dir`, 1 cm apart.
+void addStrand(std::vector<glm::dvec3>& x, std::vector<uint32_t>& first, glm::dvec3 from,
+               glm::dvec3 dir, int n) {
+  for (int i = 0; i < n; ++i) x.push_back(from + 0.01 * i * dir);
+  first.push_back(uint32_t(x.size()));
+}
+
+}  // namespace
+
+TEST_CASE("volume grid: the sums hold every particle's length and momentum") {
+  std::vector<glm::dvec3> x;
+  std::vector<uint32_t> first{0};
+  for (int s = 0; s < 20; ++s)
+    addStrand(x, first, {0.003 * s, 0.0, 0.001 * s}, glm::normalize(glm::dvec3(1, -2, 0.5)), 12);
+  VolumeGrid grid;
+  grid.reset(x, first, 0.01, 0.0005);
+  REQUIRE_FALSE(grid.empty());
+  // Every particle carries half of each segment beside it: the strand's length in all.
+  double total = 0.0;
+  for (double l : grid.particleLength()) total += l;
+  CHECK(total == Approx(20 * 11 * 0.01).epsilon(1e-9));
+  std::vector<glm::dvec3> v(x.size());
+  for (size_t i = 0; i < v.size(); ++i) v[i] = {0.1 * std::sin(double(i)), -0.3, 0.02 * i};
+  grid.splat(x, v);
+  glm::dvec3 momentum(0.0), expected(0.0);
+  double length = 0.0;
+  const std::vector<int64_t>& q = grid.sums();
+  for (size_t n = 0; n < grid.nodes(); ++n) {
+    length += double(q[4 * n]) / kVolumeUnit;
+    momentum += glm::dvec3(q[4 * n + 1], q[4 * n + 2], q[4 * n + 3]) / kVolumeUnit;
+  }
+  for (size_t i = 0; i < x.size(); ++i) expected += grid.particleLength()[i] * v[i];
+  // Each of 8 contributions per particle rounds to the unit: at most 4 units each.
+  const double rounding = 4.0 * 8.0 * double(x.size()) / kVolumeUnit;
+  CHECK(std::abs(length - total) <= rounding);
+  CHECK(glm::length(momentum - expected) <= 2.0 * rounding);
+}
+
+TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-dense places") {
+  // A bundle of 40 parallel strands along x, 5 mm apart in y and z at rest.
+  std::vector<glm::dvec3> x;
+  std::vector<uint32_t> first{0};
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 5; ++b)
+      addStrand(x, first, {-0.05, 0.005 * (a - 3.5), 0.005 * (b - 2)}, {1, 0, 0}, 11);
+  VolumeGrid grid;
+  grid.reset(x, first, 0.01, 0.0005);
+  VolumeSettings s;
+  s.cell = grid.cell();
+  s.radius = 0.0005;
+  s.friction = 10.0;
+  s.stiffness = 2.0;
+  s.fraction = 0.01;
+  const glm::dquat identity(1.0, 0.0, 0.0, 0.0);
+  const double h = 1.0 / 240.0;
+  const double cell = grid.cell();
+  // The node nearest the bundle's middle.
+  const glm::dvec3 node =
+      grid.origin() + cell * glm::floor((glm::dvec3(0.0) - grid.origin()) / cell + 0.5);
+  const glm::dvec3 up(0.0, 0.5 * cell, 0.0);
+
+  // At rest the groom's own packing is allowed: no push, and friction has nothing to do.
+  grid.splat(x, std::vector<glm::dvec3>(x.size(), glm::dvec3(0.0)));
+  CHECK(glm::length(grid.velocityChange(node + up, {0, 0, 0}, h, s, identity)) == 0.0);
+
+  // The bundle gathered to a tenth of its width around that node, moving along z.
+  std::vector<glm::dvec3> gathered = x;
+  for (glm::dvec3& p : gathered) p = glm::dvec3(p.x, node.y + 0.1 * p.y, node.z + 0.1 * p.z);
+  const glm::dvec3 v(0.0, 0.0, 0.2);
+  grid.splat(gathered, std::vector<glm::dvec3>(x.size(), v));
+  const glm::dvec3 above = grid.velocityChange(node + up, v, h, s, identity);
+  const glm::dvec3 below = grid.velocityChange(node - up, v, h, s, identity);
+  INFO("above " << above.y << " below " << below.y << " m/s");
+  CHECK(above.y > 0.0);
+  CHECK(below.y < 0.0);
+  CHECK(above.y == Approx(-below.y).epsilon(1e-6));  // the bundle is symmetric about the node
+  // A particle at rest in the bundle joins its velocity by 1 - exp(-c h) of the difference.
+  VolumeSettings frictionOnly = s;
+  frictionOnly.stiffness = 0.0;
+  const glm::dvec3 still = grid.velocityChange(node, {0, 0, 0}, h, frictionOnly, identity);
+  // (to the rounding of the fixed-point sums)
+  CHECK(still.z == Approx(0.2 * (1.0 - std::exp(-s.friction * h))).epsilon(1e-4));
+  CHECK(std::abs(still.x) + std::abs(still.y) < 1e-12);
+  // Where no hair is, nothing changes.
+  CHECK(glm::length(grid.velocityChange(node + glm::dvec3(0.0, 0.1, 0.1), v, h, s, identity)) ==
+        0.0);
+  // The push turns with the head: in a head turned 90 degrees about z, its +y is world -x.
+  const glm::dquat turned = glm::angleAxis(glm::half_pi<double>(), glm::dvec3(0, 0, 1));
+  const glm::dvec3 friction = grid.velocityChange(node + up, v, h, frictionOnly, identity);
+  const glm::dvec3 push = above - friction;
+  const glm::dvec3 world = grid.velocityChange(node + up, v, h, s, turned) - friction;
+  CHECK(world.x == Approx(-push.y).epsilon(1e-9));
+  CHECK(world.y == Approx(push.x).margin(1e-12));
+}
+
+TEST_CASE("volume mode: with gravity off the rest groom stays still") {
+  Config c;
+  c.hairstyle.strands = 300;
+  c.sim.gravity = glm::vec3(0.0f);
+  c.collision.mode = CollisionMode::Volume;
+  c.collision.volumeFraction = 0.01f;  // everything the groom packed is allowed, not more
+  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  CpuSolver solver;
+  solver.reset(g, c, Pose{});
+  const std::vector<glm::dvec3> rest = solver.positions();
+  for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
+  double moved = 0.0;
+  for (size_t i = 0; i < rest.size(); ++i)
+    moved = std::max(moved, glm::length(solver.positions()[i] - rest[i]));
+  INFO("farthest particle moved " << moved * 1e3 << " mm");
+  CHECK(moved < 1e-4);
+}
+
+TEST_CASE("volume mode: hair falling onto itself ends less dense than without it") {
+  // Strands grown straight out of the scalp fall under gravity and pile up on the head.
+  Config c;
+  c.hairstyle.strands = 600;
+  c.hairstyle.fall = 0.0f;
+  c.collision.volumeFraction = 0.05f;
+  c.collision.volumeStiffness = 5.0f;
+  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  auto densest = [&](CollisionMode mode) {
+    Config m = c;
+    m.collision.mode = mode;
+    CpuSolver solver;
+    solver.reset(g, m, Pose{});
+    for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
+    // The densest node over the last state, on a grid of the same geometry.
+    std::vector<glm::dvec3> rest(solver.positions().size());
+    VolumeGrid grid;
+    std::vector<uint32_t> first;
+    for (size_t s = 0; s <= g.strandCount(); ++s) first.push_back(g.first[s]);
+    std::vector<glm::dvec3> x0;
+    for (const glm::vec3& p : g.points) x0.emplace_back(p);
+    grid.reset(x0, first, m.collision.volumeCell, m.collision.radius);
+    grid.splat(solver.positions(), std::vector<glm::dvec3>(x0.size(), glm::dvec3(0.0)));
+    int64_t most = 0;
+    for (size_t n = 0; n < grid.nodes(); ++n) most = std::max(most, grid.sums()[4 * n]);
+    return double(most) * grid.fillPerUnit();
+  };
+  const double head = densest(CollisionMode::Head), volume = densest(CollisionMode::Volume);
+  INFO("densest volume fraction: head only " << head << ", volume " << volume);
+  CHECK(volume < 0.8 * head);
+}
