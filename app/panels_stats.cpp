@@ -100,8 +100,9 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
   ImGui::Separator();
   const FrameSample sample = f.sample.value_or(FrameSample{});
   const ContactStats& contacts = sample.contacts;
-  if (!sample.contactsMeasured) ImGui::TextDisabled("hair contacts: not measured (hair-hair off)");
-  if (sample.contactsMeasured) {
+  if (!sample.contactsMeasured) {
+    ImGui::TextDisabled("hair contacts: not measured (hair-hair off)");
+  } else {
     ImGui::Text("hair contacts %llu, closer than r %llu", (unsigned long long)contacts.contacts,
                 (unsigned long long)contacts.penetrations);
     // The measures of the candidate list the sampled frame started from.

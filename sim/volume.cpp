@@ -12,15 +12,24 @@ namespace {
 
 constexpr int kMaxNodesPerAxis = 256;
 
-// Trilinear cell of x: the lower node and the fractions, clamped to the grid.
-void locate(const glm::dvec3& x, const glm::dvec3& origin, double cell, const glm::ivec3& dims,
-            glm::ivec3& base, glm::dvec3& f) {
-  const glm::dvec3 u = (x - origin) / cell;
-  base = glm::clamp(glm::ivec3(glm::floor(u)), glm::ivec3(0), dims - 2);
-  f = glm::clamp(u - glm::dvec3(base), 0.0, 1.0);
+}  // namespace
+
+template <class Visit>
+void VolumeGrid::forCorners(const glm::dvec3& x, Visit visit) const {
+  const glm::dvec3 u = (x - origin_) / cell_;
+  const glm::ivec3 base = glm::clamp(glm::ivec3(glm::floor(u)), glm::ivec3(0), dims_ - 2);
+  const glm::dvec3 f = glm::clamp(u - glm::dvec3(base), 0.0, 1.0);
+  for (int c = 0; c < 8; ++c) {
+    const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);
+    const glm::ivec3 n = base + d;
+    const double w = (d.x ? f.x : 1.0 - f.x) * (d.y ? f.y : 1.0 - f.y) * (d.z ? f.z : 1.0 - f.z);
+    visit((size_t(n.z) * dims_.y + n.y) * dims_.x + n.x, w);
+  }
 }
 
-}  // namespace
+glm::dvec3 VolumeGrid::toHead(const glm::dvec3& x) const {
+  return glm::conjugate(head_.rotation) * (x - head_.translation);
+}
 
 void VolumeGrid::reset(std::span<const glm::dvec3> rest, std::span<const uint32_t> first,
                        double cell, double radius) {
@@ -58,68 +67,58 @@ void VolumeGrid::reset(std::span<const glm::dvec3> rest, std::span<const uint32_
   dims_ = glm::max(dims_, glm::ivec3(2));
   fillPerUnit_ = glm::pi<double>() * radius * radius / (cell_ * cell_ * cell_) / kVolumeUnit;
   sums_.assign(4 * nodes(), 0);
-  splat(rest, std::vector<glm::dvec3>(rest.size(), glm::dvec3(0.0)));
+  excess_.assign(nodes(), 0.0);
+  head_ = Pose{};
+  splatLocal(rest, std::vector<glm::dvec3>(rest.size(), glm::dvec3(0.0)));
   restFraction_.resize(nodes());
-  for (size_t n = 0; n < nodes(); ++n) restFraction_[n] = float(fractionAt(n));
+  for (size_t n = 0; n < nodes(); ++n)
+    restFraction_[n] = float(double(sums_[4 * n]) * fillPerUnit_);
 }
 
-double VolumeGrid::fractionAt(size_t node) const {
-  return double(sums_[4 * node]) * fillPerUnit_;
+void VolumeGrid::splat(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v,
+                       const Pose& head, double allowedFraction) {
+  head_ = head;
+  std::vector<glm::dvec3> local(x.size());
+  for (size_t i = 0; i < x.size(); ++i) local[i] = toHead(x[i]);
+  splatLocal(local, v);
+  for (size_t n = 0; n < nodes(); ++n) {
+    const double allowed = std::max(allowedFraction, double(restFraction_[n]));
+    excess_[n] = std::max(0.0, double(sums_[4 * n]) * fillPerUnit_ - allowed);
+  }
 }
 
-void VolumeGrid::splat(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v) {
+void VolumeGrid::splatLocal(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v) {
   std::fill(sums_.begin(), sums_.end(), 0);
   for (size_t i = 0; i < x.size() && i < length_.size(); ++i) {
     if (!std::isfinite(x[i].x + x[i].y + x[i].z)) continue;
-    glm::ivec3 base;
-    glm::dvec3 f;
-    locate(x[i], origin_, cell_, dims_, base, f);
-    for (int c = 0; c < 8; ++c) {
-      const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);
-      const double w = (d.x ? f.x : 1.0 - f.x) * (d.y ? f.y : 1.0 - f.y) * (d.z ? f.z : 1.0 - f.z);
-      const glm::ivec3 n = base + d;
-      const size_t k = 4 * ((size_t(n.z) * dims_.y + n.y) * dims_.x + n.x);
+    forCorners(x[i], [&](size_t node, double w) {
+      int64_t* q = &sums_[4 * node];
       const double wl = w * length_[i] * kVolumeUnit;
-      sums_[k] += std::llround(wl);
-      sums_[k + 1] += std::llround(wl * v[i].x);
-      sums_[k + 2] += std::llround(wl * v[i].y);
-      sums_[k + 3] += std::llround(wl * v[i].z);
-    }
+      q[0] += std::llround(wl);
+      q[1] += std::llround(wl * v[i].x);
+      q[2] += std::llround(wl * v[i].y);
+      q[3] += std::llround(wl * v[i].z);
+    });
   }
 }
 
-double VolumeGrid::excessAt(const glm::dvec3& x, double allowedFraction) const {
-  glm::ivec3 base;
-  glm::dvec3 f;
-  locate(x, origin_, cell_, dims_, base, f);
+double VolumeGrid::excessAt(const glm::dvec3& x) const {
   double excess = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);
-    const double w = (d.x ? f.x : 1.0 - f.x) * (d.y ? f.y : 1.0 - f.y) * (d.z ? f.z : 1.0 - f.z);
-    const glm::ivec3 n = base + d;
-    const size_t node = (size_t(n.z) * dims_.y + n.y) * dims_.x + n.x;
-    const double allowed = std::max(allowedFraction, double(restFraction_[node]));
-    excess += w * std::max(0.0, fractionAt(node) - allowed);
-  }
+  forCorners(x, [&](size_t node, double w) { excess += w * excess_[node]; });
   return excess;
 }
 
-glm::dvec3 VolumeGrid::velocityChange(const glm::dvec3& x, const glm::dvec3& v, double h,
-                                      const VolumeSettings& s, const glm::dquat& toWorld) const {
+glm::dvec3 VolumeGrid::velocityChange(const glm::dvec3& xWorld, const glm::dvec3& v, double h,
+                                      const VolumeSettings& s) const {
   if (empty()) return glm::dvec3(0.0);
-  glm::ivec3 base;
-  glm::dvec3 f;
-  locate(x, origin_, cell_, dims_, base, f);
+  const glm::dvec3 x = toHead(xWorld);
   double length = 0.0;
   glm::dvec3 momentum(0.0);
-  for (int c = 0; c < 8; ++c) {
-    const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);
-    const double w = (d.x ? f.x : 1.0 - f.x) * (d.y ? f.y : 1.0 - f.y) * (d.z ? f.z : 1.0 - f.z);
-    const glm::ivec3 n = base + d;
-    const int64_t* q = &sums_[4 * ((size_t(n.z) * dims_.y + n.y) * dims_.x + n.x)];
+  forCorners(x, [&](size_t node, double w) {
+    const int64_t* q = &sums_[4 * node];
     length += w * double(q[0]);
     momentum += w * glm::dvec3(double(q[1]), double(q[2]), double(q[3]));
-  }
+  });
   glm::dvec3 dv(0.0);
   if (length > 0.0) dv += (1.0 - std::exp(-s.friction * h)) * (momentum / length - v);
   if (s.stiffness > 0.0) {
@@ -131,9 +130,9 @@ glm::dvec3 VolumeGrid::velocityChange(const glm::dvec3& x, const glm::dvec3& v, 
     for (int axis = 0; axis < 3; ++axis) {
       glm::dvec3 e(0.0);
       e[axis] = half;
-      gradient[axis] = (excessAt(x + e, s.fraction) - excessAt(x - e, s.fraction)) / (2.0 * half);
+      gradient[axis] = (excessAt(x + e) - excessAt(x - e)) / (2.0 * half);
     }
-    dv -= h * s.stiffness * (toWorld * gradient);
+    dv -= h * s.stiffness * (head_.rotation * gradient);
   }
   return dv;
 }

@@ -16,8 +16,10 @@
 #include <span>
 #include <vector>
 
-#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+
+#include "sim/config.h"
+#include "sim/head.h"
 
 namespace csm {
 
@@ -25,12 +27,14 @@ namespace csm {
 inline constexpr double kVolumeUnit = 16777216.0;
 
 struct VolumeSettings {
-  double cell = 0.01;      // node spacing, m
-  double radius = 0.001;   // hair radius, m: a metre of strand fills pi r^2 m^3
   double friction = 5.0;   // 1/s
   double stiffness = 2.0;  // m^2/s^2: acceleration per unit gradient (1/m) of excess fraction
-  double fraction = 0.2;   // the volume fraction hair may fill before it is pushed
 };
+
+// Whether a change of settings needs a new grid (VolumeGrid::reset).
+inline bool volumeGridChanged(const CollisionConfig& a, const CollisionConfig& b) {
+  return a.volumeCell != b.volumeCell || a.radius != b.radius;
+}
 
 class VolumeGrid {
  public:
@@ -50,28 +54,36 @@ class VolumeGrid {
   // The volume fraction the rest groom fills at each node (per node, for the push).
   const std::vector<float>& restFraction() const { return restFraction_; }
 
-  // Splats positions `x` (head frame) and velocities `v` (world) into the sums.
-  void splat(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v);
-  // The velocity change (world) of the particle at head-frame position x with velocity v
-  // (world) over a step h, from the sums of the last splat; `toWorld` turns the head frame's
-  // directions into the world's.
+  // Splats world positions `x` and velocities `v` into the sums of a grid fixed to the head
+  // at `head`, and each node's volume fraction over what is allowed there (the larger of
+  // `allowedFraction` and the rest fraction), which the push's gradient interpolates.
+  void splat(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v, const Pose& head,
+             double allowedFraction);
+  // The velocity change of the particle at world position x with velocity v over a step h,
+  // from the last splat.
   glm::dvec3 velocityChange(const glm::dvec3& x, const glm::dvec3& v, double h,
-                            const VolumeSettings& s, const glm::dquat& toWorld) const;
+                            const VolumeSettings& s) const;
 
   // The sums (for tests and the GPU comparison): per node, length then momentum x, y, z.
   const std::vector<int64_t>& sums() const { return sums_; }
 
  private:
-  double fractionAt(size_t node) const;
-  // The volume fraction over what is allowed (the larger of `allowedFraction` and the rest
-  // fraction) at head-frame x, interpolated from the nodes.
-  double excessAt(const glm::dvec3& x, double allowedFraction) const;
+  // Calls visit(node, weight) for the 8 nodes around head-frame x (trilinear weights; x
+  // clamped to the grid).
+  template <class Visit>
+  void forCorners(const glm::dvec3& x, Visit visit) const;
+  void splatLocal(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v);
+  double excessAt(const glm::dvec3& x) const;  // interpolated, head frame
+  glm::dvec3 toHead(const glm::dvec3& x) const;
+
   glm::dvec3 origin_{0.0};
   glm::ivec3 dims_{0};
   double cell_ = 0.01, fillPerUnit_ = 0.0;  // volume fraction per fixed-point length unit
+  Pose head_;                               // the pose the last splat was fixed to
   std::vector<double> length_;
   std::vector<float> restFraction_;
-  std::vector<int64_t> sums_;  // 4 per node
+  std::vector<int64_t> sums_;   // 4 per node
+  std::vector<double> excess_;  // per node, from the last splat
 };
 
 }  // namespace csm

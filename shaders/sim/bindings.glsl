@@ -70,6 +70,9 @@
       // times velocity (2^-24 m^2/s), x y z (sim/volume.h)
 #define CSM_BIND_VOLUME_LENGTH 29  // float per particle: its share of strand length (m)
 #define CSM_BIND_VOLUME_REST 30    // float per node: the volume fraction the rest groom fills
+#define CSM_BIND_VOLUME_EXCESS \
+  31  // float per node: its volume fraction over what is allowed, from
+      // this frame's sums (volume_excess.comp)
 
 // Texture units of buffer textures (samplerBuffer views of the buffers above), for reads
 // that differ per invocation: on llvmpipe a texel fetch is a vector gather where a storage

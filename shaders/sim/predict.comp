@@ -20,12 +20,14 @@ layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffn
 };
 
 layout(std430, binding = CSM_BIND_VOLUME_SUMS) readonly buffer VolumeSums { int volumeSums[]; };
-layout(std430, binding = CSM_BIND_VOLUME_REST) readonly buffer VolumeRest { float volumeRest[]; };
+layout(std430, binding = CSM_BIND_VOLUME_EXCESS) readonly buffer VolumeExcess {
+  float volumeExcess[];
+};
 
 uniform uint substep;
 
 // The volume fraction over what is allowed at head-frame x (csm::VolumeGrid::excessAt).
-float volumeExcess(vec3 x) {
+float excessAt(vec3 x) {
   ivec3 base;
   vec3 f;
   volumeLocate(x, base, f);
@@ -33,9 +35,7 @@ float volumeExcess(vec3 x) {
   for (int c = 0; c < 8; ++c) {
     ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
     vec3 a = mix(1.0 - f, f, vec3(d));
-    uint node = volumeNode(base + d);
-    float allowed = max(P.volume.z, volumeRest[node]);
-    excess += a.x * a.y * a.z * max(0.0, float(volumeSums[4u * node]) * P.volume.w - allowed);
+    excess += a.x * a.y * a.z * volumeExcess[volumeNode(base + d)];
   }
   return excess;
 }
@@ -66,7 +66,7 @@ vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
     for (int axis = 0; axis < 3; ++axis) {
       vec3 e = vec3(0.0);
       e[axis] = offset;
-      gradient[axis] = (volumeExcess(x + e) - volumeExcess(x - e)) / (2.0 * offset);
+      gradient[axis] = (excessAt(x + e) - excessAt(x - e)) / (2.0 * offset);
     }
     dv -= h * P.volume.y * mat3(P.volumeToWorld) * gradient;
   }

@@ -156,7 +156,6 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   contacts_ = {};
   measured_ = {};
   resetVolume();
-  volumePose_ = head;
   stages_.clear();
   samples_.clear();
 
@@ -190,8 +189,7 @@ void CpuSolver::rebuildRegions() {
 
 void CpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
-  const bool regrid = config.collision.volumeCell != config_.collision.volumeCell ||
-                      config.collision.radius != config_.collision.radius;
+  const bool regrid = volumeGridChanged(config_.collision, config.collision);
   config_ = config;
   if (rebuild) rebuildRegions();
   if (regrid) resetVolume();
@@ -199,7 +197,7 @@ void CpuSolver::setConfig(const Config& config) {
 
 VolumeSettings CpuSolver::volumeSettings() const {
   const CollisionConfig& c = config_.collision;
-  return {c.volumeCell, c.radius, c.volumeFriction, c.volumeStiffness, c.volumeFraction};
+  return {c.volumeFriction, c.volumeStiffness};
 }
 
 void CpuSolver::resetVolume() {
@@ -229,13 +227,8 @@ void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   stages_[3].ms += msSince(t0);
   // The volume mode's grid, from where the frame starts, fixed to the head there.
   t0 = Clock::now();
-  volumePose_ = head_;
-  if (volumeForces(config_.collision.mode)) {
-    std::vector<glm::dvec3> local(x_.size());
-    const glm::dquat toHead = glm::conjugate(head_.rotation);
-    for (size_t i = 0; i < x_.size(); ++i) local[i] = toHead * (x_[i] - head_.translation);
-    volume_.splat(local, v_);
-  }
+  if (volumeForces(config_.collision.mode))
+    volume_.splat(x_, v_, head_, config_.collision.volumeFraction);
   stages_[4].ms += msSince(t0);
   for (int k = 0; k < plan.substeps; ++k)
     step(plan.h, interpolate(from, to, double(k + 1) / plan.substeps));
@@ -290,7 +283,6 @@ void CpuSolver::predict(double h, const Pose& head) {
   const bool wind = config_.wind.strength > 0.0f && config_.wind.drag > 0.0f;
   const bool volume = volumeForces(config_.collision.mode) && !volume_.empty();
   const VolumeSettings vs = volumeSettings();
-  const glm::dquat toHead = glm::conjugate(volumePose_.rotation);
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
@@ -304,9 +296,7 @@ void CpuSolver::predict(double h, const Pose& head) {
         }
         glm::dvec3 acc = gravity;
         if (wind) acc += windDrag(i, b, h);
-        if (volume)
-          v_[i] += volume_.velocityChange(toHead * (x_[i] - volumePose_.translation), v_[i], h, vs,
-                                          volumePose_.rotation);
+        if (volume) v_[i] += volume_.velocityChange(x_[i], v_[i], h, vs);
         v_[i] += h * acc;
         xPred_[i] = x_[i] + h * v_[i];
       }

@@ -112,7 +112,6 @@ class CpuSolver final : public Solver {
   ContactStats contacts_;
   bool measureContacts_ = false;
   VolumeGrid volume_;           // the volume mode's grid, splatted at the start of each frame
-  Pose volumePose_;             // the head pose at the frame's start: the grid is fixed to it
   ContactCandidates measured_;  // the last sample's list, with hair-hair off (crossings)
   std::vector<StageTime> stages_;
   std::deque<FrameSample> samples_;

@@ -42,6 +42,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
         !passes_.strainLimit.build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
         !passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, {}, error) ||
         !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
+        !passes_.volumeExcess.build("sim/volume_excess.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !grid_.build(error))
       return false;
   }
@@ -92,8 +93,7 @@ void GpuSolver::uploadRegions() {
 
 void GpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
-  const bool regrid = config.collision.volumeCell != config_.collision.volumeCell ||
-                      config.collision.radius != config_.collision.radius;
+  const bool regrid = volumeGridChanged(config_.collision, config.collision);
   config_ = config;
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) resetVolume();
@@ -109,6 +109,7 @@ void GpuSolver::resetVolume() {
   gpu::fill(volumeLength_, length);
   gpu::fill(volumeRest_, volume_.restFraction());
   gpu::zeroed<glm::ivec4>(volumeSums_, volume_.nodes());
+  gpu::zeroed<float>(volumeExcess_, volume_.nodes());
 }
 
 GpuSolver::GridStats GpuSolver::gridStats() {
@@ -191,6 +192,7 @@ void GpuSolver::bindAll() {
   volumeSums_.bindBase(ssbo, CSM_BIND_VOLUME_SUMS);
   volumeLength_.bindBase(ssbo, CSM_BIND_VOLUME_LENGTH);
   volumeRest_.bindBase(ssbo, CSM_BIND_VOLUME_REST);
+  volumeExcess_.bindBase(ssbo, CSM_BIND_VOLUME_EXCESS);
   spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
   measure_.bindBase(ssbo, CSM_BIND_MEASURE);
 }
@@ -226,6 +228,8 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     volumeSums_.clearToZero();
     gl::memoryBarrier(gpu::kPassBarrier);
     passes_.volumeSplat.run(particles);
+    gl::memoryBarrier(gpu::kPassBarrier);
+    passes_.volumeExcess.run(uint32_t(volume_.nodes()));
     gl::memoryBarrier(gpu::kPassBarrier);
   }
   for (int k = 0; k < substeps; ++k) {

@@ -105,15 +105,16 @@ class GpuSolver final : public Solver {
   gpu::SimParams params_{};
 
   struct Passes {
-    gpu::ComputePass predict, shapeMatch, strainLimit, measure, volumeSplat;
+    gpu::ComputePass predict, shapeMatch, strainLimit, measure, volumeSplat, volumeExcess;
   } passes_;
   gpu::StrandBuffers hair_;
   gpu::CollisionGrid grid_;
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
   // The volume mode: the grid's geometry (the CPU reference's), its sums, per-particle
-  // lengths and rest fractions.
+  // lengths, rest fractions and each node's excess.
   VolumeGrid volume_;
-  gl::Buffer volumeSums_{gl::NoCreate}, volumeLength_{gl::NoCreate}, volumeRest_{gl::NoCreate};
+  gl::Buffer volumeSums_{gl::NoCreate}, volumeLength_{gl::NoCreate}, volumeRest_{gl::NoCreate},
+      volumeExcess_{gl::NoCreate};
   gpu::StageTimer timer_;
   bool measureContacts_ = false;
   gpu::StageTimer measureTimer_;  // the measure-only candidate searches, never reported

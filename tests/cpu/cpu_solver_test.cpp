@@ -210,10 +210,7 @@ TEST_CASE("hair-hair collision keeps strands apart") {
     double t = 0.0;
     for (int f = 0; f < 90; ++f, t += m.sim.dt)
       solver.stepFrame(headPose(m.head, t), headPose(m.head, t + m.sim.dt));
-    std::vector<uint32_t> strandOf(g.pointCount());
-    for (size_t s = 0; s < g.strandCount(); ++s)
-      for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) strandOf[i] = uint32_t(s);
-    const auto pairs = findContactsGrid(solver.positions(), strandOf, m.collision.radius);
+    const auto pairs = findContactsGrid(solver.positions(), test::strandOf(g), m.collision.radius);
     return pairs.size();
   };
   const size_t without = penetrations(CollisionMode::Head);

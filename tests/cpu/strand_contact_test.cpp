@@ -12,6 +12,7 @@
 #include "sim/contacts.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/hairstyle.h"
+#include "tests/cpu/test_scenes.h"
 #include "tests/strand_contact_scenes.h"
 
 using namespace csm;
@@ -125,12 +126,10 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(2);
   const FrameSample on = solver.takeSample().value();
-  std::vector<uint32_t> strandOf(g.pointCount());
-  for (size_t s = 0; s < g.strandCount(); ++s)
-    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) strandOf[i] = uint32_t(s);
+  const std::vector<uint32_t> strand = test::strandOf(g);
   const double r = c.collision.radius;
-  const size_t within2r = findContactsGrid(solver.positions(), strandOf, 2.0 * r).size();
-  const size_t withinR = findContactsGrid(solver.positions(), strandOf, r).size();
+  const size_t within2r = findContactsGrid(solver.positions(), strand, 2.0 * r).size();
+  const size_t withinR = findContactsGrid(solver.positions(), strand, r).size();
   INFO("pairs closer than 2r " << within2r << ", than r " << withinR);
   CHECK(on.contactsMeasured);
   CHECK(withinR > 0);

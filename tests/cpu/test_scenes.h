@@ -1,6 +1,10 @@
 // Small scenes shared by the tests (the GPU suite runs the same against the CPU reference).
 #pragma once
 
+#include <vector>
+
+#include <glm/vec4.hpp>
+
 #include "sim/config.h"
 #include "sim/groom.h"
 #include "sim/hairstyle.h"
@@ -23,6 +27,22 @@ inline Config smallScene(int strands = 60) {
 
 inline Groom growFor(const Config& c) {
   return growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+}
+
+// The strand of each of the groom's points (the layout every solver keeps).
+inline std::vector<uint32_t> strandOf(const Groom& g) {
+  std::vector<uint32_t> out(g.pointCount());
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) out[i] = uint32_t(s);
+  return out;
+}
+
+// A solver's read-back positions in double, as the CPU measures take them.
+inline std::vector<glm::dvec3> toDouble(const std::vector<glm::vec4>& x) {
+  std::vector<glm::dvec3> out;
+  out.reserve(x.size());
+  for (const glm::vec4& p : x) out.emplace_back(glm::vec3(p));
+  return out;
 }
 
 }  // namespace csm::test

@@ -39,7 +39,7 @@ TEST_CASE("volume grid: the sums hold every particle's length and momentum") {
   CHECK(total == Approx(20 * 11 * 0.01).epsilon(1e-9));
   std::vector<glm::dvec3> v(x.size());
   for (size_t i = 0; i < v.size(); ++i) v[i] = {0.1 * std::sin(double(i)), -0.3, 0.02 * i};
-  grid.splat(x, v);
+  grid.splat(x, v, Pose{}, 0.2);
   glm::dvec3 momentum(0.0), expected(0.0);
   double length = 0.0;
   const std::vector<int64_t>& q = grid.sums();
@@ -64,12 +64,9 @@ TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-d
   VolumeGrid grid;
   grid.reset(x, first, 0.01, 0.0005);
   VolumeSettings s;
-  s.cell = grid.cell();
-  s.radius = 0.0005;
   s.friction = 10.0;
   s.stiffness = 2.0;
-  s.fraction = 0.01;
-  const glm::dquat identity(1.0, 0.0, 0.0, 0.0);
+  const double allowed = 0.01;
   const double h = 1.0 / 240.0;
   const double cell = grid.cell();
   // The node nearest the bundle's middle.
@@ -78,16 +75,16 @@ TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-d
   const glm::dvec3 up(0.0, 0.5 * cell, 0.0);
 
   // At rest the groom's own packing is allowed: no push, and friction has nothing to do.
-  grid.splat(x, std::vector<glm::dvec3>(x.size(), glm::dvec3(0.0)));
-  CHECK(glm::length(grid.velocityChange(node + up, {0, 0, 0}, h, s, identity)) == 0.0);
+  grid.splat(x, std::vector<glm::dvec3>(x.size(), glm::dvec3(0.0)), Pose{}, allowed);
+  CHECK(glm::length(grid.velocityChange(node + up, {0, 0, 0}, h, s)) == 0.0);
 
   // The bundle gathered to a tenth of its width around that node, moving along z.
   std::vector<glm::dvec3> gathered = x;
   for (glm::dvec3& p : gathered) p = glm::dvec3(p.x, node.y + 0.1 * p.y, node.z + 0.1 * p.z);
   const glm::dvec3 v(0.0, 0.0, 0.2);
-  grid.splat(gathered, std::vector<glm::dvec3>(x.size(), v));
-  const glm::dvec3 above = grid.velocityChange(node + up, v, h, s, identity);
-  const glm::dvec3 below = grid.velocityChange(node - up, v, h, s, identity);
+  grid.splat(gathered, std::vector<glm::dvec3>(x.size(), v), Pose{}, allowed);
+  const glm::dvec3 above = grid.velocityChange(node + up, v, h, s);
+  const glm::dvec3 below = grid.velocityChange(node - up, v, h, s);
   INFO("above " << above.y << " below " << below.y << " m/s");
   CHECK(above.y > 0.0);
   CHECK(below.y < 0.0);
@@ -95,18 +92,21 @@ TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-d
   // A particle at rest in the bundle joins its velocity by 1 - exp(-c h) of the difference.
   VolumeSettings frictionOnly = s;
   frictionOnly.stiffness = 0.0;
-  const glm::dvec3 still = grid.velocityChange(node, {0, 0, 0}, h, frictionOnly, identity);
+  const glm::dvec3 still = grid.velocityChange(node, {0, 0, 0}, h, frictionOnly);
   // (to the rounding of the fixed-point sums)
   CHECK(still.z == Approx(0.2 * (1.0 - std::exp(-s.friction * h))).epsilon(1e-4));
   CHECK(std::abs(still.x) + std::abs(still.y) < 1e-12);
   // Where no hair is, nothing changes.
-  CHECK(glm::length(grid.velocityChange(node + glm::dvec3(0.0, 0.1, 0.1), v, h, s, identity)) ==
-        0.0);
-  // The push turns with the head: in a head turned 90 degrees about z, its +y is world -x.
-  const glm::dquat turned = glm::angleAxis(glm::half_pi<double>(), glm::dvec3(0, 0, 1));
-  const glm::dvec3 friction = grid.velocityChange(node + up, v, h, frictionOnly, identity);
+  CHECK(glm::length(grid.velocityChange(node + glm::dvec3(0.0, 0.1, 0.1), v, h, s)) == 0.0);
+  // The push turns with the head: the same bundle in a head turned 90 degrees about z, where
+  // the head's +y is world -x.
+  const glm::dvec3 friction = grid.velocityChange(node + up, v, h, frictionOnly);
   const glm::dvec3 push = above - friction;
-  const glm::dvec3 world = grid.velocityChange(node + up, v, h, s, turned) - friction;
+  Pose turned;
+  turned.rotation = glm::angleAxis(glm::half_pi<double>(), glm::dvec3(0, 0, 1));
+  for (glm::dvec3& p : gathered) p = turned.apply(p);
+  grid.splat(gathered, std::vector<glm::dvec3>(x.size(), v), turned, allowed);
+  const glm::dvec3 world = grid.velocityChange(turned.apply(node + up), v, h, s) - friction;
   CHECK(world.x == Approx(-push.y).epsilon(1e-9));
   CHECK(world.y == Approx(push.x).margin(1e-12));
 }
@@ -151,7 +151,8 @@ TEST_CASE("volume mode: hair falling onto itself ends less dense than without it
     std::vector<glm::dvec3> x0;
     for (const glm::vec3& p : g.points) x0.emplace_back(p);
     grid.reset(x0, first, m.collision.volumeCell, m.collision.radius);
-    grid.splat(solver.positions(), std::vector<glm::dvec3>(x0.size(), glm::dvec3(0.0)));
+    grid.splat(solver.positions(), std::vector<glm::dvec3>(x0.size(), glm::dvec3(0.0)), Pose{},
+               m.collision.volumeFraction);
     int64_t most = 0;
     for (size_t n = 0; n < grid.nodes(); ++n) most = std::max(most, grid.sums()[4 * n]);
     return double(most) * grid.fillPerUnit();

@@ -15,9 +15,12 @@
 #include "sim/collision.h"
 #include "sim/gpu/gpu_solver.h"
 #include "sim/hairstyle.h"
+#include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
 
 using namespace csm;
+using test::strandOf;
+using test::toDouble;
 
 namespace {
 
@@ -38,20 +41,6 @@ Groom tangle(int strands, double step, unsigned seed) {
     g.addStrand(points);
   }
   return g;
-}
-
-std::vector<uint32_t> strandOf(const Groom& g) {
-  std::vector<uint32_t> out(g.pointCount());
-  for (size_t s = 0; s < g.strandCount(); ++s)
-    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) out[i] = uint32_t(s);
-  return out;
-}
-
-std::vector<glm::dvec3> toDouble(const std::vector<glm::vec4>& x) {
-  std::vector<glm::dvec3> out;
-  out.reserve(x.size());
-  for (const glm::vec4& p : x) out.emplace_back(glm::vec3(p));
-  return out;
 }
 
 struct Compared {

@@ -203,9 +203,7 @@ TEST_CASE("GPU and CPU solvers agree without hair-hair collisions", "[gpu][solve
     std::vector<glm::vec4> x, y;
     gpu->readPositions(x);
     plain->readPositions(y);
-    std::vector<glm::dvec3> yd;
-    for (const glm::vec4& p : y) yd.emplace_back(glm::vec3(p));
-    CHECK(difference(x, yd, 1e-3).over > 0);
+    CHECK(difference(x, test::toDouble(y), 1e-3).over > 0);
   }
 }
 
@@ -552,14 +550,11 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   REQUIRE(on);
   std::vector<glm::vec4> x;
   gpu->readPositions(x);
-  std::vector<glm::dvec3> xd;
-  for (const glm::vec4& p : x) xd.emplace_back(glm::vec3(p));
-  std::vector<uint32_t> strandOf(g.pointCount());
-  for (size_t s = 0; s < g.strandCount(); ++s)
-    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) strandOf[i] = uint32_t(s);
+  const std::vector<glm::dvec3> xd = test::toDouble(x);
+  const std::vector<uint32_t> strand = test::strandOf(g);
   const double r = c.collision.radius;
-  const double within2r = double(findContactsGrid(xd, strandOf, 2.0 * r).size());
-  const double withinR = double(findContactsGrid(xd, strandOf, r).size());
+  const double within2r = double(findContactsGrid(xd, strand, 2.0 * r).size());
+  const double withinR = double(findContactsGrid(xd, strand, r).size());
   INFO("GPU measured " << on->contacts.contacts << " / " << on->contacts.penetrations
                        << ", read back " << within2r << " / " << withinR);
   CHECK(on->contactsMeasured);
