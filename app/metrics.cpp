@@ -114,7 +114,6 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
     a["hair_depth_p99"] = contactSum_.depthQuantile(0.99);
     a["hair_depth_max"] = contactSum_.maxDepth;
     a["hair_candidates_mean"] = double(contactSum_.candidates) / double(contactSamples_);
-    a["hair_candidates_dropped"] = contactSum_.dropped;
     if (restPenetrations_ >= 0) a["hair_penetrations_rest"] = restPenetrations_;
   }
   return j;

@@ -111,9 +111,6 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
                 (unsigned long long)contacts.candidates);
     ImGui::Text("penetration depth p50 %.2f r, p99 %.2f r, max %.2f r", contacts.depthQuantile(0.5),
                 contacts.depthQuantile(0.99), double(contacts.maxDepth));
-    if (contacts.dropped > 0)
-      ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "%llu candidates did not fit their lists",
-                         (unsigned long long)contacts.dropped);
   }
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);

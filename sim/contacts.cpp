@@ -32,7 +32,6 @@ void ContactStats::add(const ContactStats& o) {
   contacts += o.contacts;
   penetrations += o.penetrations;
   crossings += o.crossings;
-  dropped += o.dropped;
   maxDepth = std::max(maxDepth, o.maxDepth);
   for (int i = 0; i < kDepthBins; ++i) depth[i] += o.depth[i];
 }

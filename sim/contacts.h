@@ -35,7 +35,6 @@ struct ContactStats {
   uint64_t contacts = 0;      // pairs closer than 2r
   uint64_t penetrations = 0;  // pairs closer than r
   uint64_t crossings = 0;     // pairs whose orientation flipped since the previous list
-  uint64_t dropped = 0;       // candidates that did not fit a segment's list (GPU)
   float maxDepth = 0.0f;      // deepest penetration, in r
   std::array<uint32_t, kDepthBins> depth{};
   // Sums another list's counts and depths into these (the deepest is the larger).

@@ -34,35 +34,36 @@
 #define CSM_BIND_CORRECTION \
   10  // vec4 x2 per segment: this substep's strand-contact corrections of
       // its two particles (w: how many contacts sent each)
-#define CSM_BIND_SEGMENT_CELLS 11  // uint per particle: cells its segment entered (0: none)
+#define CSM_BIND_SEGMENT_PAIRS \
+  11  // uint per particle: candidate pairs its segment is in (counted by
+      // candidates.comp, back to 0 after pair_scatter.comp)
 #define CSM_BIND_SEGMENT_BASE \
   12                            // uint per particle + 4: exclusive scan of those, where its
-                                // cells' candidate slots start
+                                // pairs start in PAIR_SIDES
 #define CSM_BIND_GRID_COUNT 13  // uint per bucket: entries in it (back to 0 after scatter)
 #define CSM_BIND_GRID_START \
   14                             // uint per bucket + 4: exclusive scan of the counts; entry
                                  // `buckets` is the total the grid needed
 #define CSM_BIND_SCAN_BLOCKS 15  // uint per CSM_SCAN_LEAF buckets: block sums, then their scan
-#define CSM_BIND_ENTRY_HIGH 16   // uvec4 per grid entry: box upper corner (float bits), segment
-#define CSM_BIND_ENTRY_LOW 17    // uvec4 per grid entry: box lower corner (float bits), cell key
+#define CSM_BIND_PAIR_LIST 16     // uvec2 per candidate pair (a < b), in no order
+#define CSM_BIND_ENTRIES 17       // uvec4 per grid entry (packEntry in common.glsl)
 #define CSM_BIND_COUNTERS \
   18                                  // uint[8]: entries needed, contacts, penetrations, recorded
                                       // pairs, segments in no cell (see segmentCells)
 #define CSM_BIND_PAIRS 19             // uvec2: recorded contact pairs (tests)
-#define CSM_BIND_CANDIDATE_COUNT \
-  20  // uint per particle, twice (this frame's half and the last
-      // frame's, P.grid.w says which): candidates of each segment
-#define CSM_BIND_SLOT_CANDIDATES \
-  21  // uvec2 x CSM_SLOT_CANDIDATES per grid entry: the candidates
-      // of the segment that cell owns, at its SEGMENT_BASE + cell
-      // index (a candidate: see CSM_BIND_CANDIDATES)
-#define CSM_BIND_SLOT_COUNT 25  // uint per grid entry: how many of those
+#define CSM_BIND_CANDIDATE_RANGE \
+  20  // uvec2 per particle, twice (this frame's half and the last
+      // frame's, P.grid.w says which): where each segment's candidates
+      // start in CANDIDATES, and how many
+#define CSM_BIND_PAIR_SIDES \
+  21  // uint x 2 per candidate pair: each segment's other segments, from
+      // its SEGMENT_BASE on, in no order
 #define CSM_BIND_INVERSE_MASS \
   27  // float per particle: its inverse mass as the strand contacts
       // see it, 0 when the head holds it (csm::contactInverseMass)
 #define CSM_BIND_CANDIDATES \
-  26  // uvec2 x CSM_SEGMENT_CANDIDATES per particle, twice (halves as
-      // CANDIDATE_COUNT): a segment's candidates in ascending order,
+  26  // uvec2 x 2 per slot of the pair list, twice (halves as
+      // CANDIDATE_RANGE): each segment's candidates in ascending order,
       // x the other segment | flags << 29 (sim/contacts.h), y the
       // contact distance (float bits)
 #define CSM_BIND_VOLUME_SUMS \
@@ -80,9 +81,8 @@
 #define CSM_TEX_POSITION 0
 #define CSM_TEX_VELOCITY 1
 #define CSM_TEX_REST 2
-#define CSM_TEX_ENTRY_LOW 3
+#define CSM_TEX_ENTRIES 3
 #define CSM_TEX_GRID_START 4
-#define CSM_TEX_ENTRY_HIGH 5
 #define CSM_TEX_PREDICTED 6
 #define CSM_TEX_REGION 7
 #define CSM_TEX_INVERSE_MASS 8
@@ -95,23 +95,23 @@
 #define CSM_COUNTER_OVERSIZE 4
 #define CSM_COUNTER_CANDIDATES 5  // pairs within 2r + margin
 #define CSM_COUNTER_CROSSINGS 6   // pairs whose orientation flipped since the last frame
-#define CSM_COUNTER_DROPPED 7     // candidates that did not fit a slot or a segment's list
 #define CSM_COUNTER_MAX_DEPTH 8   // deepest penetration in r (float bits: positive floats
                                   // order as their bits)
+#define CSM_COUNTER_PAIR_LIST 9   // candidate pairs the pair list needed (over its capacity:
+                                  // the frame has no strand contacts)
 #define CSM_COUNTER_DEPTH 16      // csm::kDepthBins bins of penetration depth (sim/contacts.h)
 #define CSM_DEPTH_BINS 64
 #define CSM_DEPTH_BINS_PER_R 32
 #define CSM_COUNTERS 80
 
 // Candidate lists (sim/contacts.h).
-#define CSM_SLOT_CANDIDATES 8      // per grid entry
-#define CSM_SEGMENT_CANDIDATES 16  // per segment
+#define CSM_MAX_SEGMENT_CELLS 64   // cells a segment may enter (see segmentCells)
 #define CSM_CANDIDATE_SHIFT 29     // the flags' place in a candidate
 
 // Work group sizes.
 #define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes
 #define CSM_STRAND_GROUP 64     // per-strand passes
-#define CSM_CONTACT_GROUP 64    // the candidate pass (its lists fill shared memory)
+#define CSM_CONTACT_GROUP 64    // the candidate pass
 #define CSM_MEASURE_GROUP 256   // the measure pass: particles reduced into one record
 #define CSM_SCAN_GROUP 256      // invocations of the block-sum scan group; each scans 2 sums
 #define CSM_SCAN_BLOCK 512      // block sums per round of that scan (2 x CSM_SCAN_GROUP)

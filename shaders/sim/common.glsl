@@ -15,7 +15,7 @@ struct SimParams {
                    // 1 calibrated), z rotation iterations, w head spheres
   uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
   uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = do not record)
-  uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z most cells per segment,
+  uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z pair list capacity,
                    // w this frame's half of the candidate lists (0 or 1)
   vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
@@ -141,8 +141,7 @@ uint pairFlags(vec3 a0, vec3 a1, vec3 b0, vec3 b1, float s, float t, float dist,
 }
 
 // A candidate list entry (CSM_BIND_CANDIDATES): the other segment in the low bits, the
-// pair's flags above them; kList entries per segment.
-const uint kList = uint(CSM_SEGMENT_CANDIDATES);
+// pair's flags above them.
 const uint kIndex = (1u << uint(CSM_CANDIDATE_SHIFT)) - 1u;
 
 bool crossed(uint before, uint now) {
@@ -175,8 +174,27 @@ void segmentBox(vec3 p0, vec3 p1, out vec3 lo, out vec3 hi) {
   hi = max(p0, p1) + P.cells.z;
 }
 
+// A grid entry in one texel (CSM_BIND_ENTRIES): the cell's key, the segment, and the part of
+// its padded box inside the cell in 1023 steps per axis, rounded outward (two boxes that overlap
+// in the cell overlap here too), with a bit per axis for whether the box starts in this cell.
+// The owner rule in these terms: the overlap's lowest corner lies in this cell when, on each
+// axis, one of the two boxes starts here (both touch the cell).
+const float kEntrySteps = 1023.0;
+uvec4 packEntry(uint key, uint segment, vec3 low, vec3 high, ivec3 cell, bvec3 starts) {
+  vec3 l = (low - P.origin.xyz) * P.cells.y - vec3(cell);
+  vec3 h = (high - P.origin.xyz) * P.cells.y - vec3(cell);
+  uvec3 ql = uvec3(clamp(floor(l * kEntrySteps), 0.0, kEntrySteps));
+  uvec3 qh = uvec3(clamp(ceil(h * kEntrySteps), 0.0, kEntrySteps));
+  uvec3 st = uvec3(starts);
+  return uvec4(key, segment, ql.x | (ql.y << 10u) | (ql.z << 20u) | (st.x << 30u) | (st.y << 31u),
+               qh.x | (qh.y << 10u) | (qh.z << 20u) | (st.z << 30u));
+}
+uvec3 entryBoxLow(uvec4 e) { return (uvec3(e.z) >> uvec3(0u, 10u, 20u)) & 1023u; }
+uvec3 entryBoxHigh(uvec4 e) { return (uvec3(e.w) >> uvec3(0u, 10u, 20u)) & 1023u; }
+uint entryStarts(uvec4 e) { return (e.z >> 30u) | ((e.w >> 28u) & 4u); }
+
 // The cells of a segment's padded box, [lo, hi] per axis. False when it has none: a position
-// that is not finite (the comparison fails for NaN too), or a box over P.grid.z cells (a
+// that is not finite (the comparison fails for NaN too), or a box over CSM_MAX_SEGMENT_CELLS cells (a
 // segment stretched far beyond its rest length; see GpuSolver::gridStats). Such a segment
 // is in no cell and looks for no contacts, so the pass stays symmetric and bounded.
 bool segmentCells(vec3 p0, vec3 p1, out ivec3 lo, out ivec3 hi) {
@@ -191,8 +209,8 @@ bool segmentCells(vec3 p0, vec3 p1, out ivec3 lo, out ivec3 hi) {
   segmentBox(p0, p1, bl, bh);
   ivec3 l = cellOf(bl), h = cellOf(bh);
   ivec3 span = h - l + 1;
-  uint most = P.grid.z;
-  if (any(greaterThan(span, ivec3(most))) || uint(span.x * span.y * span.z) > most) return false;
+  const int most = CSM_MAX_SEGMENT_CELLS;
+  if (any(greaterThan(span, ivec3(most))) || span.x * span.y * span.z > most) return false;
   lo = l;
   hi = h;
   return true;

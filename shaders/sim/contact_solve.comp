@@ -16,8 +16,8 @@ layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
 layout(binding = CSM_TEX_INVERSE_MASS) uniform samplerBuffer inverseMassTex;
 
 layout(std430, binding = CSM_BIND_CANDIDATES) readonly buffer Candidates { uvec2 candidates[]; };
-layout(std430, binding = CSM_BIND_CANDIDATE_COUNT) readonly buffer CandidateCount {
-  uint candidateCount[];
+layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) readonly buffer CandidateRange {
+  uvec2 candidateRange[];
 };
 layout(std430, binding = CSM_BIND_CORRECTION) writeonly buffer Correction { vec4 correction[]; };
 
@@ -35,7 +35,8 @@ void main() {
   uint a = globalIndex();
   if (a >= P.counts.x) return;
   uint here = P.grid.w * P.counts.x + a;
-  uint n = candidateCount[here];
+  uvec2 range = candidateRange[here];
+  uint n = range.y;
   vec3 c0 = vec3(0.0), c1 = vec3(0.0);
   float count = 0.0;
   if (n > 0u) {
@@ -46,7 +47,7 @@ void main() {
     vec3 va0 = fetchVel(a), va1 = fetchVel(a + 1u);
     vec2 wa = inverseMasses(a);
     for (uint k = 0u; k < n; ++k) {
-      uvec2 c = candidates[here * kList + k];
+      uvec2 c = candidates[range.x + k];
       uint b = c.x & kIndex;
       float d0 = uintBitsToFloat(c.y);
       vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);

@@ -1,7 +1,6 @@
 // Collision pass, grid build 1/3 (counting sort: count), one invocation per segment: the
 // segment counts itself into the bucket of every cell its padded box touches (typically 2 to
-// 12; segmentCells caps it), and notes how many (a second scan gives each segment its range
-// of partial forces). Integer atomics: the counts do not depend on the order.
+// 12; segmentCells caps it). Integer atomics: the counts do not depend on the order.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -13,22 +12,15 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
 };
 layout(std430, binding = CSM_BIND_GRID_COUNT) buffer GridCount { uint gridCount[]; };
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
-layout(std430, binding = CSM_BIND_SEGMENT_CELLS) writeonly buffer SegmentCells {
-  uint segCells[];
-};
 
 void main() {
   uint i = globalIndex();
-  if (i >= P.counts.x) return;
-  segCells[i] = 0u;
-  if (i + 1u == P.counts.x || particleStrand[i] != particleStrand[i + 1u]) return;
+  if (i + 1u >= P.counts.x || particleStrand[i] != particleStrand[i + 1u]) return;
   ivec3 lo, hi;
   if (!segmentCells(texelFetch(posTex, int(i)).xyz, texelFetch(posTex, int(i + 1u)).xyz, lo, hi)) {
     atomicAdd(counters[CSM_COUNTER_OVERSIZE], 1u);
     return;
   }
-  ivec3 span = hi - lo + 1;
-  segCells[i] = uint(span.x * span.y * span.z);
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x)

@@ -1,11 +1,11 @@
 // Collision pass, grid build 3/3 (counting sort: scatter), one invocation per segment: an
-// entry in each of its cells' buckets, with what the contact pass tests a candidate on, so
-// that its first test reads one texel: the box's lower corner and the cell's key (entryLow),
-// the upper corner and the segment (entryHigh). Counting each bucket back down returns the
-// counts to zero for the next frame (no clear needed), also when the entries do not fit:
-// then nothing is written past the capacity and the contact pass skips the frame
-// (GpuSolver grows the buffers when it sees the total). The order within a bucket depends on
-// the schedule; the contact pass orders each segment's contacts itself (contacts.comp).
+// entry in each of its cells' buckets, all that the candidate pass tests a candidate on in
+// one texel (packEntry: the cell's key, the segment, its box within the cell and where the
+// box starts). Counting each bucket back down returns the counts to zero for the next frame
+// (no clear needed), also when the entries do not fit: then nothing is written past the
+// capacity and the candidate pass skips the frame (GpuSolver grows the buffer when it sees the
+// total). The order within a bucket depends on the schedule; nothing downstream depends on it
+// (candidate_lists.comp sorts each segment's list).
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -17,8 +17,7 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
 };
 layout(std430, binding = CSM_BIND_GRID_COUNT) buffer GridCount { uint gridCount[]; };
 layout(std430, binding = CSM_BIND_GRID_START) readonly buffer GridStart { uint gridStart[]; };
-layout(std430, binding = CSM_BIND_ENTRY_LOW) writeonly buffer EntryLow { uvec4 entryLow[]; };
-layout(std430, binding = CSM_BIND_ENTRY_HIGH) writeonly buffer EntryHigh { uvec4 entryHigh[]; };
+layout(std430, binding = CSM_BIND_ENTRIES) writeonly buffer Entries { uvec4 entries[]; };
 
 void main() {
   uint i = globalIndex();
@@ -31,12 +30,10 @@ void main() {
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {
-        uint key = cellKey(ivec3(x, y, z));
+        ivec3 cell = ivec3(x, y, z);
+        uint key = cellKey(cell);
         uint bucket = bucketOf(key);
         uint slot = gridStart[bucket] + atomicAdd(gridCount[bucket], 0xffffffffu) - 1u;
-        if (slot < P.grid.y) {
-          entryLow[slot] = uvec4(floatBitsToUint(low), key);
-          entryHigh[slot] = uvec4(floatBitsToUint(high), i);
-        }
+        if (slot < P.grid.y) entries[slot] = packEntry(key, i, low, high, cell, equal(cell, lo));
       }
 }

@@ -1,7 +1,8 @@
 // Collision pass, grid build 2/3 (exclusive scan, level 3 of 3): each invocation rescans its
 // block of counts from the block's offset, giving every bucket its first entry; entry
 // `count` is the total, so bucket b's entries are [gridStart[b], gridStart[b+1]). The total
-// also goes to the counters, where GpuSolver reads it to size the entry buffers.
+// also goes to the counters at `totalSlot` (when one is given), where GpuSolver reads the
+// grid's to size the entry buffer.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -12,6 +13,7 @@ layout(std430, binding = CSM_BIND_SCAN_BLOCKS) readonly buffer ScanBlocks { uint
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
 
 uniform uint blocks;
+uniform uint totalSlot;  // a CSM_COUNTER_*, or CSM_COUNTERS for none
 
 void main() {
   uint block = globalIndex();
@@ -27,6 +29,6 @@ void main() {
   // The total after the last bucket (gridStart has one uvec4 more than the counts).
   if (block + 1u == blocks) {
     gridStart[first + uint(CSM_SCAN_LEAF / 4)] = uvec4(running);
-    counters[CSM_COUNTER_ENTRIES] = running;
+    if (totalSlot < uint(CSM_COUNTERS)) counters[totalSlot] = running;
   }
 }

@@ -16,11 +16,11 @@ namespace {
 // Boxes are padded by half the candidate distance (2r + margin) and 1%, so that a pair the
 // candidate pass finds closer than that in float always has overlapping boxes.
 constexpr float kPadSlack = 1.01f;
-// A segment enters at most this many cells (4 x 4 x 4): a box of a strain-limited segment
-// spans at most 3 cells per axis (cells are at least half a mean segment), so only a segment
-// stretched to ~1.5 mean lengths or more misses it. Such a segment is in no cell this frame
-// (counted as oversize), which keeps the pass bounded when a simulation explodes.
-constexpr uint32_t kMaxSegmentCells = 64;
+// A segment enters at most CSM_MAX_SEGMENT_CELLS cells (4 x 4 x 4): a box of a strain-limited
+// segment spans at most 3 cells per axis (cells are at least half a mean segment), so only a
+// segment stretched to ~1.5 mean lengths or more misses it. Such a segment is in no cell this
+// frame (counted as oversize), which keeps the pass bounded when a simulation explodes.
+constexpr uint32_t kMaxSegmentCells = CSM_MAX_SEGMENT_CELLS;
 
 }  // namespace
 
@@ -31,6 +31,7 @@ bool CollisionGrid::build(std::string* error) {
          passes_.scanAdd.build("sim/scan_add.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scatter.build("sim/grid_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, {}, error) &&
+         passes_.pairScatter.build("sim/pair_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.lists.build("sim/candidate_lists.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.solve.build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {}, error);
 }
@@ -43,24 +44,24 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   // fewer cells than that, sparse hair about as many, so few buckets hold two cells.
   buckets_ = std::max<uint32_t>(64, std::bit_ceil(std::max<uint32_t>(2 * segments, 1)));
   scanBlocks_ = buckets_ / CSM_SCAN_LEAF;
-  // The per-segment scan (where each segment's partial forces start) runs on the same scan
-  // passes, over one count per particle.
+  // The per-segment scan (where each segment's pairs start) runs on the same scan passes, over
+  // one count per particle.
   segmentScan_ = std::max<uint32_t>(64, std::bit_ceil(uint32_t(particles)));
   zeroed<glm::vec4>(correction_, 2 * particles);
-  zeroed<glm::uvec2>(candidates_, 2 * particles * CSM_SEGMENT_CANDIDATES);
-  zeroed<uint32_t>(candidateCount_, 2 * particles);
+  zeroed<glm::uvec2>(candidateRange_, 2 * particles);
   half_ = 0;
   lastFrameListed_ = false;
   zeroed<uint32_t>(gridCount_, buckets_);
   zeroed<uint32_t>(gridStart_, buckets_ + 4);  // + the total, as a uvec4
   zeroed<uint32_t>(scanBlockSums_, scanBlocks_ + 1);
   zeroed<uint32_t>(counters_, CSM_COUNTERS);
-  zeroed<uint32_t>(segmentCells_, segmentScan_);
+  zeroed<uint32_t>(segmentPairs_, segmentScan_);
   zeroed<uint32_t>(segmentBase_, segmentScan_ + 4);
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
   zeroed<glm::uvec2>(pairs_, pairCapacity_);
   view(gridStartTex_, gridStart_, GL_R32UI);
-  entryCapacity_ = 0;  // reserveFor sizes the entry buffers
+  entryCapacity_ = 0;  // reserveFor sizes the entry buffer and the pair list
+  pairListCapacity_ = 0;
 }
 
 double CollisionGrid::cellSize(float reach) const {
@@ -84,12 +85,14 @@ void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uin
     entries += std::min<uint64_t>(kMaxSegmentCells, uint64_t(span.x * span.y * span.z));
   }
   growEntries(std::max<uint64_t>(1, entries + entries / 2));
+  // Dense hair has about as many candidate pairs as entries (Fig. 1: 0.75 per entry).
+  growPairList(std::max<uint64_t>(1024, entries + entries / 2));
 }
 
 void CollisionGrid::beginFrame(bool contacts) {
   if (contacts && !lastFrameListed_) {
     // No last list: nothing to count crossings against.
-    candidateCount_.clearToZero();
+    candidateRange_.clearToZero();
   } else if (!contacts && lastFrameListed_) {
     // Nothing to report this frame.
     counters_.clearToZero();
@@ -100,7 +103,7 @@ void CollisionGrid::beginFrame(bool contacts) {
 
 void CollisionGrid::writeParams(SimParams& p, float reach) const {
   p.counts.w = uint32_t(pairCapacity_);
-  p.grid = glm::uvec4(buckets_ - 1, entryCapacity_, kMaxSegmentCells, half_);
+  p.grid = glm::uvec4(buckets_ - 1, entryCapacity_, pairListCapacity_, half_);
   const double cell = cellSize(reach);
   p.cells = glm::vec4(float(cell), float(1.0 / cell), 0.5f * reach * kPadSlack + 1e-7f, 0.0f);
 }
@@ -111,19 +114,17 @@ void CollisionGrid::bind() const {
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
-  entryHigh_.bindBase(ssbo, CSM_BIND_ENTRY_HIGH);
-  entryLow_.bindBase(ssbo, CSM_BIND_ENTRY_LOW);
+  entries_.bindBase(ssbo, CSM_BIND_ENTRIES);
+  pairList_.bindBase(ssbo, CSM_BIND_PAIR_LIST);
+  pairSides_.bindBase(ssbo, CSM_BIND_PAIR_SIDES);
   counters_.bindBase(ssbo, CSM_BIND_COUNTERS);
   pairs_.bindBase(ssbo, CSM_BIND_PAIRS);
-  segmentCells_.bindBase(ssbo, CSM_BIND_SEGMENT_CELLS);
+  segmentPairs_.bindBase(ssbo, CSM_BIND_SEGMENT_PAIRS);
   segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
-  slotCandidates_.bindBase(ssbo, CSM_BIND_SLOT_CANDIDATES);
-  slotCount_.bindBase(ssbo, CSM_BIND_SLOT_COUNT);
   candidates_.bindBase(ssbo, CSM_BIND_CANDIDATES);
-  candidateCount_.bindBase(ssbo, CSM_BIND_CANDIDATE_COUNT);
-  entryLowTex_.bind(CSM_TEX_ENTRY_LOW);
+  candidateRange_.bindBase(ssbo, CSM_BIND_CANDIDATE_RANGE);
+  entryTex_.bind(CSM_TEX_ENTRIES);
   gridStartTex_.bind(CSM_TEX_GRID_START);
-  entryHighTex_.bind(CSM_TEX_ENTRY_HIGH);
 }
 
 void CollisionGrid::findCandidates(StageTimer& timer) {
@@ -133,22 +134,25 @@ void CollisionGrid::findCandidates(StageTimer& timer) {
   counters_.clearToZero();
   passes_.count.run(particles);
   gl::memoryBarrier(kPassBarrier);
-  // Counting sort, exclusive scan of the bucket counts; then the same scan over the
-  // segments' cell counts, its buffers bound in the grid's place for the while.
-  scan(scanBlocks_);
-  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
-  segmentCells_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
-  segmentBase_.bindBase(ssbo, CSM_BIND_GRID_START);
-  segmentScanBlocks_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
-  scan(segmentScan_ / CSM_SCAN_LEAF);
-  gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
-  gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
-  scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
+  // Counting sort of the entries by bucket: exclusive scan of the counts, scatter.
+  scan(scanBlocks_, CSM_COUNTER_ENTRIES);
   passes_.scatter.run(particles);
   gl::memoryBarrier(kPassBarrier);
   // One invocation per entry slot: how many are used is known on the GPU only (no read-back
   // inside a frame); the others return at once.
   passes_.candidates.run(entryCapacity_);
+  gl::memoryBarrier(kPassBarrier);
+  // Counting sort of the pairs by segment: the same scan over the segments' pair counts, its
+  // buffers bound in the grid's place for the while; scatter, one invocation per list slot.
+  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
+  segmentPairs_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
+  segmentBase_.bindBase(ssbo, CSM_BIND_GRID_START);
+  segmentScanBlocks_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
+  scan(segmentScan_ / CSM_SCAN_LEAF, CSM_COUNTERS);
+  gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
+  gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
+  scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
+  passes_.pairScatter.run(pairListCapacity_);
   gl::memoryBarrier(kPassBarrier);
   passes_.lists.run(particles);
   gl::memoryBarrier(kPassBarrier);
@@ -160,21 +164,24 @@ void CollisionGrid::solve(unsigned substep) {
   gl::memoryBarrier(kPassBarrier);
 }
 
-void CollisionGrid::scan(uint32_t blocks) {
+void CollisionGrid::scan(uint32_t blocks, uint32_t totalSlot) {
   // Block sums, their scan, each block rescanned from its offset (scan_*.comp).
   passes_.scanBlocks.set("blocks", blocks).run(blocks);
   gl::memoryBarrier(kPassBarrier);
   passes_.scanSums.set("count", blocks).run(1);
   gl::memoryBarrier(kPassBarrier);
-  passes_.scanAdd.set("blocks", blocks).run(blocks);
+  passes_.scanAdd.set("blocks", blocks).set("totalSlot", totalSlot).run(blocks);
   gl::memoryBarrier(kPassBarrier);
 }
 
 bool CollisionGrid::countersSeen(const uint32_t* c) {
-  // The grid did not fit that frame (it applied no hair-hair forces): room for the next.
-  if (c[CSM_COUNTER_ENTRIES] <= entryCapacity_) return false;
+  // The grid or the pair list did not fit that frame (it applied no hair-hair forces): room
+  // for the next.
+  const bool grow =
+      c[CSM_COUNTER_ENTRIES] > entryCapacity_ || c[CSM_COUNTER_PAIR_LIST] > pairListCapacity_;
   growEntries(c[CSM_COUNTER_ENTRIES]);
-  return true;
+  growPairList(c[CSM_COUNTER_PAIR_LIST]);
+  return grow;
 }
 
 void CollisionGrid::growEntries(uint64_t needed) {
@@ -184,12 +191,21 @@ void CollisionGrid::growEntries(uint64_t needed) {
   const uint64_t want = std::min(limit, needed + needed / 4);
   if (want <= entryCapacity_) return;
   entryCapacity_ = uint32_t(want);
-  zeroed<glm::uvec4>(entryLow_, entryCapacity_);
-  zeroed<glm::uvec4>(entryHigh_, entryCapacity_);
-  zeroed<glm::uvec2>(slotCandidates_, size_t(entryCapacity_) * CSM_SLOT_CANDIDATES);
-  zeroed<uint32_t>(slotCount_, entryCapacity_);
-  view(entryLowTex_, entryLow_, GL_RGBA32UI);
-  view(entryHighTex_, entryHigh_, GL_RGBA32UI);
+  zeroed<glm::uvec4>(entries_, entryCapacity_);
+  view(entryTex_, entries_, GL_RGBA32UI);
+}
+
+void CollisionGrid::growPairList(uint64_t needed) {
+  // As the entries: a quarter more than asked, never beyond a 32-bit index.
+  const uint64_t limit = uint64_t(1) << 28;  // 2 GiB of 8-byte pairs
+  const uint64_t want = std::min(limit, needed + needed / 4);
+  if (want <= pairListCapacity_) return;
+  pairListCapacity_ = uint32_t(want);
+  zeroed<glm::uvec2>(pairList_, pairListCapacity_);
+  zeroed<uint32_t>(pairSides_, 2 * size_t(pairListCapacity_));
+  // Both halves of the lists, two sides per pair each; last frame's lists are gone.
+  zeroed<glm::uvec2>(candidates_, 4 * size_t(pairListCapacity_));
+  lastFrameListed_ = false;
 }
 
 std::vector<uint32_t> CollisionGrid::readCounters() const {
@@ -214,13 +230,13 @@ std::vector<std::pair<uint32_t, uint32_t>> CollisionGrid::readPairs(bool* overfl
 
 std::vector<std::vector<std::pair<uint32_t, float>>> CollisionGrid::readCandidates() const {
   const size_t n = particles_, first = size_t(half_) * n;
-  const std::vector<uint32_t> count = candidateCount_.download<uint32_t>(2 * n);
+  const std::vector<glm::uvec2> range = candidateRange_.download<glm::uvec2>(2 * n);
   const std::vector<glm::uvec2> all =
-      candidates_.download<glm::uvec2>(2 * n * CSM_SEGMENT_CANDIDATES);
+      candidates_.download<glm::uvec2>(4 * size_t(pairListCapacity_));
   std::vector<std::vector<std::pair<uint32_t, float>>> out(n);
   for (size_t i = 0; i < n; ++i)
-    for (uint32_t k = 0; k < count[first + i]; ++k) {
-      const glm::uvec2 c = all[(first + i) * CSM_SEGMENT_CANDIDATES + k];
+    for (uint32_t k = 0; k < range[first + i].y; ++k) {
+      const glm::uvec2 c = all[range[first + i].x + k];
       out[i].emplace_back(c.x & ((1u << CSM_CANDIDATE_SHIFT) - 1u), std::bit_cast<float>(c.y));
     }
   return out;
@@ -232,7 +248,6 @@ ContactStats contactStatsOf(const uint32_t* c) {
   s.contacts = c[CSM_COUNTER_CONTACTS];
   s.penetrations = c[CSM_COUNTER_PENETRATIONS];
   s.crossings = c[CSM_COUNTER_CROSSINGS];
-  s.dropped = c[CSM_COUNTER_DROPPED];
   s.maxDepth = std::bit_cast<float>(c[CSM_COUNTER_MAX_DEPTH]);
   static_assert(CSM_DEPTH_BINS == kDepthBins && CSM_DEPTH_BINS_PER_R == kDepthBinsPerR);
   for (int i = 0; i < kDepthBins; ++i) s.depth[i] = c[CSM_COUNTER_DEPTH + i];

@@ -1,11 +1,12 @@
 // Strand contacts on the GPU (DESIGN.md section 1.7; sim/contacts.h is the CPU reference).
 // Once per frame, the candidates: a hash grid of segment boxes built by counting sort
-// (grid_count, a three-level parallel scan of the buckets and one of the segments' cell
-// counts, grid_scatter), candidates.comp per grid entry and candidate_lists.comp per segment.
-// Every substep, contact_solve.comp: each segment's corrections, which strain_limit.comp
-// applies. The grid's capacity follows what the samples' counters report it needed; a frame
-// over capacity has no strand contacts and says so in the counters (entries needed >
-// capacity).
+// (grid_count, a three-level parallel scan of the buckets, grid_scatter); candidates.comp per
+// grid entry lists the pairs, each once; a counting sort by segment (the same scan over each
+// segment's pair count, pair_scatter) and candidate_lists.comp per segment give every segment
+// its sorted list. Every substep, contact_solve.comp: each segment's corrections, which
+// strain_limit.comp applies. The grid's and the pair list's capacities follow what the
+// samples' counters report they needed; a frame over either has no strand contacts and says
+// so in the counters (entries or pairs needed > capacity).
 #pragma once
 
 #include <cstdint>
@@ -35,10 +36,10 @@ class CollisionGrid {
   // Sizes the grid for `segments` segments over `particles` particles, mean rest length
   // `meanSegment` (m); clears the counters and lists. reserveFor then sizes the entries.
   void reset(size_t particles, uint32_t segments, double meanSegment);
-  // Sizes the entry buffers for the boxes of `position` (a state the coming frames start near,
-  // the head at `origin`) with candidate distance `reach`, and half again: the buffers then
-  // rarely need to grow while the hair moves (a frame over them has no strand contacts, says
-  // so in the counters, and grows them when a sample reads those).
+  // Sizes the entry buffer for the boxes of `position` (a state the coming frames start near,
+  // the head at `origin`) with candidate distance `reach`, and half again, and the pair list
+  // as large: they then rarely need to grow while the hair moves (a frame over them has no
+  // strand contacts, says so in the counters, and grows them when a sample reads those).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
   // Before a frame's writeParams: the lists swap halves (this frame's becomes last frame's);
@@ -53,11 +54,13 @@ class CollisionGrid {
   void findCandidates(StageTimer& timer);
   // One substep's corrections (the timer's stage is the caller's).
   void solve(unsigned substep);
-  // Grows the entry buffers when `counters` (read back) say they did not fit; true if it grew.
+  // Grows the entry buffer or the pair list when `counters` (read back) say they did not fit;
+  // true if either grew.
   bool countersSeen(const uint32_t* counters);
 
   const gl::Buffer& counters() const { return counters_; }
   uint32_t entryCapacity() const { return entryCapacity_; }
+  uint32_t pairListCapacity() const { return pairListCapacity_; }
   uint32_t bucketCount() const { return buckets_; }
 
   // --- Read back at once, for tests and tools. ---
@@ -70,30 +73,33 @@ class CollisionGrid {
 
  private:
   void growEntries(uint64_t needed);
+  void growPairList(uint64_t needed);
   double cellSize(float reach) const;
-  void scan(uint32_t blocks);
+  // Exclusive scan of the bound counts; the total to counter `totalSlot` (CSM_COUNTERS: none).
+  void scan(uint32_t blocks, uint32_t totalSlot);
 
   size_t particles_ = 0;
   uint32_t segments_ = 0;
   double meanSegment_ = 0.0;
   uint32_t buckets_ = 0, scanBlocks_ = 0;
-  uint32_t segmentScan_ = 0;    // counts in the per-segment scan (a power of two)
-  uint32_t entryCapacity_ = 0;  // grid entries the entry buffers hold
+  uint32_t segmentScan_ = 0;       // counts in the per-segment scan (a power of two)
+  uint32_t entryCapacity_ = 0;     // grid entries the entry buffer holds
+  uint32_t pairListCapacity_ = 0;  // candidate pairs the pair list holds
   size_t pairCapacity_ = 0;
   uint32_t half_ = 0;             // this frame's half of the candidate lists
   bool lastFrameListed_ = false;  // whether the other half holds last frame's lists (and the
                                   // counters its measures)
 
   struct Passes {
-    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, candidates, lists, solve;
+    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, candidates, pairScatter, lists,
+        solve;
   } passes_;
   gl::Buffer correction_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
-      scanBlockSums_{gl::NoCreate}, entryLow_{gl::NoCreate}, entryHigh_{gl::NoCreate},
-      counters_{gl::NoCreate}, pairs_{gl::NoCreate}, segmentCells_{gl::NoCreate},
-      segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate}, slotCandidates_{gl::NoCreate},
-      slotCount_{gl::NoCreate}, candidates_{gl::NoCreate}, candidateCount_{gl::NoCreate};
-  gl::BufferTexture entryLowTex_{gl::NoCreate}, entryHighTex_{gl::NoCreate},
-      gridStartTex_{gl::NoCreate};
+      scanBlockSums_{gl::NoCreate}, entries_{gl::NoCreate}, counters_{gl::NoCreate},
+      pairs_{gl::NoCreate}, segmentPairs_{gl::NoCreate}, segmentBase_{gl::NoCreate},
+      segmentScanBlocks_{gl::NoCreate}, pairList_{gl::NoCreate}, pairSides_{gl::NoCreate},
+      candidates_{gl::NoCreate}, candidateRange_{gl::NoCreate};
+  gl::BufferTexture entryTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};
 };
 
 }  // namespace csm::gpu

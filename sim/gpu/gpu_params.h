@@ -22,7 +22,7 @@ struct SimParams {
   glm::ivec4 ints;      // x unused, y stiffness model, z rotation iterations, w head spheres
   glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
   glm::uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = off)
-  glm::uvec4 grid;      // x bucket mask, y entry capacity, z most cells per segment, w this frame's
+  glm::uvec4 grid;      // x bucket mask, y entry capacity, z pair list capacity, w this frame's
                         // half of the candidate lists
   glm::vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   glm::vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused

@@ -119,6 +119,8 @@ GpuSolver::GridStats GpuSolver::gridStats() {
   g.capacity = grid_.entryCapacity();
   g.oversize = c[CSM_COUNTER_OVERSIZE];
   g.buckets = grid_.bucketCount();
+  g.pairs = c[CSM_COUNTER_PAIR_LIST];
+  g.pairCapacity = grid_.pairListCapacity();
   g.cell = params_.cells.x;
   return g;
 }

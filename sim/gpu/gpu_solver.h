@@ -83,6 +83,7 @@ class GpuSolver final : public Solver {
   // box over the cell cap), and the cell edge in metres.
   struct GridStats {
     uint32_t entries = 0, capacity = 0, oversize = 0, buckets = 0;
+    uint32_t pairs = 0, pairCapacity = 0;  // candidate pairs the last pass needed, and held
     float cell = 0.0f;
   };
   GridStats gridStats();

@@ -107,44 +107,45 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
       // The stats count the same pairs.
       CHECK(gpu->readContactStats().contacts == cmp.gpu);
 
-      // Each segment lists every pair within 2r + margin it is part of, in ascending order.
-      // A cell keeps CSM_SLOT_CANDIDATES (8) of a segment's pairs and a segment's list 16, the
-      // lowest indices; the rest are counted as dropped.
+      // Each segment lists every pair within 2r + margin it is part of, in ascending order,
+      // however many (r = 8 mm: over a hundred).
       const double reach = 2.0 * r + c.collision.margin;
       std::vector<glm::vec4> x;
       gpu->readPositions(x);
       const auto within = findContactsBruteForce(toDouble(x), strandOf(g), reach);
       std::vector<std::vector<uint32_t>> expected(g.pointCount());
+      std::set<std::pair<uint32_t, uint32_t>> borderline;  // within float rounding of the reach
       for (const SegmentPair& p : within) {
-        if (std::abs(p.distance - reach) < 1e-5 * reach) continue;  // float rounding
+        if (std::abs(p.distance - reach) < 1e-5 * reach) {
+          borderline.insert({p.a, p.b});
+          borderline.insert({p.b, p.a});
+          continue;
+        }
         expected[p.a].push_back(p.b);
         expected[p.b].push_back(p.a);
       }
       const auto lists = gpu->readCandidates();
-      size_t wrong = 0, most = 0, overfull = 0;
+      size_t wrong = 0, most = 0;
       for (size_t i = 0; i < lists.size(); ++i) {
         std::vector<uint32_t> e = expected[i], got;
         std::sort(e.begin(), e.end());
         for (const auto& [b, d0] : lists[i]) got.push_back(b);
         most = std::max(most, e.size());
-        // Pairs within rounding of the reach may fall either way: one difference is allowed.
-        std::vector<uint32_t> common;
-        std::set_intersection(e.begin(), e.end(), got.begin(), got.end(),
-                              std::back_inserter(common));
-        const bool sorted = std::is_sorted(got.begin(), got.end());
-        if (e.size() <= 8) {
-          if (!sorted || common.size() + 1 < e.size() || common.size() + 1 < got.size()) ++wrong;
-        } else {
-          ++overfull;
-          if (!sorted || got.size() > 16 || common.size() + 1 < got.size()) ++wrong;
-        }
+        // Every pair expected, in ascending order; others only within rounding of the reach.
+        std::vector<uint32_t> missing, extra;
+        std::set_difference(e.begin(), e.end(), got.begin(), got.end(),
+                            std::back_inserter(missing));
+        std::set_difference(got.begin(), got.end(), e.begin(), e.end(), std::back_inserter(extra));
+        const bool onlyBorderline = std::all_of(extra.begin(), extra.end(), [&](uint32_t b) {
+          return borderline.count({uint32_t(i), b}) > 0;
+        });
+        if (!std::is_sorted(got.begin(), got.end()) || !missing.empty() || !onlyBorderline) ++wrong;
         // At rest, every pair's contact distance is its distance, up to 2r.
         for (const auto& [b, d0] : lists[i]) CHECK(d0 <= float(2.0 * r) * 1.0001f);
       }
-      INFO("most candidates of a segment " << most << ", segments over the list " << overfull);
+      INFO("most candidates of a segment " << most);
       CHECK(wrong == 0);
-      if (r > 0.005) CHECK(gpu->readContactStats().dropped > 0);
-      if (overfull == 0) CHECK(gpu->readContactStats().dropped == 0);
+      if (r > 0.005) CHECK(most > 64);
     }
   }
 }
@@ -287,6 +288,48 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   gpu->stepFrame(Pose{}, Pose{});
   CHECK(gpu->readContactStats().contacts > 0);
   CHECK(gpu->gridStats().capacity == capacity);
+}
+
+TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts and grows",
+          "[gpu][collision]") {
+  // A bundle of parallel strands packed closer than the candidate distance: ~40 pairs per
+  // segment against ~4 grid entries, so the pair list sized from the entries overflows. That
+  // frame lists no candidates (and the counters say how many pairs it needed); the next one,
+  // after a sample reads the counters, fits and lists them.
+  test::glContext();
+  std::string error;
+  auto gpu = GpuSolver::create(&error);
+  REQUIRE(gpu);
+  Groom g;
+  for (int i = 0; i < 15; ++i)
+    for (int j = 0; j < 15; ++j) {
+      std::vector<glm::vec3> points;
+      for (int k = 0; k < 6; ++k)
+        points.push_back(glm::vec3(0.0003f * float(i), 0.0003f * float(j), 0.004f * float(k)));
+      g.addStrand(points);
+    }
+  Config c;
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.radius = 0.0005f;
+  c.sim.gravity = glm::vec3(0.0f);
+  gpu->reset(g, c, Pose{});
+  const uint32_t capacity = gpu->gridStats().pairCapacity;
+  gpu->stepFrame(Pose{}, Pose{});
+  const GpuSolver::GridStats over = gpu->gridStats();
+  INFO("pairs " << over.pairs << " capacity " << over.pairCapacity);
+  CHECK(over.pairs > capacity);
+  CHECK(over.entries <= over.capacity);
+  const auto empty = gpu->readCandidates();
+  CHECK(std::all_of(empty.begin(), empty.end(), [](const auto& l) { return l.empty(); }));
+  // The sample grows the list; the next frame fits.
+  CHECK(gpu->readContactStats().candidates == over.pairs);
+  gpu->stepFrame(Pose{}, Pose{});
+  const GpuSolver::GridStats fits = gpu->gridStats();
+  CHECK(fits.pairCapacity > capacity);
+  CHECK(fits.pairs <= fits.pairCapacity);
+  size_t listed = 0;
+  for (const auto& l : gpu->readCandidates()) listed += l.size();
+  CHECK(listed > 0);
 }
 
 TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision]") {

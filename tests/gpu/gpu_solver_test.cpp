@@ -226,7 +226,6 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
     const ContactStats onCpu = cpu.contactStats(), onGpu = gpu->readContactStats();
     INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates
                   << ", closer than r CPU " << onCpu.penetrations << " GPU " << onGpu.penetrations);
-    CHECK(onGpu.dropped * 100 <= onGpu.candidates);  // a cell keeps 8 of a segment's pairs
     if (f < 3) {
       std::vector<glm::vec4> x;
       gpu->readPositions(x);
