@@ -85,8 +85,9 @@ void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uin
     entries += std::min<uint64_t>(kMaxSegmentCells, uint64_t(span.x * span.y * span.z));
   }
   growEntries(std::max<uint64_t>(1, entries + entries / 2));
-  // Dense hair has about as many candidate pairs as entries (Fig. 1: 0.75 per entry).
-  growPairList(std::max<uint64_t>(1024, entries + entries / 2));
+  // Dense hair has fewer candidate pairs than entries (Fig. 1: 0.75 per entry at rest): as
+  // many, and a quarter more (growPairList).
+  growPairList(std::max<uint64_t>(1024, entries));
 }
 
 void CollisionGrid::beginFrame(bool contacts) {
@@ -177,11 +178,16 @@ void CollisionGrid::scan(uint32_t blocks, uint32_t totalSlot) {
 bool CollisionGrid::countersSeen(const uint32_t* c) {
   // The grid or the pair list did not fit that frame (it applied no hair-hair forces): room
   // for the next.
-  const bool grow =
-      c[CSM_COUNTER_ENTRIES] > entryCapacity_ || c[CSM_COUNTER_PAIR_LIST] > pairListCapacity_;
-  growEntries(c[CSM_COUNTER_ENTRIES]);
-  growPairList(c[CSM_COUNTER_PAIR_LIST]);
-  return grow;
+  bool grew = false;
+  if (c[CSM_COUNTER_ENTRIES] > entryCapacity_) {
+    growEntries(c[CSM_COUNTER_ENTRIES]);
+    grew = true;
+  }
+  if (c[CSM_COUNTER_PAIR_LIST] > pairListCapacity_) {
+    growPairList(c[CSM_COUNTER_PAIR_LIST]);
+    grew = true;
+  }
+  return grew;
 }
 
 void CollisionGrid::growEntries(uint64_t needed) {

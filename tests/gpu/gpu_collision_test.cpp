@@ -330,6 +330,11 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts an
   size_t listed = 0;
   for (const auto& l : gpu->readCandidates()) listed += l.size();
   CHECK(listed > 0);
+  // A sample that fits grows nothing.
+  gpu->readContactStats();
+  gpu->stepFrame(Pose{}, Pose{});
+  gpu->readContactStats();
+  CHECK(gpu->gridStats().pairCapacity == fits.pairCapacity);
 }
 
 TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision]") {
