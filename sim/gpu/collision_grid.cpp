@@ -22,6 +22,14 @@ constexpr float kPadSlack = 1.01f;
 // frame (counted as oversize), which keeps the pass bounded when a simulation explodes.
 constexpr uint32_t kMaxSegmentCells = CSM_MAX_SEGMENT_CELLS;
 
+// A capacity for `needed` items: a quarter more, so a growing tangle does not reallocate every
+// frame, never over `limit` (items of one buffer, a 32-bit index); 0 when `current` holds
+// that already.
+uint32_t grownCapacity(uint64_t needed, uint32_t current, uint64_t limit) {
+  const uint64_t want = std::min(limit, needed + needed / 4);
+  return want > current ? uint32_t(want) : 0;
+}
+
 }  // namespace
 
 bool CollisionGrid::build(std::string* error) {
@@ -191,22 +199,19 @@ bool CollisionGrid::countersSeen(const uint32_t* c) {
 }
 
 void CollisionGrid::growEntries(uint64_t needed) {
-  // A quarter more than asked, so a growing tangle does not reallocate every frame; never
-  // beyond what a 32-bit index and one buffer can hold.
-  const uint64_t limit = uint64_t(1) << 27;  // 2 GiB of 16-byte entries
-  const uint64_t want = std::min(limit, needed + needed / 4);
-  if (want <= entryCapacity_) return;
-  entryCapacity_ = uint32_t(want);
+  // 16 bytes an entry: 2 GiB at most.
+  const uint32_t want = grownCapacity(needed, entryCapacity_, uint64_t(1) << 27);
+  if (want == 0) return;
+  entryCapacity_ = want;
   zeroed<glm::uvec4>(entries_, entryCapacity_);
   view(entryTex_, entries_, GL_RGBA32UI);
 }
 
 void CollisionGrid::growPairList(uint64_t needed) {
-  // As the entries: a quarter more than asked, never beyond a 32-bit index.
-  const uint64_t limit = uint64_t(1) << 28;  // 2 GiB of 8-byte pairs
-  const uint64_t want = std::min(limit, needed + needed / 4);
-  if (want <= pairListCapacity_) return;
-  pairListCapacity_ = uint32_t(want);
+  // The lists take 32 bytes a pair: 2 GiB at most.
+  const uint32_t want = grownCapacity(needed, pairListCapacity_, uint64_t(1) << 26);
+  if (want == 0) return;
+  pairListCapacity_ = want;
   zeroed<glm::uvec2>(pairList_, pairListCapacity_);
   zeroed<uint32_t>(pairSides_, 2 * size_t(pairListCapacity_));
   // Both halves of the lists, two sides per pair each; last frame's lists are gone.
