@@ -12,8 +12,8 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 echo "Load before: $(uptime | sed 's/.*load average: //')"
 echo
-echo "| binary | solver | mode | sim ms/frame | grid | contacts | pairs < 2r | < r (rest) | crossings/s | depth p50 / p99 / max (r) | dropped |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| binary | solver | mode | sim ms/frame | grid | contacts | pairs < 2r | < r (rest) | crossings/s | depth p50 / p99 / max (r) |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
 for solver in ${SOLVERS:-gpu cpu}; do
   for mode in head strands; do
     for bin in "$@"; do
@@ -37,8 +37,7 @@ depth = (f"{a['hair_depth_p50']:.2f} / {a['hair_depth_p99']:.2f} / {a['hair_dept
          if "hair_depth_p50" in a else "-")
 print(f"| {sys.argv[2].split('/')[-1]} | {sys.argv[3]} | {sys.argv[4]} | {ms['sim_mean']:.1f} | "
       f"{st.get('grid', 0):.1f} | {st.get('contacts', 0):.1f} | {a['hair_contacts']} | "
-      f"{a['hair_penetrations']}{rest} | {get('hair_crossings_per_s')} | {depth} | "
-      f"{get('hair_candidates_dropped')} |")
+      f"{a['hair_penetrations']}{rest} | {get('hair_crossings_per_s')} | {depth} |")
 PY
     done
   done

@@ -116,8 +116,11 @@ void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
                    std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
                    const ContactSettings& settings, std::vector<glm::dvec4>& correction) {
   const size_t n = x.size();
-  correction.assign(2 * n, glm::dvec4(0.0));
-  if (c.start.size() != n + 1) return;
+  if (c.start.size() != n + 1) {
+    correction.assign(2 * n, glm::dvec4(0.0));
+    return;
+  }
+  correction.resize(2 * n);  // every entry written below
   const double tilde = settings.compliance / (h * h);
   const double mu = settings.friction;
   parallelFor(n, 512, [&](size_t first, size_t last) {

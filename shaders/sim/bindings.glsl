@@ -45,19 +45,18 @@
   14                             // uint per bucket + 4: exclusive scan of the counts; entry
                                  // `buckets` is the total the grid needed
 #define CSM_BIND_SCAN_BLOCKS 15  // uint per CSM_SCAN_LEAF buckets: block sums, then their scan
-#define CSM_BIND_PAIR_LIST 16     // uvec2 per candidate pair (a < b), in no order
+#define CSM_BIND_PAIR_LIST 16     // uvec4 per candidate pair, in no order: a, b | flags << 29, the
+                                  // contact distance (float bits), unused
 #define CSM_BIND_ENTRIES 17       // uvec4 per grid entry (packEntry in common.glsl)
 #define CSM_BIND_COUNTERS \
-  18                                  // uint[8]: entries needed, contacts, penetrations, recorded
-                                      // pairs, segments in no cell (see segmentCells)
-#define CSM_BIND_PAIRS 19             // uvec2: recorded contact pairs (tests)
+  18                                  // uint[CSM_COUNTERS]: the CSM_COUNTER_* below
 #define CSM_BIND_CANDIDATE_RANGE \
   20  // uvec2 per particle, twice (this frame's half and the last
       // frame's, P.grid.w says which): where each segment's candidates
       // start in CANDIDATES, and how many
 #define CSM_BIND_PAIR_SIDES \
-  21  // uint x 2 per candidate pair: each segment's other segments, from
-      // its SEGMENT_BASE on, in no order
+  21  // uvec2 x 2 per candidate pair: each segment's candidates (as in
+      // CANDIDATES), from its SEGMENT_BASE on, in no order
 #define CSM_BIND_INVERSE_MASS \
   27  // float per particle: its inverse mass as the strand contacts
       // see it, 0 when the head holds it (csm::contactInverseMass)
@@ -91,7 +90,6 @@
 #define CSM_COUNTER_ENTRIES 0
 #define CSM_COUNTER_CONTACTS 1
 #define CSM_COUNTER_PENETRATIONS 2
-#define CSM_COUNTER_PAIRS 3
 #define CSM_COUNTER_OVERSIZE 4
 #define CSM_COUNTER_CANDIDATES 5  // pairs within 2r + margin
 #define CSM_COUNTER_CROSSINGS 6   // pairs whose orientation flipped since the last frame

@@ -7,9 +7,9 @@
 // several), the two boxes overlap in the cell, this cell holds the lowest corner of their
 // overlap (the owner: a pair is met once), and the pair passes the same-strand gap rule. A
 // pair closer than the candidate distance is measured (contacts, penetrations, the depth
-// histogram: integer atomics, the same sums in any order) and appended to the pair list, and
-// each of its segments counts it; pair_scatter.comp then gives every segment its pairs and
-// candidate_lists.comp sorts them into its list. The list's order depends on the schedule,
+// histogram: integer atomics, the same sums in any order) and appended to the pair list with
+// its flags and contact distance, and each of its segments counts it; pair_scatter.comp then
+// gives every segment its pairs and candidate_lists.comp sorts them into its list. The list's order depends on the schedule,
 // its content does not; a frame whose pairs do not fit the list has no strand contacts and
 // says so in the counters (CSM_COUNTER_PAIR_LIST over the capacity). Closest points: Ericson,
 // Real-Time Collision Detection, 5.1.9.
@@ -21,7 +21,9 @@
 //     overlap and the owner (a bit per candidate that may touch);
 //  2. the flagged ones: the gap rule, and segment a against b's box (a slab test);
 //  3. the remaining ones: closest points of the two segments; a pair within the candidate
-//     distance is measured and listed.
+//     distance gets its contact distance (2r, or less where the groom put the two closer at
+//     rest: the rest positions are in the head frame, which moves rigidly) and flags, is
+//     measured and listed.
 // When the grid did not fit its buffers this frame (see grid_scatter.comp), no entry runs and
 // every segment's list is empty: the frame has no strand contacts, and the counters say so.
 #include "sim/common.glsl"
@@ -38,9 +40,8 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
   uint particleStrand[];
 };
 layout(std430, binding = CSM_BIND_SEGMENT_PAIRS) buffer SegmentPairs { uint segmentPairs[]; };
-layout(std430, binding = CSM_BIND_PAIR_LIST) writeonly buffer PairList { uvec2 pairList[]; };
+layout(std430, binding = CSM_BIND_PAIR_LIST) writeonly buffer PairList { uvec4 pairList[]; };
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
-layout(std430, binding = CSM_BIND_PAIRS) writeonly buffer Pairs { uvec2 pairs[]; };
 
 const uint kStrandGap = 2u;  // csm::kStrandGap: neighbours along one strand are not contacts
 const uint kChunk = 128u;    // candidates per phase-1 bit mask (a uvec4)
@@ -121,30 +122,26 @@ void main() {
       // Phase 3.
       while (any(notEqual(close, uvec4(0u)))) {
         uint b = texelFetch(entryTex, int(base + popLowest(close))).y;
+        vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
         float s, t;
-        float d2 = closestSegmentPoints(a0, a1, fetchPos(b), fetchPos(b + 1u), s, t);
+        float d2 = closestSegmentPoints(a0, a1, b0, b1, s, t);
         if (d2 >= reach * reach) continue;
         float dist = sqrt(d2);
+        float rs, rt;
+        float d0 = min(twoR, sqrt(closestSegmentPoints(restA0, restA1, fetchRest(b),
+                                                       fetchRest(b + 1u), rs, rt)));
+        uint flags = pairFlags(a0, a1, b0, b1, s, t, dist, twoR);
         ++candidatesHere;
-        if (dist < twoR) {
-          ++pairsHere;
-          if (dist < r) ++penetrationsHere;
-          float rs, rt;
-          float d0 = min(twoR, sqrt(closestSegmentPoints(restA0, restA1, fetchRest(b),
-                                                         fetchRest(b + 1u), rs, rt)));
-          if (dist < d0) {
-            float depth = (d0 - dist) / r;
-            deepest = max(deepest, depth);
-            atomicAdd(groupDepth[depthBin(depth)], 1u);
-          }
-          if (P.counts.w > 0u) {
-            uint pairSlot = atomicAdd(counters[CSM_COUNTER_PAIRS], 1u);
-            if (pairSlot < P.counts.w) pairs[pairSlot] = uvec2(a, b);
-          }
+        if (dist < twoR) ++pairsHere;
+        if (dist < r) ++penetrationsHere;
+        if (dist < d0) {
+          float depth = (d0 - dist) / r;
+          deepest = max(deepest, depth);
+          atomicAdd(groupDepth[depthBin(depth)], 1u);
         }
         uint k = atomicAdd(counters[CSM_COUNTER_PAIR_LIST], 1u);
         if (k < P.grid.z) {
-          pairList[k] = uvec2(a, b);
+          pairList[k] = uvec4(a, b | (flags << uint(CSM_CANDIDATE_SHIFT)), floatBitsToUint(d0), 0u);
           atomicAdd(segmentPairs[a], 1u);
           atomicAdd(segmentPairs[b], 1u);
         }

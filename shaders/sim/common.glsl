@@ -9,12 +9,12 @@ struct SimParams {
   vec4 windDir;    // xyz unit direction, w strength (m/s)
   vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
   vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
-  vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction, w dt
+  vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction, w unused
   vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
   ivec4 ints;      // x unused (pinned particles are per strand), y stiffness model (0 paper,
                    // 1 calibrated), z rotation iterations, w head spheres
   uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
-  uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = do not record)
+  uvec4 counts;    // x particles, y strands, z segments, w unused
   uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z pair list capacity,
                    // w this frame's half of the candidate lists (0 or 1)
   vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused

@@ -1,22 +1,24 @@
 // Strand contacts, pair scatter (counting sort of the candidate pairs by segment), one
 // invocation per slot of the pair list: a stored pair (a, b) goes to both of its segments'
-// ranges of PAIR_SIDES (b into a's, a into b's; SEGMENT_BASE is the scan of the counts
-// candidates.comp made). Counting each segment back down returns the counts to zero for the
+// ranges of PAIR_SIDES as each one's candidate (b with the pair's flags and contact distance
+// into a's, a with them into b's; SEGMENT_BASE is the scan of the counts candidates.comp
+// made). Counting each segment back down returns the counts to zero for the
 // next frame. The order within a range depends on the schedule; candidate_lists.comp sorts it.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
-layout(std430, binding = CSM_BIND_PAIR_LIST) readonly buffer PairList { uvec2 pairList[]; };
+layout(std430, binding = CSM_BIND_PAIR_LIST) readonly buffer PairList { uvec4 pairList[]; };
 layout(std430, binding = CSM_BIND_SEGMENT_PAIRS) buffer SegmentPairs { uint segmentPairs[]; };
 layout(std430, binding = CSM_BIND_SEGMENT_BASE) readonly buffer SegmentBase { uint segBase[]; };
-layout(std430, binding = CSM_BIND_PAIR_SIDES) writeonly buffer PairSides { uint pairSides[]; };
+layout(std430, binding = CSM_BIND_PAIR_SIDES) writeonly buffer PairSides { uvec2 pairSides[]; };
 layout(std430, binding = CSM_BIND_COUNTERS) readonly buffer Counters { uint counters[]; };
 
 void main() {
   uint k = globalIndex();
   if (k >= min(counters[CSM_COUNTER_PAIR_LIST], P.grid.z)) return;
-  uvec2 p = pairList[k];
-  pairSides[segBase[p.x] + atomicAdd(segmentPairs[p.x], 0xffffffffu) - 1u] = p.y;
-  pairSides[segBase[p.y] + atomicAdd(segmentPairs[p.y], 0xffffffffu) - 1u] = p.x;
+  uvec4 p = pairList[k];
+  uint a = p.x, b = p.y & kIndex, flags = p.y & ~kIndex;
+  pairSides[segBase[a] + atomicAdd(segmentPairs[a], 0xffffffffu) - 1u] = p.yz;
+  pairSides[segBase[b] + atomicAdd(segmentPairs[b], 0xffffffffu) - 1u] = uvec2(a | flags, p.z);
 }

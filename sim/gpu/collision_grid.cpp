@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "gl/draw.h"
+#include "sim/contacts.h"
 #include "sim/gpu/buffer_fill.h"
 #include "shaders/sim/bindings.glsl"
 
@@ -66,7 +67,6 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<uint32_t>(segmentPairs_, segmentScan_);
   zeroed<uint32_t>(segmentBase_, segmentScan_ + 4);
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
-  zeroed<glm::uvec2>(pairs_, pairCapacity_);
   view(gridStartTex_, gridStart_, GL_R32UI);
   entryCapacity_ = 0;  // reserveFor sizes the entry buffer and the pair list
   pairListCapacity_ = 0;
@@ -111,7 +111,6 @@ void CollisionGrid::beginFrame(bool contacts) {
 }
 
 void CollisionGrid::writeParams(SimParams& p, float reach) const {
-  p.counts.w = uint32_t(pairCapacity_);
   p.grid = glm::uvec4(buckets_ - 1, entryCapacity_, pairListCapacity_, half_);
   const double cell = cellSize(reach);
   p.cells = glm::vec4(float(cell), float(1.0 / cell), 0.5f * reach * kPadSlack + 1e-7f, 0.0f);
@@ -127,7 +126,6 @@ void CollisionGrid::bind() const {
   pairList_.bindBase(ssbo, CSM_BIND_PAIR_LIST);
   pairSides_.bindBase(ssbo, CSM_BIND_PAIR_SIDES);
   counters_.bindBase(ssbo, CSM_BIND_COUNTERS);
-  pairs_.bindBase(ssbo, CSM_BIND_PAIRS);
   segmentPairs_.bindBase(ssbo, CSM_BIND_SEGMENT_PAIRS);
   segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
   candidates_.bindBase(ssbo, CSM_BIND_CANDIDATES);
@@ -136,10 +134,10 @@ void CollisionGrid::bind() const {
   gridStartTex_.bind(CSM_TEX_GRID_START);
 }
 
-void CollisionGrid::findCandidates(StageTimer& timer) {
+void CollisionGrid::findCandidates(StageTimer* timer) {
   if (segments_ == 0) return;
   const uint32_t particles = uint32_t(particles_);
-  timer.stage(kGrid);
+  if (timer) timer->stage(kGrid);
   counters_.clearToZero();
   passes_.count.run(particles);
   gl::memoryBarrier(kPassBarrier);
@@ -208,12 +206,12 @@ void CollisionGrid::growEntries(uint64_t needed) {
 }
 
 void CollisionGrid::growPairList(uint64_t needed) {
-  // The lists take 32 bytes a pair: 2 GiB at most.
+  // The lists take 32 bytes a pair (and the pair list 16, the sides 16): 2 GiB at most.
   const uint32_t want = grownCapacity(needed, pairListCapacity_, uint64_t(1) << 26);
   if (want == 0) return;
   pairListCapacity_ = want;
-  zeroed<glm::uvec2>(pairList_, pairListCapacity_);
-  zeroed<uint32_t>(pairSides_, 2 * size_t(pairListCapacity_));
+  zeroed<glm::uvec4>(pairList_, pairListCapacity_);
+  zeroed<glm::uvec2>(pairSides_, 2 * size_t(pairListCapacity_));
   // Both halves of the lists, two sides per pair each; last frame's lists are gone.
   zeroed<glm::uvec2>(candidates_, 4 * size_t(pairListCapacity_));
   lastFrameListed_ = false;
@@ -223,19 +221,15 @@ std::vector<uint32_t> CollisionGrid::readCounters() const {
   return counters_.download<uint32_t>(CSM_COUNTERS);
 }
 
-void CollisionGrid::setPairCapacity(size_t capacity) {
-  pairCapacity_ = capacity;
-  zeroed<glm::uvec2>(pairs_, pairCapacity_);
-}
-
 std::vector<std::pair<uint32_t, uint32_t>> CollisionGrid::readPairs(bool* overflow) const {
   const std::vector<uint32_t> c = readCounters();
-  const size_t found = c[CSM_COUNTER_PAIRS];
-  if (overflow) *overflow = found > pairCapacity_;
-  const size_t n = std::min(found, pairCapacity_);
+  const size_t found = c[CSM_COUNTER_PAIR_LIST];
+  if (overflow) *overflow = found > pairListCapacity_;
   std::vector<std::pair<uint32_t, uint32_t>> out;
-  out.reserve(n);
-  for (const glm::uvec2& p : pairs_.download<glm::uvec2>(n)) out.emplace_back(p.x, p.y);
+  for (const glm::uvec4& p :
+       pairList_.download<glm::uvec4>(std::min<size_t>(found, pairListCapacity_)))
+    if ((p.y >> CSM_CANDIDATE_SHIFT) & kPairNear)
+      out.emplace_back(p.x, p.y & ((1u << CSM_CANDIDATE_SHIFT) - 1u));
   return out;
 }
 

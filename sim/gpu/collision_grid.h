@@ -47,11 +47,12 @@ class CollisionGrid {
   // last list to count crossings against; when this one does not, the last one's measures
   // are cleared, once, on the GPU).
   void beginFrame(bool contacts);
-  // The grid's part of the parameters: counts.w, grid, cells.
+  // The grid's part of the parameters: grid, cells.
   void writeParams(SimParams& p, float reach) const;
   void bind() const;
-  // The frame's candidates from the bound state, timed as the grid and candidates stages.
-  void findCandidates(StageTimer& timer);
+  // The frame's candidates from the bound state, timed as the grid stage (timer null:
+  // untimed).
+  void findCandidates(StageTimer* timer);
   // One substep's corrections (the timer's stage is the caller's).
   void solve(unsigned substep);
   // Grows the entry buffer or the pair list when `counters` (read back) say they did not fit;
@@ -65,7 +66,6 @@ class CollisionGrid {
 
   // --- Read back at once, for tests and tools. ---
   std::vector<uint32_t> readCounters() const;
-  void setPairCapacity(size_t capacity);
   std::vector<std::pair<uint32_t, uint32_t>> readPairs(bool* overflow) const;
   // This frame's candidates of each segment (other segment, contact distance), as
   // findCandidates lists them.
@@ -85,10 +85,9 @@ class CollisionGrid {
   uint32_t segmentScan_ = 0;       // counts in the per-segment scan (a power of two)
   uint32_t entryCapacity_ = 0;     // grid entries the entry buffer holds
   uint32_t pairListCapacity_ = 0;  // candidate pairs the pair list holds
-  size_t pairCapacity_ = 0;
-  uint32_t half_ = 0;             // this frame's half of the candidate lists
-  bool lastFrameListed_ = false;  // whether the other half holds last frame's lists (and the
-                                  // counters its measures)
+  uint32_t half_ = 0;              // this frame's half of the candidate lists
+  bool lastFrameListed_ = false;   // whether the other half holds last frame's lists (and the
+                                   // counters its measures)
 
   struct Passes {
     ComputePass count, scanBlocks, scanSums, scanAdd, scatter, candidates, pairScatter, lists,
@@ -96,9 +95,9 @@ class CollisionGrid {
   } passes_;
   gl::Buffer correction_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
       scanBlockSums_{gl::NoCreate}, entries_{gl::NoCreate}, counters_{gl::NoCreate},
-      pairs_{gl::NoCreate}, segmentPairs_{gl::NoCreate}, segmentBase_{gl::NoCreate},
-      segmentScanBlocks_{gl::NoCreate}, pairList_{gl::NoCreate}, pairSides_{gl::NoCreate},
-      candidates_{gl::NoCreate}, candidateRange_{gl::NoCreate};
+      segmentPairs_{gl::NoCreate}, segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate},
+      pairList_{gl::NoCreate}, pairSides_{gl::NoCreate}, candidates_{gl::NoCreate},
+      candidateRange_{gl::NoCreate};
   gl::BufferTexture entryTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};
 };
 

@@ -17,11 +17,11 @@ struct SimParams {
   glm::vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
   glm::vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
   glm::vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction,
-                        // w dt
+                        // w unused
   glm::vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
   glm::ivec4 ints;      // x unused, y stiffness model, z rotation iterations, w head spheres
   glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
-  glm::uvec4 counts;    // x particles, y strands, z segments, w pair capacity (0 = off)
+  glm::uvec4 counts;    // x particles, y strands, z segments, w unused
   glm::uvec4 grid;      // x bucket mask, y entry capacity, z pair list capacity, w this frame's
                         // half of the candidate lists
   glm::vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused

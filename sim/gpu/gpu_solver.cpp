@@ -22,7 +22,7 @@ constexpr int kMaxNStep = 8;
 }  // namespace
 
 GpuSolver::GpuSolver(bool cpuClock)
-    : timer_(cpuClock), measureTimer_(cpuClock), samples_([this](const uint32_t* counters) {
+    : timer_(cpuClock), samples_([this](const uint32_t* counters) {
         sampledContacts_ = gpu::contactStatsOf(counters);
         grid_.countersSeen(counters);
       }) {}
@@ -136,7 +136,7 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.windShape = glm::vec4(wind.gusts, wind.gustFrequency, wind.turbulence, wind.turbulenceScale);
   p.stepping = glm::vec4(sim.stiffness, sim.strainLimit, col.radius, col.headFriction);
   const float reach = 2.0f * col.radius + col.margin;
-  p.contact = glm::vec4(reach, col.compliance, col.friction, sim.dt);
+  p.contact = glm::vec4(reach, col.compliance, col.friction, 0.0f);
   p.misc = glm::vec4(sim.dftl, wind.drag, 0.0f, 0.0f);
   p.ints = glm::ivec4(0, int(sim.stiffnessModel), sim.rotationIterations,
                       int(config_.head.spheres.size()));
@@ -220,7 +220,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   bindAll();
   timer_.beginFrame();
   // The frame's candidates, from where it starts (DESIGN.md section 1.7).
-  if (contacts) grid_.findCandidates(timer_);
+  if (contacts) grid_.findCandidates(&timer_);
 
   const uint32_t particles = uint32_t(hair_.particles), strands = uint32_t(hair_.strands);
 
@@ -257,21 +257,25 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   gl::memoryBarrier(gl::Barrier::All);
 }
 
-void GpuSolver::detectContacts() {
-  if (hair_.particles == 0) return;
-  // Parameters as they stand, at the current time (no step is taken); timed as a frame of
-  // its own.
+void GpuSolver::listCandidatesNow(gpu::StageTimer* timer) {
+  // Parameters as they stand, at the current time (no step is taken).
   grid_.beginFrame(true);
   writeParams({head_}, {head_});
   bindAll();
+  grid_.findCandidates(timer);
+}
+
+void GpuSolver::detectContacts() {
+  if (hair_.particles == 0) return;
+  // Timed as a frame of its own.
   timer_.beginFrame();
-  grid_.findCandidates(timer_);
+  listCandidatesNow(&timer_);
   // A tool asks for this pass's candidates: when the grid did not fit, grow it and run again
   // (stepFrame instead grows it when a sample sees the total).
   if (grid_.countersSeen(grid_.readCounters().data())) {
     writeParams({head_}, {head_});
     bindAll();
-    grid_.findCandidates(timer_);
+    grid_.findCandidates(&timer_);
   }
   timer_.endFrame();
   gl::memoryBarrier(gl::Barrier::All);
@@ -318,12 +322,7 @@ void GpuSolver::requestSample(long frame) {
   const bool listed = strandContacts(config_.collision.mode);
   if (!listed && measureContacts_ && hair_.particles > 0) {
     // The end state's candidates, for the measures alone (outside the frame's timing).
-    grid_.beginFrame(true);
-    writeParams({head_}, {head_});
-    bindAll();
-    measureTimer_.beginFrame();
-    grid_.findCandidates(measureTimer_);
-    measureTimer_.endFrame();
+    listCandidatesNow(nullptr);
     gl::memoryBarrier(gl::Barrier::All);
   }
   const uint32_t groups = uint32_t((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);

@@ -66,11 +66,8 @@ class GpuSolver final : public Solver {
   // Builds the candidate list of the current state now (stepFrame does it at the start of
   // each frame with strand contacts); the next frame builds its own.
   void detectContacts();
-  // Records the pairs (a < b) closer than 2r the candidate pass finds, up to `capacity`
-  // (0: off).
-  void setPairCapacity(size_t capacity) { grid_.setPairCapacity(capacity); }
-  // The pairs of the last candidate pass, in no particular order; `overflow` when there were
-  // more than the capacity.
+  // The pairs (a < b) closer than 2r of the last candidate pass, in no particular order;
+  // `overflow` when the pair list did not hold them.
   std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr) {
     return grid_.readPairs(overflow);
   }
@@ -95,6 +92,8 @@ class GpuSolver final : public Solver {
   void resetVolume();
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
+  // The candidate lists of the current state, built now (detectContacts, the measures).
+  void listCandidatesNow(gpu::StageTimer* timer);
   unsigned lastSubstepSpheres() const;  // the first sphere of the last step's
 
   Config config_;
@@ -118,7 +117,6 @@ class GpuSolver final : public Solver {
       volumeExcess_{gl::NoCreate};
   gpu::StageTimer timer_;
   bool measureContacts_ = false;
-  gpu::StageTimer measureTimer_;  // the measure-only candidate searches, never reported
   gpu::SampleRing samples_;
   ContactStats sampledContacts_;
 };

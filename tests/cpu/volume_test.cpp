@@ -144,13 +144,10 @@ TEST_CASE("volume mode: hair falling onto itself ends less dense than without it
     solver.reset(g, m, Pose{});
     for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
     // The densest node over the last state, on a grid of the same geometry.
-    std::vector<glm::dvec3> rest(solver.positions().size());
     VolumeGrid grid;
-    std::vector<uint32_t> first;
-    for (size_t s = 0; s <= g.strandCount(); ++s) first.push_back(g.first[s]);
     std::vector<glm::dvec3> x0;
     for (const glm::vec3& p : g.points) x0.emplace_back(p);
-    grid.reset(x0, first, m.collision.volumeCell, m.collision.radius);
+    grid.reset(x0, g.first, m.collision.volumeCell, m.collision.radius);
     grid.splat(solver.positions(), std::vector<glm::dvec3>(x0.size(), glm::dvec3(0.0)), Pose{},
                m.collision.volumeFraction);
     int64_t most = 0;

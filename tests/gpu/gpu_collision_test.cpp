@@ -94,7 +94,6 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
       Config c;
       c.collision.mode = CollisionMode::Strands;
       c.collision.radius = float(r);
-      gpu->setPairCapacity(200000);
       gpu->reset(g, c, Pose{});
       gpu->detectContacts();
       const Compared cmp = compare(*gpu, g, r);
@@ -162,7 +161,6 @@ TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu
   c.wind.strength = 3.0f;
   c.collision.mode = CollisionMode::Strands;
   const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
-  gpu->setPairCapacity(400000);
   gpu->reset(g, c, Pose{});
   for (int f = 0; f < 10; ++f) gpu->stepFrame(Pose{}, Pose{});
   gpu->detectContacts();
@@ -248,7 +246,6 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = float(r);
-  gpu->setPairCapacity(200000);
   gpu->reset(g, c, Pose{});
   gpu->detectContacts();
   const GpuSolver::GridStats grid = gpu->gridStats();
@@ -348,7 +345,6 @@ TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu]
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = 0.002f;
-  gpu->setPairCapacity(100000);
   gpu->reset(g, c, Pose{});
   gpu->detectContacts();
   CHECK(gpu->gridStats().oversize == 2);  // both segments of the broken strand
