@@ -67,7 +67,7 @@ void VolumeGrid::reset(std::span<const glm::dvec3> rest, std::span<const uint32_
   dims_ = glm::max(dims_, glm::ivec3(2));
   fillPerUnit_ = glm::pi<double>() * radius * radius / (cell_ * cell_ * cell_) / kVolumeUnit;
   sums_.assign(4 * nodes(), 0);
-  excess_.assign(nodes(), 0.0);
+  gradient_.assign(nodes(), glm::dvec3(0.0));
   head_ = Pose{};
   splatLocal(rest, std::vector<glm::dvec3>(rest.size(), glm::dvec3(0.0)));
   restFraction_.resize(nodes());
@@ -81,10 +81,28 @@ void VolumeGrid::splat(std::span<const glm::dvec3> x, std::span<const glm::dvec3
   std::vector<glm::dvec3> local(x.size());
   for (size_t i = 0; i < x.size(); ++i) local[i] = toHead(x[i]);
   splatLocal(local, v);
+  // Each node's volume fraction over what is allowed there, then its gradient by central
+  // differences between the neighbouring nodes (one-sided on the grid's faces, which hair
+  // does not reach): interpolated trilinearly, a push continuous across cell faces.
+  std::vector<double> excess(nodes());
   for (size_t n = 0; n < nodes(); ++n) {
     const double allowed = std::max(allowedFraction, double(restFraction_[n]));
-    excess_[n] = std::max(0.0, double(sums_[4 * n]) * fillPerUnit_ - allowed);
+    excess[n] = std::max(0.0, double(sums_[4 * n]) * fillPerUnit_ - allowed);
   }
+  const glm::ivec3 stride(1, dims_.x, dims_.x * dims_.y);
+  for (int z = 0; z < dims_.z; ++z)
+    for (int y = 0; y < dims_.y; ++y)
+      for (int x = 0; x < dims_.x; ++x) {
+        const glm::ivec3 n(x, y, z);
+        const size_t node = size_t(n.x + n.y * stride.y + n.z * stride.z);
+        for (int axis = 0; axis < 3; ++axis) {
+          const int below = std::max(n[axis] - 1, 0) - n[axis];
+          const int above = std::min(n[axis] + 1, dims_[axis] - 1) - n[axis];
+          gradient_[node][axis] =
+              (excess[node + above * stride[axis]] - excess[node + below * stride[axis]]) /
+              (double(above - below) * cell_);
+        }
+      }
 }
 
 void VolumeGrid::splatLocal(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v) {
@@ -102,12 +120,6 @@ void VolumeGrid::splatLocal(std::span<const glm::dvec3> x, std::span<const glm::
   }
 }
 
-double VolumeGrid::excessAt(const glm::dvec3& x) const {
-  double excess = 0.0;
-  forCorners(x, [&](size_t node, double w) { excess += w * excess_[node]; });
-  return excess;
-}
-
 glm::dvec3 VolumeGrid::velocityChange(const glm::dvec3& xWorld, const glm::dvec3& v, double h,
                                       const VolumeSettings& s) const {
   if (empty()) return glm::dvec3(0.0);
@@ -122,16 +134,8 @@ glm::dvec3 VolumeGrid::velocityChange(const glm::dvec3& xWorld, const glm::dvec3
   glm::dvec3 dv(0.0);
   if (length > 0.0) dv += (1.0 - std::exp(-s.friction * h)) * (momentum / length - v);
   if (s.stiffness > 0.0) {
-    // The gradient of the (trilinear) excess by central differences half a cell apart: a
-    // push that is continuous across cell faces, as the gradient of the trilinear field
-    // itself is not.
-    const double half = 0.5 * cell_;
-    glm::dvec3 gradient;
-    for (int axis = 0; axis < 3; ++axis) {
-      glm::dvec3 e(0.0);
-      e[axis] = half;
-      gradient[axis] = (excessAt(x + e) - excessAt(x - e)) / (2.0 * half);
-    }
+    glm::dvec3 gradient(0.0);
+    forCorners(x, [&](size_t node, double w) { gradient += w * gradient_[node]; });
     dv -= h * s.stiffness * (head_.rotation * gradient);
   }
   return dv;

@@ -56,7 +56,7 @@ class VolumeGrid {
 
   // Splats world positions `x` and velocities `v` into the sums of a grid fixed to the head
   // at `head`, and each node's volume fraction over what is allowed there (the larger of
-  // `allowedFraction` and the rest fraction), which the push's gradient interpolates.
+  // `allowedFraction` and the rest fraction) and its gradient, which the push interpolates.
   void splat(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v, const Pose& head,
              double allowedFraction);
   // The velocity change of the particle at world position x with velocity v over a step h,
@@ -73,7 +73,6 @@ class VolumeGrid {
   template <class Visit>
   void forCorners(const glm::dvec3& x, Visit visit) const;
   void splatLocal(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v);
-  double excessAt(const glm::dvec3& x) const;  // interpolated, head frame
   glm::dvec3 toHead(const glm::dvec3& x) const;
 
   glm::dvec3 origin_{0.0};
@@ -82,8 +81,8 @@ class VolumeGrid {
   Pose head_;                               // the pose the last splat was fixed to
   std::vector<double> length_;
   std::vector<float> restFraction_;
-  std::vector<int64_t> sums_;   // 4 per node
-  std::vector<double> excess_;  // per node, from the last splat
+  std::vector<int64_t> sums_;         // 4 per node
+  std::vector<glm::dvec3> gradient_;  // per node: of the excess fraction (1/m), head frame
 };
 
 }  // namespace csm

@@ -69,10 +69,12 @@
   28  // int x4 per node of the volume grid: strand length (2^-24 m), length
       // times velocity (2^-24 m^2/s), x y z (sim/volume.h)
 #define CSM_BIND_VOLUME_LENGTH 29  // float per particle: its share of strand length (m)
-#define CSM_BIND_VOLUME_REST 30    // float per node: the volume fraction the rest groom fills
-#define CSM_BIND_VOLUME_EXCESS \
-  31  // float per node: its volume fraction over what is allowed, from
-      // this frame's sums (volume_excess.comp)
+#define CSM_BIND_VOLUME_REST 30  // float per node: the volume fraction the rest groom fills
+                                 // (read through CSM_TEX_VOLUME_REST)
+#define CSM_BIND_VOLUME_FIELD \
+  31  // vec4 x 2 per node, from this frame's sums (volume_field.comp):
+      // length times velocity x y z and length, as floats; the gradient of
+      // the volume fraction over what is allowed (1/m, head frame), 0
 
 // Texture units of buffer textures (samplerBuffer views of the buffers above), for reads
 // that differ per invocation: on llvmpipe a texel fetch is a vector gather where a storage
@@ -82,9 +84,12 @@
 #define CSM_TEX_REST 2
 #define CSM_TEX_ENTRIES 3
 #define CSM_TEX_GRID_START 4
+#define CSM_TEX_VOLUME_FIELD 5
 #define CSM_TEX_PREDICTED 6
 #define CSM_TEX_REGION 7
 #define CSM_TEX_INVERSE_MASS 8
+#define CSM_TEX_VOLUME_SUMS 9
+#define CSM_TEX_VOLUME_REST 10
 
 // Slots of the COUNTERS buffer.
 #define CSM_COUNTER_ENTRIES 0

@@ -19,57 +19,30 @@ layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffn
   vec4 strandStiffness[];
 };
 
-layout(std430, binding = CSM_BIND_VOLUME_SUMS) readonly buffer VolumeSums { int volumeSums[]; };
-layout(std430, binding = CSM_BIND_VOLUME_EXCESS) readonly buffer VolumeExcess {
-  float volumeExcess[];
-};
+layout(binding = CSM_TEX_VOLUME_FIELD) uniform samplerBuffer volumeFieldTex;
 
 uniform uint substep;
 
-// The volume fraction over what is allowed at head-frame x (csm::VolumeGrid::excessAt).
-float excessAt(vec3 x) {
-  ivec3 base;
-  vec3 f;
-  volumeLocate(x, base, f);
-  float excess = 0.0;
-  for (int c = 0; c < 8; ++c) {
-    ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
-    vec3 a = mix(1.0 - f, f, vec3(d));
-    excess += a.x * a.y * a.z * volumeExcess[volumeNode(base + d)];
-  }
-  return excess;
-}
-
 // The volume mode (csm::VolumeGrid::velocityChange): toward the hair's mean velocity here, and
-// down the gradient of the volume fraction over what is allowed (central differences half a
-// cell apart: continuous across cell faces).
+// down the gradient of the volume fraction over what is allowed, both interpolated from the
+// 8 nodes around (volume_field.comp).
 vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
-  vec3 x = (P.volumeToHead * vec4(xWorld, 1.0)).xyz;
   ivec3 base;
   vec3 f;
-  volumeLocate(x, base, f);
-  float len = 0.0;
-  vec3 momentum = vec3(0.0);
+  volumeLocate((P.volumeToHead * vec4(xWorld, 1.0)).xyz, base, f);
+  vec4 sums = vec4(0.0);
+  vec3 gradient = vec3(0.0);
   for (int c = 0; c < 8; ++c) {
     ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
     vec3 a = mix(1.0 - f, f, vec3(d));
     float w = a.x * a.y * a.z;
-    uint k = 4u * volumeNode(base + d);
-    len += w * float(volumeSums[k]);
-    momentum += w * vec3(volumeSums[k + 1u], volumeSums[k + 2u], volumeSums[k + 3u]);
+    int k = 2 * int(volumeNode(base + d));
+    sums += w * texelFetch(volumeFieldTex, k);
+    gradient += w * texelFetch(volumeFieldTex, k + 1).xyz;
   }
   vec3 dv = vec3(0.0);
-  if (len > 0.0) dv += (1.0 - exp(-P.volume.x * h)) * (momentum / len - v);
-  if (P.volume.y > 0.0) {
-    float offset = 0.5 * P.volumeOrigin.w;
-    vec3 gradient;
-    for (int axis = 0; axis < 3; ++axis) {
-      vec3 e = vec3(0.0);
-      e[axis] = offset;
-      gradient[axis] = (excessAt(x + e) - excessAt(x - e)) / (2.0 * offset);
-    }
-    dv -= h * P.volume.y * mat3(P.volumeToWorld) * gradient;
-  }
+  if (sums.w > 0.0) dv += (1.0 - exp(-P.volume.x * h)) * (sums.xyz / sums.w - v);
+  if (P.volume.y > 0.0) dv -= h * P.volume.y * mat3(P.volumeToWorld) * gradient;
   return dv;
 }
 

@@ -42,7 +42,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
         !passes_.strainLimit.build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
         !passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, {}, error) ||
         !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
-        !passes_.volumeExcess.build("sim/volume_excess.comp", CSM_PARTICLE_GROUP, {}, error) ||
+        !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !grid_.build(error))
       return false;
   }
@@ -109,7 +109,10 @@ void GpuSolver::resetVolume() {
   gpu::fill(volumeLength_, length);
   gpu::fill(volumeRest_, volume_.restFraction());
   gpu::zeroed<glm::ivec4>(volumeSums_, volume_.nodes());
-  gpu::zeroed<float>(volumeExcess_, volume_.nodes());
+  gpu::zeroed<glm::vec4>(volumeField_, 2 * volume_.nodes());
+  gpu::view(volumeSumsTex_, volumeSums_, GL_RGBA32I);
+  gpu::view(volumeRestTex_, volumeRest_, GL_R32F);
+  gpu::view(volumeFieldTex_, volumeField_, GL_RGBA32F);
 }
 
 GpuSolver::GridStats GpuSolver::gridStats() {
@@ -193,8 +196,10 @@ void GpuSolver::bindAll() {
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
   volumeSums_.bindBase(ssbo, CSM_BIND_VOLUME_SUMS);
   volumeLength_.bindBase(ssbo, CSM_BIND_VOLUME_LENGTH);
-  volumeRest_.bindBase(ssbo, CSM_BIND_VOLUME_REST);
-  volumeExcess_.bindBase(ssbo, CSM_BIND_VOLUME_EXCESS);
+  volumeField_.bindBase(ssbo, CSM_BIND_VOLUME_FIELD);
+  volumeSumsTex_.bind(CSM_TEX_VOLUME_SUMS);
+  volumeRestTex_.bind(CSM_TEX_VOLUME_REST);
+  volumeFieldTex_.bind(CSM_TEX_VOLUME_FIELD);
   spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
   measure_.bindBase(ssbo, CSM_BIND_MEASURE);
 }
@@ -231,7 +236,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     gl::memoryBarrier(gpu::kPassBarrier);
     passes_.volumeSplat.run(particles);
     gl::memoryBarrier(gpu::kPassBarrier);
-    passes_.volumeExcess.run(uint32_t(volume_.nodes()));
+    passes_.volumeField.run(uint32_t(volume_.nodes()));
     gl::memoryBarrier(gpu::kPassBarrier);
   }
   for (int k = 0; k < substeps; ++k) {

@@ -105,16 +105,18 @@ class GpuSolver final : public Solver {
   gpu::SimParams params_{};
 
   struct Passes {
-    gpu::ComputePass predict, shapeMatch, strainLimit, measure, volumeSplat, volumeExcess;
+    gpu::ComputePass predict, shapeMatch, strainLimit, measure, volumeSplat, volumeField;
   } passes_;
   gpu::StrandBuffers hair_;
   gpu::CollisionGrid grid_;
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
   // The volume mode: the grid's geometry (the CPU reference's), its sums, per-particle
-  // lengths, rest fractions and each node's excess.
+  // lengths, rest fractions and each node's field (CSM_BIND_VOLUME_FIELD), read by texel fetches.
   VolumeGrid volume_;
   gl::Buffer volumeSums_{gl::NoCreate}, volumeLength_{gl::NoCreate}, volumeRest_{gl::NoCreate},
-      volumeExcess_{gl::NoCreate};
+      volumeField_{gl::NoCreate};
+  gl::BufferTexture volumeSumsTex_{gl::NoCreate}, volumeRestTex_{gl::NoCreate},
+      volumeFieldTex_{gl::NoCreate};
   gpu::StageTimer timer_;
   bool measureContacts_ = false;
   gpu::SampleRing samples_;

@@ -1,0 +1,41 @@
+// The volume mode, once per frame after volume_splat.comp (the CPU reference is the end of
+// csm::VolumeGrid::splat in sim/volume.cpp), one invocation per node: what predict.comp
+// interpolates at each particle, so that it reads 8 nodes' fields and no more:
+//  - the node's sums as floats, length times velocity then length (the hair's mean velocity
+//    is their interpolated ratio);
+//  - the gradient of the volume fraction over what is allowed (the larger of
+//    collision.volume_fraction and what the rest groom packs), by central differences
+//    between the neighbouring nodes, one-sided on the grid's faces.
+#include "sim/common.glsl"
+
+layout(local_size_x = CSM_PARTICLE_GROUP) in;
+
+layout(binding = CSM_TEX_VOLUME_SUMS) uniform isamplerBuffer sumsTex;
+layout(binding = CSM_TEX_VOLUME_REST) uniform samplerBuffer restFractionTex;
+layout(std430, binding = CSM_BIND_VOLUME_FIELD) writeonly buffer VolumeField {
+  vec4 volumeField[];
+};
+
+float excessAt(uint node) {
+  float allowed = max(P.volume.z, texelFetch(restFractionTex, int(node)).x);
+  return max(0.0, float(texelFetch(sumsTex, int(node)).x) * P.volume.w - allowed);
+}
+
+void main() {
+  uint node = globalIndex();
+  ivec3 dims = ivec3(P.volumeDims.xyz);
+  if (node >= uint(dims.x * dims.y * dims.z)) return;
+  ivec3 n = ivec3(node % uint(dims.x), (node / uint(dims.x)) % uint(dims.y),
+                  node / uint(dims.x * dims.y));
+  vec3 gradient;
+  for (int axis = 0; axis < 3; ++axis) {
+    ivec3 below = n, above = n;
+    below[axis] = max(n[axis] - 1, 0);
+    above[axis] = min(n[axis] + 1, dims[axis] - 1);
+    gradient[axis] = (excessAt(volumeNode(above)) - excessAt(volumeNode(below))) /
+                     (float(above[axis] - below[axis]) * P.volumeOrigin.w);
+  }
+  ivec4 sums = texelFetch(sumsTex, int(node));
+  volumeField[2u * node] = vec4(vec3(sums.yzw), float(sums.x));
+  volumeField[2u * node + 1u] = vec4(gradient, 0.0);
+}
