@@ -110,6 +110,11 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
     a["hair_penetrations_max"] = penetrationsMax_;
     a["hair_crossings"] = contactSum_.crossings;
     a["hair_crossings_per_s"] = seconds > 0.0 ? double(contactSum_.crossings) / seconds : 0.0;
+    // Of those, the pairs the groom put closer than 2r (their contact distance is the rest
+    // distance): what is left is hair passing through hair that was apart.
+    a["hair_crossings_close_at_rest"] = contactSum_.crossingsClose;
+    a["hair_crossings_close_at_rest_per_s"] =
+        seconds > 0.0 ? double(contactSum_.crossingsClose) / seconds : 0.0;
     a["hair_depth_p50"] = contactSum_.depthQuantile(0.50);
     a["hair_depth_p99"] = contactSum_.depthQuantile(0.99);
     a["hair_depth_max"] = contactSum_.maxDepth;

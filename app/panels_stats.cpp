@@ -106,8 +106,10 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
     ImGui::Text("hair contacts %llu, closer than r %llu", (unsigned long long)contacts.contacts,
                 (unsigned long long)contacts.penetrations);
     // The measures of the candidate list the sampled frame started from.
-    ImGui::Text("crossings %llu (%.0f/s), candidates %llu", (unsigned long long)contacts.crossings,
+    ImGui::Text("crossings %llu (%.0f/s; %llu close at rest), candidates %llu",
+                (unsigned long long)contacts.crossings,
                 double(contacts.crossings) / std::max(1e-6, double(f.config.sim.dt)),
+                (unsigned long long)contacts.crossingsClose,
                 (unsigned long long)contacts.candidates);
     ImGui::Text("penetration depth p50 %.2f r, p99 %.2f r, max %.2f r", contacts.depthQuantile(0.5),
                 contacts.depthQuantile(0.99), double(contacts.maxDepth));

@@ -17,7 +17,7 @@ mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 csv=$out/modes.csv
-echo "solver,mode,strands,particles,frames,sim_ms,grid_ms,contacts_ms,pairs_2r,pairs_r,pairs_r_rest,crossings_per_s,depth_p50,depth_p99,depth_max" >"$csv"
+echo "solver,mode,strands,particles,frames,sim_ms,grid_ms,contacts_ms,pairs_2r,pairs_r,pairs_r_rest,crossings_per_s,crossings_close_per_s,depth_p50,depth_p99,depth_max" >"$csv"
 echo "Load before: $(uptime | sed 's/.*load average: //'); $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p')"
 for solver in ${SOLVERS:-gpu}; do
   for n in $counts; do
@@ -40,6 +40,7 @@ print(",".join([sys.argv[2], sys.argv[3], sys.argv[4], str(m["particles"]),
                 sys.argv[5], f"{ms['sim_mean']:.2f}", f"{st.get('grid', 0):.2f}",
                 f"{st.get('contacts', 0):.2f}", get("hair_contacts"), get("hair_penetrations"),
                 get("hair_penetrations_rest"), get("hair_crossings_per_s"),
+                get("hair_crossings_close_at_rest_per_s"),
                 get("hair_depth_p50"), get("hair_depth_p99"), get("hair_depth_max")]))
 PY
       tail -n 1 "$csv"

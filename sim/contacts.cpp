@@ -9,6 +9,19 @@
 #include "sim/parallel.h"
 
 namespace csm {
+namespace {
+
+// Closest points strictly inside both segments.
+bool interior(double s, double t) {
+  constexpr double kInside = 1e-6;
+  return s > kInside && s < 1.0 - kInside && t > kInside && t < 1.0 - kInside;
+}
+
+bool skew(const glm::dvec3& n, const glm::dvec3& a, const glm::dvec3& b) {
+  return glm::length(n) > kSkewSine * glm::length(a) * glm::length(b);
+}
+
+}  // namespace
 
 double ContactStats::depthQuantile(double q) const {
   uint64_t total = 0;
@@ -32,18 +45,41 @@ void ContactStats::add(const ContactStats& o) {
   contacts += o.contacts;
   penetrations += o.penetrations;
   crossings += o.crossings;
+  crossingsClose += o.crossingsClose;
   maxDepth = std::max(maxDepth, o.maxDepth);
   for (int i = 0; i < kDepthBins; ++i) depth[i] += o.depth[i];
 }
 
 uint32_t pairFlags(const glm::dvec3& a0, const glm::dvec3& a1, const glm::dvec3& b0,
                    const glm::dvec3& b1, double s, double t, double distance, double twoR) {
-  constexpr double kInside = 1e-6;
   uint32_t f = 0;
-  if (s > kInside && s < 1.0 - kInside && t > kInside && t < 1.0 - kInside) f |= kPairInterior;
+  if (interior(s, t)) f |= kPairInterior;
   if (distance < twoR) f |= kPairNear;
-  if (glm::dot(glm::cross(a1 - a0, b1 - b0), a0 - b0) > 0.0) f |= kPairPositive;
+  const glm::dvec3 n = glm::cross(a1 - a0, b1 - b0);
+  if (glm::dot(n, a0 - b0) > 0.0) f |= kPairPositive;
+  if (skew(n, a1 - a0, b1 - b0)) f |= kPairSkew;
   return f;
+}
+
+int8_t keptSide(uint32_t flags) {
+  if ((flags & (kPairInterior | kPairSkew)) != (kPairInterior | kPairSkew)) return 0;
+  return (flags & kPairPositive) ? 1 : -1;
+}
+
+glm::dvec3 contactNormal(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
+                         const glm::dvec3& q1, double s, double t, double d, int side,
+                         double& separation) {
+  const glm::dvec3 n = glm::cross(p1 - p0, q1 - q0);
+  const double len = glm::length(n);
+  const glm::dvec3 between = glm::mix(p0, p1, s) - glm::mix(q0, q1, t);
+  if (side != 0 && interior(s, t) && skew(n, p1 - p0, q1 - q0)) {
+    const glm::dvec3 nrm = (double(side) / len) * n;
+    separation = glm::dot(between, nrm);
+    return nrm;
+  }
+  separation = d;
+  if (d > 1e-12) return between / d;
+  return len > 1e-15 ? n / len : glm::dvec3(0.0, 1.0, 0.0);
 }
 
 ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,
@@ -81,23 +117,28 @@ ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const 
     out.flags.emplace_back(key, f);
     while (seen < previous.flags.size() && previous.flags[seen].first < key) ++seen;
     if (seen < previous.flags.size() && previous.flags[seen].first == key &&
-        crossed(previous.flags[seen].second, f))
+        crossed(previous.flags[seen].second, f)) {
       ++stats.crossings;
+      if (d0 < twoR) ++stats.crossingsClose;
+    }
     ++out.start[p.a + 1];
     ++out.start[p.b + 1];
   }
   for (size_t i = 0; i < n; ++i) out.start[i + 1] += out.start[i];
   out.other.resize(out.start[n]);
   out.distance.resize(out.start[n]);
+  out.side.resize(out.start[n]);
   // Pairs come sorted by (a, b): a segment's partners below it (as b) all come before those
   // above it (as a), each in ascending order, so filling in pair order sorts every list.
   std::vector<uint32_t> fill(out.start.begin(), out.start.end() - 1);
   for (size_t k = 0; k < pairs.size(); ++k) {
     const SegmentPair& p = pairs[k];
-    out.other[fill[p.a]] = p.b;
-    out.distance[fill[p.a]++] = contactDistance[k];
-    out.other[fill[p.b]] = p.a;
-    out.distance[fill[p.b]++] = contactDistance[k];
+    const int8_t side = keptSide(out.flags[k].second);
+    for (auto [self, other] : {std::pair(p.a, p.b), std::pair(p.b, p.a)}) {
+      out.other[fill[self]] = other;
+      out.side[fill[self]] = side;
+      out.distance[fill[self]++] = contactDistance[k];
+    }
   }
   return out;
 }
@@ -134,16 +175,11 @@ void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
         const uint32_t p = lower ? a : b, q = lower ? b : a;
         double s, t;
         const double d = std::sqrt(closestSegmentPoints(x[p], x[p + 1], x[q], x[q + 1], s, t));
-        const double C = d - c.distance[k];
+        double separation;
+        const glm::dvec3 nrm =
+            contactNormal(x[p], x[p + 1], x[q], x[q + 1], s, t, d, c.side[k], separation);
+        const double C = separation - c.distance[k];
         if (C >= 0.0) continue;
-        glm::dvec3 nrm = glm::mix(x[p], x[p + 1], s) - glm::mix(x[q], x[q + 1], t);
-        if (d > 1e-12) {
-          nrm /= d;
-        } else {
-          nrm = glm::cross(x[p + 1] - x[p], x[q + 1] - x[q]);
-          const double len = glm::length(nrm);
-          nrm = len > 1e-15 ? nrm / len : glm::dvec3(0.0, 1.0, 0.0);
-        }
         const double wp0 = invMass[p], wp1 = invMass[p + 1];
         const double wq0 = invMass[q], wq1 = invMass[q + 1];
         const double W =

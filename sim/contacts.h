@@ -35,7 +35,10 @@ struct ContactStats {
   uint64_t contacts = 0;      // pairs closer than 2r
   uint64_t penetrations = 0;  // pairs closer than r
   uint64_t crossings = 0;     // pairs whose orientation flipped since the previous list
-  float maxDepth = 0.0f;      // deepest penetration, in r
+  // Of those, the pairs the groom put closer than 2r (their contact distance is the rest
+  // distance: they may cross where they crossed at rest).
+  uint64_t crossingsClose = 0;
+  float maxDepth = 0.0f;  // deepest penetration, in r
   std::array<uint32_t, kDepthBins> depth{};
   // Sums another list's counts and depths into these (the deepest is the larger).
   void add(const ContactStats& o);
@@ -53,10 +56,24 @@ inline int depthBin(double depthInR) {
 
 // The orientation flags of a pair: whether its closest points are inside both segments (only
 // then can the sign of the triple product flip by one passing through the other), whether it
-// is closer than 2r, and the sign.
-inline constexpr uint32_t kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u;
+// is closer than 2r, the sign, and whether the segments are skew enough (the sine of their
+// angle above kSkewSine) for that sign to say which side each is on: a sign change of nearly
+// parallel segments can come from turning, not passing.
+inline constexpr uint32_t kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u, kPairSkew = 8u;
+inline constexpr double kSkewSine = 0.1;
 uint32_t pairFlags(const glm::dvec3& a0, const glm::dvec3& a1, const glm::dvec3& b0,
                    const glm::dvec3& b1, double s, double t, double distance, double twoR);
+// The side a listed pair keeps (ContactCandidates::side) from its flags.
+int8_t keptSide(uint32_t flags);
+// The direction a contact pushes p (the lower segment; q the other way) and the separation
+// along it, for segments p0-p1 and q0-q1 with closest points at s and t, d apart. A pair with
+// a kept side, still interior and skew, is pushed along the common normal toward that side:
+// its separation is negative when one has passed through the other in the substeps since the
+// list (the closest points alone would push it on through). Any other pair is pushed along
+// its closest points, its separation d.
+glm::dvec3 contactNormal(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
+                         const glm::dvec3& q1, double s, double t, double d, int side,
+                         double& separation);
 // A crossing between two lists: the pair was interior in both, near in one, and flipped.
 inline bool crossed(uint32_t before, uint32_t now) {
   return (before & now & kPairInterior) && ((before | now) & kPairNear) &&
@@ -68,6 +85,9 @@ struct ContactCandidates {
   std::vector<uint32_t> start;   // per particle + 1
   std::vector<uint32_t> other;   // the other segment, ascending within a segment
   std::vector<double> distance;  // contact distance
+  // The side to keep (contactNormal): +1 or -1, the sign of the pair's triple product when it
+  // was listed interior and skew; 0 for a pair held apart along its closest points only.
+  std::vector<int8_t> side;
   // Pairs a < b with their flags, sorted, for the next list's crossings.
   std::vector<std::pair<uint64_t, uint32_t>> flags;
 };

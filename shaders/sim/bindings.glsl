@@ -45,7 +45,7 @@
   14                             // uint per bucket + 4: exclusive scan of the counts; entry
                                  // `buckets` is the total the grid needed
 #define CSM_BIND_SCAN_BLOCKS 15  // uint per CSM_SCAN_LEAF buckets: block sums, then their scan
-#define CSM_BIND_PAIR_LIST 16     // uvec4 per candidate pair, in no order: a, b | flags << 29, the
+#define CSM_BIND_PAIR_LIST 16     // uvec4 per candidate pair, in no order: a, b | flags << 28, the
                                   // contact distance (float bits), unused
 #define CSM_BIND_ENTRIES 17       // uvec4 per grid entry (packEntry in common.glsl)
 #define CSM_BIND_COUNTERS \
@@ -63,7 +63,7 @@
 #define CSM_BIND_CANDIDATES \
   26  // uvec2 x 2 per slot of the pair list, twice (halves as
       // CANDIDATE_RANGE): each segment's candidates in ascending order,
-      // x the other segment | flags << 29 (sim/contacts.h), y the
+      // x the other segment | flags << 28 (sim/contacts.h), y the
       // contact distance (float bits)
 #define CSM_BIND_VOLUME_SUMS \
   28  // int x4 per node of the volume grid: strand length (2^-24 m), length
@@ -95,6 +95,7 @@
 #define CSM_COUNTER_ENTRIES 0
 #define CSM_COUNTER_CONTACTS 1
 #define CSM_COUNTER_PENETRATIONS 2
+#define CSM_COUNTER_CROSSINGS_CLOSE 3  // of those below, pairs the groom put closer than 2r
 #define CSM_COUNTER_OVERSIZE 4
 #define CSM_COUNTER_CANDIDATES 5  // pairs within 2r + margin
 #define CSM_COUNTER_CROSSINGS 6   // pairs whose orientation flipped since the last frame
@@ -109,7 +110,7 @@
 
 // Candidate lists (sim/contacts.h).
 #define CSM_MAX_SEGMENT_CELLS 64   // cells a segment may enter (see segmentCells)
-#define CSM_CANDIDATE_SHIFT 29     // the flags' place in a candidate
+#define CSM_CANDIDATE_SHIFT 28     // the flags' place in a candidate
 
 // Work group sizes.
 #define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes

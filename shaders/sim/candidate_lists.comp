@@ -41,7 +41,7 @@ void main() {
   }
   candidateRange[here] = uvec2(base, n);
   // Crossings: both lists are in ascending order.
-  uint crossings = 0u;
+  uint crossings = 0u, close = 0u;
   uvec2 last = candidateRange[before];
   uint j = 0u;
   for (uint k = 0u; k < n; ++k) {
@@ -51,8 +51,11 @@ void main() {
     while (j < last.y && (candidates[last.x + j].x & kIndex) < b) ++j;
     if (j < last.y && (candidates[last.x + j].x & kIndex) == b &&
         crossed(candidates[last.x + j].x >> uint(CSM_CANDIDATE_SHIFT),
-                c.x >> uint(CSM_CANDIDATE_SHIFT)))
+                c.x >> uint(CSM_CANDIDATE_SHIFT))) {
       ++crossings;
+      if (uintBitsToFloat(c.y) < 2.0 * P.stepping.z) ++close;  // a rest distance
+    }
   }
   if (crossings > 0u) atomicAdd(counters[CSM_COUNTER_CROSSINGS], crossings);
+  if (close > 0u) atomicAdd(counters[CSM_COUNTER_CROSSINGS_CLOSE], close);
 }

@@ -124,20 +124,49 @@ float closestSegmentPoints(vec3 p0, vec3 p1, vec3 q0, vec3 q1, out float s, out 
 
 // Strand contacts (sim/contacts.h): the histogram bin of a penetration depth (in r), and the
 // orientation flags of a pair (csm::pairFlags): closest points inside both segments, closer
-// than 2r, sign of the triple product.
+// than 2r, sign of the triple product, skew enough for that sign to say which side.
 int depthBin(float depthInR) {
   return clamp(int(depthInR * float(CSM_DEPTH_BINS_PER_R)), 0, CSM_DEPTH_BINS - 1);
 }
 
-const uint kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u;
+const uint kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u, kPairSkew = 8u;
+const float kSkewSine = 0.1;
+const float kInside = 1e-6;
+
+bool interior(float s, float t) {
+  return s > kInside && s < 1.0 - kInside && t > kInside && t < 1.0 - kInside;
+}
 
 uint pairFlags(vec3 a0, vec3 a1, vec3 b0, vec3 b1, float s, float t, float dist, float twoR) {
-  const float inside = 1e-6;
   uint f = 0u;
-  if (s > inside && s < 1.0 - inside && t > inside && t < 1.0 - inside) f |= kPairInterior;
+  if (interior(s, t)) f |= kPairInterior;
   if (dist < twoR) f |= kPairNear;
-  if (dot(cross(a1 - a0, b1 - b0), a0 - b0) > 0.0) f |= kPairPositive;
+  vec3 n = cross(a1 - a0, b1 - b0);
+  if (dot(n, a0 - b0) > 0.0) f |= kPairPositive;
+  if (length(n) > kSkewSine * length(a1 - a0) * length(b1 - b0)) f |= kPairSkew;
   return f;
+}
+
+// csm::keptSide and csm::contactNormal: the side a listed pair keeps (+1, -1, or 0 for none),
+// and the direction a contact pushes p (the lower segment) with the separation along it.
+float keptSide(uint flags) {
+  if ((flags & (kPairInterior | kPairSkew)) != (kPairInterior | kPairSkew)) return 0.0;
+  return (flags & kPairPositive) != 0u ? 1.0 : -1.0;
+}
+
+vec3 contactNormal(vec3 p0, vec3 p1, vec3 q0, vec3 q1, float s, float t, float d, float side,
+                   out float separation) {
+  vec3 n = cross(p1 - p0, q1 - q0);
+  float len = length(n);
+  vec3 between = mix(p0, p1, s) - mix(q0, q1, t);
+  if (side != 0.0 && interior(s, t) && len > kSkewSine * length(p1 - p0) * length(q1 - q0)) {
+    vec3 nrm = (side / len) * n;
+    separation = dot(between, nrm);
+    return nrm;
+  }
+  separation = d;
+  if (d > 1e-12) return between / d;
+  return len > 1e-15 ? n / len : vec3(0.0, 1.0, 0.0);
 }
 
 // A candidate list entry (CSM_BIND_CANDIDATES): the other segment in the low bits, the

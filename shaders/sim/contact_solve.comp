@@ -1,7 +1,8 @@
 // Strand contacts, one substep (DESIGN.md section 1.7; the CPU reference is csm::solveContacts
 // in sim/contacts.cpp), one invocation per segment, after shape matching: each of the
 // segment's candidates closer than its contact distance is a compliant position constraint
-// (XPBD, one Jacobi iteration: lambda = -C / (W + compliance / h^2)) with Coulomb friction on
+// (XPBD, one Jacobi iteration: lambda = -C / (W + compliance / h^2)), held to the side it was
+// listed on when skew (contactNormal), with Coulomb friction on
 // the contact points' relative sliding this step, removed up to mu times the normal
 // correction. The segment writes what its two particles move by (and how many contacts sent
 // it); strain_limit.comp moves each particle by the mean of what its segments sent. Both
@@ -56,18 +57,12 @@ void main() {
       bool lower = a < b;
       vec3 p0 = lower ? a0 : b0, p1 = lower ? a1 : b1;
       vec3 q0 = lower ? b0 : a0, q1 = lower ? b1 : a1;
-      float s, t;
+      float s, t, separation;
       float d = sqrt(closestSegmentPoints(p0, p1, q0, q1, s, t));
-      float C = d - d0;
+      vec3 nrm = contactNormal(p0, p1, q0, q1, s, t, d, keptSide(c.x >> uint(CSM_CANDIDATE_SHIFT)),
+                               separation);
+      float C = separation - d0;
       if (C >= 0.0) continue;
-      vec3 nrm = mix(p0, p1, s) - mix(q0, q1, t);
-      if (d > 1e-12) {
-        nrm /= d;
-      } else {
-        nrm = cross(p1 - p0, q1 - q0);
-        float len = length(nrm);
-        nrm = len > 1e-15 ? nrm / len : vec3(0.0, 1.0, 0.0);
-      }
       vec2 wb = inverseMasses(b);
       vec2 wp = lower ? wa : wb, wq = lower ? wb : wa;
       float W = (1.0 - s) * (1.0 - s) * wp.x + s * s * wp.y + (1.0 - t) * (1.0 - t) * wq.x +

@@ -253,6 +253,7 @@ ContactStats contactStatsOf(const uint32_t* c) {
   s.contacts = c[CSM_COUNTER_CONTACTS];
   s.penetrations = c[CSM_COUNTER_PENETRATIONS];
   s.crossings = c[CSM_COUNTER_CROSSINGS];
+  s.crossingsClose = c[CSM_COUNTER_CROSSINGS_CLOSE];
   s.maxDepth = std::bit_cast<float>(c[CSM_COUNTER_MAX_DEPTH]);
   static_assert(CSM_DEPTH_BINS == kDepthBins && CSM_DEPTH_BINS_PER_R == kDepthBinsPerR);
   for (int i = 0; i < kDepthBins; ++i) s.depth[i] = c[CSM_COUNTER_DEPTH + i];

@@ -103,10 +103,49 @@ TEST_CASE("candidates: both sides listed, rest distance kept, crossings counted"
   ContactStats after;
   const ContactCandidates second = findCandidates(x, rest, strand, settings, first, after);
   CHECK(after.crossings == 1);
+  CHECK(after.crossingsClose == 1);                   // its contact distance is its rest distance
   CHECK(after.penetrations == 1);                     // 0.5 mm < r
   CHECK(after.maxDepth == Approx(0.5).margin(0.01));  // 1 mm contact distance - 0.5 mm
   CHECK(after.depthQuantile(0.5) == Approx(0.5).margin(1.0 / kDepthBinsPerR));
   (void)second;
+}
+
+TEST_CASE("a skew pair keeps the side it was listed on: one passed through is pushed back") {
+  // Segment 0 along x; segment 2 (another strand) along z 3 mm above it; segment 4 along x,
+  // parallel to segment 0, 3 mm below it. r = 1 mm, margin 1.5 mm: both pairs are listed.
+  const std::vector<glm::dvec3> rest = {{-0.01, 0.0, 0.0},    {0.01, 0.0, 0.0},
+                                        {0.0, 0.003, -0.01},  {0.0, 0.003, 0.01},
+                                        {-0.01, -0.003, 0.0}, {0.01, -0.003, 0.0}};
+  const std::vector<uint32_t> strand = {0, 0, 1, 1, 2, 2};
+  ContactSettings settings;
+  settings.radius = 0.001;
+  settings.margin = 0.0015;
+  ContactStats stats;
+  ContactCandidates c = findCandidates(rest, rest, strand, settings, {}, stats);
+  REQUIRE(c.start[1] - c.start[0] == 2);
+  REQUIRE(c.other[c.start[0]] == 2);
+  // The sign of the pair's triple product (segment 0 below segment 2); the parallel pair has
+  // no side to keep.
+  CHECK(c.side[c.start[0]] == 1);
+  CHECK(c.side[c.start[2]] == 1);  // the same pair from the other side
+  CHECK(c.side[c.start[0] + 1] == 0);
+
+  // Within the frame, segment 2 passes through segment 0 and ends 0.5 mm below it.
+  std::vector<glm::dvec3> x = rest, v(rest.size(), glm::dvec3(0.0));
+  x[2].y = x[3].y = -0.0005;
+  const std::vector<double> invMass(rest.size(), 1.0);
+  std::vector<glm::dvec4> correction;
+  solveContacts(c, x, v, invMass, 1.0 / 240.0, settings, correction);
+  // Pushed back: segment 0 down, segment 2 up, the whole way back to 2r apart (a hard
+  // contact, four equal masses, both at the middle: each segment's particles move half of
+  // the 2.5 mm).
+  CHECK(correction[0].y == Approx(-0.5 * 2.5e-3));
+  CHECK(correction[4].y == Approx(0.5 * 2.5e-3));
+  // Along the closest points alone, the same pair would be pushed on through.
+  std::fill(c.side.begin(), c.side.end(), int8_t(0));
+  solveContacts(c, x, v, invMass, 1.0 / 240.0, settings, correction);
+  CHECK(correction[0].y > 0.0);
+  CHECK(correction[4].y < 0.0);
 }
 
 TEST_CASE("with hair-hair off, samples measure contacts only when asked, and then all of them") {

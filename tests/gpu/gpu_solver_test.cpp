@@ -211,7 +211,7 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
   // A contact starts or not by a hair's breadth, and float and double decide a grazing one
   // differently: from then on the two runs part (measured on the scene below: 1e-5 m after
   // 3 frames, 0.3 mm after 4, centimetres after 20, with the same contact counts). So: every
-  // particle within the tolerance over the first frames, and the same measures later.
+  // particle within the tolerance over the first frames, and the same measures.
   Config c = smallScene(300);
   c.collision.mode = CollisionMode::Strands;
   c.wind.strength = 3.0f;
@@ -232,9 +232,14 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
       const Difference d = difference(x, cpu.positions(), tolerance(20));
       INFO("max " << d.max << " m, rms " << d.rms << " m");
       CHECK(d.over == 0);
+    }
+    // The measures exactly over the first two frames; by the third the runs are ~1e-5 m
+    // apart, enough for a pair at the reach or at a depth bin's edge to fall either side.
+    if (f < 2) {
       CHECK(onGpu.candidates == onCpu.candidates);
       CHECK(onGpu.penetrations == onCpu.penetrations);
       CHECK(onGpu.crossings == onCpu.crossings);
+      CHECK(onGpu.crossingsClose == onCpu.crossingsClose);
       // The first bin holds pairs at their rest distance, which float and double put either
       // side of it.
       for (int k = 1; k < kDepthBins; ++k) CHECK(onGpu.depth[k] == onCpu.depth[k]);
