@@ -69,16 +69,19 @@ int8_t keptSide(uint32_t flags) {
 glm::dvec3 contactNormal(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
                          const glm::dvec3& q1, double s, double t, double d, int side,
                          double& separation) {
-  const glm::dvec3 n = glm::cross(p1 - p0, q1 - q0);
-  const double len = glm::length(n);
   const glm::dvec3 between = glm::mix(p0, p1, s) - glm::mix(q0, q1, t);
-  if (side != 0 && interior(s, t) && skew(n, p1 - p0, q1 - q0)) {
-    const glm::dvec3 nrm = (double(side) / len) * n;
-    separation = glm::dot(between, nrm);
-    return nrm;
+  if (side != 0 && interior(s, t)) {
+    const glm::dvec3 n = glm::cross(p1 - p0, q1 - q0);
+    if (skew(n, p1 - p0, q1 - q0)) {
+      const glm::dvec3 nrm = (double(side) / glm::length(n)) * n;
+      separation = glm::dot(between, nrm);
+      return nrm;
+    }
   }
   separation = d;
   if (d > 1e-12) return between / d;
+  const glm::dvec3 n = glm::cross(p1 - p0, q1 - q0);
+  const double len = glm::length(n);
   return len > 1e-15 ? n / len : glm::dvec3(0.0, 1.0, 0.0);
 }
 

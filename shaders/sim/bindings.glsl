@@ -69,8 +69,6 @@
   28  // int x4 per node of the volume grid: strand length (2^-24 m), length
       // times velocity (2^-24 m^2/s), x y z (sim/volume.h)
 #define CSM_BIND_VOLUME_LENGTH 29  // float per particle: its share of strand length (m)
-#define CSM_BIND_VOLUME_REST 30  // float per node: the volume fraction the rest groom fills
-                                 // (read through CSM_TEX_VOLUME_REST)
 #define CSM_BIND_VOLUME_FIELD \
   31  // vec4 x 2 per node, from this frame's sums (volume_field.comp):
       // length times velocity x y z and length, as floats; the gradient of
@@ -89,7 +87,7 @@
 #define CSM_TEX_REGION 7
 #define CSM_TEX_INVERSE_MASS 8
 #define CSM_TEX_VOLUME_SUMS 9
-#define CSM_TEX_VOLUME_REST 10
+#define CSM_TEX_VOLUME_REST 10  // float per node: the volume fraction the rest groom fills
 
 // Slots of the COUNTERS buffer.
 #define CSM_COUNTER_ENTRIES 0

@@ -137,13 +137,16 @@ bool interior(float s, float t) {
   return s > kInside && s < 1.0 - kInside && t > kInside && t < 1.0 - kInside;
 }
 
+// Whether segments along a and b, their cross product n, are skew enough to have a side.
+bool skew(vec3 n, vec3 a, vec3 b) { return length(n) > kSkewSine * length(a) * length(b); }
+
 uint pairFlags(vec3 a0, vec3 a1, vec3 b0, vec3 b1, float s, float t, float dist, float twoR) {
   uint f = 0u;
   if (interior(s, t)) f |= kPairInterior;
   if (dist < twoR) f |= kPairNear;
   vec3 n = cross(a1 - a0, b1 - b0);
   if (dot(n, a0 - b0) > 0.0) f |= kPairPositive;
-  if (length(n) > kSkewSine * length(a1 - a0) * length(b1 - b0)) f |= kPairSkew;
+  if (skew(n, a1 - a0, b1 - b0)) f |= kPairSkew;
   return f;
 }
 
@@ -156,16 +159,19 @@ float keptSide(uint flags) {
 
 vec3 contactNormal(vec3 p0, vec3 p1, vec3 q0, vec3 q1, float s, float t, float d, float side,
                    out float separation) {
-  vec3 n = cross(p1 - p0, q1 - q0);
-  float len = length(n);
   vec3 between = mix(p0, p1, s) - mix(q0, q1, t);
-  if (side != 0.0 && interior(s, t) && len > kSkewSine * length(p1 - p0) * length(q1 - q0)) {
-    vec3 nrm = (side / len) * n;
-    separation = dot(between, nrm);
-    return nrm;
+  if (side != 0.0 && interior(s, t)) {
+    vec3 n = cross(p1 - p0, q1 - q0);
+    if (skew(n, p1 - p0, q1 - q0)) {
+      vec3 nrm = (side / length(n)) * n;
+      separation = dot(between, nrm);
+      return nrm;
+    }
   }
   separation = d;
   if (d > 1e-12) return between / d;
+  vec3 n = cross(p1 - p0, q1 - q0);
+  float len = length(n);
   return len > 1e-15 ? n / len : vec3(0.0, 1.0, 0.0);
 }
 
