@@ -1,5 +1,6 @@
 #include "app/headless.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -128,13 +129,20 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                    context->renderer().c_str(), options.outDir.empty() ? "" : " into ",
                    options.outDir.c_str());
   }
+  // Frames whose hair-hair lists did not fit the solver's buffers: said at the end, never silent.
+  uint64_t listOverflows = 0;
+  auto takeSamples = [&] {
+    for (const FrameSample& sample : driver.takeSamples()) {
+      listOverflows = std::max(listOverflows, sample.contacts.overflows);  // a running count
+      if (metrics) recorder.addSample(sample);
+    }
+  };
   long simulated = 0;
   for (long f = 0; f < frames; ++f) {
     driver.step();
     ++simulated;
     if (metrics) recorder.addFrame(driver.lastStepMs(), sim.solver().stageTimes());
-    for (const FrameSample& sample : driver.takeSamples())
-      if (metrics) recorder.addSample(sample);
+    takeSamples();
     if (driver.stopped()) {
       nanStop();
       break;
@@ -187,10 +195,14 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   // The samples still in flight: the last frames' NaN check and measures.
   if (firstNanFrame < 0) {
     driver.drain();
-    for (const FrameSample& sample : driver.takeSamples())
-      if (metrics) recorder.addSample(sample);
+    takeSamples();
     if (driver.stopped()) nanStop();
   }
+  if (listOverflows > 0)
+    std::fprintf(stderr,
+                 "csmhair: warning: %llu frames had no strand contacts: their candidate pairs "
+                 "did not fit the solver's buffers (grown after each)\n",
+                 (unsigned long long)listOverflows);
   if (!options.exportHair.empty()) {
     // The final strands in world space, as a cyHair file for other tools.
     sim.solver().readPositions(x);

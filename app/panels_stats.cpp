@@ -113,6 +113,20 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
                 (unsigned long long)contacts.candidates);
     ImGui::Text("penetration depth p50 %.2f r, p99 %.2f r, max %.2f r", contacts.depthQuantile(0.5),
                 contacts.depthQuantile(0.99), double(contacts.maxDepth));
+    // Never silent: what the GPU's lists could not hold.
+    const ImVec4 warn(1.0f, 0.45f, 0.3f, 1.0f);
+    if (contacts.overflows > 0) {
+      ImGui::TextColored(warn, "hair-hair lists full in %llu frames (no strand contacts there)",
+                         (unsigned long long)contacts.overflows);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "A frame whose candidate pairs do not fit the GPU's buffers applies no strand\n"
+            "contacts; the buffers grow when that frame's sample is read, so the frames\n"
+            "after it fit. Counted since the simulation was last reset.");
+    }
+    if (contacts.oversize > 0)
+      ImGui::TextColored(warn, "%llu segments too long for the grid's cells: no contacts for them",
+                         (unsigned long long)contacts.oversize);
   }
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);

@@ -84,6 +84,13 @@ void Buffer::clearToZero() {
   maybeCheckErrors("Buffer::clearToZero");
 }
 
+void Buffer::clearToZero(GLintptr offset, GLsizeiptr size) {
+  glBindBuffer(GL_COPY_WRITE_BUFFER, id_);
+  glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, offset, size, GL_RED_INTEGER,
+                       GL_UNSIGNED_INT, nullptr);
+  maybeCheckErrors("Buffer::clearToZero");
+}
+
 void Buffer::copyTo(Buffer& dst, GLintptr srcOffset, GLintptr dstOffset, GLsizeiptr size) const {
   glBindBuffer(GL_COPY_READ_BUFFER, id_);
   glBindBuffer(GL_COPY_WRITE_BUFFER, dst.id_);

@@ -44,6 +44,8 @@ class Buffer {
   void read(GLintptr offset, GLsizeiptr size, void* out) const;
   // Sets every byte to zero on the GPU (glClearBufferData, GL 4.3).
   void clearToZero();
+  // The same for `size` bytes from `offset` (glClearBufferSubData; both multiples of 4).
+  void clearToZero(GLintptr offset, GLsizeiptr size);
   // GPU-side copy into `dst` (glCopyBufferSubData).
   void copyTo(Buffer& dst, GLintptr srcOffset, GLintptr dstOffset, GLsizeiptr size) const;
 

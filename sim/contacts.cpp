@@ -46,6 +46,8 @@ void ContactStats::add(const ContactStats& o) {
   penetrations += o.penetrations;
   crossings += o.crossings;
   crossingsClose += o.crossingsClose;
+  overflows = std::max(overflows, o.overflows);  // a running count: the latest
+  oversize = std::max(oversize, o.oversize);
   maxDepth = std::max(maxDepth, o.maxDepth);
   for (int i = 0; i < kDepthBins; ++i) depth[i] += o.depth[i];
 }

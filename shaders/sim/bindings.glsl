@@ -104,7 +104,10 @@
 #define CSM_COUNTER_DEPTH 16      // csm::kDepthBins bins of penetration depth (sim/contacts.h)
 #define CSM_DEPTH_BINS 64
 #define CSM_DEPTH_BINS_PER_R 32
-#define CSM_COUNTERS 80
+#define CSM_COUNTERS_PER_FRAME 80  // the slots above, cleared by each candidate search
+#define CSM_COUNTER_OVERFLOWS 80  // searches since the grid's reset whose grid or pair list did
+                                  // not fit (those frames had no strand contacts): kept
+#define CSM_COUNTERS 84
 
 // Candidate lists (sim/contacts.h).
 #define CSM_MAX_SEGMENT_CELLS 64   // cells a segment may enter (see segmentCells)

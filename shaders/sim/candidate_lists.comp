@@ -25,9 +25,12 @@ void main() {
   // This frame's half of the lists: two sides per slot of the pair list.
   uint base = P.grid.w * 2u * P.grid.z + segBase[a];
   uint n = 0u;
-  // No candidates when the grid or the pair list did not fit this frame.
+  // No candidates when the grid or the pair list did not fit this frame; the counters say so
+  // (and keep the count of such frames).
   uint total = texelFetch(gridStartTex, int(P.grid.x + 1u)).x;
-  if (total <= P.grid.y && counters[CSM_COUNTER_PAIR_LIST] <= P.grid.z) {
+  bool fits = total <= P.grid.y && counters[CSM_COUNTER_PAIR_LIST] <= P.grid.z;
+  if (a == 0u && !fits) ++counters[CSM_COUNTER_OVERFLOWS];
+  if (fits) {
     n = segBase[a + 1u] - segBase[a];
     for (uint k = 0u; k < n; ++k) {
       uvec2 c = pairSides[segBase[a] + k];

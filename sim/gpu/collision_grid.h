@@ -6,7 +6,8 @@
 // its sorted list. Every substep, contact_solve.comp: each segment's corrections, which
 // strain_limit.comp applies. The grid's and the pair list's capacities follow what the
 // samples' counters report they needed; a frame over either has no strand contacts and says
-// so in the counters (entries or pairs needed > capacity).
+// so in the counters (entries or pairs needed > capacity), and the running count of such
+// frames (CSM_COUNTER_OVERFLOWS, ContactStats::overflows) reaches the metrics and the panel.
 #pragma once
 
 #include <cstdint>
@@ -74,6 +75,8 @@ class CollisionGrid {
  private:
   void growEntries(uint64_t needed);
   void growPairList(uint64_t needed);
+  // Zeroes this frame's counters (not the running count of frames over capacity).
+  void clearFrameCounters();
   double cellSize(float reach) const;
   // Exclusive scan of the bound counts; the total to counter `totalSlot` (CSM_COUNTERS: none).
   void scan(uint32_t blocks, uint32_t totalSlot);

@@ -39,4 +39,8 @@ assert a["max_speed"] > 0
 # real crossings (closer than r) fewer.
 assert a["hair_contacts"] > 1000, a["hair_contacts"]
 assert 0 < a["hair_penetrations"] < a["hair_contacts"], a
+# Every frame's candidates fit the buffers (reserved from the rest groom), and no segment is
+# too long for the grid: the metrics say so either way.
+assert a["hair_list_overflows"] == 0, a
+assert a["hair_oversize_segments_max"] == 0, a
 PY

@@ -287,12 +287,13 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   CHECK(gpu->gridStats().capacity == capacity);
 }
 
-TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts and grows",
+TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, says so, grows",
           "[gpu][collision]") {
   // A bundle of parallel strands packed closer than the candidate distance: ~40 pairs per
   // segment against ~4 grid entries, so the pair list sized from the entries overflows. That
-  // frame lists no candidates (and the counters say how many pairs it needed); the next one,
-  // after a sample reads the counters, fits and lists them.
+  // frame lists no candidates (the counters say how many pairs it needed, and count the frame
+  // as one over capacity); the next one, after a sample reads the counters, fits and lists
+  // them.
   test::glContext();
   std::string error;
   auto gpu = GpuSolver::create(&error);
@@ -319,7 +320,10 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts an
   const auto empty = gpu->readCandidates();
   CHECK(std::all_of(empty.begin(), empty.end(), [](const auto& l) { return l.empty(); }));
   // The sample grows the list; the next frame fits.
-  CHECK(gpu->readContactStats().candidates == over.pairs);
+  const ContactStats overStats = gpu->readContactStats();
+  CHECK(overStats.candidates == over.pairs);
+  CHECK(overStats.overflows == 1);
+  CHECK(overStats.oversize == 0);
   gpu->stepFrame(Pose{}, Pose{});
   const GpuSolver::GridStats fits = gpu->gridStats();
   CHECK(fits.pairCapacity > capacity);
@@ -330,8 +334,11 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts an
   // A sample that fits grows nothing.
   gpu->readContactStats();
   gpu->stepFrame(Pose{}, Pose{});
-  gpu->readContactStats();
+  // The count of frames over capacity runs on (still the one), until a reset.
+  CHECK(gpu->readContactStats().overflows == 1);
   CHECK(gpu->gridStats().pairCapacity == fits.pairCapacity);
+  gpu->reset(g, c, Pose{});
+  CHECK(gpu->readContactStats().overflows == 0);
 }
 
 TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision]") {
