@@ -200,8 +200,8 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   }
   if (listOverflows > 0)
     std::fprintf(stderr,
-                 "csmhair: warning: %llu frames had no strand contacts: their candidate pairs "
-                 "did not fit the solver's buffers (grown after each)\n",
+                 "csmhair: warning: the candidate pairs of %llu frames did not fit the solver's "
+                 "buffers: those frames had no strand contacts (and counted no crossings)\n",
                  (unsigned long long)listOverflows);
   if (!options.exportHair.empty()) {
     // The final strands in world space, as a cyHair file for other tools.

@@ -95,8 +95,8 @@ void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uin
   growEntries(std::max<uint64_t>(1, entries + entries / 2));
   // Dense hair has fewer candidate pairs than entries at rest (Fig. 1: 0.75 per entry), but
   // hair the wind gathers has more (Fig. 1 over 60 frames: 1.1 per entry on average, and
-  // frames over 1.25, which had no strand contacts): twice as many, and a quarter more
-  // (growPairList).
+  // frames over the 1.25 reserved before, which then had no strand contacts): twice as many,
+  // and a quarter more (growPairList).
   growPairList(std::max<uint64_t>(1024, 2 * entries));
 }
 
