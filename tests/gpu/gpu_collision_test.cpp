@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <cmath>
 #include <random>
 #include <set>
@@ -81,13 +82,20 @@ Compared compare(GpuSolver& gpu, const Groom& g, double r) {
   return c;
 }
 
+// A GPU solver on the shared context; REQUIREs that it could be made (the reason in the log).
+std::unique_ptr<GpuSolver> makeGpuSolver() {
+  test::glContext();
+  std::string error;
+  std::unique_ptr<GpuSolver> gpu = GpuSolver::create(&error);
+  INFO(error);
+  REQUIRE(gpu);
+  return gpu;
+}
+
 }  // namespace
 
 TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collision]") {
-  test::glContext();
-  std::string error;
-  auto gpu = GpuSolver::create(&error);
-  REQUIRE(gpu);
+  auto gpu = makeGpuSolver();
   for (double step : {0.004, 0.012}) {
     const Groom g = tangle(400, step, 7);
     for (double r : {0.0005, 0.002, 0.008}) {
@@ -151,10 +159,7 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
 
 TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu][collision]") {
   // Hair fallen under gravity and wind: dense near the scalp, where most pairs are.
-  test::glContext();
-  std::string error;
-  auto gpu = GpuSolver::create(&error);
-  REQUIRE(gpu);
+  auto gpu = makeGpuSolver();
   Config c;
   c.hairstyle.strands = 1500;
   c.hairstyle.particlesPerStrand = 12;
@@ -176,8 +181,6 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
   // The CPU test's scene (tests/cpu/cpu_solver_test.cpp): strands shaken through each other.
   // Penetrations are segment pairs closer than the hair radius, counted by brute force on
   // the read-back positions.
-  test::glContext();
-  std::string error;
   Config c;
   c.hairstyle.strands = 600;
   c.hairstyle.particlesPerStrand = 0;
@@ -194,8 +197,7 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
   auto penetrations = [&](CollisionMode mode, ContactStats* stats) {
     Config m = c;
     m.collision.mode = mode;
-    auto gpu = GpuSolver::create(&error);
-    REQUIRE(gpu);
+    auto gpu = makeGpuSolver();
     gpu->reset(g, m, headPose(m.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 90; ++f, t += m.sim.dt)
@@ -222,10 +224,7 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   // in no cell (counted) and finds no contacts; every other pair is still found exactly.
   // Long diagonal segments between short ones (cells follow the mean length) need more
   // entries than the buffers start with: the test hook grows them and runs again.
-  test::glContext();
-  std::string error;
-  auto gpu = GpuSolver::create(&error);
-  REQUIRE(gpu);
+  auto gpu = makeGpuSolver();
   Groom g;
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-0.03f, 0.03f), d(-1.0f, 1.0f);
@@ -294,10 +293,7 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
   // frame lists no candidates (the counters say how many pairs it needed, and count the frame
   // as one over capacity); the next one, after a sample reads the counters, fits and lists
   // them.
-  test::glContext();
-  std::string error;
-  auto gpu = GpuSolver::create(&error);
-  REQUIRE(gpu);
+  auto gpu = makeGpuSolver();
   Groom g;
   for (int i = 0; i < 15; ++i)
     for (int j = 0; j < 15; ++j) {
@@ -342,10 +338,7 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
 }
 
 TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision]") {
-  test::glContext();
-  std::string error;
-  auto gpu = GpuSolver::create(&error);
-  REQUIRE(gpu);
+  auto gpu = makeGpuSolver();
   Groom g = tangle(200, 0.004, 5);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   g.addStrand({glm::vec3(0.0f), glm::vec3(nan, 0.0f, 0.0f), glm::vec3(0.0f, 1e35f, 0.0f)});
