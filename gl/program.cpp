@@ -188,6 +188,14 @@ void Program::dispatch(GLuint x, GLuint y, GLuint z) const {
   maybeCheckErrors("Program::dispatch");
 }
 
+void Program::dispatchIndirect(GLuint args, GLintptr offset) const {
+  glUseProgram(id_);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, args);
+  glDispatchComputeIndirect(offset);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  maybeCheckErrors("Program::dispatchIndirect");
+}
+
 std::array<GLint, 3> Program::workGroupSize() const {
   std::array<GLint, 3> size{0, 0, 0};
   glGetProgramiv(id_, GL_COMPUTE_WORK_GROUP_SIZE, size.data());

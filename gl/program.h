@@ -63,6 +63,9 @@ class Program {
 
   // use() and glDispatchCompute. Counts are work groups, not invocations; see groupsFor().
   void dispatch(GLuint x, GLuint y = 1, GLuint z = 1) const;
+  // use() and glDispatchComputeIndirect with the work group counts (three GLuints) at
+  // `offset` in buffer `args`.
+  void dispatchIndirect(GLuint args, GLintptr offset) const;
   // local_size_x/y/z of a compute program.
   std::array<GLint, 3> workGroupSize() const;
   // Work groups needed to cover `count` items with groups of `groupSize`.

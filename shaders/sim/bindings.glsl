@@ -50,6 +50,9 @@
 #define CSM_BIND_ENTRIES 17       // uvec4 per grid entry (packEntry in common.glsl)
 #define CSM_BIND_COUNTERS \
   18                                  // uint[CSM_COUNTERS]: the CSM_COUNTER_* below
+#define CSM_BIND_DISPATCH \
+  19  // uvec4 per indirect dispatch (dispatch_size.comp): the work groups x, y, z of a pass
+      // whose item count only the GPU knows (CSM_DISPATCH_*)
 #define CSM_BIND_CANDIDATE_RANGE \
   20  // uvec2 per particle, twice (this frame's half and the last
       // frame's, P.grid.w says which): where each segment's candidates
@@ -108,6 +111,11 @@
 #define CSM_COUNTER_OVERFLOWS 80  // searches since the grid's reset whose grid or pair list did
                                   // not fit (those frames had no strand contacts): kept
 #define CSM_COUNTERS 84
+
+// Slots of the DISPATCH buffer.
+#define CSM_DISPATCH_CANDIDATES 0    // the candidate pass: one invocation per grid entry
+#define CSM_DISPATCH_PAIR_SCATTER 1  // the pair scatter: one per listed pair
+#define CSM_DISPATCHES 2
 
 // Candidate lists (sim/contacts.h).
 #define CSM_MAX_SEGMENT_CELLS 64   // cells a segment may enter (see segmentCells)

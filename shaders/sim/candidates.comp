@@ -1,29 +1,34 @@
 // Strand contacts, candidate pass (DESIGN.md section 1.7; the CPU reference is
 // csm::findCandidates in sim/contacts.cpp): the segment pairs closer than 2r + margin at the
-// start of the frame, one invocation per grid entry (a segment a in one of its cells), in grid
+// start of the frame, one invocation per grid entry (a segment in one of its cells), in grid
 // order, so the invocations of a SIMD group usually share a bucket and read the same
-// candidates (one cache line per gather). An entry tests a candidate b only when b > a (each
-// pair is tested from its lower segment only), b is of the same cell (buckets can hold
-// several), the two boxes overlap in the cell, this cell holds the lowest corner of their
-// overlap (the owner: a pair is met once), and the pair passes the same-strand gap rule. A
-// pair closer than the candidate distance is measured (contacts, penetrations, the depth
-// histogram: integer atomics, the same sums in any order) and appended to the pair list with
-// its flags and contact distance, and each of its segments counts it; pair_scatter.comp then
-// gives every segment its pairs and candidate_lists.comp sorts them into its list. The list's order depends on the schedule,
+// candidates (one cache line per gather). An entry tests only the entries after it in its
+// bucket (each pair of a cell is met once, from its first entry), of the same cell (buckets
+// can hold several), whose box overlaps its own in the cell, when this cell holds the lowest
+// corner of their overlap (the owner: a pair is met in one cell only), and that pass the
+// same-strand gap rule. A pair closer than the candidate distance is measured (contacts,
+// penetrations, the depth histogram: integer atomics, the same sums in any order) and
+// appended to the pair list, lower segment first, with its flags and contact distance, and
+// each of its segments counts it; pair_scatter.comp then gives every segment its pairs and
+// candidate_lists.comp sorts them into its list. The list's order depends on the schedule,
 // its content does not; a frame whose pairs do not fit the list has no strand contacts and
 // says so in the counters (CSM_COUNTER_PAIR_LIST over the capacity). Closest points: Ericson,
-// Real-Time Collision Detection, 5.1.9.
+// Real-Time Collision Detection, 5.1.9; a pair is always evaluated lower segment first, as on
+// the CPU, so that both agree on the candidate distance's boundary.
 //
 // Phases, because a SIMD lane that skips work still waits for the others (and on llvmpipe a
 // branch is only a mask: both sides always run, and a loop body runs at least once), so rare
 // work must not sit in the loop over candidates:
-//  1. every candidate of a chunk of 128 entries, one texel each: the cell, the order, the box
-//     overlap and the owner (a bit per candidate that may touch);
-//  2. the flagged ones: the gap rule, and segment a against b's box (a slab test);
-//  3. the remaining ones: closest points of the two segments; a pair within the candidate
-//     distance gets its contact distance (2r, or less where the groom put the two closer at
-//     rest: the rest positions are in the head frame, which moves rigidly) and flags, is
-//     measured and listed.
+//  1. every candidate of a chunk of 128 entries, one texel each: the cell, the box overlap
+//     and the owner (a bit per candidate that may touch; about 1 in 9 on Fig. 1);
+//  2. the flagged ones: the gap rule and the closest points of the two segments (a bit per
+//     pair within the candidate distance; about 1 in 8 of those);
+//  3. the pairs within it: their contact distance (2r, or less where the groom put the two
+//     closer at rest: the rest positions are in the head frame, which moves rigidly) and
+//     flags; measured and listed.
+// Measured on Fig. 1 (llvmpipe): testing every entry of the bucket (and keeping the pairs
+// whose other segment is higher) did twice the phase 1 work, and a slab test of one segment
+// against the other's box before the closest points cost more than it saved.
 // When the grid did not fit its buffers this frame (see grid_scatter.comp), no entry runs and
 // every segment's list is empty: the frame has no strand contacts, and the counters say so.
 #include "sim/common.glsl"
@@ -60,6 +65,17 @@ uint popLowest(inout uvec4 mask) {
   return 32u * word + bit;
 }
 
+// Segment a (at a0, a1) and segment `other`, the lower index first (p on it).
+struct Pair {
+  vec3 p0, p1, q0, q1;
+};
+Pair orderedPair(uint a, vec3 a0, vec3 a1, uint other) {
+  vec3 o0 = fetchPos(other), o1 = fetchPos(other + 1u);
+  // The operands are chosen before use: under a SIMD mask both sides of a branch run.
+  bool lower = a < other;
+  return Pair(lower ? a0 : o0, lower ? a1 : o1, lower ? o0 : a0, lower ? o1 : a1);
+}
+
 void main() {
   uint e = globalIndex();
   uint lid = gl_LocalInvocationID.x;
@@ -79,58 +95,46 @@ void main() {
     uvec3 lowA = entryBoxLow(me), highA = entryBoxHigh(me);
     uint startsA = entryStarts(me);
     vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
-    vec3 restA0 = fetchRest(a), restA1 = fetchRest(a + 1u);
-    // For the slab test of phase 2: axes along which a hardly moves are not tested (a
-    // conservative pass; the box test covers them).
-    bvec3 flatA = lessThan(abs(a1 - a0), vec3(1e-12));
-    vec3 invA = 1.0 / mix(a1 - a0, vec3(1.0), flatA);
     // Segments of a's own strand: [sFirst, sLast) (the gap rule).
     uint strandA = particleStrand[a];
     uint sFirst = strandFirst[strandA], sLast = strandFirst[strandA + 1u] - 1u;
     float r = P.stepping.z, twoR = 2.0 * r;
     float reach = P.contact.x;  // 2r + margin
-    uint bucket = bucketOf(key);
-    uint lo = texelFetch(gridStartTex, int(bucket)).x;
-    uint hi = texelFetch(gridStartTex, int(bucket + 1u)).x;
-    for (uint base = lo; base < hi; base += kChunk) {
+    uint hi = texelFetch(gridStartTex, int(bucketOf(key) + 1u)).x;
+    for (uint base = e + 1u; base < hi; base += kChunk) {
       uint n = min(kChunk, hi - base);
       // Phase 1.
       uvec4 maybe = uvec4(0u);
       for (uint c = 0u; c < n; ++c) {
         uvec4 cand = texelFetch(entryTex, int(base + c));
-        if (cand.x == key && cand.y > a && all(lessThanEqual(lowA, entryBoxHigh(cand))) &&
+        if (cand.x == key && all(lessThanEqual(lowA, entryBoxHigh(cand))) &&
             all(lessThanEqual(entryBoxLow(cand), highA)) && (startsA | entryStarts(cand)) == 7u)
           maybe[c >> 5u] |= 1u << (c & 31u);
       }
       // Phase 2.
-      uvec4 close = uvec4(0u);
+      uvec4 near = uvec4(0u);
       while (any(notEqual(maybe, uvec4(0u)))) {
         uint c = popLowest(maybe);
-        uint b = texelFetch(entryTex, int(base + c)).y;
-        bool sameStrandNear = b < sLast && b - a <= kStrandGap;  // b > a >= sFirst
-        // Segment a against b's box padded once more (2r in all, and slack): a point of a
-        // within 2r of b lies in it, so a pair that misses it cannot touch.
-        vec3 lowB, highB;
-        segmentBox(fetchPos(b), fetchPos(b + 1u), lowB, highB);
-        vec3 t0 = (lowB - P.cells.z - a0) * invA, t1 = (highB + P.cells.z - a0) * invA;
-        vec3 tNear = mix(min(t0, t1), vec3(-1e30), flatA);
-        vec3 tFar = mix(max(t0, t1), vec3(1e30), flatA);
-        bool crosses = max(max(tNear.x, tNear.y), max(tNear.z, 0.0)) <=
-                       min(min(tFar.x, tFar.y), min(tFar.z, 1.0));
-        if (!sameStrandNear && crosses) close[c >> 5u] |= 1u << (c & 31u);
+        uint other = texelFetch(entryTex, int(base + c)).y;
+        uint low = min(a, other), high = max(a, other);
+        if (low >= sFirst && high < sLast && high - low <= kStrandGap) continue;
+        Pair pair = orderedPair(a, a0, a1, other);
+        float s, t;
+        if (closestSegmentPoints(pair.p0, pair.p1, pair.q0, pair.q1, s, t) < reach * reach)
+          near[c >> 5u] |= 1u << (c & 31u);
       }
       // Phase 3.
-      while (any(notEqual(close, uvec4(0u)))) {
-        uint b = texelFetch(entryTex, int(base + popLowest(close))).y;
-        vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);
+      while (any(notEqual(near, uvec4(0u)))) {
+        uint other = texelFetch(entryTex, int(base + popLowest(near))).y;
+        uint low = min(a, other), high = max(a, other);
+        Pair pair = orderedPair(a, a0, a1, other);
         float s, t;
-        float d2 = closestSegmentPoints(a0, a1, b0, b1, s, t);
-        if (d2 >= reach * reach) continue;
-        float dist = sqrt(d2);
+        float dist = sqrt(closestSegmentPoints(pair.p0, pair.p1, pair.q0, pair.q1, s, t));
         float rs, rt;
-        float d0 = min(twoR, sqrt(closestSegmentPoints(restA0, restA1, fetchRest(b),
-                                                       fetchRest(b + 1u), rs, rt)));
-        uint flags = pairFlags(a0, a1, b0, b1, s, t, dist, twoR);
+        float d0 = min(twoR, sqrt(closestSegmentPoints(fetchRest(low), fetchRest(low + 1u),
+                                                       fetchRest(high), fetchRest(high + 1u), rs,
+                                                       rt)));
+        uint flags = pairFlags(pair.p0, pair.p1, pair.q0, pair.q1, s, t, dist, twoR);
         ++candidatesHere;
         if (dist < twoR) ++pairsHere;
         if (dist < r) ++penetrationsHere;
@@ -141,9 +145,10 @@ void main() {
         }
         uint k = atomicAdd(counters[CSM_COUNTER_PAIR_LIST], 1u);
         if (k < P.grid.z) {
-          pairList[k] = uvec4(a, b | (flags << uint(CSM_CANDIDATE_SHIFT)), floatBitsToUint(d0), 0u);
-          atomicAdd(segmentPairs[a], 1u);
-          atomicAdd(segmentPairs[b], 1u);
+          pairList[k] =
+              uvec4(low, high | (flags << uint(CSM_CANDIDATE_SHIFT)), floatBitsToUint(d0), 0u);
+          atomicAdd(segmentPairs[low], 1u);
+          atomicAdd(segmentPairs[high], 1u);
         }
       }
     }

@@ -39,6 +39,7 @@ bool CollisionGrid::build(std::string* error) {
          passes_.scanSums.build("sim/scan_sums.comp", CSM_SCAN_GROUP, {}, error) &&
          passes_.scanAdd.build("sim/scan_add.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scatter.build("sim/grid_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
+         passes_.dispatchSize.build("sim/dispatch_size.comp", 1, {}, error) &&
          passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, {}, error) &&
          passes_.pairScatter.build("sim/pair_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.lists.build("sim/candidate_lists.comp", CSM_PARTICLE_GROUP, {}, error) &&
@@ -64,6 +65,7 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<uint32_t>(gridStart_, buckets_ + 4);  // + the total, as a uvec4
   zeroed<uint32_t>(scanBlockSums_, scanBlocks_ + 1);
   zeroed<uint32_t>(counters_, CSM_COUNTERS);
+  zeroed<glm::uvec4>(dispatch_, CSM_DISPATCHES);
   zeroed<uint32_t>(segmentPairs_, segmentScan_);
   zeroed<uint32_t>(segmentBase_, segmentScan_ + 4);
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
@@ -128,6 +130,7 @@ void CollisionGrid::bind() const {
   pairList_.bindBase(ssbo, CSM_BIND_PAIR_LIST);
   pairSides_.bindBase(ssbo, CSM_BIND_PAIR_SIDES);
   counters_.bindBase(ssbo, CSM_BIND_COUNTERS);
+  dispatch_.bindBase(ssbo, CSM_BIND_DISPATCH);
   segmentPairs_.bindBase(ssbo, CSM_BIND_SEGMENT_PAIRS);
   segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
   candidates_.bindBase(ssbo, CSM_BIND_CANDIDATES);
@@ -147,9 +150,10 @@ void CollisionGrid::findCandidates(StageTimer* timer) {
   scan(scanBlocks_, CSM_COUNTER_ENTRIES);
   passes_.scatter.run(particles);
   gl::memoryBarrier(kPassBarrier);
-  // One invocation per entry slot: how many are used is known on the GPU only (no read-back
-  // inside a frame); the others return at once.
-  passes_.candidates.run(entryCapacity_);
+  // One invocation per entry: how many there are is known on the GPU only (no read-back inside
+  // a frame), so the dispatch is sized there.
+  dispatchFor(CSM_COUNTER_ENTRIES, entryCapacity_, CSM_CONTACT_GROUP, CSM_DISPATCH_CANDIDATES);
+  passes_.candidates.runIndirect(dispatch_, CSM_DISPATCH_CANDIDATES);
   gl::memoryBarrier(kPassBarrier);
   // Counting sort of the pairs by segment: the same scan over the segments' pair counts, its
   // buffers bound in the grid's place for the while; scatter, one invocation per list slot.
@@ -161,10 +165,22 @@ void CollisionGrid::findCandidates(StageTimer* timer) {
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
-  passes_.pairScatter.run(pairListCapacity_);
+  dispatchFor(CSM_COUNTER_PAIR_LIST, pairListCapacity_, CSM_PARTICLE_GROUP,
+              CSM_DISPATCH_PAIR_SCATTER);
+  passes_.pairScatter.runIndirect(dispatch_, CSM_DISPATCH_PAIR_SCATTER);
   gl::memoryBarrier(kPassBarrier);
   passes_.lists.run(particles);
   gl::memoryBarrier(kPassBarrier);
+}
+
+void CollisionGrid::dispatchFor(uint32_t counter, uint32_t capacity, uint32_t groupSize,
+                                uint32_t slot) {
+  passes_.dispatchSize.set("counter", counter)
+      .set("capacity", capacity)
+      .set("groupSize", groupSize)
+      .set("slot", slot)
+      .run(1);
+  gl::memoryBarrier(gl::Barrier::Command);
 }
 
 void CollisionGrid::clearFrameCounters() {

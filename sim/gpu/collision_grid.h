@@ -3,11 +3,13 @@
 // (grid_count, a three-level parallel scan of the buckets, grid_scatter); candidates.comp per
 // grid entry lists the pairs, each once; a counting sort by segment (the same scan over each
 // segment's pair count, pair_scatter) and candidate_lists.comp per segment give every segment
-// its sorted list. Every substep, contact_solve.comp: each segment's corrections, which
-// strain_limit.comp applies. The grid's and the pair list's capacities follow what the
-// samples' counters report they needed; a frame over either has no strand contacts and says
-// so in the counters (entries or pairs needed > capacity), and the running count of such
-// frames (CSM_COUNTER_OVERFLOWS, ContactStats::overflows) reaches the metrics and the panel.
+// its sorted list. The passes over entries and pairs are dispatched indirectly, sized on the
+// GPU by what the frame has (dispatch_size.comp): a generous capacity costs memory, not time. Every
+// substep, contact_solve.comp: each segment's corrections, which strain_limit.comp applies. The
+// grid's and the pair list's capacities follow what the samples' counters report they needed; a
+// frame over either has no strand contacts and says so in the counters (entries or pairs needed >
+// capacity), and the running count of such frames (CSM_COUNTER_OVERFLOWS, ContactStats::overflows)
+// reaches the metrics and the panel.
 #pragma once
 
 #include <cstdint>
@@ -75,6 +77,9 @@ class CollisionGrid {
  private:
   void growEntries(uint64_t needed);
   void growPairList(uint64_t needed);
+  // Sizes dispatch slot `slot` (CSM_DISPATCH_*) for the items counter `counter` holds (at
+  // most `capacity`), in groups of `groupSize`.
+  void dispatchFor(uint32_t counter, uint32_t capacity, uint32_t groupSize, uint32_t slot);
   // Zeroes this frame's counters (not the running count of frames over capacity).
   void clearFrameCounters();
   double cellSize(float reach) const;
@@ -93,14 +98,14 @@ class CollisionGrid {
                                    // counters its measures)
 
   struct Passes {
-    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, candidates, pairScatter, lists,
-        solve;
+    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates,
+        pairScatter, lists, solve;
   } passes_;
   gl::Buffer correction_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
       scanBlockSums_{gl::NoCreate}, entries_{gl::NoCreate}, counters_{gl::NoCreate},
       segmentPairs_{gl::NoCreate}, segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate},
       pairList_{gl::NoCreate}, pairSides_{gl::NoCreate}, candidates_{gl::NoCreate},
-      candidateRange_{gl::NoCreate};
+      candidateRange_{gl::NoCreate}, dispatch_{gl::NoCreate};
   gl::BufferTexture entryTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};
 };
 

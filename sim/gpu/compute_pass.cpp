@@ -25,6 +25,10 @@ void ComputePass::run(uint32_t items) const {
   program_.dispatch(x, (groups + x - 1) / x);
 }
 
+void ComputePass::runIndirect(const gl::Buffer& args, uint32_t slot) const {
+  program_.dispatchIndirect(args.id(), GLintptr(slot) * 4 * sizeof(GLuint));
+}
+
 void ComputePass::runSubstep(uint32_t items, unsigned substep) {
   program_.setUniform("substep", substep);
   run(items);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/shader_source.h"
 
@@ -26,6 +27,9 @@ class ComputePass {
   // Enough groups for `items` invocations (none for 0); beyond GL 4.3's 65535 groups per
   // dimension, a 2D grid of groups that globalIndex() in common.glsl flattens.
   void run(uint32_t items) const;
+  // As many groups as slot `slot` (a CSM_DISPATCH_*) of `args` says: a count of items only the
+  // GPU knows, sized there by dispatch_size.comp (after a Command barrier).
+  void runIndirect(const gl::Buffer& args, uint32_t slot) const;
   // The same pass for each step of a frame: its `substep` uniform, then run.
   void runSubstep(uint32_t items, unsigned substep);
 
