@@ -4,9 +4,10 @@
 // order, so the invocations of a SIMD group usually share a bucket and read the same
 // candidates (one cache line per gather). An entry tests only the entries after it in its
 // bucket (each pair of a cell is met once, from its first entry), of the same cell (buckets
-// can hold several), whose box overlaps its own in the cell, when this cell holds the lowest
-// corner of their overlap (the owner: a pair is met in one cell only), and that pass the
-// same-strand gap rule. A pair closer than the candidate distance is measured (contacts,
+// can hold several), whose box overlaps its own in the cell, and that pass the same-strand
+// gap rule; of those, a pair closer than the candidate distance whose closest points have
+// their midpoint in this cell (the owner: a pair is kept in one cell only; see common.glsl)
+// is measured (contacts,
 // penetrations, the depth histogram: integer atomics, the same sums in any order) and
 // appended to the pair list, lower segment first, with its flags and contact distance, and
 // each of its segments counts it; pair_scatter.comp then gives every segment its pairs and
@@ -19,16 +20,18 @@
 // Phases, because a SIMD lane that skips work still waits for the others (and on llvmpipe a
 // branch is only a mask: both sides always run, and a loop body runs at least once), so rare
 // work must not sit in the loop over candidates:
-//  1. every candidate of a chunk of 128 entries, one texel each: the cell, the box overlap
-//     and the owner (a bit per candidate that may touch; about 1 in 9 on Fig. 1);
-//  2. the flagged ones: the gap rule and the closest points of the two segments (a bit per
-//     pair within the candidate distance; about 1 in 8 of those);
+//  1. every candidate of a chunk of 128 entries, one texel each: the cell and the box
+//     overlap (a bit per candidate that may touch);
+//  2. the flagged ones: the gap rule, the closest points of the two segments and the owner
+//     (a bit per pair within the candidate distance owned here);
 //  3. the pairs within it: their contact distance (2r, or less where the groom put the two
 //     closer at rest: the rest positions are in the head frame, which moves rigidly) and
 //     flags; measured and listed.
 // Measured on Fig. 1 (llvmpipe): testing every entry of the bucket (and keeping the pairs
-// whose other segment is higher) did twice the phase 1 work, and a slab test of one segment
-// against the other's box before the closest points cost more than it saved.
+// whose other segment is higher) did twice the phase 1 work, a slab test of one segment
+// against the other's box before the closest points cost more than it saved, and entries
+// with the whole segment's box (owner: the lowest corner of the two boxes' overlap) had twice
+// the candidates per entry and a fifth more overlaps than the boxes of the pieces in a cell.
 // When the grid did not fit its buffers this frame (see grid_scatter.comp), no entry runs and
 // every segment's list is empty: the frame has no strand contacts, and the counters say so.
 #include "sim/common.glsl"
@@ -93,7 +96,6 @@ void main() {
     uvec4 me = texelFetch(entryTex, int(e));
     uint key = me.x, a = me.y;
     uvec3 lowA = entryBoxLow(me), highA = entryBoxHigh(me);
-    uint startsA = entryStarts(me);
     vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
     // Segments of a's own strand: [sFirst, sLast) (the gap rule).
     uint strandA = particleStrand[a];
@@ -108,7 +110,7 @@ void main() {
       for (uint c = 0u; c < n; ++c) {
         uvec4 cand = texelFetch(entryTex, int(base + c));
         if (cand.x == key && all(lessThanEqual(lowA, entryBoxHigh(cand))) &&
-            all(lessThanEqual(entryBoxLow(cand), highA)) && (startsA | entryStarts(cand)) == 7u)
+            all(lessThanEqual(entryBoxLow(cand), highA)))
           maybe[c >> 5u] |= 1u << (c & 31u);
       }
       // Phase 2.
@@ -120,7 +122,9 @@ void main() {
         if (low >= sFirst && high < sLast && high - low <= kStrandGap) continue;
         Pair pair = orderedPair(a, a0, a1, other);
         float s, t;
-        if (closestSegmentPoints(pair.p0, pair.p1, pair.q0, pair.q1, s, t) < reach * reach)
+        float d2 = closestSegmentPoints(pair.p0, pair.p1, pair.q0, pair.q1, s, t);
+        vec3 middle = 0.5 * (mix(pair.p0, pair.p1, s) + mix(pair.q0, pair.q1, t));
+        if (d2 < reach * reach && cellKey(cellOf(middle)) == key)
           near[c >> 5u] |= 1u << (c & 31u);
       }
       // Phase 3.

@@ -185,16 +185,19 @@ bool crossed(uint before, uint now) {
 }
 
 // The collision grid (DESIGN.md section 1.7): cells of edge P.cells.x, at least twice the
-// contact distance and half a mean segment. Each segment is entered in every cell its box,
-// padded by P.cells.z (half the candidate distance and 1% for rounding), touches; a pair is tested only in the cell that
-// holds the lowest corner of the overlap of the two boxes, so it is found exactly once. Every
-// pass computes boxes and cells with these functions from the same positions, so they agree
-// to the bit (the owner cell of an overlapping pair always lies in both cell ranges).
+// contact distance and half a mean segment. Each segment is entered in every cell that its
+// capsule of radius P.cells.z (half the candidate distance and 1% for rounding) reaches: the
+// cells of its padded box that the segment itself passes within P.cells.z of (clipToCell),
+// with the box of the part it has there. A pair is kept only in the cell holding the midpoint
+// of its closest points (the owner): both segments lie within half the candidate distance of
+// that point, so both are entered there and their boxes there overlap, and the pair is found
+// exactly once. Every pass computes cells, clips and boxes with these functions from the same
+// positions, so they agree to the bit.
 
 // Cells are counted from the head (P.origin) and clamped to -512..511 per axis (+-4.6 m with
 // Fig. 1's 9 mm cells): a cell's 30-bit key is then exact, and a far-away segment of an
 // exploding simulation shares the border cells instead of overflowing (slower, still exact:
-// the clamp is monotone, so the owner argument above holds).
+// a border cell takes the whole segment, and the owner of a pair out there is a border cell).
 ivec3 cellOf(vec3 p) {
   return ivec3(clamp(floor((p - P.origin.xyz) * P.cells.y), -512.0, 511.0));
 }
@@ -209,24 +212,42 @@ void segmentBox(vec3 p0, vec3 p1, out vec3 lo, out vec3 hi) {
   hi = max(p0, p1) + P.cells.z;
 }
 
+// The part of segment p0-p1 within cell c grown by P.cells.z on every side, [q0, q1]: false
+// when the segment misses it (the cell is in its padded box, but the segment passes farther
+// than P.cells.z from it). A border cell (see cellOf) takes the whole segment.
+bool clipToCell(vec3 p0, vec3 p1, ivec3 c, out vec3 q0, out vec3 q1) {
+  q0 = p0;
+  q1 = p1;
+  if (any(equal(c, ivec3(-512))) || any(equal(c, ivec3(511)))) return true;
+  vec3 lo = P.origin.xyz + vec3(c) * P.cells.x - P.cells.z;
+  vec3 hi = lo + vec3(P.cells.x + 2.0 * P.cells.z);
+  vec3 d = p1 - p0;
+  // Axes along which the segment hardly moves do not clip: the padded box put it in range.
+  bvec3 still = lessThan(abs(d), vec3(1e-12));
+  vec3 inv = 1.0 / mix(d, vec3(1.0), still);
+  vec3 ta = (lo - p0) * inv, tb = (hi - p0) * inv;
+  vec3 tNear = mix(min(ta, tb), vec3(-1e30), still), tFar = mix(max(ta, tb), vec3(1e30), still);
+  float t0 = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
+  float t1 = min(min(tFar.x, tFar.y), min(tFar.z, 1.0));
+  q0 = p0 + d * t0;
+  q1 = p0 + d * t1;
+  return t0 <= t1;
+}
+
 // A grid entry in one texel (CSM_BIND_ENTRIES): the cell's key, the segment, and the part of
-// its padded box inside the cell in 1023 steps per axis, rounded outward (two boxes that overlap
-// in the cell overlap here too), with a bit per axis for whether the box starts in this cell.
-// The owner rule in these terms: the overlap's lowest corner lies in this cell when, on each
-// axis, one of the two boxes starts here (both touch the cell).
+// the box of its piece in the cell (padded) that lies inside the cell, in 1023 steps per axis,
+// rounded outward (two boxes that overlap in the cell overlap here too).
 const float kEntrySteps = 1023.0;
-uvec4 packEntry(uint key, uint segment, vec3 low, vec3 high, ivec3 cell, bvec3 starts) {
+uvec4 packEntry(uint key, uint segment, vec3 low, vec3 high, ivec3 cell) {
   vec3 l = (low - P.origin.xyz) * P.cells.y - vec3(cell);
   vec3 h = (high - P.origin.xyz) * P.cells.y - vec3(cell);
   uvec3 ql = uvec3(clamp(floor(l * kEntrySteps), 0.0, kEntrySteps));
   uvec3 qh = uvec3(clamp(ceil(h * kEntrySteps), 0.0, kEntrySteps));
-  uvec3 st = uvec3(starts);
-  return uvec4(key, segment, ql.x | (ql.y << 10u) | (ql.z << 20u) | (st.x << 30u) | (st.y << 31u),
-               qh.x | (qh.y << 10u) | (qh.z << 20u) | (st.z << 30u));
+  return uvec4(key, segment, ql.x | (ql.y << 10u) | (ql.z << 20u),
+               qh.x | (qh.y << 10u) | (qh.z << 20u));
 }
 uvec3 entryBoxLow(uvec4 e) { return (uvec3(e.z) >> uvec3(0u, 10u, 20u)) & 1023u; }
 uvec3 entryBoxHigh(uvec4 e) { return (uvec3(e.w) >> uvec3(0u, 10u, 20u)) & 1023u; }
-uint entryStarts(uvec4 e) { return (e.z >> 30u) | ((e.w >> 28u) & 4u); }
 
 // The cells of a segment's padded box, [lo, hi] per axis. False when it has none: a position
 // that is not finite (the comparison fails for NaN too), or a box over CSM_MAX_SEGMENT_CELLS cells (a

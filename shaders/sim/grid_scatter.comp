@@ -1,8 +1,8 @@
 // Collision pass, grid build 3/3 (counting sort: scatter), one invocation per segment: an
 // entry in each of its cells' buckets, all that the candidate pass tests a candidate on in
-// one texel (packEntry: the cell's key, the segment, its box within the cell and where the
-// box starts). Counting each bucket back down returns the counts to zero for the next frame
-// (no clear needed), also when the entries do not fit: then nothing is written past the
+// one texel (packEntry: the cell's key, the segment, and the padded box of its piece in the
+// cell, within the cell). Counting each bucket back down returns the counts to zero for the
+// next frame (no clear needed), also when the entries do not fit: then nothing is written past the
 // capacity and the candidate pass skips the frame (GpuSolver grows the buffer when it sees the
 // total). The order within a bucket depends on the schedule; nothing downstream depends on it
 // (candidate_lists.comp sorts each segment's list).
@@ -25,15 +25,17 @@ void main() {
   vec3 p0 = texelFetch(posTex, int(i)).xyz, p1 = texelFetch(posTex, int(i + 1u)).xyz;
   ivec3 lo, hi;
   if (!segmentCells(p0, p1, lo, hi)) return;
-  vec3 low, high;
-  segmentBox(p0, p1, low, high);
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {
         ivec3 cell = ivec3(x, y, z);
+        vec3 q0, q1;
+        if (!clipToCell(p0, p1, cell, q0, q1)) continue;
+        vec3 low, high;
+        segmentBox(q0, q1, low, high);
         uint key = cellKey(cell);
         uint bucket = bucketOf(key);
         uint slot = gridStart[bucket] + atomicAdd(gridCount[bucket], 0xffffffffu) - 1u;
-        if (slot < P.grid.y) entries[slot] = packEntry(key, i, low, high, cell, equal(cell, lo));
+        if (slot < P.grid.y) entries[slot] = packEntry(key, i, low, high, cell);
       }
 }

@@ -1,9 +1,10 @@
 // Strand contacts, pair scatter (counting sort of the candidate pairs by segment), one
-// invocation per slot of the pair list: a stored pair (a, b) goes to both of its segments'
-// ranges of PAIR_SIDES as each one's candidate (b with the pair's flags and contact distance
-// into a's, a with them into b's; SEGMENT_BASE is the scan of the counts candidates.comp
-// made). Counting each segment back down returns the counts to zero for the
-// next frame. The order within a range depends on the schedule; candidate_lists.comp sorts it.
+// invocation per listed pair (an indirect dispatch, dispatch_size.comp): a stored pair (a, b)
+// goes to both of its segments' ranges of PAIR_SIDES as each one's candidate (b with the
+// pair's flags and contact distance into a's, a with them into b's; SEGMENT_BASE is the scan
+// of the counts candidates.comp made). Counting each segment back down returns the counts to
+// zero for the next frame. The order within a range depends on the schedule;
+// candidate_lists.comp sorts it.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;

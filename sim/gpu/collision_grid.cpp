@@ -156,7 +156,8 @@ void CollisionGrid::findCandidates(StageTimer* timer) {
   passes_.candidates.runIndirect(dispatch_, CSM_DISPATCH_CANDIDATES);
   gl::memoryBarrier(kPassBarrier);
   // Counting sort of the pairs by segment: the same scan over the segments' pair counts, its
-  // buffers bound in the grid's place for the while; scatter, one invocation per list slot.
+  // buffers bound in the grid's place for the while; scatter, one invocation per listed
+  // pair.
   const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
   segmentPairs_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   segmentBase_.bindBase(ssbo, CSM_BIND_GRID_START);
