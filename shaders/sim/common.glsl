@@ -214,18 +214,20 @@ void segmentBox(vec3 p0, vec3 p1, out vec3 lo, out vec3 hi) {
 
 // The part of segment p0-p1 within cell c grown by P.cells.z on every side, [q0, q1]: false
 // when the segment misses it (the cell is in its padded box, but the segment passes farther
-// than P.cells.z from it). A border cell (see cellOf) takes the whole segment.
+// than P.cells.z from it). A border cell (see cellOf) takes the whole segment. `precise`: the
+// count and scatter passes must agree on every cell to the bit (each bucket's count returns
+// to zero), so no compiler may fuse or reorder this arithmetic differently in the two.
 bool clipToCell(vec3 p0, vec3 p1, ivec3 c, out vec3 q0, out vec3 q1) {
   q0 = p0;
   q1 = p1;
   if (any(equal(c, ivec3(-512))) || any(equal(c, ivec3(511)))) return true;
-  vec3 lo = P.origin.xyz + vec3(c) * P.cells.x - P.cells.z;
-  vec3 hi = lo + vec3(P.cells.x + 2.0 * P.cells.z);
-  vec3 d = p1 - p0;
+  precise vec3 lo = P.origin.xyz + vec3(c) * P.cells.x - P.cells.z;
+  precise vec3 hi = lo + vec3(P.cells.x + 2.0 * P.cells.z);
+  precise vec3 d = p1 - p0;
   // Axes along which the segment hardly moves do not clip: the padded box put it in range.
   bvec3 still = lessThan(abs(d), vec3(1e-12));
-  vec3 inv = 1.0 / mix(d, vec3(1.0), still);
-  vec3 ta = (lo - p0) * inv, tb = (hi - p0) * inv;
+  precise vec3 inv = 1.0 / mix(d, vec3(1.0), still);
+  precise vec3 ta = (lo - p0) * inv, tb = (hi - p0) * inv;
   vec3 tNear = mix(min(ta, tb), vec3(-1e30), still), tFar = mix(max(ta, tb), vec3(1e30), still);
   float t0 = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
   float t1 = min(min(tFar.x, tFar.y), min(tFar.z, 1.0));

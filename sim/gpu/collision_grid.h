@@ -41,8 +41,9 @@ class CollisionGrid {
   void reset(size_t particles, uint32_t segments, double meanSegment);
   // Sizes the entry buffer for the boxes of `position` (a state the coming frames start near,
   // the head at `origin`) with candidate distance `reach`, and half again, and the pair list
-  // as large: they then rarely need to grow while the hair moves (a frame over them has no
-  // strand contacts, says so in the counters, and grows them when a sample reads those).
+  // as large. Every cell of a box counts, so this bounds the clipped entries the grid makes
+  // (Fig. 1: ~1.5x them): they then rarely need to grow while the hair moves (a frame over them has
+  // no strand contacts, says so in the counters, and grows them when a sample reads those).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
   // Before a frame's writeParams: the lists swap halves (this frame's becomes last frame's);
