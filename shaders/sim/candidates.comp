@@ -24,9 +24,10 @@
 //     overlap (a bit per candidate that may touch);
 //  2. the flagged ones: the gap rule, the closest points of the two segments and the owner
 //     (a bit per pair within the candidate distance owned here);
-//  3. the pairs within it: their contact distance (2r, or less where the groom put the two
-//     closer at rest: the rest positions are in the head frame, which moves rigidly) and
-//     flags; measured and listed.
+//  3. the pairs within it: their closest points again (the same call on the same operands:
+//     the same bits; cheaper than keeping s and t per candidate), their contact distance (2r,
+//     or less where the groom put the two closer at rest: the rest positions are in the head
+//     frame, which moves rigidly) and flags; measured and listed.
 // Measured on Fig. 1 (llvmpipe): testing every entry of the bucket (and keeping the pairs
 // whose other segment is higher) did twice the phase 1 work, a slab test of one segment
 // against the other's box before the closest points cost more than it saved, and entries

@@ -198,12 +198,13 @@ bool crossed(uint before, uint now) {
 // Fig. 1's 9 mm cells): a cell's 30-bit key is then exact, and a far-away segment of an
 // exploding simulation shares the border cells instead of overflowing (slower, still exact:
 // a border cell takes the whole segment, and the owner of a pair out there is a border cell).
+const int kCellLow = -512, kCellHigh = 511;  // the clamp; 10 bits of a key per axis
 ivec3 cellOf(vec3 p) {
-  return ivec3(clamp(floor((p - P.origin.xyz) * P.cells.y), -512.0, 511.0));
+  return ivec3(clamp(floor((p - P.origin.xyz) * P.cells.y), float(kCellLow), float(kCellHigh)));
 }
 
 uint cellKey(ivec3 c) {
-  uvec3 u = uvec3(c + 512);
+  uvec3 u = uvec3(c - kCellLow);
   return u.x | (u.y << 10u) | (u.z << 20u);
 }
 
@@ -220,7 +221,7 @@ void segmentBox(vec3 p0, vec3 p1, out vec3 lo, out vec3 hi) {
 bool clipToCell(vec3 p0, vec3 p1, ivec3 c, out vec3 q0, out vec3 q1) {
   q0 = p0;
   q1 = p1;
-  if (any(equal(c, ivec3(-512))) || any(equal(c, ivec3(511)))) return true;
+  if (any(equal(c, ivec3(kCellLow))) || any(equal(c, ivec3(kCellHigh)))) return true;
   precise vec3 lo = P.origin.xyz + vec3(c) * P.cells.x - P.cells.z;
   precise vec3 hi = lo + vec3(P.cells.x + 2.0 * P.cells.z);
   precise vec3 d = p1 - p0;

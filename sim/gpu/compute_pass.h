@@ -25,7 +25,8 @@ class ComputePass {
              std::string* error);
 
   // Enough groups for `items` invocations (none for 0); beyond GL 4.3's 65535 groups per
-  // dimension, a 2D grid of groups that globalIndex() in common.glsl flattens.
+  // dimension, a 2D grid of groups that globalIndex() in common.glsl flattens (the same
+  // layout as dispatch_size.comp writes for runIndirect).
   void run(uint32_t items) const;
   // As many groups as slot `slot` (a CSM_DISPATCH_*) of `args` says: a count of items only the
   // GPU knows, sized there by dispatch_size.comp (after a Command barrier).
