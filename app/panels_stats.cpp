@@ -121,9 +121,9 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "A frame whose candidate pairs do not fit the GPU's buffers applies no strand\n"
-            "contacts and counts no crossings; the buffers grow when that frame's sample is\n"
-            "read (up to 2^26 pairs), so the frames after it fit. Counted since the\n"
-            "simulation was last reset.");
+            "contacts and counts no crossings; the buffers grow to what it needed as the\n"
+            "next frame begins (up to 2^26 pairs), so the frames after it fit. Counted\n"
+            "since the simulation was last reset.");
     }
     if (contacts.oversize > 0)
       ImGui::TextColored(warn, "%llu segments too long for the grid's cells: no contacts for them",

@@ -39,8 +39,8 @@ struct ContactStats {
   // distance: they may cross where they crossed at rest).
   uint64_t crossingsClose = 0;
   // Frames since the solver's reset whose candidates did not fit its buffers (a running
-  // count: those frames had no strand contacts; the GPU solver grows the buffers once a sample
-  // reads what they needed), and segments of this list too long for the grid's cells (in no
+  // count: those frames had no strand contacts; the GPU solver grows the buffers to what they
+  // needed as the next frame begins), and segments of this list too long for the grid's cells (in no
   // cell: no contacts for them). Always 0 on the CPU reference, which has no fixed buffers.
   uint64_t overflows = 0;
   uint64_t oversize = 0;

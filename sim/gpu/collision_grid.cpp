@@ -14,6 +14,10 @@
 namespace csm::gpu {
 namespace {
 
+// The counters a search copies for the next one's growth: up to the pairs it needed.
+constexpr uint32_t kSearchCounters = CSM_COUNTER_PAIR_LIST + 1;
+static_assert(CSM_COUNTER_ENTRIES < kSearchCounters);
+
 // Boxes are padded by half the candidate distance (2r + margin) and 1%, so that a pair the
 // candidate pass finds closer than that in float always has overlapping boxes.
 constexpr float kPadSlack = 1.01f;
@@ -70,6 +74,11 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<uint32_t>(segmentBase_, segmentScan_ + 4);
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
   view(gridStartTex_, gridStart_, GL_R32UI);
+  searchPending_ = false;
+  if (searchCounters_.id() == 0) {
+    searchCounters_ = gl::Buffer();
+    searchCounters_.setData(kSearchCounters * sizeof(uint32_t), nullptr, GL_STREAM_READ);
+  }
   entryCapacity_ = 0;  // reserveFor sizes the entry buffer and the pair list
   pairListCapacity_ = 0;
 }
@@ -103,6 +112,7 @@ void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uin
 }
 
 void CollisionGrid::beginFrame(bool contacts) {
+  growFromLastSearch();
   if (contacts && !lastFrameListed_) {
     // No last list: nothing to count crossings against.
     candidateRange_.clearToZero();
@@ -172,6 +182,20 @@ void CollisionGrid::findCandidates(StageTimer* timer) {
   gl::memoryBarrier(kPassBarrier);
   passes_.lists.run(particles);
   gl::memoryBarrier(kPassBarrier);
+  // What this search needed, for the next one's beginFrame.
+  gl::memoryBarrier(gl::Barrier::BufferUpdate);
+  counters_.copyTo(searchCounters_, 0, 0, kSearchCounters * sizeof(uint32_t));
+  searchEnd_ = gl::Fence::insert();
+  searchPending_ = true;
+}
+
+void CollisionGrid::growFromLastSearch() {
+  if (!searchPending_) return;
+  searchPending_ = false;
+  searchEnd_.wait();
+  uint32_t c[kSearchCounters];
+  searchCounters_.read(0, sizeof c, c);
+  countersSeen(c);
 }
 
 void CollisionGrid::dispatchFor(uint32_t counter, uint32_t capacity, uint32_t groupSize,

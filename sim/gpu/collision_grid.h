@@ -6,10 +6,12 @@
 // its sorted list. The passes over entries and pairs are dispatched indirectly, sized on the
 // GPU by what the frame has (dispatch_size.comp): a generous capacity costs memory, not time. Every
 // substep, contact_solve.comp: each segment's corrections, which strain_limit.comp applies. The
-// grid's and the pair list's capacities follow what the samples' counters report they needed; a
-// frame over either has no strand contacts and says so in the counters (entries or pairs needed >
-// capacity), and the running count of such frames (CSM_COUNTER_OVERFLOWS, ContactStats::overflows)
-// reaches the metrics and the panel.
+// grid's and the pair list's capacities follow what the last search needed: its counters are
+// copied behind a fence as it ends and read as the next one begins (beginFrame), so the buffers
+// grow at the same search whatever the GPU's timing and whoever reads the samples (the
+// simulation stays deterministic). A search over either capacity has no strand contacts and says
+// so in the counters (entries or pairs needed > capacity), and the running count of such
+// searches (CSM_COUNTER_OVERFLOWS, ContactStats::overflows) reaches the metrics and the panel.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +25,7 @@
 
 #include "gl/buffer.h"
 #include "gl/buffer_texture.h"
+#include "gl/fence.h"
 #include "sim/gpu/compute_pass.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/stage_timer.h"
@@ -46,7 +49,9 @@ class CollisionGrid {
   // no strand contacts, says so in the counters, and grows them when a sample reads those).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
-  // Before a frame's writeParams: the lists swap halves (this frame's becomes last frame's);
+  // Before a frame's writeParams: the buffers grow to what the last search needed (waiting for
+  // it to end on the GPU, which it has unless the CPU runs far ahead); the lists swap halves
+  // (this frame's becomes last frame's);
   // `contacts` says whether this frame builds them (when the last one did not, there is no
   // last list to count crossings against; when this one does not, the last one's measures
   // are cleared, once, on the GPU).
@@ -60,7 +65,8 @@ class CollisionGrid {
   // One substep's corrections (the timer's stage is the caller's).
   void solve(unsigned substep);
   // Grows the entry buffer or the pair list when `counters` (read back) say they did not fit;
-  // true if either grew.
+  // true if either grew. beginFrame calls it with the last search's counters; a tool that reads
+  // them at once may too (GpuSolver::detectContacts).
   bool countersSeen(const uint32_t* counters);
 
   const gl::Buffer& counters() const { return counters_; }
@@ -78,6 +84,8 @@ class CollisionGrid {
  private:
   void growEntries(uint64_t needed);
   void growPairList(uint64_t needed);
+  // The last search's counters, copied when it ended: grows the buffers to what it needed.
+  void growFromLastSearch();
   // Sizes dispatch slot `slot` (CSM_DISPATCH_*) for the items counter `counter` holds (at
   // most `capacity`), in groups of `groupSize`.
   void dispatchFor(uint32_t counter, uint32_t capacity, uint32_t groupSize, uint32_t slot);
@@ -97,6 +105,7 @@ class CollisionGrid {
   uint32_t half_ = 0;              // this frame's half of the candidate lists
   bool lastFrameListed_ = false;   // whether the other half holds last frame's lists (and the
                                    // counters its measures)
+  bool searchPending_ = false;     // searchCounters_ holds a search's, not yet read
 
   struct Passes {
     ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates,
@@ -106,7 +115,8 @@ class CollisionGrid {
       scanBlockSums_{gl::NoCreate}, entries_{gl::NoCreate}, counters_{gl::NoCreate},
       segmentPairs_{gl::NoCreate}, segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate},
       pairList_{gl::NoCreate}, pairSides_{gl::NoCreate}, candidates_{gl::NoCreate},
-      candidateRange_{gl::NoCreate}, dispatch_{gl::NoCreate};
+      candidateRange_{gl::NoCreate}, dispatch_{gl::NoCreate}, searchCounters_{gl::NoCreate};
+  gl::Fence searchEnd_;  // after the copy to searchCounters_
   gl::BufferTexture entryTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};
 };
 

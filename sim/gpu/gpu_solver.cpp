@@ -24,7 +24,6 @@ constexpr int kMaxNStep = 8;
 GpuSolver::GpuSolver(bool cpuClock)
     : timer_(cpuClock), samples_([this](const uint32_t* counters) {
         sampledContacts_ = gpu::contactStatsOf(counters);
-        grid_.countersSeen(counters);
       }) {}
 
 std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
@@ -276,7 +275,7 @@ void GpuSolver::detectContacts() {
   timer_.beginFrame();
   listCandidatesNow(&timer_);
   // A tool asks for this pass's candidates: when the grid did not fit, grow it and run again
-  // (stepFrame instead grows it when a sample sees the total).
+  // (stepFrame instead grows it as the next frame begins).
   if (grid_.countersSeen(grid_.readCounters().data())) {
     writeParams({head_}, {head_});
     bindAll();
@@ -310,9 +309,7 @@ void GpuSolver::writeState(const std::vector<glm::vec4>& positions,
 }
 
 ContactStats GpuSolver::readContactStats() {
-  const std::vector<uint32_t> c = grid_.readCounters();
-  grid_.countersSeen(c.data());
-  return gpu::contactStatsOf(c.data());
+  return gpu::contactStatsOf(grid_.readCounters().data());
 }
 
 unsigned GpuSolver::lastSubstepSpheres() const {

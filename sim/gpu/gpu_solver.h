@@ -61,7 +61,8 @@ class GpuSolver final : public Solver {
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
   // --- For tests and tools (these read back at once). ---
-  // The measures of the last candidate list; also grows the grid when it did not fit.
+  // The measures of the last candidate list (reading them changes nothing: the grid grows as
+  // the next frame begins).
   ContactStats readContactStats();
   // Builds the candidate list of the current state now (stepFrame does it at the start of
   // each frame with strand contacts); the next frame builds its own.

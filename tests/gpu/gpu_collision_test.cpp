@@ -92,6 +92,22 @@ std::unique_ptr<GpuSolver> makeGpuSolver() {
   return gpu;
 }
 
+// A bundle of 15 x 15 parallel strands 0.3 mm apart along z, 6 particles 4 mm apart; the
+// roots staggered along z by up to `stagger` mm (from strand to strand), so that strands side
+// by side sag differently under gravity across them.
+Groom packedBundle(int stagger) {
+  Groom g;
+  for (int i = 0; i < 15; ++i)
+    for (int j = 0; j < 15; ++j) {
+      const float z0 = 0.001f * float((i + 2 * j) % (stagger + 1));
+      std::vector<glm::vec3> points;
+      for (int k = 0; k < 6; ++k)
+        points.push_back(glm::vec3(0.0003f * float(i), 0.0003f * float(j), z0 + 0.004f * float(k)));
+      g.addStrand(points);
+    }
+  return g;
+}
+
 }  // namespace
 
 TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collision]") {
@@ -295,14 +311,7 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
   // as one over capacity); the next one, after a sample reads the counters, fits and lists
   // them.
   auto gpu = makeGpuSolver();
-  Groom g;
-  for (int i = 0; i < 15; ++i)
-    for (int j = 0; j < 15; ++j) {
-      std::vector<glm::vec3> points;
-      for (int k = 0; k < 6; ++k)
-        points.push_back(glm::vec3(0.0003f * float(i), 0.0003f * float(j), 0.004f * float(k)));
-      g.addStrand(points);
-    }
+  const Groom g = packedBundle(0);
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = 0.0005f;
@@ -336,6 +345,49 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
   CHECK(gpu->gridStats().pairCapacity == fits.pairCapacity);
   gpu->reset(g, c, Pose{});
   CHECK(gpu->readContactStats().overflows == 0);
+}
+
+TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counters",
+          "[gpu][collision]") {
+  // The packed bundle overflows its pair list on the first frame. One solver reads every
+  // frame's sample at once (as a headless run writing frames does), the other reads nothing
+  // (as a viewer whose samples arrive late): both grow as the second frame begins and end
+  // bit-identical. Growing when a sample's read-back arrived made the frame of growth, and so
+  // the motion, depend on who read and when.
+  const Groom g = packedBundle(3);
+  Config c;
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.radius = 0.0005f;
+  c.sim.gravity = glm::vec3(0.0f, -9.81f, 0.0f);
+  c.sim.rootLength = 0.004f;  // the head holds the first segment; the rest sags
+  c.head.spheres.clear();
+  auto eager = makeGpuSolver(), never = makeGpuSolver();
+  eager->reset(g, c, Pose{});
+  never->reset(g, c, Pose{});
+  const uint32_t capacity = eager->gridStats().pairCapacity;
+  for (long f = 0; f < 4; ++f) {
+    eager->stepFrame(Pose{}, Pose{});
+    eager->requestSample(f);
+    while (eager->takeSample(true)) {
+    }
+    never->stepFrame(Pose{}, Pose{});
+  }
+  std::vector<glm::vec4> a, b;
+  eager->readPositions(a);
+  never->readPositions(b);
+  CHECK(a == b);
+  for (GpuSolver* s : {eager.get(), never.get()}) {
+    CHECK(s->readContactStats().overflows == 1);
+    CHECK(s->gridStats().pairCapacity > capacity);
+  }
+  // The contacts change this motion, so a frame without them would show.
+  auto headOnly = makeGpuSolver();
+  c.collision.mode = CollisionMode::Head;
+  headOnly->reset(g, c, Pose{});
+  for (int f = 0; f < 4; ++f) headOnly->stepFrame(Pose{}, Pose{});
+  std::vector<glm::vec4> h;
+  headOnly->readPositions(h);
+  CHECK(h != a);
 }
 
 TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision]") {
