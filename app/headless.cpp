@@ -130,10 +130,11 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                    options.outDir.c_str());
   }
   // Frames whose hair-hair lists did not fit the solver's buffers: said at the end, never silent.
-  uint64_t listOverflows = 0;
+  uint64_t listOverflows = 0, crowded = 0;
   auto takeSamples = [&] {
     for (const FrameSample& sample : driver.takeSamples()) {
       listOverflows = std::max(listOverflows, sample.contacts.overflows);  // a running count
+      crowded = std::max(crowded, sample.contacts.crowded);
       if (metrics) recorder.addSample(sample);
     }
   };
@@ -203,6 +204,12 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                  "csmhair: warning: the candidate pairs of %llu frames did not fit the solver's "
                  "buffers: those frames had no strand contacts (and counted no crossings)\n",
                  (unsigned long long)listOverflows);
+  if (crowded > 0)
+    std::fprintf(stderr,
+                 "csmhair: warning: up to %llu segments a frame were in too dense a crowd for "
+                 "the strand contacts (over 2,048 candidate pairs, or a grid cell the search "
+                 "could not finish): some or all of their contacts were missing\n",
+                 (unsigned long long)crowded);
   if (!options.exportHair.empty()) {
     // The final strands in world space, as a cyHair file for other tools.
     sim.solver().readPositions(x);

@@ -124,6 +124,7 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
     // grid's cells.
     a["hair_list_overflows"] = contactSum_.overflows;
     a["hair_oversize_segments_max"] = contactSum_.oversize;
+    a["hair_crowded_segments_max"] = contactSum_.crowded;
     if (restPenetrations_ >= 0) a["hair_penetrations_rest"] = restPenetrations_;
   }
   return j;

@@ -128,6 +128,16 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
     if (contacts.oversize > 0)
       ImGui::TextColored(warn, "%llu segments too long for the grid's cells: no contacts for them",
                          (unsigned long long)contacts.oversize);
+    if (contacts.crowded > 0) {
+      ImGui::TextColored(warn, "%llu segments in a crowd: some or all of their contacts missing",
+                         (unsigned long long)contacts.crowded);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "More than 2,048 candidate pairs for one segment (it is then in no pair this\n"
+            "frame), or a grid cell so full that the driver cut the search short. Hair does\n"
+            "not pack that densely: the strands are too many for this collision radius, or\n"
+            "the simulation is exploding.");
+    }
   }
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);

@@ -48,6 +48,7 @@ void ContactStats::add(const ContactStats& o) {
   crossingsClose += o.crossingsClose;
   overflows = std::max(overflows, o.overflows);  // a running count: the latest
   oversize = std::max(oversize, o.oversize);
+  crowded = std::max(crowded, o.crowded);
   maxDepth = std::max(maxDepth, o.maxDepth);
   for (int i = 0; i < kDepthBins; ++i) depth[i] += o.depth[i];
 }

@@ -40,14 +40,18 @@ struct ContactStats {
   uint64_t crossingsClose = 0;
   // Frames since the solver's reset whose candidates did not fit its buffers (a running
   // count: those frames had no strand contacts; the GPU solver grows the buffers to what they
-  // needed as the next frame begins), and segments of this list too long for the grid's cells (in no
-  // cell: no contacts for them). Always 0 on the CPU reference, which has no fixed buffers.
+  // needed as the next frame begins), and segments of this list too long for the grid's cells (in
+  // no cell: no contacts for them). Always 0 on the CPU reference, which has no fixed buffers.
   uint64_t overflows = 0;
   uint64_t oversize = 0;
+  // Segments of this list left without some or all of their candidates in a crowd: more than
+  // CSM_MAX_CANDIDATES (2,048) candidates, or a grid cell so full that the driver cut the
+  // search's loops short (GPU only; shaders/sim/bindings.glsl).
+  uint64_t crowded = 0;
   float maxDepth = 0.0f;  // deepest penetration, in r
   std::array<uint32_t, kDepthBins> depth{};
   // Sums another list's counts and depths into these (the deepest, the running count of
-  // overflows and the oversize segments are the larger).
+  // overflows, the oversize and the crowded segments are the larger).
   void add(const ContactStats& o);
   // Penetration depth: how far a pair is inside its contact distance (2r, or the rest
   // distance of a pair the groom put closer), in r. The q-quantile (0..1) over the pairs

@@ -56,7 +56,8 @@
 #define CSM_BIND_CANDIDATE_RANGE \
   20  // uvec2 per particle, twice (this frame's half and the last
       // frame's, P.grid.w says which): where each segment's candidates
-      // start in CANDIDATES, and how many
+      // start in CANDIDATES (LAST_CANDIDATES for last frame's), and how
+      // many
 #define CSM_BIND_PAIR_SIDES \
   21  // uvec2 x 2 per candidate pair: each segment's candidates (as in
       // CANDIDATES), from its SEGMENT_BASE on, in no order
@@ -64,10 +65,11 @@
   27  // float per particle: its inverse mass as the strand contacts
       // see it, 0 when the head holds it (csm::contactInverseMass)
 #define CSM_BIND_CANDIDATES \
-  26  // uvec2 x 2 per slot of the pair list, twice (halves as
-      // CANDIDATE_RANGE): each segment's candidates in ascending order,
-      // x the other segment | flags << 28 (sim/contacts.h), y the
-      // contact distance (float bits)
+  26  // uvec2 x 2 per slot of the pair list: this frame's lists, each
+      // segment's candidates in ascending order, x the other segment |
+      // flags << 28 (sim/contacts.h), y the contact distance (float bits)
+#define CSM_BIND_LAST_CANDIDATES \
+  25  // the same, last frame's (the two buffers swap each frame)
 #define CSM_BIND_VOLUME_SUMS \
   28  // int x4 per node of the volume grid: strand length (2^-24 m), length
       // times velocity (2^-24 m^2/s), x y z (sim/volume.h)
@@ -100,6 +102,8 @@
 #define CSM_COUNTER_OVERSIZE 4
 #define CSM_COUNTER_CANDIDATES 5  // pairs within 2r + margin
 #define CSM_COUNTER_CROSSINGS 6   // pairs whose orientation flipped since the last frame
+#define CSM_COUNTER_CROWDED 7     // segments left without candidates in a crowd (more than
+                                  // CSM_MAX_CANDIDATES, or a grid cell too full to test)
 #define CSM_COUNTER_MAX_DEPTH 8   // deepest penetration in r (float bits: positive floats
                                   // order as their bits)
 #define CSM_COUNTER_PAIR_LIST 9   // candidate pairs the pair list needed (over its capacity:
@@ -120,6 +124,11 @@
 // Candidate lists (sim/contacts.h).
 #define CSM_MAX_SEGMENT_CELLS 64   // cells a segment may enter (see segmentCells)
 #define CSM_CANDIDATE_SHIFT 28     // the flags' place in a candidate
+// Candidates a segment's list may hold. A segment with more (in a crowd no hair has) is in no
+// pair this frame, on either side, and counted (CSM_COUNTER_CROWDED): the list pass then stays
+// within the loop iterations a driver allows one invocation (llvmpipe cuts every loop of an
+// invocation short, silently, after 65,535 in all: its LP_MAX_TGSI_LOOP_ITERATIONS).
+#define CSM_MAX_CANDIDATES 2048
 
 // Work group sizes.
 #define CSM_PARTICLE_GROUP 128  // per-particle and per-segment passes

@@ -1,9 +1,15 @@
 // Strand contacts, list pass (DESIGN.md section 1.7), one invocation per segment: sorts the
 // segment's candidates (pair_scatter.comp left them, with their flags and contact distances,
-// in its range in no order) into its list, the same range of this frame's half of the lists,
+// in its range in no order) into its list, the same range of this frame's lists (CANDIDATES),
 // in ascending order of the other segment; and counts crossings: pairs, from the lower
-// segment's side, whose orientation flipped against last frame's list (csm::findCandidates
-// does the same on the CPU). Every candidate has its place: no list is cut short.
+// segment's side, whose orientation flipped against last frame's list (LAST_CANDIDATES;
+// csm::findCandidates does the same on the CPU). Every candidate has its place: no list is
+// cut short. The sort is a heapsort: its loops take at most n (1 + 2 log2 n) iterations
+// whatever the order the scatter left (an insertion sort takes up to n^2 / 2, past the 65,535
+// that llvmpipe allows an invocation at ~360 candidates: the lists of 30,000 strands of Fig. 1
+// came out cut short, differently from run to run). A segment over CSM_MAX_CANDIDATES lists
+// nothing (pair_scatter.comp left its pairs out on both sides) and is counted as crowded, as
+// is one whose loops still ended early.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -13,52 +19,91 @@ layout(binding = CSM_TEX_GRID_START) uniform usamplerBuffer gridStartTex;
 layout(std430, binding = CSM_BIND_SEGMENT_BASE) readonly buffer SegmentBase { uint segBase[]; };
 layout(std430, binding = CSM_BIND_PAIR_SIDES) readonly buffer PairSides { uvec2 pairSides[]; };
 layout(std430, binding = CSM_BIND_CANDIDATES) buffer Candidates { uvec2 candidates[]; };
+// Not declared readonly: so declared, llvmpipe (Mesa 22.3.6) matched fewer of last frame's
+// pairs (1,164 of 1,285 on the GPU-against-CPU test scene) and counted fewer crossings than the
+// CPU reference.
+layout(std430, binding = CSM_BIND_LAST_CANDIDATES) buffer LastCandidates {
+  uvec2 lastCandidates[];
+};
 layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) buffer CandidateRange {
   uvec2 candidateRange[];
 };
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
 
+uint keyOf(uvec2 c) { return c.x & kIndex; }
+
+// Max-heap on candidates[base, base + end): moves the candidate at `root` down to its place.
+void siftDown(uint base, uint root, uint end) {
+  uvec2 v = candidates[base + root];
+  uint i = root;
+  for (uint child = 2u * i + 1u; child < end; child = 2u * i + 1u) {
+    uvec2 c = candidates[base + child];
+    if (child + 1u < end) {
+      uvec2 right = candidates[base + child + 1u];
+      if (keyOf(right) > keyOf(c)) {
+        c = right;
+        ++child;
+      }
+    }
+    if (keyOf(c) <= keyOf(v)) break;
+    candidates[base + i] = c;
+    i = child;
+  }
+  candidates[base + i] = v;
+}
+
 void main() {
   uint a = globalIndex();
   if (a >= P.counts.x) return;
   uint here = P.grid.w * P.counts.x + a, before = (1u - P.grid.w) * P.counts.x + a;
-  // This frame's half of the lists: two sides per slot of the pair list.
-  uint base = P.grid.w * 2u * P.grid.z + segBase[a];
+  uint base = segBase[a];
   uint n = 0u;
   // No candidates when the grid or the pair list did not fit this frame; the counters say so
   // (and keep the count of such frames).
   uint total = texelFetch(gridStartTex, int(P.grid.x + 1u)).x;
   bool fits = total <= P.grid.y && counters[CSM_COUNTER_PAIR_LIST] <= P.grid.z;
   if (a == 0u && !fits) ++counters[CSM_COUNTER_OVERFLOWS];
-  if (fits) {
-    n = segBase[a + 1u] - segBase[a];
-    for (uint k = 0u; k < n; ++k) {
-      uvec2 c = pairSides[segBase[a] + k];
-      uint i = k;
-      while (i > 0u && (candidates[base + i - 1u].x & kIndex) > (c.x & kIndex)) {
-        candidates[base + i] = candidates[base + i - 1u];
-        --i;
-      }
-      candidates[base + i] = c;
+  uint sides = segBase[a + 1u] - segBase[a];
+  bool crowded = fits && sides > uint(CSM_MAX_CANDIDATES);
+  if (fits && !crowded) {
+    for (uint k = 0u; k < sides; ++k) {
+      uvec2 c = pairSides[base + k];
+      if (c.x != kNoCandidate) candidates[base + n++] = c;
+    }
+    for (uint root = n / 2u; root > 0u; --root) siftDown(base, root - 1u, n);
+    for (uint end = n; end > 1u; --end) {
+      uvec2 top = candidates[base];
+      candidates[base] = candidates[base + end - 1u];
+      candidates[base + end - 1u] = top;
+      siftDown(base, 0u, end - 1u);
     }
   }
-  candidateRange[here] = uvec2(base, n);
   // Crossings: both lists are in ascending order.
   uint crossings = 0u, close = 0u;
   uvec2 last = candidateRange[before];
-  uint j = 0u;
-  for (uint k = 0u; k < n; ++k) {
+  uint j = 0u, k = 0u, previous = 0u;
+  bool sorted = true;
+  for (; k < n; ++k) {
     uvec2 c = candidates[base + k];
     uint b = c.x & kIndex;
+    if (k > 0u && b <= previous) sorted = false;
+    previous = b;
     if (b < a) continue;
-    while (j < last.y && (candidates[last.x + j].x & kIndex) < b) ++j;
-    if (j < last.y && (candidates[last.x + j].x & kIndex) == b &&
-        crossed(candidates[last.x + j].x >> uint(CSM_CANDIDATE_SHIFT),
+    while (j < last.y && (lastCandidates[last.x + j].x & kIndex) < b) ++j;
+    if (j < last.y && (lastCandidates[last.x + j].x & kIndex) == b &&
+        crossed(lastCandidates[last.x + j].x >> uint(CSM_CANDIDATE_SHIFT),
                 c.x >> uint(CSM_CANDIDATE_SHIFT))) {
       ++crossings;
       if (uintBitsToFloat(c.y) < 2.0 * P.stepping.z) ++close;  // a rest distance
     }
   }
+  // A list the driver's loop limit cut short: counted, and nothing listed.
+  if (k < n || !sorted) {
+    crowded = true;
+    n = crossings = close = 0u;
+  }
+  candidateRange[here] = uvec2(base, n);
+  if (crowded) atomicAdd(counters[CSM_COUNTER_CROWDED], 1u);
   if (crossings > 0u) atomicAdd(counters[CSM_COUNTER_CROSSINGS], crossings);
   if (close > 0u) atomicAdd(counters[CSM_COUNTER_CROSSINGS_CLOSE], close);
 }

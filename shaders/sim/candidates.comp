@@ -35,6 +35,9 @@
 // the candidates per entry and a fifth more overlaps than the boxes of the pieces in a cell.
 // When the grid did not fit its buffers this frame (see grid_scatter.comp), no entry runs and
 // every segment's list is empty: the frame has no strand contacts, and the counters say so.
+// An entry whose loops ended early (a cell so full that the driver's loop limit, 65,535
+// iterations an invocation on llvmpipe, cut them short) is counted as crowded: it may have
+// missed pairs.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_CONTACT_GROUP) in;
@@ -92,6 +95,7 @@ void main() {
   barrier();
   uint pairsHere = 0u, penetrationsHere = 0u, candidatesHere = 0u;
   float deepest = 0.0;
+  bool cut = false;  // the loops ended early (the driver's loop limit)
   uint total = texelFetch(gridStartTex, int(P.grid.x + 1u)).x;
   if (e < total && total <= P.grid.y) {
     uvec4 me = texelFetch(entryTex, int(e));
@@ -104,16 +108,19 @@ void main() {
     float r = P.stepping.z, twoR = 2.0 * r;
     float reach = P.contact.x;  // 2r + margin
     uint hi = texelFetch(gridStartTex, int(bucketOf(key) + 1u)).x;
-    for (uint base = e + 1u; base < hi; base += kChunk) {
+    uint base = e + 1u;
+    for (; base < hi; base += kChunk) {
       uint n = min(kChunk, hi - base);
       // Phase 1.
       uvec4 maybe = uvec4(0u);
-      for (uint c = 0u; c < n; ++c) {
+      uint c = 0u;
+      for (; c < n; ++c) {
         uvec4 cand = texelFetch(entryTex, int(base + c));
         if (cand.x == key && all(lessThanEqual(lowA, entryBoxHigh(cand))) &&
             all(lessThanEqual(entryBoxLow(cand), highA)))
           maybe[c >> 5u] |= 1u << (c & 31u);
       }
+      if (c < n) cut = true;
       // Phase 2.
       uvec4 near = uvec4(0u);
       while (any(notEqual(maybe, uvec4(0u)))) {
@@ -128,6 +135,7 @@ void main() {
         if (d2 < reach * reach && cellKey(cellOf(middle)) == key)
           near[c >> 5u] |= 1u << (c & 31u);
       }
+      if (any(notEqual(maybe, uvec4(0u)))) cut = true;
       // Phase 3.
       while (any(notEqual(near, uvec4(0u)))) {
         uint other = texelFetch(entryTex, int(base + popLowest(near))).y;
@@ -156,8 +164,11 @@ void main() {
           atomicAdd(segmentPairs[high], 1u);
         }
       }
+      if (any(notEqual(near, uvec4(0u)))) cut = true;
     }
+    if (base < hi) cut = true;
   }
+  if (cut) atomicAdd(counters[CSM_COUNTER_CROWDED], 1u);
   if (pairsHere > 0u) atomicAdd(groupContacts, pairsHere);
   if (penetrationsHere > 0u) atomicAdd(groupPenetrations, penetrationsHere);
   if (candidatesHere > 0u) atomicAdd(groupCandidates, candidatesHere);

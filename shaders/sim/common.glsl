@@ -178,6 +178,8 @@ vec3 contactNormal(vec3 p0, vec3 p1, vec3 q0, vec3 q1, float s, float t, float d
 // A candidate list entry (CSM_BIND_CANDIDATES): the other segment in the low bits, the
 // pair's flags above them.
 const uint kIndex = (1u << uint(CSM_CANDIDATE_SHIFT)) - 1u;
+// A slot of PAIR_SIDES whose pair was left out (pair_scatter.comp): no candidate.
+const uint kNoCandidate = 0xffffffffu;
 
 bool crossed(uint before, uint now) {
   return (before & now & kPairInterior) != 0u && ((before | now) & kPairNear) != 0u &&

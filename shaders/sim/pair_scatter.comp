@@ -4,7 +4,8 @@
 // pair's flags and contact distance into a's, a with them into b's; SEGMENT_BASE is the scan
 // of the counts candidates.comp made). Counting each segment back down returns the counts to
 // zero for the next frame. The order within a range depends on the schedule;
-// candidate_lists.comp sorts it.
+// candidate_lists.comp sorts it. A pair one of whose segments has more than
+// CSM_MAX_CANDIDATES candidates is left out on both sides: its two slots get kNoCandidate.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -20,6 +21,10 @@ void main() {
   if (k >= min(counters[CSM_COUNTER_PAIR_LIST], P.grid.z)) return;
   uvec4 p = pairList[k];
   uint a = p.x, b = p.y & kIndex, flags = p.y & ~kIndex;
-  pairSides[segBase[a] + atomicAdd(segmentPairs[a], 0xffffffffu) - 1u] = p.yz;
-  pairSides[segBase[b] + atomicAdd(segmentPairs[b], 0xffffffffu) - 1u] = uvec2(a | flags, p.z);
+  bool crowded = max(segBase[a + 1u] - segBase[a], segBase[b + 1u] - segBase[b]) >
+                 uint(CSM_MAX_CANDIDATES);
+  pairSides[segBase[a] + atomicAdd(segmentPairs[a], 0xffffffffu) - 1u] =
+      crowded ? uvec2(kNoCandidate) : p.yz;
+  pairSides[segBase[b] + atomicAdd(segmentPairs[b], 0xffffffffu) - 1u] =
+      crowded ? uvec2(kNoCandidate) : uvec2(a | flags, p.z);
 }

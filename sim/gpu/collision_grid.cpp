@@ -38,6 +38,15 @@ uint32_t grownCapacity(uint64_t needed, uint32_t current, uint64_t limit) {
 }  // namespace
 
 bool CollisionGrid::build(std::string* error) {
+  // What one storage block and one buffer texture may hold here (llvmpipe: 128 MiB and 2^27
+  // texels; GL 4.3 guarantees 16 MiB and 2^16 texels). A buffer bound past the first is read
+  // and written as the implementation pleases (llvmpipe: not at all, or not the same way twice).
+  GLint64 block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+  GLint texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texels);
+  storageBytes_ = uint64_t(std::max<GLint64>(block, 0));
+  textureTexels_ = uint64_t(std::max<GLint>(texels, 0));
   return passes_.count.build("sim/grid_count.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scanBlocks.build("sim/scan_blocks.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scanSums.build("sim/scan_sums.comp", CSM_SCAN_GROUP, {}, error) &&
@@ -143,7 +152,8 @@ void CollisionGrid::bind() const {
   dispatch_.bindBase(ssbo, CSM_BIND_DISPATCH);
   segmentPairs_.bindBase(ssbo, CSM_BIND_SEGMENT_PAIRS);
   segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
-  candidates_.bindBase(ssbo, CSM_BIND_CANDIDATES);
+  candidates_[half_].bindBase(ssbo, CSM_BIND_CANDIDATES);
+  candidates_[half_ ^ 1u].bindBase(ssbo, CSM_BIND_LAST_CANDIDATES);
   candidateRange_.bindBase(ssbo, CSM_BIND_CANDIDATE_RANGE);
   entryTex_.bind(CSM_TEX_ENTRIES);
   gridStartTex_.bind(CSM_TEX_GRID_START);
@@ -243,9 +253,22 @@ bool CollisionGrid::countersSeen(const uint32_t* c) {
   return grew;
 }
 
+void CollisionGrid::limitStorage(uint64_t bytes) {
+  storageBytes_ = std::min(storageBytes_, bytes);
+}
+
+uint64_t CollisionGrid::entryLimit() const {
+  // 16 bytes an entry, viewed as one RGBA32UI texel: 2 GiB at most, and what the device holds.
+  return std::min({uint64_t(1) << 27, storageBytes_ / 16, textureTexels_});
+}
+
+uint64_t CollisionGrid::pairLimit() const {
+  // The pair list, the sides and each frame's lists take 16 bytes a pair.
+  return std::min(uint64_t(1) << 27, storageBytes_ / 16);
+}
+
 void CollisionGrid::growEntries(uint64_t needed) {
-  // 16 bytes an entry: 2 GiB at most.
-  const uint32_t want = grownCapacity(needed, entryCapacity_, uint64_t(1) << 27);
+  const uint32_t want = grownCapacity(needed, entryCapacity_, entryLimit());
   if (want == 0) return;
   entryCapacity_ = want;
   zeroed<glm::uvec4>(entries_, entryCapacity_);
@@ -253,14 +276,13 @@ void CollisionGrid::growEntries(uint64_t needed) {
 }
 
 void CollisionGrid::growPairList(uint64_t needed) {
-  // The lists take 32 bytes a pair (and the pair list 16, the sides 16): 2 GiB at most.
-  const uint32_t want = grownCapacity(needed, pairListCapacity_, uint64_t(1) << 26);
+  const uint32_t want = grownCapacity(needed, pairListCapacity_, pairLimit());
   if (want == 0) return;
   pairListCapacity_ = want;
   zeroed<glm::uvec4>(pairList_, pairListCapacity_);
   zeroed<glm::uvec2>(pairSides_, 2 * size_t(pairListCapacity_));
-  // Both halves of the lists, two sides per pair each; last frame's lists are gone.
-  zeroed<glm::uvec2>(candidates_, 4 * size_t(pairListCapacity_));
+  // Both frames' lists, two sides per pair each; last frame's lists are gone.
+  for (gl::Buffer& lists : candidates_) zeroed<glm::uvec2>(lists, 2 * size_t(pairListCapacity_));
   lastFrameListed_ = false;
 }
 
@@ -284,7 +306,7 @@ std::vector<std::vector<std::pair<uint32_t, float>>> CollisionGrid::readCandidat
   const size_t n = particles_, first = size_t(half_) * n;
   const std::vector<glm::uvec2> range = candidateRange_.download<glm::uvec2>(2 * n);
   const std::vector<glm::uvec2> all =
-      candidates_.download<glm::uvec2>(4 * size_t(pairListCapacity_));
+      candidates_[half_].download<glm::uvec2>(2 * size_t(pairListCapacity_));
   std::vector<std::vector<std::pair<uint32_t, float>>> out(n);
   for (size_t i = 0; i < n; ++i)
     for (uint32_t k = 0; k < range[first + i].y; ++k) {
@@ -303,6 +325,7 @@ ContactStats contactStatsOf(const uint32_t* c) {
   s.crossingsClose = c[CSM_COUNTER_CROSSINGS_CLOSE];
   s.overflows = c[CSM_COUNTER_OVERFLOWS];
   s.oversize = c[CSM_COUNTER_OVERSIZE];
+  s.crowded = c[CSM_COUNTER_CROWDED];
   s.maxDepth = std::bit_cast<float>(c[CSM_COUNTER_MAX_DEPTH]);
   static_assert(CSM_DEPTH_BINS == kDepthBins && CSM_DEPTH_BINS_PER_R == kDepthBinsPerR);
   for (int i = 0; i < kDepthBins; ++i) s.depth[i] = c[CSM_COUNTER_DEPTH + i];

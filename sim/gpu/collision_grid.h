@@ -72,6 +72,10 @@ class CollisionGrid {
   const gl::Buffer& counters() const { return counters_; }
   uint32_t entryCapacity() const { return entryCapacity_; }
   uint32_t pairListCapacity() const { return pairListCapacity_; }
+  // Caps every buffer of the grid at `bytes` (as a device whose storage blocks hold no more),
+  // before reset; tests use it to reach the cap with a small scene. A frame that needs more
+  // than the capped buffers hold has no strand contacts and says so, as any frame over them.
+  void limitStorage(uint64_t bytes);
   uint32_t bucketCount() const { return buckets_; }
 
   // --- Read back at once, for tests and tools. ---
@@ -84,6 +88,9 @@ class CollisionGrid {
  private:
   void growEntries(uint64_t needed);
   void growPairList(uint64_t needed);
+  // The most entries and candidate pairs the buffers may take on this device.
+  uint64_t entryLimit() const;
+  uint64_t pairLimit() const;
   // The last search's counters, copied when it ended: grows the buffers to what it needed.
   void growFromLastSearch();
   // Sizes dispatch slot `slot` (CSM_DISPATCH_*) for the items counter `counter` holds (at
@@ -102,7 +109,10 @@ class CollisionGrid {
   uint32_t segmentScan_ = 0;       // counts in the per-segment scan (a power of two)
   uint32_t entryCapacity_ = 0;     // grid entries the entry buffer holds
   uint32_t pairListCapacity_ = 0;  // candidate pairs the pair list holds
-  uint32_t half_ = 0;              // this frame's half of the candidate lists
+  uint32_t half_ = 0;              // which of candidates_ (and of candidateRange_'s halves)
+                                   // holds this frame's lists
+  uint64_t storageBytes_ = 0;      // the most one storage block holds (bytes)
+  uint64_t textureTexels_ = 0;     // the most texels one buffer texture holds
   bool lastFrameListed_ = false;   // whether the other half holds last frame's lists (and the
                                    // counters its measures)
   bool searchPending_ = false;     // searchCounters_ holds a search's, not yet read
@@ -114,9 +124,10 @@ class CollisionGrid {
   gl::Buffer correction_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
       scanBlockSums_{gl::NoCreate}, entries_{gl::NoCreate}, counters_{gl::NoCreate},
       segmentPairs_{gl::NoCreate}, segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate},
-      pairList_{gl::NoCreate}, pairSides_{gl::NoCreate}, candidates_{gl::NoCreate},
-      candidateRange_{gl::NoCreate}, dispatch_{gl::NoCreate}, searchCounters_{gl::NoCreate};
+      pairList_{gl::NoCreate}, pairSides_{gl::NoCreate}, candidateRange_{gl::NoCreate},
+      dispatch_{gl::NoCreate}, searchCounters_{gl::NoCreate};
   gl::Fence searchEnd_;  // after the copy to searchCounters_
+  gl::Buffer candidates_[2] = {gl::Buffer(gl::NoCreate), gl::Buffer(gl::NoCreate)};
   gl::BufferTexture entryTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};
 };
 

@@ -67,6 +67,9 @@ class GpuSolver final : public Solver {
   // Builds the candidate list of the current state now (stepFrame does it at the start of
   // each frame with strand contacts); the next frame builds its own.
   void detectContacts();
+  // Caps the collision grid's buffers at `bytes` each, as a device whose storage blocks hold
+  // no more (CollisionGrid::limitStorage); the next reset sizes them under it.
+  void limitGridStorage(uint64_t bytes) { grid_.limitStorage(bytes); }
   // The pairs (a < b) closer than 2r of the last candidate pass, in no particular order;
   // `overflow` when the pair list did not hold them.
   std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr) {

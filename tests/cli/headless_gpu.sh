@@ -43,4 +43,5 @@ assert 0 < a["hair_penetrations"] < a["hair_contacts"], a
 # too long for the grid: the metrics say so either way.
 assert a["hair_list_overflows"] == 0, a
 assert a["hair_oversize_segments_max"] == 0, a
+assert a["hair_crowded_segments_max"] == 0, a
 PY

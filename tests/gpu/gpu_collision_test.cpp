@@ -347,6 +347,95 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
   CHECK(gpu->readContactStats().overflows == 0);
 }
 
+// One segment 6 cm along x (particles 0 and 1) and `crossing` segments 1 cm along z, each a
+// strand of its own, crossing it 0.2 mm away at even steps along it: every one is a candidate
+// of the first segment.
+Groom crowd(int crossing) {
+  Groom g;
+  const float y = 0.0025f, z = 0.0025f;  // mid-cell (5 mm cells here), so the box is one cell thick
+  g.addStrand({glm::vec3(0.0f, y, z), glm::vec3(0.06f, y, z)});
+  for (int i = 0; i < crossing; ++i) {
+    const float x = 0.06f * (float(i) + 0.5f) / float(crossing);
+    g.addStrand({glm::vec3(x, y + 0.0002f, z - 0.005f), glm::vec3(x, y + 0.0002f, z + 0.005f)});
+  }
+  return g;
+}
+
+TEST_CASE("GPU lists: a segment lists all of 1500 candidates and none of 2500",
+          "[gpu][collision]") {
+  // An insertion sort of 1,500 candidates takes ~560,000 loop iterations, past the 65,535 that
+  // llvmpipe allows an invocation (it cuts the loops short, silently): the list came out cut
+  // short and unsorted. The heapsort takes ~35,000. Over CSM_MAX_CANDIDATES the segment is in
+  // no pair, on either side, and counted as crowded.
+  Config c;
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.radius = 0.0005f;
+  c.head.spheres.clear();
+  c.sim.gravity = glm::vec3(0.0f);
+  for (int crossing : {1500, 2500}) {
+    INFO(crossing << " crossing segments");
+    const Groom g = crowd(crossing);
+    auto gpu = makeGpuSolver();
+    gpu->reset(g, c, Pose{});
+    gpu->detectContacts();
+    const auto lists = gpu->readCandidates();
+    const ContactStats stats = gpu->readContactStats();
+    CHECK(stats.oversize == 0);
+    CHECK(gpu->gridStats().pairs <= gpu->gridStats().pairCapacity);  // this pass fitted
+    size_t listing = 0;  // crossing segments that list the first
+    for (size_t i = 2; i < lists.size(); ++i)
+      for (const auto& cand : lists[i]) listing += cand.first == 0 ? 1 : 0;
+    if (crossing <= 2048) {
+      REQUIRE(lists[0].size() == size_t(crossing));
+      for (size_t k = 0; k < lists[0].size(); ++k) CHECK(lists[0][k].first == 2 * (k + 1));
+      CHECK(listing == size_t(crossing));
+      CHECK(stats.crowded == 0);
+    } else {
+      CHECK(lists[0].empty());
+      CHECK(listing == 0);
+      CHECK(stats.crowded == 1);
+      // The crossing segments still list each other.
+      size_t others = 0;
+      for (size_t i = 2; i < lists.size(); ++i) others += lists[i].size();
+      CHECK(others > size_t(crossing));
+    }
+  }
+}
+
+TEST_CASE("GPU grid: its buffers stay within what the device's storage blocks hold",
+          "[gpu][collision]") {
+  // A buffer bound past GL_MAX_SHADER_STORAGE_BLOCK_SIZE is read and written as the driver
+  // pleases (llvmpipe's 128 MiB: 30,000 strands of Fig. 1 counted different crossings from run
+  // to run). Capped at 128 KiB (8,192 pairs or entries), the packed bundle (~4,500 entries,
+  // ~22,000 pairs) never fits its pairs: every frame says so and has no strand contacts, and
+  // nothing grows past the cap.
+  const Groom g = packedBundle(0);
+  Config c;
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.radius = 0.0005f;
+  c.sim.gravity = glm::vec3(0.0f);
+  const uint64_t cap = 128 * 1024;
+  auto gpu = makeGpuSolver();
+  gpu->limitGridStorage(cap);
+  gpu->reset(g, c, Pose{});
+  for (int f = 0; f < 3; ++f) gpu->stepFrame(Pose{}, Pose{});
+  const GpuSolver::GridStats grid = gpu->gridStats();
+  INFO("pairs " << grid.pairs << " capacity " << grid.pairCapacity << " entries " << grid.entries
+                << " capacity " << grid.capacity);
+  CHECK(grid.pairs > cap / 16);
+  CHECK(grid.pairCapacity == cap / 16);
+  CHECK(grid.capacity <= cap / 16);
+  CHECK(gpu->readContactStats().overflows == 3);
+  const auto lists = gpu->readCandidates();
+  CHECK(std::all_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); }));
+  // Uncapped, the same scene fits from the second frame on.
+  auto free = makeGpuSolver();
+  free->reset(g, c, Pose{});
+  for (int f = 0; f < 3; ++f) free->stepFrame(Pose{}, Pose{});
+  CHECK(free->readContactStats().overflows == 1);
+  CHECK(free->gridStats().pairCapacity > cap / 16);
+}
+
 TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counters",
           "[gpu][collision]") {
   // The packed bundle overflows its pair list on the first frame. One solver reads every
