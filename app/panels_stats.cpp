@@ -30,6 +30,13 @@ void plot(const char* id, const History& h, const char* overlay, float floor) {
                    ImVec2(ImGui::GetFontSize() * 22.0f, ImGui::GetFontSize() * 3.5f));
 }
 
+// A count of what went wrong, in the warning colour, with a tooltip saying more (none when
+// `tooltip` is null). `format` takes the count.
+void warning(const char* format, unsigned long long count, const char* tooltip) {
+  ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.3f, 1.0f), format, count);
+  if (tooltip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+}
+
 }  // namespace
 
 const std::vector<Shortcut>& shortcuts() {
@@ -114,30 +121,22 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
     ImGui::Text("penetration depth p50 %.2f r, p99 %.2f r, max %.2f r", contacts.depthQuantile(0.5),
                 contacts.depthQuantile(0.99), double(contacts.maxDepth));
     // Never silent: what the GPU's lists could not hold.
-    const ImVec4 warn(1.0f, 0.45f, 0.3f, 1.0f);
-    if (contacts.overflows > 0) {
-      ImGui::TextColored(warn, "hair-hair lists full in %llu frames (no strand contacts there)",
-                         (unsigned long long)contacts.overflows);
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "A frame whose candidate pairs do not fit the GPU's buffers applies no strand\n"
-            "contacts and counts no crossings; the buffers grow to what it needed as the\n"
-            "next frame begins (up to 2^26 pairs), so the frames after it fit. Counted\n"
-            "since the simulation was last reset.");
-    }
+    if (contacts.overflows > 0)
+      warning("hair-hair lists full in %llu frames (no strand contacts there)", contacts.overflows,
+              "A frame whose candidate pairs do not fit the GPU's buffers applies no strand\n"
+              "contacts and counts no crossings; the buffers grow to what it needed as the\n"
+              "next frame begins (up to what the device's storage blocks hold: 8.4 M pairs\n"
+              "on llvmpipe), so the frames after it fit. Counted since the simulation was\n"
+              "last reset.");
     if (contacts.oversize > 0)
-      ImGui::TextColored(warn, "%llu segments too long for the grid's cells: no contacts for them",
-                         (unsigned long long)contacts.oversize);
-    if (contacts.crowded > 0) {
-      ImGui::TextColored(warn, "%llu segments in a crowd: some or all of their contacts missing",
-                         (unsigned long long)contacts.crowded);
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "More than 2,048 candidate pairs for one segment (it is then in no pair this\n"
-            "frame), or a grid cell so full that the driver cut the search short. Hair does\n"
-            "not pack that densely: the strands are too many for this collision radius, or\n"
-            "the simulation is exploding.");
-    }
+      warning("%llu segments too long for the grid's cells: no contacts for them",
+              contacts.oversize, nullptr);
+    if (contacts.crowded > 0)
+      warning("%llu segments in a crowd: some or all of their contacts missing", contacts.crowded,
+              "More than 2,048 candidate pairs for one segment (it is then in no pair this\n"
+              "frame), or a grid cell so full that the driver cut the search short. Hair does\n"
+              "not pack that densely: the strands are too many for this collision radius, or\n"
+              "the simulation is exploding.");
   }
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);

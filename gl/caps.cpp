@@ -40,6 +40,7 @@ Caps queryCaps() {
   c.maxComputeSharedMemorySize = integer(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE);
   c.maxUniformBlockSize = integer(GL_MAX_UNIFORM_BLOCK_SIZE);
   c.maxTextureSize = integer(GL_MAX_TEXTURE_SIZE);
+  c.maxTextureBufferSize = integer(GL_MAX_TEXTURE_BUFFER_SIZE);
   c.maxArrayTextureLayers = integer(GL_MAX_ARRAY_TEXTURE_LAYERS);
   c.maxColorAttachments = integer(GL_MAX_COLOR_ATTACHMENTS);
   c.maxSamples = integer(GL_MAX_SAMPLES);
@@ -71,6 +72,7 @@ std::string Caps::summary() const {
   s += "max compute shared memory:  " + n(maxComputeSharedMemorySize) + " bytes\n";
   s += "max uniform block size:     " + n(maxUniformBlockSize) + " bytes\n";
   s += "max texture size:           " + n(maxTextureSize) + "\n";
+  s += "max texture buffer size:    " + n(maxTextureBufferSize) + " texels\n";
   s += "max array texture layers:   " + n(maxArrayTextureLayers) + "\n";
   s += "max color attachments:      " + n(maxColorAttachments) + "\n";
   s += "max samples:                " + n(maxSamples) + "\n";

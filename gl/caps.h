@@ -22,6 +22,7 @@ struct Caps {
   GLint maxComputeSharedMemorySize = 0;  // bytes
   GLint maxUniformBlockSize = 0;         // bytes
   GLint maxTextureSize = 0;
+  GLint maxTextureBufferSize = 0;  // texels of one buffer texture
   GLint maxArrayTextureLayers = 0;
   GLint maxColorAttachments = 0;
   GLint maxSamples = 0;

@@ -16,7 +16,7 @@ struct SimParams {
   uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
   uvec4 counts;    // x particles, y strands, z segments, w unused
   uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z pair list capacity,
-                   // w this frame's half of the candidate lists (0 or 1)
+                   // w this frame's half of CANDIDATE_RANGE (0 or 1)
   vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
   // The volume mode (sim/volume.h): its grid is fixed to the head where the frame starts.

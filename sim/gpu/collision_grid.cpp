@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
+#include "gl/caps.h"
 #include "gl/draw.h"
 #include "sim/contacts.h"
 #include "sim/gpu/buffer_fill.h"
@@ -41,12 +42,9 @@ bool CollisionGrid::build(std::string* error) {
   // What one storage block and one buffer texture may hold here (llvmpipe: 128 MiB and 2^27
   // texels; GL 4.3 guarantees 16 MiB and 2^16 texels). A buffer bound past the first is read
   // and written as the implementation pleases (llvmpipe: not at all, or not the same way twice).
-  GLint64 block = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
-  GLint texels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texels);
-  storageBytes_ = uint64_t(std::max<GLint64>(block, 0));
-  textureTexels_ = uint64_t(std::max<GLint>(texels, 0));
+  const gl::Caps caps = gl::queryCaps();
+  storageBytes_ = uint64_t(std::max<GLint64>(caps.maxShaderStorageBlockSize, 0));
+  textureTexels_ = uint64_t(std::max<GLint>(caps.maxTextureBufferSize, 0));
   return passes_.count.build("sim/grid_count.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scanBlocks.build("sim/scan_blocks.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scanSums.build("sim/scan_sums.comp", CSM_SCAN_GROUP, {}, error) &&

@@ -46,11 +46,11 @@ class CollisionGrid {
   // the head at `origin`) with candidate distance `reach`, and half again, and the pair list
   // as large. Every cell of a box counts, so this bounds the clipped entries the grid makes
   // (Fig. 1: ~1.5x them): they then rarely need to grow while the hair moves (a frame over them has
-  // no strand contacts, says so in the counters, and grows them when a sample reads those).
+  // no strand contacts, says so in the counters, and the next frame grows them).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
   // Before a frame's writeParams: the buffers grow to what the last search needed (waiting for
-  // it to end on the GPU, which it has unless the CPU runs far ahead); the lists swap halves
+  // it to end on the GPU, which it has unless the CPU runs far ahead); the lists swap buffers
   // (this frame's becomes last frame's);
   // `contacts` says whether this frame builds them (when the last one did not, there is no
   // last list to count crossings against; when this one does not, the last one's measures
@@ -72,9 +72,11 @@ class CollisionGrid {
   const gl::Buffer& counters() const { return counters_; }
   uint32_t entryCapacity() const { return entryCapacity_; }
   uint32_t pairListCapacity() const { return pairListCapacity_; }
-  // Caps every buffer of the grid at `bytes` (as a device whose storage blocks hold no more),
-  // before reset; tests use it to reach the cap with a small scene. A frame that needs more
-  // than the capped buffers hold has no strand contacts and says so, as any frame over them.
+  // Caps the buffers that grow with the hair's density (the entries, the pair list, its sides
+  // and the lists) at `bytes` each, as a device whose storage blocks hold no more, before
+  // reset; tests use it to reach the cap with a small scene. A frame that needs more than the
+  // capped buffers hold has no strand contacts and says so, as any frame over them. (The
+  // buffers sized by the particles stay under 128 MiB up to ~4 M particles.)
   void limitStorage(uint64_t bytes);
   uint32_t bucketCount() const { return buckets_; }
 
@@ -113,8 +115,8 @@ class CollisionGrid {
                                    // holds this frame's lists
   uint64_t storageBytes_ = 0;      // the most one storage block holds (bytes)
   uint64_t textureTexels_ = 0;     // the most texels one buffer texture holds
-  bool lastFrameListed_ = false;   // whether the other half holds last frame's lists (and the
-                                   // counters its measures)
+  bool lastFrameListed_ = false;   // whether the other buffer holds last frame's lists (and
+                                   // the counters its measures)
   bool searchPending_ = false;     // searchCounters_ holds a search's, not yet read
 
   struct Passes {

@@ -23,7 +23,7 @@ struct SimParams {
   glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
   glm::uvec4 counts;    // x particles, y strands, z segments, w unused
   glm::uvec4 grid;      // x bucket mask, y entry capacity, z pair list capacity, w this frame's
-                        // half of the candidate lists
+                        // half of CANDIDATE_RANGE
   glm::vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   glm::vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
   // The volume mode (sim/volume.h): its grid is fixed to the head where the frame starts.

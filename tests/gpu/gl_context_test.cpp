@@ -45,6 +45,7 @@ TEST_CASE("GL: the shared headless context is GL 4.3+ core with compute", "[gl][
   CHECK(caps.renderer == context.renderer());
   // GL 4.3's guaranteed minimums (GL 4.6 spec, tables 23.64, 23.67).
   CHECK(caps.maxShaderStorageBlockSize >= (GLint64(1) << 24));
+  CHECK(caps.maxTextureBufferSize >= 65536);  // GL 4.3, table 23.53
   CHECK(caps.maxComputeWorkGroupInvocations >= 1024);
   CHECK(caps.maxComputeWorkGroupSize[0] >= 1024);
   CHECK(caps.maxComputeWorkGroupCount[0] >= 65535);

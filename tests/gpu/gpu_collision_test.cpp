@@ -108,6 +108,17 @@ Groom packedBundle(int stagger) {
   return g;
 }
 
+// Strand contacts of radius 0.5 mm and no gravity (the bundle's strands 0.3 mm apart are then
+// inside each other's contact distance), with or without the default head.
+Config contactConfig(bool head) {
+  Config c;
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.radius = 0.0005f;
+  c.sim.gravity = glm::vec3(0.0f);
+  if (!head) c.head.spheres.clear();
+  return c;
+}
+
 }  // namespace
 
 TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collision]") {
@@ -312,10 +323,7 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
   // them.
   auto gpu = makeGpuSolver();
   const Groom g = packedBundle(0);
-  Config c;
-  c.collision.mode = CollisionMode::Strands;
-  c.collision.radius = 0.0005f;
-  c.sim.gravity = glm::vec3(0.0f);
+  const Config c = contactConfig(true);
   gpu->reset(g, c, Pose{});
   const uint32_t capacity = gpu->gridStats().pairCapacity;
   gpu->stepFrame(Pose{}, Pose{});
@@ -367,11 +375,7 @@ TEST_CASE("GPU lists: a segment lists all of 1500 candidates and none of 2500",
   // llvmpipe allows an invocation (it cuts the loops short, silently): the list came out cut
   // short and unsorted. The heapsort takes ~35,000. Over CSM_MAX_CANDIDATES the segment is in
   // no pair, on either side, and counted as crowded.
-  Config c;
-  c.collision.mode = CollisionMode::Strands;
-  c.collision.radius = 0.0005f;
-  c.head.spheres.clear();
-  c.sim.gravity = glm::vec3(0.0f);
+  const Config c = contactConfig(false);
   for (int crossing : {1500, 2500}) {
     INFO(crossing << " crossing segments");
     const Groom g = crowd(crossing);
@@ -410,10 +414,7 @@ TEST_CASE("GPU grid: its buffers stay within what the device's storage blocks ho
   // ~22,000 pairs) never fits its pairs: every frame says so and has no strand contacts, and
   // nothing grows past the cap.
   const Groom g = packedBundle(0);
-  Config c;
-  c.collision.mode = CollisionMode::Strands;
-  c.collision.radius = 0.0005f;
-  c.sim.gravity = glm::vec3(0.0f);
+  const Config c = contactConfig(true);
   const uint64_t cap = 128 * 1024;
   auto gpu = makeGpuSolver();
   gpu->limitGridStorage(cap);
@@ -444,12 +445,9 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
   // bit-identical. Growing when a sample's read-back arrived made the frame of growth, and so
   // the motion, depend on who read and when.
   const Groom g = packedBundle(3);
-  Config c;
-  c.collision.mode = CollisionMode::Strands;
-  c.collision.radius = 0.0005f;
+  Config c = contactConfig(false);
   c.sim.gravity = glm::vec3(0.0f, -9.81f, 0.0f);
   c.sim.rootLength = 0.004f;  // the head holds the first segment; the rest sags
-  c.head.spheres.clear();
   auto eager = makeGpuSolver(), never = makeGpuSolver();
   eager->reset(g, c, Pose{});
   never->reset(g, c, Pose{});
