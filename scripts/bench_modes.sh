@@ -36,11 +36,14 @@ a, ms = m["accuracy"], m["ms"]
 st = ms["stages"]
 def get(k):
     return f"{a[k]}" if k in a else ""
+# Crossings are counted against the last list: none when the lists did not fit (not measured).
+def crossings(k):
+    return "" if a.get("hair_list_overflows", 0) > 0 else get(k)
 print(",".join([sys.argv[2], sys.argv[3], sys.argv[4], str(m["particles"]),
                 sys.argv[5], f"{ms['sim_mean']:.2f}", f"{st.get('grid', 0):.2f}",
                 f"{st.get('contacts', 0):.2f}", get("hair_contacts"), get("hair_penetrations"),
-                get("hair_penetrations_rest"), get("hair_crossings_per_s"),
-                get("hair_crossings_close_at_rest_per_s"),
+                get("hair_penetrations_rest"), crossings("hair_crossings_per_s"),
+                crossings("hair_crossings_close_at_rest_per_s"),
                 get("hair_depth_p50"), get("hair_depth_p99"), get("hair_depth_max")]))
 PY
       tail -n 1 "$csv"
