@@ -64,7 +64,7 @@ void main() {
   bool fits = total <= P.grid.y && counters[CSM_COUNTER_PAIR_LIST] <= P.grid.z;
   if (a == 0u && !fits) ++counters[CSM_COUNTER_OVERFLOWS];
   uint sides = segBase[a + 1u] - segBase[a];
-  bool crowded = fits && sides > uint(CSM_MAX_CANDIDATES);
+  bool crowded = fits && crowdedSides(sides);
   if (fits && !crowded) {
     for (uint k = 0u; k < sides; ++k) {
       uvec2 c = pairSides[base + k];

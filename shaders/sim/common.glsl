@@ -180,6 +180,9 @@ vec3 contactNormal(vec3 p0, vec3 p1, vec3 q0, vec3 q1, float s, float t, float d
 const uint kIndex = (1u << uint(CSM_CANDIDATE_SHIFT)) - 1u;
 // A slot of PAIR_SIDES whose pair was left out (pair_scatter.comp): no candidate.
 const uint kNoCandidate = 0xffffffffu;
+// Whether a segment with `sides` candidates (its range in PAIR_SIDES) is over the cap: the
+// pair scatter leaves its pairs out and the list pass counts it, by this one rule.
+bool crowdedSides(uint sides) { return sides > uint(CSM_MAX_CANDIDATES); }
 
 bool crossed(uint before, uint now) {
   return (before & now & kPairInterior) != 0u && ((before | now) & kPairNear) != 0u &&

@@ -21,8 +21,8 @@ void main() {
   if (k >= min(counters[CSM_COUNTER_PAIR_LIST], P.grid.z)) return;
   uvec4 p = pairList[k];
   uint a = p.x, b = p.y & kIndex, flags = p.y & ~kIndex;
-  bool crowded = max(segBase[a + 1u] - segBase[a], segBase[b + 1u] - segBase[b]) >
-                 uint(CSM_MAX_CANDIDATES);
+  bool crowded =
+      crowdedSides(segBase[a + 1u] - segBase[a]) || crowdedSides(segBase[b + 1u] - segBase[b]);
   pairSides[segBase[a] + atomicAdd(segmentPairs[a], 0xffffffffu) - 1u] =
       crowded ? uvec2(kNoCandidate) : p.yz;
   pairSides[segBase[b] + atomicAdd(segmentPairs[b], 0xffffffffu) - 1u] =

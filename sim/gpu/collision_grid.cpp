@@ -45,6 +45,8 @@ bool CollisionGrid::build(std::string* error) {
   const gl::Caps caps = gl::queryCaps();
   storageBytes_ = uint64_t(std::max<GLint64>(caps.maxShaderStorageBlockSize, 0));
   textureTexels_ = uint64_t(std::max<GLint>(caps.maxTextureBufferSize, 0));
+  searchCounters_ = gl::Buffer();
+  searchCounters_.setData(kSearchCounters * sizeof(uint32_t), nullptr, GL_STREAM_READ);
   return passes_.count.build("sim/grid_count.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scanBlocks.build("sim/scan_blocks.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.scanSums.build("sim/scan_sums.comp", CSM_SCAN_GROUP, {}, error) &&
@@ -82,10 +84,6 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
   view(gridStartTex_, gridStart_, GL_R32UI);
   searchPending_ = false;
-  if (searchCounters_.id() == 0) {
-    searchCounters_ = gl::Buffer();
-    searchCounters_.setData(kSearchCounters * sizeof(uint32_t), nullptr, GL_STREAM_READ);
-  }
   entryCapacity_ = 0;  // reserveFor sizes the entry buffer and the pair list
   pairListCapacity_ = 0;
 }
