@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "app/capture.h"
+#include "sim/contacts.h"
 #include "sim/frame_driver.h"
 #include "app/metrics.h"
 #include "gl/context.h"
@@ -130,11 +131,11 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                    options.outDir.c_str());
   }
   // Frames whose hair-hair lists did not fit the solver's buffers: said at the end, never silent.
-  uint64_t listOverflows = 0, crowded = 0;
+  // (ContactStats::add keeps the running count of overflows and the most crowded segments.)
+  ContactStats seen;
   auto takeSamples = [&] {
     for (const FrameSample& sample : driver.takeSamples()) {
-      listOverflows = std::max(listOverflows, sample.contacts.overflows);  // a running count
-      crowded = std::max(crowded, sample.contacts.crowded);
+      seen.add(sample.contacts);
       if (metrics) recorder.addSample(sample);
     }
   };
@@ -199,17 +200,17 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     takeSamples();
     if (driver.stopped()) nanStop();
   }
-  if (listOverflows > 0)
+  if (seen.overflows > 0)
     std::fprintf(stderr,
                  "csmhair: warning: the candidate pairs of %llu frames did not fit the solver's "
                  "buffers: those frames had no strand contacts (and counted no crossings)\n",
-                 (unsigned long long)listOverflows);
-  if (crowded > 0)
+                 (unsigned long long)seen.overflows);
+  if (seen.crowded > 0)
     std::fprintf(stderr,
                  "csmhair: warning: up to %llu segments a frame were in too dense a crowd for "
                  "the strand contacts (over 2,048 candidate pairs, or a grid cell the search "
                  "could not finish): some or all of their contacts were missing\n",
-                 (unsigned long long)crowded);
+                 (unsigned long long)seen.crowded);
   if (!options.exportHair.empty()) {
     // The final strands in world space, as a cyHair file for other tools.
     sim.solver().readPositions(x);
