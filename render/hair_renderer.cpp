@@ -288,7 +288,7 @@ void HairRenderer::render(const FrameView& frame) {
       std::clamp(amount.subdivision > 0 ? amount.subdivision : look.subdivision, 1, 64);
   geometryFor(subdivision).update(*frame.groom, frame.generation, subdivision, c.head.spheres);
   if (scalpKey_ != std::make_pair(frame.groom, frame.generation)) {
-    scalp_ = makeScalpMap(*frame.groom, c.head.spheres);
+    scalp_ = makeScalpMap(*frame.groom, scalpSpheres(c));
     scalpKey_ = {frame.groom, frame.generation};
   }
   FrameTarget& target = targetFor(frame.width, frame.height, samples);
@@ -301,7 +301,7 @@ void HairRenderer::render(const FrameView& frame) {
     return;
   }
   ShadowMaps& shadow = shadowFor(shadowSize);
-  head_.update(worldSpheres(c.head.spheres, frame.head));
+  head_.update(c, frame.head);
 
   const Selection drawn = select(geometry_->guides(), c.hairstyle.followCount, amount.strands);
   drawnStrands_ = frame.positionBuffer != 0 ? drawn.guides * std::size_t(drawn.instances) : 0;

@@ -11,6 +11,21 @@
 
 namespace csm {
 
+HeadMesh::Mesh HeadMesh::upload(const std::vector<glm::vec3>& positions,
+                                const std::vector<glm::vec3>& normals,
+                                const std::vector<uint32_t>& indices) {
+  Mesh m;
+  m.positions = gl::Buffer(positions, GL_STATIC_DRAW);
+  m.normals = gl::Buffer(normals, GL_STATIC_DRAW);
+  m.indices = gl::Buffer(indices, GL_STATIC_DRAW);
+  m.indexCount = indices.size();
+  m.vao = gl::VertexArray();
+  m.vao.setAttribute(0, m.positions, 3, GL_FLOAT, sizeof(glm::vec3), 0);
+  m.vao.setAttribute(1, m.normals, 3, GL_FLOAT, sizeof(glm::vec3), 0);
+  m.vao.setIndexBuffer(m.indices);
+  return m;
+}
+
 HeadMesh::HeadMesh() {
   // A unit UV sphere, counter-clockwise seen from outside; positions double as normals.
   constexpr int kStacks = 32, kSlices = 64;
@@ -29,30 +44,40 @@ HeadMesh::HeadMesh() {
       const std::uint32_t a = std::uint32_t(i * (kSlices + 1) + j), b = a + kSlices + 1;
       indices.insert(indices.end(), {a, b, b + 1, a, b + 1, a + 1});
     }
-  vertices_ = gl::Buffer(vertices, GL_STATIC_DRAW);
-  indices_ = gl::Buffer(indices, GL_STATIC_DRAW);
-  indexCount_ = indices.size();
-  vao_ = gl::VertexArray();
-  vao_.setAttribute(0, vertices_, 3, GL_FLOAT, sizeof(glm::vec3), 0);
-  vao_.setIndexBuffer(indices_);
-  spheres_ = gl::Buffer(GLsizeiptr(sizeof(glm::vec4)), nullptr, GL_DYNAMIC_DRAW);
+  sphere_ = upload(vertices, vertices, indices);
+  placementBuffer_ = gl::Buffer(GLsizeiptr(sizeof(glm::vec4)), nullptr, GL_DYNAMIC_DRAW);
 }
 
-void HeadMesh::update(const std::vector<Sphere>& worldSpheres) {
+void HeadMesh::update(const Config& scene, const Pose& head) {
   std::vector<glm::vec4> data;
-  for (const Sphere& s : worldSpheres) data.emplace_back(s.center, s.radius);
-  sphereCount_ = int(data.size());
-  if (!data.empty()) spheres_.upload(data);
+  mannequin_ = headField(scene) != nullptr;
+  if (mannequin_) {
+    if (mannequinGpu_.indexCount == 0) {
+      // Uploaded once, from the scalp centre, so that a vertex's position is also its
+      // direction on the scalp map (render/scalp_map.h).
+      const SurfaceMesh& m = mannequinMesh();
+      std::vector<glm::vec3> positions(m.positions);
+      for (glm::vec3& p : positions) p -= glm::vec3(kMannequinScalpCentre);
+      mannequinGpu_ = upload(positions, m.normals, m.indices);
+    }
+    data.emplace_back(glm::vec3(head.apply(kMannequinScalpCentre)), 1.0f);
+  } else {
+    for (const Sphere& s : worldSpheres(scene.head.spheres, head))
+      data.emplace_back(s.center, s.radius);
+  }
+  placements_ = int(data.size());
+  if (!data.empty()) placementBuffer_.upload(data);
 }
 
 void HeadMesh::bind() const {
-  spheres_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kHeadSpheres);
+  placementBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kHeadSpheres);
 }
 
 void HeadMesh::draw() const {
-  if (sphereCount_ == 0) return;
-  vao_.bind();
-  gl::drawElements(GL_TRIANGLES, indexCount_, sphereCount_);
+  if (placements_ == 0) return;
+  const Mesh& m = mannequin_ ? mannequinGpu_ : sphere_;
+  m.vao.bind();
+  gl::drawElements(GL_TRIANGLES, m.indexCount, placements_);
 }
 
 }  // namespace csm

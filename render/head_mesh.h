@@ -1,5 +1,6 @@
-// The head as drawn: instances of a unit UV sphere, one per head sphere, placed by an SSBO
-// of world centres and radii.
+// The head as drawn: a mesh in the head's frame, instanced once per placement (world centre,
+// scale) of an SSBO and turned by the head's rotation (head.vert). Spheres: a unit UV sphere
+// once per head sphere. The mannequin: its mesh (sim/head_shape.h) once.
 #pragma once
 
 #include <vector>
@@ -7,23 +8,34 @@
 #include "gl/buffer.h"
 #include "gl/vertex_array.h"
 #include "sim/head.h"
+#include "sim/head_shape.h"
 
 namespace csm {
 
 class HeadMesh {
  public:
   HeadMesh();
-  // This frame's spheres, in world space.
-  void update(const std::vector<Sphere>& worldSpheres);
-  void bind() const;  // the spheres' SSBO
+  // This frame's head: the mannequin's mesh where the scene's head is its field, else the
+  // scene's spheres, at the head's pose.
+  void update(const Config& scene, const Pose& head);
+  void bind() const;  // the placements' SSBO
   void draw() const;
-  int sphereCount() const { return sphereCount_; }
+  int sphereCount() const { return placements_; }
+  bool isMannequin() const { return mannequin_; }
 
  private:
-  gl::Buffer vertices_{gl::NoCreate}, indices_{gl::NoCreate}, spheres_{gl::NoCreate};
-  gl::VertexArray vao_{gl::NoCreate};
-  std::size_t indexCount_ = 0;
-  int sphereCount_ = 0;
+  struct Mesh {
+    gl::Buffer positions{gl::NoCreate}, normals{gl::NoCreate}, indices{gl::NoCreate};
+    gl::VertexArray vao{gl::NoCreate};
+    std::size_t indexCount = 0;
+  };
+  static Mesh upload(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                     const std::vector<uint32_t>& indices);
+
+  Mesh sphere_, mannequinGpu_;
+  gl::Buffer placementBuffer_{gl::NoCreate};
+  int placements_ = 0;
+  bool mannequin_ = false;
 };
 
 }  // namespace csm

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/head_shape.h"
+
 namespace csm {
 namespace {
 
@@ -90,6 +92,11 @@ ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres) 
     out.rgba[i * 4 + 3] = unorm8(coverage);
   }
   return out;
+}
+
+std::vector<Sphere> scalpSpheres(const Config& scene) {
+  if (!headField(scene)) return scene.head.spheres;
+  return {Sphere{glm::vec3(kMannequinScalpCentre), 0.09f}};
 }
 
 gl::Texture makeScalpMap(const Groom& groom, const std::vector<Sphere>& spheres) {

@@ -25,6 +25,9 @@ struct ScalpTexels {
 };
 // The roots binned per sphere (the nearest one within 2 cm) and blurred into a density.
 ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres);
+// The spheres the scalp map is laid over: the scene's, or for the mannequin one about its
+// scalp centre (its roots lie 0.07-0.1 m from it, within the 2 cm that counts as on it).
+std::vector<Sphere> scalpSpheres(const Config& scene);
 // An RGBA8 2D array, one layer per sphere.
 gl::Texture makeScalpMap(const Groom& groom, const std::vector<Sphere>& spheres);
 

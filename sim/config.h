@@ -36,6 +36,9 @@ inline const char* collisionModeName(CollisionMode m) {
   return kCollisionModeNames[int(m)];
 }
 enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
+// What the head is, for collision and drawing: the built-in mannequin's signed distance field
+// (sim/head_shape.h), or the spheres of head.spheres, as the paper does.
+enum class HeadShape : int { Sdf = 0, Spheres = 1 };
 // How stiffness is given (sim/stiffness.h). Paper: a window in particles and alpha = the pull
 // toward the goals per step, as the paper does; the hair gets stiffer with more substeps and
 // softer with more particles. Calibrated: a window in metres and a bending stiffness per unit
@@ -109,7 +112,8 @@ struct SimConfig {
 
 struct CollisionConfig {
   CollisionMode mode = CollisionMode::Strands;
-  float radius = 0.001f;  // hair radius, metres: two strands touch at 2r
+  HeadShape headShape = HeadShape::Spheres;  // shipped presets choose sdf
+  float radius = 0.001f;                     // hair radius, metres: two strands touch at 2r
   // Strand contacts (sim/contacts.h): the pairs within 2r + margin at the start of a frame are
   // the candidates its substeps resolve, so the margin must cover how far two strands close
   // in on each other in one frame.

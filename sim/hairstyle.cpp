@@ -9,6 +9,7 @@
 #include <glm/trigonometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "sim/head_shape.h"
 #include "sim/io/fit.h"
 #include "sim/io/groom_file.h"
 #include "sim/io/resample.h"
@@ -33,22 +34,15 @@ double random01(uint64_t seed, uint64_t strand, uint64_t k) {
 // for any prefix, so 10,000 strands are the first 10,000 of 20,000 and still cover the scalp.
 struct RootSampler {
   const HairstyleConfig& h;
+  bool mannequin;
   uint64_t index = 0;
   double offsetU, offsetV;
 
-  explicit RootSampler(const HairstyleConfig& cfg)
-      : h(cfg), offsetU(random01(cfg.seed, ~0ull, 1)), offsetV(random01(cfg.seed, ~0ull, 2)) {}
-
-  bool inScalp(const glm::dvec3& d) const {
-    const double theta = std::acos(std::clamp(d.y, -1.0, 1.0));
-    const double horizontal = std::hypot(d.x, d.z);
-    const double front = horizontal > 1e-9 ? std::max(0.0, d.z / horizontal) : 0.0;
-    // The hairline comes lower at the back and sides than at the forehead (+z is the face).
-    const double limit =
-        glm::radians(glm::mix(double(h.scalpAngle), double(std::min(h.scalpAngle, h.hairlineFront)),
-                              std::pow(front, 1.5)));
-    return theta <= limit;
-  }
+  RootSampler(const HairstyleConfig& cfg, bool onMannequin)
+      : h(cfg),
+        mannequin(onMannequin),
+        offsetU(random01(cfg.seed, ~0ull, 1)),
+        offsetV(random01(cfg.seed, ~0ull, 2)) {}
 
   glm::dvec3 next() {
     const double g = 1.32471795724474602596;  // the plastic number
@@ -61,13 +55,13 @@ struct RootSampler {
       const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
       const double phi = 2.0 * glm::pi<double>() * v;
       glm::dvec3 d(sinTheta * std::sin(phi), cosTheta, sinTheta * std::cos(phi));
-      if (inScalp(d)) return d;
+      if (onScalp(h, d, mannequin)) return d;
     }
   }
 };
 
 // Moves p outside every sphere (inflated by margin). Returns true when it moved.
-bool pushOut(glm::dvec3& p, const std::vector<Sphere>& head, double margin) {
+bool pushOutOfSpheres(glm::dvec3& p, const std::vector<Sphere>& head, double margin) {
   bool moved = false;
   for (int pass = 0; pass < 2; ++pass)
     for (const Sphere& s : head) {
@@ -82,6 +76,28 @@ bool pushOut(glm::dvec3& p, const std::vector<Sphere>& head, double margin) {
     }
   return moved;
 }
+
+// The head the hair grows on: the spheres (the first is the scalp), or a distance field.
+struct GrowthHead {
+  const std::vector<Sphere>& spheres;
+  const DistanceGrid* field;
+
+  // The scalp point in direction dir (a unit vector from the scalp's centre).
+  glm::dvec3 root(const glm::dvec3& dir) const {
+    if (field) return surfaceAlong(*field, kMannequinScalpCentre, dir);
+    const Sphere& scalp = spheres.front();
+    return glm::dvec3(scalp.center) + dir * double(scalp.radius);
+  }
+  bool pushOut(glm::dvec3& p, double margin) const {
+    if (!field) return pushOutOfSpheres(p, spheres, margin);
+    // The face is left open: below the hairline's height, hair within the head's width
+    // stays behind the ears.
+    const bool moved = p.y < kFaceTop && std::abs(p.x) < kFaceHalfWidth && p.z > kBehindEars;
+    if (moved) p.z = kBehindEars;
+    return pushOutOfField(*field, p, margin) || moved;
+  }
+  static constexpr double kFaceTop = 0.03, kFaceHalfWidth = 0.11, kBehindEars = -0.03;
+};
 
 // Resamples a dense polyline to n points evenly spaced in arc length.
 std::vector<glm::dvec3> resample(const std::vector<glm::dvec3>& q, int n) {
@@ -99,10 +115,9 @@ std::vector<glm::dvec3> resample(const std::vector<glm::dvec3>& q, int n) {
   return out;
 }
 
-std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const std::vector<Sphere>& head,
-                                   double margin, uint64_t s, const glm::dvec3& dir) {
-  const Sphere& scalp = head.front();
-  const glm::dvec3 root = glm::dvec3(scalp.center) + dir * double(scalp.radius);
+std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& head, double margin,
+                                   uint64_t s, const glm::dvec3& dir) {
+  const glm::dvec3 root = head.root(dir);
   const double length = glm::mix(double(h.lengthMin), double(h.lengthMax), random01(h.seed, s, 3));
 
   // Centreline: leaves along the scalp normal, turns down at a rate set by `fall`, drapes over
@@ -126,12 +141,12 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const std::vector<S
     t = glm::normalize(glm::mix(t, want, 0.5));
     glm::dvec3 next = p + t * (length / steps);
     glm::dvec3 before = next;
-    if (i > 1 && pushOut(next, head, margin)) {
+    if (i > 1 && head.pushOut(next, margin)) {
       // Follow the surface: keep the tangential part of the direction.
       glm::dvec3 n = glm::normalize(next - before + 1e-12 * t);
       t = glm::normalize(t - glm::dot(t, n) * n + 1e-9 * down);
       next = p + t * (length / steps);
-      pushOut(next, head, margin);
+      head.pushOut(next, margin);
     }
     p = next;
     centre.push_back(p);
@@ -165,7 +180,7 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const std::vector<S
     const double radius = h.curlRadius * x * x * (3.0 - 2.0 * x);
     const double a = phase + 2.0 * glm::pi<double>() * along / h.curlPitch;
     glm::dvec3 q = centre[i] + radius * (std::cos(a) * normal + std::sin(a) * binormal);
-    pushOut(q, head, margin);
+    head.pushOut(q, margin);
     curled.push_back(q);
   }
   return curled;
@@ -173,18 +188,38 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const std::vector<S
 
 }  // namespace
 
+Groom growHairstyle(const Config& c) {
+  return growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius, headField(c));
+}
+
+bool onScalp(const HairstyleConfig& h, const glm::dvec3& d, bool mannequin) {
+  const double theta = std::acos(std::clamp(d.y, -1.0, 1.0));
+  const double horizontal = std::hypot(d.x, d.z);
+  const double front = horizontal > 1e-9 ? std::max(0.0, d.z / horizontal) : 0.0;
+  // The hairline comes lower at the back and sides than at the forehead (+z is the face).
+  const double limit = glm::radians(glm::mix(
+      double(h.scalpAngle), double(std::min(h.scalpAngle, h.hairlineFront)), std::pow(front, 1.5)));
+  if (theta > limit) return false;
+  if (!mannequin) return true;
+  // Above and behind the ears: no roots within 30 degrees of either ear's direction, so the
+  // hairline runs over them and the hair can fall behind them.
+  const glm::dvec3 ear = glm::normalize(glm::dvec3(0.074, -0.025, -0.002));
+  return glm::dot(glm::dvec3(std::abs(d.x), d.y, d.z), ear) < std::cos(glm::radians(30.0));
+}
+
 int particlesForLength(const HairstyleConfig& h, double arcLength) {
   if (h.particlesPerStrand > 0) return h.particlesPerStrand;
   const int n = int(std::lround(arcLength / h.segmentLength)) + 1;
   return std::clamp(n, h.minParticles, h.maxParticles);
 }
 
-Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& head,
-                    float collisionRadius) {
+Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& spheres,
+                    float collisionRadius, const DistanceGrid* field) {
   Groom g;
-  if (head.empty() || h.strands <= 0) return g;
+  if ((spheres.empty() && !field) || h.strands <= 0) return g;
   const double margin = 2.0 * collisionRadius;
-  RootSampler roots(h);
+  const GrowthHead head{spheres, field};
+  RootSampler roots(h, field != nullptr);
   std::vector<glm::vec3> strand;
   for (int s = 0; s < h.strands; ++s) {
     const glm::dvec3 dir = roots.next();
@@ -194,7 +229,7 @@ Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& head,
     std::vector<glm::dvec3> pts = resample(dense, particlesForLength(h, arc));
     strand.clear();
     for (size_t i = 0; i < pts.size(); ++i) {
-      if (i > 0) pushOut(pts[i], head, margin);
+      if (i > 0) head.pushOut(pts[i], margin);
       strand.emplace_back(pts[i]);
     }
     g.addStrand(strand);
@@ -237,7 +272,7 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
   }
   const HairstyleConfig& h = c.hairstyle;
   if (h.file.empty()) {
-    out = growHairstyle(h, c.head.spheres, c.collision.radius);
+    out = growHairstyle(c);
     r.filePoints = r.simulatedPoints = out.pointCount();
     return true;
   }
@@ -256,6 +291,7 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
   fit.rotationDeg = h.importRotation;
   fit.offset = h.importOffset;
   fit.headSpheres = c.head.spheres;
+  fit.headField = headField(c);
   fit.snapRoots = true;
   io::fitToHead(g, fit);
   r.filePoints = g.pointCount();

@@ -5,17 +5,31 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "sim/config.h"
 #include "sim/groom.h"
 
 namespace csm {
 
+struct DistanceGrid;
+
 // Particles of one strand chosen by its arc length (curl included), within the preset's bounds:
 // the paper's 8-25.
 int particlesForLength(const HairstyleConfig& h, double arcLength);
 
+// Grows on the spheres (the first is the scalp), or, given a field, on its surface with roots
+// seen from kMannequinScalpCentre (sim/head_shape.h).
 Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& head,
-                    float collisionRadius);
+                    float collisionRadius, const DistanceGrid* field = nullptr);
+
+// The scene's hairstyle on the scene's head (its field when collision.head_shape is sdf).
+Groom growHairstyle(const Config& c);
+
+// Whether hair grows in direction dir (a unit vector from the scalp's centre, head frame): the
+// cap of hairstyle.scalp_angle about the crown, lower at the back than at the forehead, and on
+// the mannequin not over its ears.
+bool onScalp(const HairstyleConfig& h, const glm::dvec3& dir, bool mannequin);
 
 struct GroomReport {
   size_t fileStrands = 0;      // strands in the groom file (0 for the generator)

@@ -23,8 +23,8 @@ bool finite(const glm::dvec3& p) {
 // The measures over strands [first[s], first[s+1]), positions and velocities by particle.
 template <class Position, class Velocity, class Pinned>
 Accuracy measure(size_t strands, const uint32_t* first, Position x, Velocity v, size_t velocities,
-                 std::span<const double> restLength, std::span<const Sphere> spheres,
-                 Pinned pinned) {
+                 std::span<const double> restLength, std::span<const Sphere> spheres, Pinned pinned,
+                 const PosedField& field) {
   Accuracy acc;
   double strainSum = 0.0;
   uint64_t segments = 0;
@@ -37,7 +37,9 @@ Accuracy measure(size_t strands, const uint32_t* first, Position x, Velocity v, 
         continue;
       }
       if (i < velocities) acc.maxSpeed = std::max(acc.maxSpeed, glm::length(v(i)));
-      if (int(i - a) >= pinned(s))
+      if (int(i - a) >= pinned(s) && field.grid)
+        acc.headPenetrations += field.contains(xi);
+      else if (int(i - a) >= pinned(s))
         for (const Sphere& sp : spheres)
           if (glm::length(xi - glm::dvec3(sp.center)) < double(sp.radius) * (1.0 - 1e-6)) {
             ++acc.headPenetrations;
@@ -59,22 +61,23 @@ Accuracy measure(size_t strands, const uint32_t* first, Position x, Velocity v, 
 
 Accuracy measureAccuracy(std::span<const glm::vec4> x, std::span<const glm::vec4> v,
                          const Groom& groom, std::span<const double> restLength,
-                         std::span<const Sphere> spheres, int pinned) {
+                         std::span<const Sphere> spheres, int pinned, const PosedField& field) {
   // Through float, as the positions are: the speed and strain of a float state.
   return measure(
       groom.strandCount(), groom.first.data(),
       [&](uint32_t i) { return glm::dvec3(glm::vec3(x[i])); },
       [&](uint32_t i) { return glm::dvec3(glm::vec3(v[i])); }, v.size(), restLength, spheres,
-      [&](size_t) { return pinned; });
+      [&](size_t) { return pinned; }, field);
 }
 
 Accuracy measureAccuracy(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v,
                          std::span<const uint32_t> first, std::span<const double> restLength,
-                         std::span<const Sphere> spheres, std::span<const int> pinned) {
+                         std::span<const Sphere> spheres, std::span<const int> pinned,
+                         const PosedField& field) {
   return measure(
       first.empty() ? 0 : first.size() - 1, first.data(), [&](uint32_t i) { return x[i]; },
       [&](uint32_t i) { return v[i]; }, v.size(), restLength, spheres,
-      [&](size_t s) { return pinned[s]; });
+      [&](size_t s) { return pinned[s]; }, field);
 }
 
 }  // namespace csm

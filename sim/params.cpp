@@ -213,6 +213,12 @@ std::vector<Param<Config>> build() {
             Effect::Live)
           .choices({std::begin(kCollisionModeNames), std::end(kCollisionModeNames)})
           .alias("full", int(CollisionMode::Strands)),
+      param("collision.head_shape", "Head shape", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::headShape, 0, 0,
+            "sdf: the built-in mannequin (head, neck, shoulders) as a signed distance field "
+            "sampled at 4 mm, collided with and drawn; spheres: head.spheres, as the paper does.",
+            Effect::Rebuild)
+          .choices({"sdf", "spheres"}),
       param("collision.radius", "Hair radius", "Simulation|Collision", &Config::collision,
             &CollisionConfig::radius, 1e-5, 0.02,
             "Collision radius of a strand (m): two strands touch at twice this.", Effect::Live)

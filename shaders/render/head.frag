@@ -5,6 +5,7 @@ layout(binding = SCALP_UNIT) uniform sampler2DArray uScalp;
 
 in vec3 vPosition;
 in vec3 vNormal;
+in vec3 vScalpDir;
 flat in int vSphere;
 out vec4 fragColor;
 
@@ -30,8 +31,7 @@ void main() {
   float sky = 0.75 + 0.25 * N.y;
   // Where hair grows (in the head's own frame), the scalp takes the roots' colour: gaps
   // between strands then read as dense hair rather than bare skin.
-  vec3 local = transpose(mat3(uHeadRotation)) * N;
-  vec4 scalp = texture(uScalp, vec3(octahedral(local), float(vSphere)));
+  vec4 scalp = texture(uScalp, vec3(octahedral(normalize(vScalpDir)), float(vSphere)));
   vec3 rootColour = (uCounts.w & 1) != 0 ? scalp.rgb : uRootColor.rgb;
   vec3 albedo = mix(uHeadColor.rgb, rootColour * 0.7, scalp.a);
   spec *= 1.0 - scalp.a;

@@ -93,6 +93,7 @@
 #define CSM_TEX_INVERSE_MASS 8
 #define CSM_TEX_VOLUME_SUMS 9
 #define CSM_TEX_VOLUME_REST 10  // float per node: the volume fraction the rest groom fills
+#define CSM_TEX_HEAD_FIELD 11   // vec4 per node of the head's distance field: gradient, distance
 
 // Slots of the COUNTERS buffer.
 #define CSM_COUNTER_ENTRIES 0

@@ -26,6 +26,9 @@ struct SimParams {
   uvec4 volumeDims;   // xyz nodes per axis, w volume forces this frame
   vec4 volume;        // x friction (1/s), y stiffness (m^2/s^2), z fraction allowed, w volume
                       // fraction per fixed-point unit of strand length at a node
+  // The head's distance field (sim/head_shape.h), in the head's frame.
+  vec4 headField;      // xyz the field's lowest node, w node spacing (m)
+  uvec4 headFieldDims;  // xyz nodes per axis, w 1 when the head is the field (else spheres)
 };
 
 struct Substep {

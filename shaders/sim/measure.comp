@@ -3,9 +3,10 @@
 // bytes per CSM_MEASURE_GROUP particles and no positions. No atomics: the reduction runs in a
 // fixed order, and GpuSolver::takeSample combines the records in order on the CPU.
 //   record[2g]:     x max strain (float bits, ordered as unsigned: see orderedKey),
-//                   y segments measured, z particles inside a head sphere, w non-finite particles
+//                   y segments measured, z particles inside the head, w non-finite particles
 //   record[2g + 1]: x sum of |strain| (float bits), y max speed (float bits), z, w unused
 #include "sim/common.glsl"
+#include "sim/head_field.glsl"
 
 layout(local_size_x = CSM_MEASURE_GROUP) in;
 
@@ -23,6 +24,7 @@ layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffn
 layout(std430, binding = CSM_BIND_MEASURE) writeonly buffer Measure { uvec4 record[]; };
 
 uniform uint sphereBase;  // the head spheres of the frame's last step
+uniform uint lastStep;    // and its index, for the head's pose
 
 shared uint sMaxStrain[CSM_MEASURE_GROUP];
 shared uint sSegments[CSM_MEASURE_GROUP];
@@ -56,7 +58,9 @@ void main() {
       nonFinite = 1u;
     } else {
       speed = length(v);
-      if (int(i - a) >= int(strandStiffness[s].z))
+      if (int(i - a) >= int(strandStiffness[s].z) && headIsField())
+        inside = headFieldSample(toHeadFrame(S[lastStep].head, x)).w < 0.0 ? 1u : 0u;
+      else if (int(i - a) >= int(strandStiffness[s].z))
         for (int k = 0; k < P.ints.w; ++k) {
           vec4 sp = spheres[sphereBase + uint(k)];
           if (length(x - sp.xyz) < sp.w * (1.0 - 1e-6)) {

@@ -1,11 +1,12 @@
 // Step 6 of DESIGN.md section 1, one invocation per strand: the strand contacts' corrections
 // (contact_solve.comp: each particle moves by the mean of what its segments sent), strain
 // limiting in one sweep from root to tip (paper section 3.2: each segment is fixed against an already final parent, so
-// no iteration), pushing out of the head spheres, Coulomb friction against the head and DFTL
+// no iteration), pushing out of the head (its distance field, or its spheres), Coulomb friction against the head and DFTL
 // (Mueller et al. 2012) on the strain-limit correction, as CpuSolver::limitStrain. The sweep
 // is sequential by nature; a strand is one invocation and the particle's parent stays in
 // registers.
 #include "sim/common.glsl"
+#include "sim/head_field.glsl"
 
 layout(local_size_x = CSM_STRAND_GROUP) in;
 
@@ -101,7 +102,10 @@ void main() {
     }
     vec3 strained = x;
     bool touching = false;
-    if (headCollide) {
+    vec3 fieldNormal = vec3(0.0);
+    if (headCollide && headIsField()) {
+      touching = pushOutOfHeadField(x, xPrev, st.head, r, maxLength, fieldNormal);
+    } else if (headCollide) {
       // Overlapping spheres can push a particle into each other: repeat until it is clear.
       for (int pass = 0; pass < 4; ++pass) {
         bool moved = false;
@@ -119,17 +123,20 @@ void main() {
       // Coulomb friction against the moving head: the tangential speed relative to the surface
       // loses at most mu times the normal speed the contact took away this step.
       vec3 surfaceVel = (x - (st.headDelta * vec4(x, 1.0)).xyz) / h;
-      vec4 nearest = spheres[sphereBase];
-      float best = length(x - nearest.xyz) - nearest.w;
-      for (int k = 1; k < sphereCount; ++k) {
-        vec4 sp = spheres[sphereBase + uint(k)];
-        float dist = length(x - sp.xyz) - sp.w;
-        if (dist < best) {
-          best = dist;
-          nearest = sp;
+      vec3 nrm = fieldNormal;
+      if (!headIsField()) {
+        vec4 nearest = spheres[sphereBase];
+        float best = length(x - nearest.xyz) - nearest.w;
+        for (int k = 1; k < sphereCount; ++k) {
+          vec4 sp = spheres[sphereBase + uint(k)];
+          float dist = length(x - sp.xyz) - sp.w;
+          if (dist < best) {
+            best = dist;
+            nearest = sp;
+          }
         }
+        nrm = normalize(x - nearest.xyz);
       }
-      vec3 nrm = normalize(x - nearest.xyz);
       float vnBefore = dot(vBeforeHead - surfaceVel, nrm);
       vec3 rel = v - surfaceVel;
       float vn = max(0.0, dot(rel, nrm));

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/head_shape.h"
 #include "sim/parallel.h"
 #include "sim/wind.h"
 
@@ -56,6 +57,29 @@ bool pushOutOfSphere(glm::dvec3& p, const glm::dvec3& prev, const glm::dvec3& c,
   const double sideLen = glm::length(side);
   if (sideLen < 1e-15) return true;
   p = centre + side * (rho / sideLen);
+  return true;
+}
+
+// The same for the head's distance field (sim/head_shape.h), read in the head's frame: p
+// moves along the field's normal out of the surface inflated by `radius`, and when that is
+// out of reach of prev, onto the nearest point of the circle where the surface's tangent
+// plane there meets the ball of reach. `normal` gets the outward normal (world).
+bool pushOutOfHeadField(const DistanceGrid& g, const Pose& head, glm::dvec3& p,
+                        const glm::dvec3& prev, double radius, double maxLength,
+                        glm::dvec3& normal) {
+  glm::dvec3 local = glm::inverse(head.rotation) * (p - head.translation), n;
+  if (!pushOutOfField(g, local, radius, &n)) return false;
+  const glm::dvec3 target = head.apply(local);
+  normal = head.rotation * n;
+  p = target;
+  if (maxLength <= 0.0 || glm::length(target - prev) <= maxLength) return true;
+  const double above = glm::dot(prev - target, normal);
+  if (std::abs(above) >= maxLength) return true;  // no circle: keep the projection
+  const glm::dvec3 centre = prev - above * normal;
+  const glm::dvec3 side = target - centre;
+  const double sideLen = glm::length(side);
+  if (sideLen < 1e-15) return true;
+  p = centre + side * (std::sqrt(maxLength * maxLength - above * above) / sideLen);
   return true;
 }
 
@@ -431,6 +455,7 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
   const double r = config_.collision.radius;
   const double friction = config_.collision.headFriction;
   const double dftl = sim.dftl;
+  const DistanceGrid* field = headField(config_);
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
@@ -453,7 +478,10 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
         }
         const glm::dvec3 strained = x_[i];
         bool touching = false;
-        if (headCollide) {
+        glm::dvec3 fieldNormal(0.0);
+        if (headCollide && field) {
+          touching = pushOutOfHeadField(*field, head, x_[i], x_[i - 1], r, maxLength, fieldNormal);
+        } else if (headCollide) {
           // Overlapping spheres can push a particle into each other: repeat until it is clear.
           for (int pass = 0; pass < 4; ++pass) {
             bool moved = false;
@@ -472,13 +500,16 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
           // so a resting strand feels mu g_n whatever the step.
           const glm::dvec3 local = glm::inverse(head.rotation) * (x_[i] - head.translation);
           const glm::dvec3 surfaceVel = (x_[i] - before.apply(local)) / h;
-          const Sphere* nearest = &spheres.front();
-          double best = 1e300;
-          for (const Sphere& sp : spheres) {
-            double dist = glm::length(x_[i] - glm::dvec3(sp.center)) - sp.radius;
-            if (dist < best) best = dist, nearest = &sp;
+          glm::dvec3 n = fieldNormal;
+          if (!field) {
+            const Sphere* nearest = &spheres.front();
+            double best = 1e300;
+            for (const Sphere& sp : spheres) {
+              double dist = glm::length(x_[i] - glm::dvec3(sp.center)) - sp.radius;
+              if (dist < best) best = dist, nearest = &sp;
+            }
+            n = glm::normalize(x_[i] - glm::dvec3(nearest->center));
           }
-          const glm::dvec3 n = glm::normalize(x_[i] - glm::dvec3(nearest->center));
           const double vnBefore = glm::dot(vBeforeHead - surfaceVel, n);
           const glm::dvec3 rel = v_[i] - surfaceVel;
           const double vn = std::max(0.0, glm::dot(rel, n));
@@ -517,8 +548,9 @@ void CpuSolver::writeState(const std::vector<glm::vec4>& positions,
 void CpuSolver::requestSample(long frame) {
   FrameSample sample;
   sample.frame = frame;
-  sample.accuracy = measureAccuracy(x_, v_, first_, restLength_,
-                                    worldSpheres(config_.head.spheres, head_), regions_.pinned);
+  sample.accuracy =
+      measureAccuracy(x_, v_, first_, restLength_, worldSpheres(config_.head.spheres, head_),
+                      regions_.pinned, PosedField{headField(config_), head_});
   if (strandContacts(config_.collision.mode)) {
     sample.contacts = contacts_;
     sample.contactsMeasured = true;

@@ -33,6 +33,9 @@ struct SimParams {
   glm::uvec4 volumeDims;    // xyz nodes per axis, w volume forces this frame
   glm::vec4 volume;         // x friction (1/s), y stiffness (m^2/s^2), z fraction allowed, w volume
                             // fraction per fixed-point unit of strand length at a node
+  // The head's distance field (sim/head_shape.h), in the head's frame.
+  glm::vec4 headField;       // xyz the field's lowest node, w node spacing (m)
+  glm::uvec4 headFieldDims;  // xyz nodes per axis, w 1 when the head is the field (else spheres)
 };
 
 struct Substep {
@@ -41,7 +44,7 @@ struct Substep {
   glm::vec4 time;       // x time at the start, y h, z twist step, w velocity kept by damping
 };
 
-static_assert(sizeof(SimParams) == 12 * 16 + 2 * 64 + 3 * 16);
+static_assert(sizeof(SimParams) == 12 * 16 + 2 * 64 + 5 * 16);
 static_assert(offsetof(SimParams, cells) == 10 * 16);
 static_assert(sizeof(Substep) == 144);
 

@@ -11,6 +11,7 @@
 #include "gl/debug.h"
 #include "gl/draw.h"
 #include "sim/gpu/buffer_fill.h"
+#include "sim/head_shape.h"
 #include "shaders/sim/bindings.glsl"
 
 namespace csm {
@@ -75,6 +76,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
                    glm::vec3(head.translation));
   uploadRegions();
   resetVolume();
+  uploadHeadField();
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
 
@@ -96,6 +98,15 @@ void GpuSolver::setConfig(const Config& config) {
   config_ = config;
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) resetVolume();
+  if (headField(config_) != uploadedField_) uploadHeadField();
+}
+
+void GpuSolver::uploadHeadField() {
+  const DistanceGrid* field = headField(config_);
+  if (field == uploadedField_ && headField_.id() != 0) return;
+  gpu::fill(headField_, field ? field->nodes : std::vector<glm::vec4>(1));
+  gpu::view(headFieldTex_, headField_, GL_RGBA32F);
+  uploadedField_ = field;
 }
 
 void GpuSolver::resetVolume() {
@@ -160,8 +171,16 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
       glm::uvec4(glm::uvec3(volume_.dims()), volumeForces(col.mode) && !volume_.empty() ? 1u : 0u);
   p.volume = glm::vec4(col.volumeFriction, col.volumeStiffness, col.volumeFraction,
                        float(volume_.fillPerUnit()));
+  if (const DistanceGrid* field = uploadedField_) {
+    p.headField = glm::vec4(field->origin, field->cell);
+    p.headFieldDims = glm::uvec4(glm::uvec3(field->dims), 1u);
+  } else {
+    p.headField = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    p.headFieldDims = glm::uvec4(2u, 2u, 2u, 0u);
+  }
 
   const int substeps = int(poses.size());
+  substepsWritten_ = substeps;
   const double h = double(sim.dt) / substeps;
   const double keep = std::exp(-double(sim.damping) * h);
   std::vector<unsigned char> blob(sizeof(gpu::SimParams) + substeps * sizeof(gpu::Substep));
@@ -199,6 +218,7 @@ void GpuSolver::bindAll() {
   volumeSumsTex_.bind(CSM_TEX_VOLUME_SUMS);
   volumeRestTex_.bind(CSM_TEX_VOLUME_REST);
   volumeFieldTex_.bind(CSM_TEX_VOLUME_FIELD);
+  headFieldTex_.bind(CSM_TEX_HEAD_FIELD);
   spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
   measure_.bindBase(ssbo, CSM_BIND_MEASURE);
 }
@@ -332,7 +352,9 @@ void GpuSolver::requestSample(long frame) {
       frame, groups,
       [&] {
         bindAll();
-        passes_.measure.set("sphereBase", lastSubstepSpheres()).run(uint32_t(hair_.particles));
+        passes_.measure.set("sphereBase", lastSubstepSpheres())
+            .set("lastStep", unsigned(std::max(substepsWritten_ - 1, 0)))
+            .run(uint32_t(hair_.particles));
       },
       measure_, grid_.counters(), listed || measureContacts_);
 }

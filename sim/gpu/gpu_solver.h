@@ -99,6 +99,7 @@ class GpuSolver final : public Solver {
   // The candidate lists of the current state, built now (detectContacts, the measures).
   void listCandidatesNow(gpu::StageTimer* timer);
   unsigned lastSubstepSpheres() const;  // the first sphere of the last step's
+  void uploadHeadField();               // the head's distance field, when it is one
 
   Config config_;
   double time_ = 0.0;
@@ -121,6 +122,11 @@ class GpuSolver final : public Solver {
       volumeField_{gl::NoCreate};
   gl::BufferTexture volumeSumsTex_{gl::NoCreate}, volumeRestTex_{gl::NoCreate},
       volumeFieldTex_{gl::NoCreate};
+  // The head's distance field (sim/head_shape.h), read by texel fetches; one node when unused.
+  gl::Buffer headField_{gl::NoCreate};
+  gl::BufferTexture headFieldTex_{gl::NoCreate};
+  const DistanceGrid* uploadedField_ = nullptr;
+  int substepsWritten_ = 0;  // steps of the last writeParams
   gpu::StageTimer timer_;
   bool measureContacts_ = false;
   gpu::SampleRing samples_;

@@ -10,6 +10,8 @@
 #include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "sim/head_shape.h"
+
 namespace csm::io {
 namespace {
 
@@ -166,7 +168,19 @@ FitReport fitToHead(Groom& groom, const FitOptions& options) {
   for (glm::vec3& p : groom.points) p = scale * (rotation * p) + translation;
   for (float& t : groom.thickness) t *= scale;
 
-  if (options.snapRoots) {
+  if (options.snapRoots && options.headField) {
+    // The nearest point of the field's surface.
+    for (size_t s = 0; s < groom.strandCount(); ++s) {
+      const glm::vec3 root = groom.points[groom.first[s]];
+      const glm::vec3 move =
+          glm::vec3(projectToSurface(*options.headField, glm::dvec3(root))) - root;
+      const float distance = glm::length(move);
+      if (distance == 0.0f) continue;
+      for (uint32_t i = groom.first[s]; i < groom.first[s + 1]; ++i) groom.points[i] += move;
+      ++report.snappedStrands;
+      report.maxSnapDistance = std::max(report.maxSnapDistance, distance);
+    }
+  } else if (options.snapRoots) {
     for (size_t s = 0; s < groom.strandCount(); ++s) {
       const glm::vec3 root = groom.points[groom.first[s]];
       // The nearest surface point that is not buried in another sphere (a root snapped

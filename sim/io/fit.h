@@ -10,6 +10,7 @@
 
 #include "sim/config.h"
 #include "sim/groom.h"
+#include "sim/head_shape.h"
 
 namespace csm::io {
 
@@ -34,6 +35,9 @@ struct FitOptions {
   // head sphere (along that sphere's normal through the root); the strand keeps its shape.
   // Surface points buried inside another sphere are passed over while others exist.
   bool snapRoots = false;
+  // With a field (the mannequin, sim/head_shape.h), roots snap to its nearest surface point
+  // instead of the spheres'.
+  const DistanceGrid* headField = nullptr;
 };
 
 // What fitToHead() did, for logs and the UI.

@@ -54,7 +54,7 @@ TEST_CASE("with gravity off the rest groom stays still for 1 s with strand conta
   c.hairstyle.strands = 300;
   c.sim.gravity = glm::vec3(0.0f);
   c.collision.mode = CollisionMode::Strands;
-  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  const Groom g = growHairstyle(c);
   CpuSolver solver;
   solver.reset(g, c, Pose{});
   const std::vector<glm::vec4> rest = positions(solver);
@@ -152,7 +152,7 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   Config c;
   c.hairstyle.strands = 400;
   c.collision.mode = CollisionMode::Head;
-  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  const Groom g = growHairstyle(c);
   CpuSolver solver;
   solver.reset(g, c, Pose{});
   solver.stepFrame(Pose{}, Pose{});

@@ -8,6 +8,7 @@
 #include "sim/config.h"
 #include "sim/groom.h"
 #include "sim/hairstyle.h"
+#include "sim/head_shape.h"
 
 namespace csm::test {
 
@@ -26,7 +27,7 @@ inline Config smallScene(int strands = 60) {
 }
 
 inline Groom growFor(const Config& c) {
-  return growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  return growHairstyle(c);
 }
 
 // The strand of each of the groom's points (the layout every solver keeps).

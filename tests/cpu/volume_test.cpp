@@ -117,7 +117,7 @@ TEST_CASE("volume mode: with gravity off the rest groom stays still") {
   c.sim.gravity = glm::vec3(0.0f);
   c.collision.mode = CollisionMode::Volume;
   c.collision.volumeFraction = 0.01f;  // everything the groom packed is allowed, not more
-  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  const Groom g = growHairstyle(c);
   CpuSolver solver;
   solver.reset(g, c, Pose{});
   const std::vector<glm::dvec3> rest = solver.positions();
@@ -136,7 +136,7 @@ TEST_CASE("volume mode: hair falling onto itself ends less dense than without it
   c.hairstyle.fall = 0.0f;
   c.collision.volumeFraction = 0.05f;
   c.collision.volumeStiffness = 5.0f;
-  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  const Groom g = growHairstyle(c);
   auto densest = [&](CollisionMode mode) {
     Config m = c;
     m.collision.mode = mode;

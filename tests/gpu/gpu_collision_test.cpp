@@ -192,7 +192,7 @@ TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu
   c.hairstyle.particlesPerStrand = 12;
   c.wind.strength = 3.0f;
   c.collision.mode = CollisionMode::Strands;
-  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  const Groom g = growHairstyle(c);
   gpu->reset(g, c, Pose{});
   for (int f = 0; f < 10; ++f) gpu->stepFrame(Pose{}, Pose{});
   gpu->detectContacts();
@@ -219,7 +219,7 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
   c.head.motion = HeadMotion::Shake;
   c.head.amplitude = 40.0f;
   c.collision.radius = 0.002f;
-  const Groom g = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  const Groom g = growHairstyle(c);
   const std::vector<uint32_t> strand = strandOf(g);
   auto penetrations = [&](CollisionMode mode, ContactStats* stats) {
     Config m = c;

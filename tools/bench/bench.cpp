@@ -164,7 +164,7 @@ Scene mainScene(const Options& o) {
   c.head.frequency = 0.6f;
   c.wind.strength = 0.0f;
   c.collision.mode = CollisionMode::Head;
-  s.groom = growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius);
+  s.groom = growHairstyle(c);
   return s;
 }
 
@@ -176,7 +176,7 @@ Scene presetScene(const Options& o, const std::string& preset, int strands) {
     std::fprintf(stderr, "csmhair-bench: %s\n", errors.text().c_str());
   s.config = p.scene;
   s.config.hairstyle.strands = strands;
-  s.groom = growHairstyle(s.config.hairstyle, s.config.head.spheres, s.config.collision.radius);
+  s.groom = growHairstyle(s.config);
   return s;
 }
 

@@ -107,7 +107,7 @@ void runSceneChoices(const Options& o) {
   std::fprintf(stderr, "scene choices: presets/default.json with %d strands, %.2f s\n", strands,
                duration);
   auto regrow = [](Scene s) {
-    s.groom = growHairstyle(s.config.hairstyle, s.config.head.spheres, s.config.collision.radius);
+    s.groom = growHairstyle(s.config);
     return s;
   };
 

@@ -1,0 +1,200 @@
+// The mannequin head: its distance field and mesh, the hair grown on its scalp, and the hair
+// kept outside it by the CPU solver.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include "sim/cpu/cpu_solver.h"
+#include "sim/hairstyle.h"
+#include "sim/head_shape.h"
+#include "tests/cpu/test_scenes.h"
+
+using namespace csm;
+
+namespace {
+
+// A deterministic spread of points over the field's box.
+std::vector<glm::dvec3> boxPoints(const DistanceGrid& g, int count) {
+  std::vector<glm::dvec3> out;
+  const glm::dvec3 lo(g.origin), size = glm::dvec3(g.dims - 1) * double(g.cell);
+  for (int i = 0; i < count; ++i) {
+    const glm::dvec3 u(std::fmod(0.5 + i * 0.7548776662, 1.0),
+                       std::fmod(0.5 + i * 0.5698402910, 1.0),
+                       std::fmod(0.5 + i * 0.4301597090, 1.0));
+    out.push_back(lo + u * size);
+  }
+  return out;
+}
+
+Config mannequinScene(int strands) {
+  Config c = test::smallScene(strands);
+  c.collision.headShape = HeadShape::Sdf;
+  c.collision.mode = CollisionMode::Head;
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("Mannequin: the field's sign is right inside and outside", "[head]") {
+  // Points that are inside a head, neck and shoulders, and points that are not.
+  for (const glm::dvec3 p : {glm::dvec3(0, 0.02, 0), glm::dvec3(0, -0.05, 0.03),
+                             glm::dvec3(0, -0.16, -0.02), glm::dvec3(0.12, -0.31, 0),
+                             glm::dvec3(0, -0.045, 0.098), glm::dvec3(0.075, -0.025, -0.01)}) {
+    INFO(p.x << ", " << p.y << ", " << p.z);
+    CHECK(mannequinDistance(p) < 0.0);
+    CHECK(mannequinGrid().sample(p) < 0.0);
+  }
+  for (const glm::dvec3 p :
+       {glm::dvec3(0, 0.12, 0), glm::dvec3(0, 0, 0.11), glm::dvec3(0.1, 0, 0),
+        glm::dvec3(0, 0, -0.12), glm::dvec3(0.032, -0.013, 0.095), glm::dvec3(0.1, -0.16, 0),
+        glm::dvec3(0, -0.1, 0.12), glm::dvec3(0.5, 0.5, 0.5)}) {
+    INFO(p.x << ", " << p.y << ", " << p.z);
+    CHECK(mannequinDistance(p) > 0.0);
+    CHECK(mannequinGrid().sample(p) > 0.0);
+  }
+  // Near the surface the sampled field follows the function within a fraction of a cell, and
+  // its gradient points the same way as the function's.
+  const DistanceGrid& g = mannequinGrid();
+  int near = 0;
+  double worst = 0.0, worstAngle = 1.0;
+  for (const glm::dvec3& p : boxPoints(g, 200000)) {
+    const double exact = mannequinDistance(p);
+    if (std::abs(exact) > 0.01) continue;
+    ++near;
+    glm::dvec3 grad;
+    worst = std::max(worst, std::abs(g.sample(p, &grad) - exact));
+    const double e = 1e-5;
+    const glm::dvec3 exactGrad(
+        mannequinDistance(p + glm::dvec3(e, 0, 0)) - mannequinDistance(p - glm::dvec3(e, 0, 0)),
+        mannequinDistance(p + glm::dvec3(0, e, 0)) - mannequinDistance(p - glm::dvec3(0, e, 0)),
+        mannequinDistance(p + glm::dvec3(0, 0, e)) - mannequinDistance(p - glm::dvec3(0, 0, e)));
+    worstAngle = std::min(worstAngle, glm::dot(glm::normalize(grad), glm::normalize(exactGrad)));
+  }
+  INFO(near << " points within 1 cm: worst error " << worst << " m, worst cosine " << worstAngle);
+  CHECK(near > 1000);
+  CHECK(worst < 0.5e-3);
+  CHECK(worstAngle > 0.5);
+}
+
+TEST_CASE("Mannequin: the mesh is closed, outward and on the surface", "[head]") {
+  const SurfaceMesh& m = mannequinMesh();
+  CHECK(m.indices.size() / 3 > 20000);
+  CHECK(m.positions.size() == m.normals.size());
+  CHECK(openEdges(m) == 0);
+  // Every vertex on the zero level, every triangle facing the way its normals point.
+  double off = 0.0;
+  size_t inward = 0;
+  for (const glm::vec3& p : m.positions) off = std::max(off, std::abs(mannequinDistance(p)));
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]],
+                    c = m.positions[m.indices[t + 2]];
+    const glm::vec3 n =
+        m.normals[m.indices[t]] + m.normals[m.indices[t + 1]] + m.normals[m.indices[t + 2]];
+    if (glm::dot(glm::cross(b - a, c - a), n) < 0.0f) ++inward;
+  }
+  CHECK(off < 1e-5);
+  CHECK(inward * 1000 < m.indices.size() / 3);
+  // A mesh with a hole is found open.
+  SurfaceMesh cut = m;
+  cut.indices.resize(cut.indices.size() - 3);
+  CHECK(openEdges(cut) > 0);
+}
+
+TEST_CASE("Mannequin: a grown groom roots on the scalp and leaves the face open", "[head]") {
+  Config c = mannequinScene(3000);
+  const Groom g = test::growFor(c);
+  REQUIRE(g.strandCount() == 3000);
+  const DistanceGrid& field = mannequinGrid();
+  size_t offSurface = 0, offScalp = 0, onFace = 0, onEars = 0, overFace = 0;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    const glm::dvec3 root(g.points[g.first[s]]);
+    if (std::abs(field.sample(root)) > 1e-3) ++offSurface;
+    if (!onScalp(c.hairstyle, glm::normalize(root - kMannequinScalpCentre), true)) ++offScalp;
+    // The face: between the temples, below the forehead.
+    if (root.z > 0.03 && root.y < 0.035 && std::abs(root.x) < 0.045) ++onFace;
+    if (glm::length(glm::dvec3(std::abs(root.x), root.y, root.z) -
+                    glm::dvec3(0.074, -0.025, -0.010)) < 0.03)
+      ++onEars;
+    // No particle hangs in front of the face.
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) {
+      const glm::dvec3 p(g.points[i]);
+      if (p.y < 0.0 && p.y > -0.13 && std::abs(p.x) < 0.05 && p.z > 0.0) ++overFace;
+    }
+  }
+  CHECK(offSurface == 0);
+  CHECK(offScalp == 0);
+  CHECK(onFace == 0);
+  CHECK(onEars == 0);
+  CHECK(overFace == 0);
+  // And the same hairstyle on the spheres grows from the scalp sphere, not the mannequin.
+  Config spheres = c;
+  spheres.collision.headShape = HeadShape::Spheres;
+  const Groom onSpheres = test::growFor(spheres);
+  CHECK(std::abs(glm::length(onSpheres.points[0]) - 0.1f) < 1e-4f);
+  CHECK(std::abs(field.sample(glm::dvec3(onSpheres.points[0]))) > 1e-3);
+}
+
+TEST_CASE("Mannequin: no particle ends a frame inside the head by more than the hair radius",
+          "[head][cpu]") {
+  // The default preset's scene, the head shaking hard, hair blown against the face.
+  Config c = mannequinScene(400);
+  c.head.motion = HeadMotion::Shake;
+  c.head.amplitude = 60.0f;
+  c.head.frequency = 1.5f;
+  c.wind.strength = 6.0f;
+  c.wind.direction = {0.3f, 0.0f, -1.0f};
+  const Groom g = test::growFor(c);
+  CpuSolver cpu;
+  cpu.reset(g, c, headPose(c.head, 0.0));
+  const DistanceGrid& field = mannequinGrid();
+  const double r = c.collision.radius;
+  double deepest = 1.0;
+  size_t touching = 0;
+  double t = 0.0;
+  for (int f = 0; f < 40; ++f, t += c.sim.dt) {
+    const Pose to = headPose(c.head, t + c.sim.dt);
+    cpu.stepFrame(headPose(c.head, t), to);
+    const std::vector<glm::dvec3>& x = cpu.positions();
+    for (size_t s = 0; s < g.strandCount(); ++s)
+      for (uint32_t i = g.first[s] + 2; i < g.first[s + 1]; ++i) {
+        const double d = field.sample(glm::inverse(to.rotation) * (x[i] - to.translation));
+        deepest = std::min(deepest, d);
+        touching += d < 2.0 * r;
+      }
+  }
+  INFO("deepest " << deepest << " m, " << touching << " particle-frames within 2r");
+  CHECK(touching > 100);  // the hair does lie on the head
+  CHECK(deepest > -r);
+  // Without head collisions the same motion takes hair well inside.
+  Config off = c;
+  off.collision.mode = CollisionMode::Off;
+  CpuSolver free;
+  free.reset(g, off, headPose(c.head, 0.0));
+  t = 0.0;
+  double freeDeepest = 1.0;
+  for (int f = 0; f < 40; ++f, t += c.sim.dt) {
+    const Pose to = headPose(c.head, t + c.sim.dt);
+    free.stepFrame(headPose(c.head, t), to);
+    for (const glm::dvec3& p : free.positions())
+      freeDeepest =
+          std::min(freeDeepest, field.sample(glm::inverse(to.rotation) * (p - to.translation)));
+  }
+  CHECK(freeDeepest < -r);
+}
+
+TEST_CASE("Mannequin: pushOutOfField leaves a point at the radius", "[head]") {
+  const DistanceGrid& g = mannequinGrid();
+  glm::dvec3 p(0.0, 0.05, 0.0);  // deep inside the cranium
+  glm::dvec3 n;
+  REQUIRE(pushOutOfField(g, p, 1e-3, &n));
+  // Two steps along the normal: within a fraction of a millimetre of the radius, outside.
+  CHECK(g.sample(p) > 0.5e-3);
+  CHECK(g.sample(p) < 2e-3);
+  CHECK(n.y > 0.5);
+  glm::dvec3 q(0.0, 0.2, 0.0);
+  CHECK_FALSE(pushOutOfField(g, q, 1e-3));
+  CHECK(q == glm::dvec3(0.0, 0.2, 0.0));
+}
