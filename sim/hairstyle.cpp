@@ -89,14 +89,17 @@ struct GrowthHead {
     return glm::dvec3(scalp.center) + dir * double(scalp.radius);
   }
   bool pushOut(glm::dvec3& p, double margin) const {
-    if (!field) return pushOutOfSpheres(p, spheres, margin);
-    // The face is left open: below the hairline's height, hair within the head's width
-    // stays behind the ears.
-    const bool moved = p.y < kFaceTop && std::abs(p.x) < kFaceHalfWidth && p.z > kBehindEars;
-    if (moved) p.z = kBehindEars;
-    return pushOutOfField(*field, p, margin) || moved;
+    return field ? pushOutOfField(*field, p, margin) : pushOutOfSpheres(p, spheres, margin);
   }
-  static constexpr double kFaceTop = 0.03, kFaceHalfWidth = 0.11, kBehindEars = -0.03;
+  // The face is left open: on the mannequin, hair that comes down beside the face (below the
+  // hairline's height, within the head's width, in front of the ears) turns back behind the
+  // ears. A turn of the growing direction, not a move of the point, so that strands keep
+  // their own paths instead of being pressed onto one surface.
+  glm::dvec3 steer(const glm::dvec3& p, const glm::dvec3& want) const {
+    if (!field || p.y > 0.03 || std::abs(p.x) > 0.11 || p.z < -0.03) return want;
+    const double depth = std::min(1.0, (p.z + 0.03) / 0.03 + (0.03 - p.y) / 0.03);
+    return glm::normalize(want + glm::dvec3(0.0, 0.0, -3.0 * depth));
+  }
 };
 
 // Resamples a dense polyline to n points evenly spaced in arc length.
@@ -137,7 +140,7 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
   for (int i = 1; i <= steps; ++i) {
     const double along = i * ds;
     const double blend = 1.0 - std::exp(-turn * along);
-    glm::dvec3 want = glm::normalize(glm::mix(dir, fallTo + 0.3 * jitter, blend));
+    glm::dvec3 want = head.steer(p, glm::normalize(glm::mix(dir, fallTo + 0.3 * jitter, blend)));
     t = glm::normalize(glm::mix(t, want, 0.5));
     glm::dvec3 next = p + t * (length / steps);
     glm::dvec3 before = next;
