@@ -39,6 +39,9 @@ enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
 // What the head is, for collision and drawing: the built-in mannequin's signed distance field
 // (sim/head_shape.h), or the spheres of head.spheres, as the paper does.
 enum class HeadShape : int { Sdf = 0, Spheres = 1 };
+// Where the generator parts the hair: none (it falls from the crown all round), down the middle,
+// or on the head's left (+x) or right (-x).
+enum class Parting : int { None = 0, Centre = 1, Left = 2, Right = 3 };
 // How stiffness is given (sim/stiffness.h). Paper: a window in particles and alpha = the pull
 // toward the goals per step, as the paper does; the hair gets stiffer with more substeps and
 // softer with more particles. Calibrated: a window in metres and a bending stiffness per unit
@@ -62,6 +65,9 @@ struct HairstyleConfig {
   float hairlineFront = 50.0f;  // degrees from the crown where the forehead begins
   float fall = 0.6f;            // 0 = strands stick out along the normal, 1 = fall straight down
   float sweep = 0.7f;           // how far hair from the front is swept back from the face
+  Parting parting = Parting::None;
+  bool fringe = false;          // hair from the front of the scalp falls forward, cut at the brow
+  float volume = 0.006f;        // thickness of the hair's layer over the scalp (m)
   int seed = 1;
   // Imported grooms.
   float importScale = 0.0f;  // 0 = fit to the head automatically

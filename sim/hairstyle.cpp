@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -16,6 +17,10 @@
 
 namespace csm {
 namespace {
+
+// Landmarks of the head frame the groom is laid out by (DESIGN.md section 3: y up, the face
+// towards +z): the crown's depth, a side parting's offset from the middle, the brow's height.
+constexpr double kCrownZ = -0.02, kSideParting = 0.035, kBrowY = 0.012;
 
 // SplitMix64: a small, well-mixed hash; strand s's random numbers come from hash(seed, s, k).
 uint64_t mix(uint64_t x) {
@@ -88,6 +93,28 @@ struct GrowthHead {
     const Sphere& scalp = spheres.front();
     return glm::dvec3(scalp.center) + dir * double(scalp.radius);
   }
+  // The outward direction of the head's surface nearest p.
+  glm::dvec3 normal(const glm::dvec3& p) const {
+    glm::dvec3 n;
+    if (field) {
+      field->sample(p, &n);
+    } else {
+      double nearest = 1e30;
+      for (const Sphere& s : spheres) {
+        const double d = glm::length(p - glm::dvec3(s.center)) - s.radius;
+        if (d < nearest) nearest = d, n = p - glm::dvec3(s.center);
+      }
+    }
+    return glm::length(n) > 1e-12 ? glm::normalize(n) : glm::dvec3(0.0, 1.0, 0.0);
+  }
+  // Distance from p to the head's surface (negative inside).
+  double distance(const glm::dvec3& p) const {
+    if (field) return field->sample(p);
+    double nearest = 1e30;
+    for (const Sphere& s : spheres)
+      nearest = std::min(nearest, glm::length(p - glm::dvec3(s.center)) - double(s.radius));
+    return nearest;
+  }
   bool pushOut(glm::dvec3& p, double margin) const {
     return field ? pushOutOfField(*field, p, margin) : pushOutOfSpheres(p, spheres, margin);
   }
@@ -118,38 +145,88 @@ std::vector<glm::dvec3> resample(const std::vector<glm::dvec3>& q, int n) {
   return out;
 }
 
+// The direction hair lies in at p (head frame) before it hangs free: down, away from the
+// parting (or from the crown's axis) on top of the head, and back from the face; a fringe
+// forward over the forehead.
+glm::dvec3 combDirection(const HairstyleConfig& h, const glm::dvec3& p, bool fringe) {
+  const glm::dvec3 down(0.0, -1.0, 0.0);
+  if (fringe) return glm::normalize(down + glm::dvec3(p.x / 0.1, 0.0, 0.3));
+  const glm::dvec3 radial(p.x, 0.0, p.z - kCrownZ);
+  glm::dvec3 away = glm::length(radial) > 1e-9 ? glm::normalize(radial) : glm::dvec3(0, 0, -1);
+  if (h.parting != Parting::None) {
+    const double line = h.parting == Parting::Left    ? kSideParting
+                        : h.parting == Parting::Right ? -kSideParting
+                                                      : 0.0;
+    const glm::dvec3 side(p.x >= line ? 1.0 : -1.0, 0.0, 0.0);
+    // The parting runs from the forehead back to the crown; behind it hair falls from the crown.
+    away = glm::normalize(glm::mix(away, side, glm::smoothstep(kCrownZ - 0.04, kCrownZ, p.z)));
+  }
+  const double top = std::clamp((p.y + 0.02) / 0.08, 0.0, 1.0);
+  const double front = std::clamp(p.z / 0.06, 0.0, 1.0);
+  return glm::normalize(down + 2.0 * top * away + h.sweep * front * glm::dvec3(0.0, 0.3, -5.0));
+}
+
+// Strands from the front patch of the scalp make the fringe, when the style has one.
+bool inFringe(const HairstyleConfig& h, const glm::dvec3& dir) {
+  return h.fringe && dir.z > 0.4 && std::abs(dir.x) < 0.6 * dir.z;
+}
+
 std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& head, double margin,
                                    uint64_t s, const glm::dvec3& dir) {
   const glm::dvec3 root = head.root(dir);
-  const double length = glm::mix(double(h.lengthMin), double(h.lengthMax), random01(h.seed, s, 3));
+  const bool fringe = inFringe(h, dir);
+  // A fringe hanging straight from its root ends at the brow.
+  const double length =
+      fringe ? std::max(0.02, root.y - kBrowY)
+             : glm::mix(double(h.lengthMin), double(h.lengthMax), random01(h.seed, s, 3));
+  // Hair from higher roots lies further out, over the hair from lower roots: layers by root
+  // height, so that strands draped over the head pass over each other instead of through.
+  const double layer = margin + double(h.volume) * std::clamp((root.y + 0.03) / 0.13, 0.0, 1.0);
 
-  // Centreline: leaves along the scalp normal, turns down at a rate set by `fall`, drapes over
-  // the head where it meets it.
+  // Centreline: leaves along the scalp normal, turns at a rate set by `fall` toward the comb
+  // direction (which hangs down once off the top of the head), drapes over the head where it
+  // meets it.
   const double ds = std::min(0.002, length / 64.0);
   const int steps = std::max(2, int(std::ceil(length / ds)));
   const double turn = 4.0 + 60.0 * h.fall * h.fall;  // 1/m
   const glm::dvec3 down(0.0, -1.0, 0.0);
   // A little per-strand disorder so the hair does not look combed by a machine.
   const glm::dvec3 jitter(random01(h.seed, s, 4) - 0.5, 0.0, random01(h.seed, s, 5) - 0.5);
-  // Hair growing toward the face is swept back and to the side, away from the eyes.
-  const double front = std::max(0.0, dir.z);
-  const glm::dvec3 fallTo =
-      down + h.sweep * front * glm::dvec3(dir.x >= 0.0 ? 1.2 : -1.2, 0.6, -2.0);
+  // The comb lies along the head: its part away from the surface is dropped, so hair on the
+  // sides lies on them instead of standing out.
+  auto combAt = [&](const glm::dvec3& at) {
+    glm::dvec3 comb = combDirection(h, at, fringe) + 0.3 * jitter;
+    const glm::dvec3 n = head.normal(at);
+    comb -= std::max(0.0, glm::dot(comb, n)) * n;
+    return glm::normalize(comb + 1e-9 * down);
+  };
+  // The root leaves between the normal and the comb: a strand that left along the normal could
+  // swing about it freely (its pinned first segment holds no twist) and fall over the face.
+  const glm::dvec3 leave = glm::normalize(glm::mix(head.normal(root), combAt(root), double(h.fall)));
   std::vector<glm::dvec3> centre{root};
-  glm::dvec3 p = root, t = dir;
+  glm::dvec3 p = root, t = leave;
   for (int i = 1; i <= steps; ++i) {
     const double along = i * ds;
     const double blend = 1.0 - std::exp(-turn * along);
-    glm::dvec3 want = head.steer(p, glm::normalize(glm::mix(dir, fallTo + 0.3 * jitter, blend)));
+    glm::dvec3 want = glm::normalize(glm::mix(leave, combAt(p), blend));
+    if (!fringe) want = head.steer(p, want);
     t = glm::normalize(glm::mix(t, want, 0.5));
     glm::dvec3 next = p + t * (length / steps);
     glm::dvec3 before = next;
-    if (i > 1 && head.pushOut(next, margin)) {
+    if (i > 1 && head.pushOut(next, layer)) {
       // Follow the surface: keep the tangential part of the direction.
       glm::dvec3 n = glm::normalize(next - before + 1e-12 * t);
       t = glm::normalize(t - glm::dot(t, n) * n + 1e-9 * down);
       next = p + t * (length / steps);
-      head.pushOut(next, margin);
+      head.pushOut(next, layer);
+    }
+    // On top of the head hair lies on it: a strand above its layer is drawn back down to it,
+    // so hair from the crown does not stand off as a dome (down the sides it drapes).
+    const glm::dvec3 n = head.normal(next);
+    const double above = head.distance(next) - layer;
+    if (i > 1 && above > 0.0 && n.y > 0.5) {
+      next -= n * std::min(above, 0.25 * length / steps);
+      t = glm::normalize(next - p);
     }
     p = next;
     centre.push_back(p);

@@ -79,6 +79,23 @@ std::vector<Param<Config>> build() {
           "How far hair growing toward the face is swept back and to the sides (0 = it falls over "
           "the face).",
           Effect::Rebuild),
+      param("hairstyle.parting", "Parting", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::parting, 0, 0,
+            "Where the hair parts on top: none (it falls from the crown all round), centre, or "
+            "on the head's left or right. Hair lies on the scalp away from the parting.",
+            Effect::Rebuild)
+          .choices({"none", "centre", "left", "right"}),
+      param("hairstyle.fringe", "Fringe", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::fringe, 0, 1,
+            "Hair from the front of the scalp falls forward over the forehead, cut at the brow "
+            "(the eyes stay open).",
+            Effect::Rebuild),
+      param("hairstyle.volume", "Volume", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::volume, 0.0, 0.03,
+            "Thickness of the hair's layer over the scalp (m): hair from higher roots lies this "
+            "much further out, over the hair from lower roots.",
+            Effect::Rebuild)
+          .display(1000.0, "mm"),
       param("hairstyle.seed", "Seed", "Hairstyle", &Config::hairstyle, &HairstyleConfig::seed, 0,
             2147483647, "Random seed of the groom. The same seed gives the same hair.",
             Effect::Rebuild),

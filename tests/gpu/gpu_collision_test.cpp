@@ -219,6 +219,7 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
   c.head.motion = HeadMotion::Shake;
   c.head.amplitude = 40.0f;
   c.collision.radius = 0.002f;
+  c.hairstyle.volume = 0.03f;  // as the CPU test: a layer that holds hair this thick
   const Groom g = growHairstyle(c);
   const std::vector<uint32_t> strand = strandOf(g);
   auto penetrations = [&](CollisionMode mode, ContactStats* stats) {

@@ -268,16 +268,20 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
       INFO("max " << d.max << " m, rms " << d.rms << " m");
       CHECK(d.over == 0);
     }
-    // The measures exactly over the first two frames; by the third the runs are ~1e-5 m
-    // apart, enough for a pair at the reach or at a depth bin's edge to fall either side.
+    // The measures over the first two frames: the candidates and crossings exactly; pairs
+    // closer than r and the depth bins within a pair or two, since a groom that lies on the
+    // head has pairs at a bin's edge from the start, which float and double put either side
+    // (frame 1: 2,095 against 2,094). By the third frame the runs are ~1e-5 m apart, enough
+    // for a pair at the reach to fall either side too.
     if (f < 2) {
       CHECK(onGpu.candidates == onCpu.candidates);
-      CHECK(onGpu.penetrations == onCpu.penetrations);
       CHECK(onGpu.crossings == onCpu.crossings);
       CHECK(onGpu.crossingsClose == onCpu.crossingsClose);
+      CHECK(std::abs(double(onGpu.penetrations) - double(onCpu.penetrations)) <= 2.0);
       // The first bin holds pairs at their rest distance, which float and double put either
       // side of it.
-      for (int k = 1; k < kDepthBins; ++k) CHECK(onGpu.depth[k] == onCpu.depth[k]);
+      for (int k = 1; k < kDepthBins; ++k)
+        CHECK(std::abs(double(onGpu.depth[k]) - double(onCpu.depth[k])) <= 2.0);
     } else {
       CHECK(std::abs(double(onGpu.candidates) - double(onCpu.candidates)) <
             0.05 * double(onCpu.candidates));
