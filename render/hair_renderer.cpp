@@ -38,8 +38,9 @@ struct FrameUniforms {
   glm::vec4 follow;
   glm::ivec4 counts;
   glm::ivec4 counts2;
+  glm::vec4 width;
 };
-static_assert(sizeof(FrameUniforms) == 3 * 64 + 14 * 16);
+static_assert(sizeof(FrameUniforms) == 3 * 64 + 15 * 16);
 
 // How far apart follow hairs get at the tip, relative to the root: clumps open up toward the
 // ends (AMD TressFX's "tip separation" does the same).
@@ -47,6 +48,10 @@ constexpr float kFollowTipSpread = 1.0f;
 // A share of the strands is drawn wider by 1/sqrt(share), up to this: most of the coverage
 // without turning the hair into straws.
 constexpr float kMaxWidthScale = 2.0f;
+// The width (m) a strand drawn render.strand_width pixels wide stands for in the shadow maps,
+// where a width in pixels means nothing: a texel's side of the default preset's 1,024-texel
+// map, so that preset's shadows are as dark as when every fragment counted in full.
+constexpr float kShadowWidthOfPixelStrands = 0.0009f;
 
 std::vector<gl::Define> sharedDefines(int samples) {
   auto d = [](const char* name, int v) { return gl::Define{name, std::to_string(v)}; };
@@ -264,11 +269,12 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
                          1.0f / float(frame.height));
   // Orthographic depth is linear: one unit of depth is the whole 2R of the light's box.
   const float size = float(shadow_->size());
-  u.lightRange = glm::vec4(2.0f * R, size, 1.0f / size, 0.0f);
+  u.lightRange = glm::vec4(2.0f * R, size, 1.0f / size, 2.0f * R / size);
   u.follow = glm::vec4(c.hairstyle.followSpread, kFollowTipSpread, shadowOpacityScale, 0.0f);
   u.counts = glm::ivec4(geometry_->subdivision(), std::max(c.hairstyle.followCount, 0),
                         geometry_->pointBits(), geometry_->strandFlags());
   u.counts2 = glm::ivec4(geometry_->shadowSubdivision(), head_.sphereCount(), 0, 0);
+  u.width = glm::vec4(0.0f, 0.0f, kShadowWidthOfPixelStrands, 0.0f);
   frameUniforms_.setSubData(0, sizeof(u), &u);
 }
 

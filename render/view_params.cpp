@@ -53,7 +53,8 @@ std::vector<Param<ViewConfig>> build() {
             &RenderConfig::layerSpacing, 0.0005, 0.2, "Depth between deep opacity map layers (m).",
             Effect::Render),
       param("render.shadow_map_size", "Shadow map size", "Rendering|Shadows", &ViewConfig::render,
-            &RenderConfig::shadowMapSize, 128, 4096, "Resolution of the deep opacity maps.",
+            &RenderConfig::shadowMapSize, 128, 4096,
+            "Resolution of the deep opacity maps: sharper shadows, equally dark at every size.",
             Effect::Render),
       param("render.head_color", "Head colour", "Rendering|Colour", &ViewConfig::render,
             &RenderConfig::headColor, 0, 1, "Colour of the head.", Effect::Render)
