@@ -14,6 +14,7 @@
 #include "gl/state_backup.h"
 #include "render/bindings.h"
 #include "render/camera.h"
+#include "render/hair_color.h"
 #include "render/scalp_map.h"
 
 namespace csm {
@@ -257,8 +258,9 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
   u.eye = glm::vec4(eye, 1.0f);
   u.lightDir = glm::vec4(dir, look.light.intensity);
   u.lightColor = glm::vec4(srgbToLinear(look.light.color), look.light.ambient);
-  u.rootColor = glm::vec4(srgbToLinear(r.rootColor), r.colorVariation);
-  u.tipColor = glm::vec4(srgbToLinear(r.tipColor), std::clamp(r.opacity, 0.0f, 1.0f));
+  const HairColors colors = hairColors(r);
+  u.rootColor = glm::vec4(srgbToLinear(colors.root), r.colorVariation);
+  u.tipColor = glm::vec4(srgbToLinear(colors.tip), std::clamp(r.opacity, 0.0f, 1.0f));
   u.specShift =
       glm::vec4(r.specularShift1, r.specularShift2, r.specularExponent1, r.specularExponent2);
   u.specStrength = glm::vec4(r.specularStrength1, r.specularStrength2, r.strandWidth * widthScale,

@@ -6,6 +6,9 @@ namespace {
 bool interactiveQuality(const ViewConfig& v) {
   return v.render.interactive;
 }
+bool customHairColor(const ViewConfig& v) {
+  return v.render.hairColor == HairColor::Custom;
+}
 
 std::vector<Param<ViewConfig>> build() {
   return {
@@ -17,12 +20,22 @@ std::vector<Param<ViewConfig>> build() {
       param("render.subdivision", "Subdivision", "Rendering", &ViewConfig::render,
             &RenderConfig::subdivision, 1, 16, "Spline segments drawn per simulated segment.",
             Effect::Render),
+      param("render.hair_color", "Hair colour", "Rendering|Colour", &ViewConfig::render,
+            &RenderConfig::hairColor, 0, 0,
+            "A natural hair colour, darker at the root: black, brown, blond, red (auburn) or "
+            "grey; custom: render.root_color and render.tip_color.",
+            Effect::Render)
+          .choices({"custom", "black", "brown", "blond", "red", "grey"}),
       param("render.root_color", "Root colour", "Rendering|Colour", &ViewConfig::render,
-            &RenderConfig::rootColor, 0, 1, "Hair colour at the root.", Effect::Render)
-          .asColor(),
+            &RenderConfig::rootColor, 0, 1, "Hair colour at the root (render.hair_color custom).",
+            Effect::Render)
+          .asColor()
+          .onlyWhen(customHairColor),
       param("render.tip_color", "Tip colour", "Rendering|Colour", &ViewConfig::render,
-            &RenderConfig::tipColor, 0, 1, "Hair colour at the tip.", Effect::Render)
-          .asColor(),
+            &RenderConfig::tipColor, 0, 1, "Hair colour at the tip (render.hair_color custom).",
+            Effect::Render)
+          .asColor()
+          .onlyWhen(customHairColor),
       param("render.color_variation", "Colour variation", "Rendering|Colour", &ViewConfig::render,
             &RenderConfig::colorVariation, 0.0, 1.0, "Per-strand random variation of brightness.",
             Effect::Render),

@@ -7,8 +7,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <string>
 #include <vector>
 
+#include "app/params.h"
 #include "gl/shader_source.h"
 #include "tests/gpu/render_test_scene.h"
 
@@ -173,6 +176,44 @@ TEST_CASE("Render: groom colours reach the screen", "[render][image]") {
   INFO("mean hair colour " << s.meanRgb[0] << " " << s.meanRgb[1] << " " << s.meanRgb[2]);
   CHECK(s.meanRgb[1] > s.meanRgb[0] + 10.0);
   CHECK(s.meanRgb[1] > s.meanRgb[2] + 10.0);
+}
+
+TEST_CASE("Render: natural hair colours: black darker than brown, brown than blond; red is red",
+          "[render][image]") {
+  test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 1500));
+  const test::Image bare = scene.render(320, 180, nullptr, false);
+  const test::Image custom = scene.render(320, 180);
+  const std::vector<bool> mask = test::hairMask(custom, bare);
+  std::map<std::string, Stats> stats;
+  for (const char* name : {"black", "brown", "blond", "red", "grey"}) {
+    Preset p = scene.preset();
+    REQUIRE(paramFromText(*findParam("render.hair_color"), p, name) == "");
+    const test::Image img = scene.render(320, 180, &p);
+    test::dumpImage(img, std::string("hair_color_") + name);
+    stats[name] = hairStats(img, mask);
+    INFO(name << ": luma " << stats[name].meanLuma << ", rgb " << stats[name].meanRgb[0] << " "
+              << stats[name].meanRgb[1] << " " << stats[name].meanRgb[2]);
+    CHECK(stats[name].share > 0.05);
+  }
+  const double black = stats["black"].meanLuma, brown = stats["brown"].meanLuma,
+               blond = stats["blond"].meanLuma;
+  INFO("luma: black " << black << ", brown " << brown << ", blond " << blond);
+  // Measured 0.84 and 0.57: every strand's white highlight, and the backdrop through the
+  // thin strands at the hair's edges, lift black hair's mean.
+  CHECK(black < 0.9 * brown);
+  CHECK(brown < 0.75 * blond);
+  CHECK(blond > black + 40.0);
+  const Stats& red = stats["red"];
+  const Stats& grey = stats["grey"];
+  INFO("red " << red.meanRgb[0] << " " << red.meanRgb[2] << "; grey " << grey.meanRgb[0] << " "
+              << grey.meanRgb[2]);
+  CHECK(red.meanRgb[0] > red.meanRgb[2] + 25.0);
+  // Redder than brown, not just brighter: red over green by more.
+  CHECK(red.meanRgb[0] - red.meanRgb[1] > stats["brown"].meanRgb[0] - stats["brown"].meanRgb[1]);
+  CHECK(std::abs(grey.meanRgb[0] - grey.meanRgb[2]) < 20.0);
+  CHECK(grey.meanLuma > brown);
+  // Brown is the default colours, which this preset keeps (custom).
+  CHECK(hairStats(custom, mask).meanLuma == brown);
 }
 
 TEST_CASE("Render: without strands or positions the head and backdrop are still drawn",
