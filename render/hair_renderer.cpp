@@ -51,7 +51,8 @@ constexpr float kFollowTipSpread = 1.0f;
 constexpr float kMaxWidthScale = 2.0f;
 // The width (m) a strand drawn render.strand_width pixels wide stands for in the shadow maps,
 // where a width in pixels means nothing: a texel's side of the default preset's 1,024-texel
-// map, so that preset's shadows are as dark as when every fragment counted in full.
+// map, so that preset's shadows are as dark as when every fragment counted in full. With
+// render.strand_width_m the shadows take that width instead.
 constexpr float kShadowWidthOfPixelStrands = 0.0009f;
 
 std::vector<gl::Define> sharedDefines(int samples) {
@@ -276,7 +277,11 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
   u.counts = glm::ivec4(geometry_->subdivision(), std::max(c.hairstyle.followCount, 0),
                         geometry_->pointBits(), geometry_->strandFlags());
   u.counts2 = glm::ivec4(geometry_->shadowSubdivision(), head_.sphereCount(), 0, 0);
-  u.width = glm::vec4(0.0f, 0.0f, kShadowWidthOfPixelStrands, 0.0f);
+  // A width in metres: pixels per metre at view depth 1 from the projection's vertical scale
+  // (1 / tan(fov / 2) for the orbit camera), so a strand narrows with distance as it would.
+  const float widthM = std::max(r.strandWidthM, 0.0f);
+  u.width = glm::vec4(widthM * widthScale, 0.5f * proj[1][1] * float(frame.height),
+                      widthM > 0.0f ? widthM : kShadowWidthOfPixelStrands, 0.0f);
   frameUniforms_.setSubData(0, sizeof(u), &u);
 }
 

@@ -12,6 +12,7 @@ enum class HairColor : int { Custom = 0, Black, Brown, Blond, Red, Grey };
 struct RenderConfig {
   bool shadows = true;
   float strandWidth = 1.5f;                 // pixels
+  float strandWidthM = 0.0f;                // metres; 0: strandWidth pixels
   int subdivision = 4;                      // spline segments drawn per simulated segment
   HairColor hairColor = HairColor::Custom;  // custom: rootColor and tipColor
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};

@@ -6,6 +6,9 @@ namespace {
 bool interactiveQuality(const ViewConfig& v) {
   return v.render.interactive;
 }
+bool widthInPixels(const ViewConfig& v) {
+  return v.render.strandWidthM <= 0.0f;
+}
 bool customHairColor(const ViewConfig& v) {
   return v.render.hairColor == HairColor::Custom;
 }
@@ -15,8 +18,17 @@ std::vector<Param<ViewConfig>> build() {
       param("render.shadows", "Shadows", "Rendering", &ViewConfig::render, &RenderConfig::shadows,
             0, 1, "Deep opacity map self-shadowing.", Effect::Render),
       param("render.strand_width", "Strand width", "Rendering", &ViewConfig::render,
-            &RenderConfig::strandWidth, 0.1, 8.0, "Width of a drawn strand (pixels).",
-            Effect::Render),
+            &RenderConfig::strandWidth, 0.1, 8.0,
+            "Width of a drawn strand (pixels), when render.strand_width_m is 0.", Effect::Render)
+          .onlyWhen(widthInPixels),
+      param("render.strand_width_m", "Metric strand width", "Rendering", &ViewConfig::render,
+            &RenderConfig::strandWidthM, 0.0, 0.002,
+            "Width of a drawn strand in metres, narrower on screen as the camera moves away "
+            "(under 1.5 pixels it covers less of each pixel instead), and the width its shadow "
+            "takes; a drawn strand may stand for several real hairs (each 0.05-0.1 mm). 0: "
+            "render.strand_width pixels on screen, shadows as of 0.9 mm strands.",
+            Effect::Render)
+          .display(1000.0, "mm"),
       param("render.subdivision", "Subdivision", "Rendering", &ViewConfig::render,
             &RenderConfig::subdivision, 1, 16, "Spline segments drawn per simulated segment.",
             Effect::Render),

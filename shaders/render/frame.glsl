@@ -25,7 +25,9 @@ layout(std140, binding = FRAME_UNIFORMS_BINDING) uniform FrameUniforms {
   ivec4 uCounts;        // x: subdivision; y: follow hairs per guide; z: point bits;
                         // w: strand flags (1 groom colours, 2 groom thickness)
   ivec4 uCounts2;       // x: subdivision of the shadow passes; y: head spheres
-  vec4 uWidth;          // z: the width (m) a strand stands for in the shadow maps
+  vec4 uWidth;          // x: strand width on screen (m; 0: uSpecStrength.z pixels instead);
+                        // y: pixels per metre at view depth 1; z: the width (m) a strand
+                        // stands for in the shadow maps
 };
 
 const float kPi = 3.14159265358979;

@@ -1,5 +1,6 @@
 // Hair, every pass. SHADOW_PASS: points seen from the light, drawn as line strips into the
-// deep opacity maps. Otherwise: camera-facing ribbons of render.strand_width pixels, shaded per vertex with the deep-opacity transmittance.
+// deep opacity maps. Otherwise: camera-facing ribbons of render.strand_width pixels (or
+// render.strand_width_m metres), shaded per vertex with the deep-opacity transmittance.
 #include "render/hair_common.glsl"
 
 #ifdef SHADOW_PASS
@@ -105,7 +106,10 @@ void main() {
   vec4 dc = uViewProj * vec4(v.tangent, 0.0);
   vec2 dir = (dc.xy * c.w - c.xy * dc.w) * uViewport.xy;  // d(pixels)/d(parameter), scaled
   dir = dot(dir, dir) > 1e-20 ? normalize(dir) : vec2(1.0, 0.0);
-  float width = uSpecStrength.z * strandWidthFactor(v);
+  // In pixels, or in metres seen from the camera: pixels per metre at depth 1 over the depth
+  // (clip w: the view depth in a perspective, 1 in an orthographic view).
+  float width = strandWidthFactor(v) *
+                (uWidth.x > 0.0 ? uWidth.x * uWidth.y / max(c.w, 1e-6) : uSpecStrength.z);
   // A ribbon narrower than about a pixel and a half misses a fixed sample position in some
   // pixels along its length and breaks into dots: draw it that wide and cover
   // proportionally fewer samples instead (width-based fading).

@@ -216,6 +216,64 @@ TEST_CASE("Render: natural hair colours: black darker than brown, brown than blo
   CHECK(hairStats(custom, mask).meanLuma == brown);
 }
 
+// Hair's coverage in pixels (the pixels' worth of frame it hides) from a frame with black,
+// unlit hair (it hides what is behind it and adds nothing) and the same frame without it,
+// in linear light: the resolve averages the samples' linear colours.
+double coveredPixels(const test::Image& hair, const test::Image& bare) {
+  auto linear = [](std::uint8_t v) {
+    const double c = v / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  double sum = 0.0;
+  for (int y = 0; y < hair.height; ++y)
+    for (int x = 0; x < hair.width; ++x) {
+      const double b = linear(bare.at(x, y)[1]), h = linear(hair.at(x, y)[1]);
+      if (b > 0.02) sum += std::clamp(1.0 - h / b, 0.0, 1.0);
+    }
+  return sum;
+}
+
+TEST_CASE("Render: a strand width in metres narrows with the camera's distance",
+          "[render][image]") {
+  // Few strands, so they seldom overlap and the coverage adds up strand by strand.
+  Preset c = test::presetConfig("paper_fig1_straight.json", 150);
+  c.view.render.hairColor = HairColor::Custom;
+  c.view.render.rootColor = c.view.render.tipColor = glm::vec3(0.0f);
+  c.view.render.specularStrength1 = c.view.render.specularStrength2 = 0.0f;
+  c.view.render.shadows = false;
+  c.view.render.opacity = 0.3f;  // strands cover a share of the samples: overlaps add up
+  test::RenderScene scene(c);
+  const int w = 480, h = 270;
+  auto coverage = [&](float distance, float widthPx, float widthM) {
+    Preset p = scene.preset();
+    p.view.camera.distance = distance;
+    p.view.render.strandWidth = widthPx;
+    p.view.render.strandWidthM = widthM;
+    const test::Image hair = scene.render(w, h, &p);
+    const test::Image bare = scene.render(w, h, &p, false);
+    test::dumpImage(hair, "width_" + std::to_string(distance) + "_" + std::to_string(widthM));
+    return coveredPixels(hair, bare);
+  };
+  // 2 mm: a pixel wide at 0.75 m on this frame (370 pixels per metre at 1 m), half a pixel at
+  // 1.5 m; both drawn 1.5 pixels wide over a share of the samples. Twice as far, a strand is
+  // half as long and half as wide on screen: a quarter of the pixels. One a fixed number of
+  // pixels wide covers half (less where the strands, closer together, overlap).
+  const double nearM = coverage(0.75f, 1.5f, 0.002f), farM = coverage(1.5f, 1.5f, 0.002f);
+  const double nearPx = coverage(0.75f, 1.5f, 0.0f), farPx = coverage(1.5f, 1.5f, 0.0f);
+  INFO("pixels covered, width in metres: " << nearM << " near, " << farM << " far (" << farM / nearM
+                                           << "); in pixels: " << nearPx << " near, " << farPx
+                                           << " far (" << farPx / nearPx << ")");
+  // Measured 0.26 in metres, 0.43 in pixels.
+  CHECK(nearM > 500.0);
+  CHECK(farM / nearM > 0.18);
+  CHECK(farM / nearM < 0.32);
+  CHECK(farPx / nearPx > 0.38);
+  // Where the two agree, the same coverage: 2 mm and 1 pixel at 0.75 m.
+  const double nearPx1 = coverage(0.75f, 1.0f, 0.0f);
+  INFO("1 pixel at 0.75 m: " << nearPx1);
+  CHECK(std::abs(nearM - nearPx1) < 0.15 * nearPx1);
+}
+
 TEST_CASE("Render: without strands or positions the head and backdrop are still drawn",
           "[render][image]") {
   test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 200), 0);
