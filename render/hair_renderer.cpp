@@ -14,6 +14,7 @@
 #include "gl/state_backup.h"
 #include "render/bindings.h"
 #include "render/camera.h"
+#include "render/hair_color.h"
 #include "render/scalp_map.h"
 
 namespace csm {
@@ -38,8 +39,9 @@ struct FrameUniforms {
   glm::vec4 follow;
   glm::ivec4 counts;
   glm::ivec4 counts2;
+  glm::vec4 width;
 };
-static_assert(sizeof(FrameUniforms) == 3 * 64 + 14 * 16);
+static_assert(sizeof(FrameUniforms) == 3 * 64 + 15 * 16);
 
 // How far apart follow hairs get at the tip, relative to the root: clumps open up toward the
 // ends (AMD TressFX's "tip separation" does the same).
@@ -47,6 +49,11 @@ constexpr float kFollowTipSpread = 1.0f;
 // A share of the strands is drawn wider by 1/sqrt(share), up to this: most of the coverage
 // without turning the hair into straws.
 constexpr float kMaxWidthScale = 2.0f;
+// The width (m) a strand drawn render.strand_width pixels wide stands for in the shadow maps,
+// where a width in pixels means nothing: a texel's side of the default preset's 1,024-texel
+// map, so that preset's shadows are as dark as when every fragment counted in full. With
+// render.strand_width_m the shadows take that width instead.
+constexpr float kShadowWidthOfPixelStrands = 0.0009f;
 
 std::vector<gl::Define> sharedDefines(int samples) {
   auto d = [](const char* name, int v) { return gl::Define{name, std::to_string(v)}; };
@@ -252,8 +259,9 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
   u.eye = glm::vec4(eye, 1.0f);
   u.lightDir = glm::vec4(dir, look.light.intensity);
   u.lightColor = glm::vec4(srgbToLinear(look.light.color), look.light.ambient);
-  u.rootColor = glm::vec4(srgbToLinear(r.rootColor), r.colorVariation);
-  u.tipColor = glm::vec4(srgbToLinear(r.tipColor), std::clamp(r.opacity, 0.0f, 1.0f));
+  const HairColors colors = hairColors(r);
+  u.rootColor = glm::vec4(srgbToLinear(colors.root), r.colorVariation);
+  u.tipColor = glm::vec4(srgbToLinear(colors.tip), std::clamp(r.opacity, 0.0f, 1.0f));
   u.specShift =
       glm::vec4(r.specularShift1, r.specularShift2, r.specularExponent1, r.specularExponent2);
   u.specStrength = glm::vec4(r.specularStrength1, r.specularStrength2, r.strandWidth * widthScale,
@@ -264,11 +272,16 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
                          1.0f / float(frame.height));
   // Orthographic depth is linear: one unit of depth is the whole 2R of the light's box.
   const float size = float(shadow_->size());
-  u.lightRange = glm::vec4(2.0f * R, size, 1.0f / size, 0.0f);
+  u.lightRange = glm::vec4(2.0f * R, size, 1.0f / size, 2.0f * R / size);
   u.follow = glm::vec4(c.hairstyle.followSpread, kFollowTipSpread, shadowOpacityScale, 0.0f);
   u.counts = glm::ivec4(geometry_->subdivision(), std::max(c.hairstyle.followCount, 0),
                         geometry_->pointBits(), geometry_->strandFlags());
   u.counts2 = glm::ivec4(geometry_->shadowSubdivision(), head_.sphereCount(), 0, 0);
+  // A width in metres: pixels per metre at view depth 1 from the projection's vertical scale
+  // (1 / tan(fov / 2) for the orbit camera), so a strand narrows with distance as it would.
+  const float widthM = std::max(r.strandWidthM, 0.0f);
+  u.width = glm::vec4(widthM * widthScale, 0.5f * proj[1][1] * float(frame.height),
+                      widthM > 0.0f ? widthM : kShadowWidthOfPixelStrands, 0.0f);
   frameUniforms_.setSubData(0, sizeof(u), &u);
 }
 

@@ -5,7 +5,9 @@
 // Passes, each timed as a stage, over parts that each do one job:
 //   shadow  (ShadowMaps) light-space depth of the nearest hair (z0); the head's depth (back
 //           faces); hair opacity accumulated additively into the four layers of one RGBA16F
-//           target, starting at z0, render.layer_spacing apart. Hair drawn as line strips.
+//           target, starting at z0, render.layer_spacing apart. Hair drawn as line strips
+//           one texel wide, each fragment weighted by the share of its texel the strand's
+//           width covers, so the shadows are as dark at every map size.
 //   head    (HeadMesh) the backdrop and the head spheres into the HDR frame (FrameTarget).
 //   hair    camera-facing ribbons, Catmull-Rom subdivided, Kajiya-Kay shaded, shadows read
 //           per vertex from the maps, transparency as per-strand sample coverage.

@@ -6,10 +6,15 @@
 
 namespace csm {
 
+// Natural hair colours (render/hair_color.h), or the preset's own root and tip colours.
+enum class HairColor : int { Custom = 0, Black, Brown, Blond, Red, Grey };
+
 struct RenderConfig {
   bool shadows = true;
-  float strandWidth = 1.5f;  // pixels
-  int subdivision = 4;       // spline segments drawn per simulated segment
+  float strandWidth = 1.5f;                 // pixels
+  float strandWidthM = 0.0f;                // metres; 0: strandWidth pixels
+  int subdivision = 4;                      // spline segments drawn per simulated segment
+  HairColor hairColor = HairColor::Custom;  // custom: rootColor and tipColor
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
   glm::vec3 tipColor{0.35f, 0.22f, 0.12f};
   float colorVariation = 0.15f;

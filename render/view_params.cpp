@@ -6,23 +6,48 @@ namespace {
 bool interactiveQuality(const ViewConfig& v) {
   return v.render.interactive;
 }
+bool widthInPixels(const ViewConfig& v) {
+  return v.render.strandWidthM <= 0.0f;
+}
+bool customHairColor(const ViewConfig& v) {
+  return v.render.hairColor == HairColor::Custom;
+}
 
 std::vector<Param<ViewConfig>> build() {
   return {
       param("render.shadows", "Shadows", "Rendering", &ViewConfig::render, &RenderConfig::shadows,
             0, 1, "Deep opacity map self-shadowing.", Effect::Render),
       param("render.strand_width", "Strand width", "Rendering", &ViewConfig::render,
-            &RenderConfig::strandWidth, 0.1, 8.0, "Width of a drawn strand (pixels).",
-            Effect::Render),
+            &RenderConfig::strandWidth, 0.1, 8.0,
+            "Width of a drawn strand (pixels), when render.strand_width_m is 0.", Effect::Render)
+          .onlyWhen(widthInPixels),
+      param("render.strand_width_m", "Metric strand width", "Rendering", &ViewConfig::render,
+            &RenderConfig::strandWidthM, 0.0, 0.002,
+            "Width of a drawn strand in metres, narrower on screen as the camera moves away "
+            "(under 1.5 pixels it covers less of each pixel instead), and the width its shadow "
+            "takes; a drawn strand may stand for several real hairs (each 0.05-0.1 mm). 0: "
+            "render.strand_width pixels on screen, shadows as of 0.9 mm strands.",
+            Effect::Render)
+          .display(1000.0, "mm"),
       param("render.subdivision", "Subdivision", "Rendering", &ViewConfig::render,
             &RenderConfig::subdivision, 1, 16, "Spline segments drawn per simulated segment.",
             Effect::Render),
+      param("render.hair_color", "Hair colour", "Rendering|Colour", &ViewConfig::render,
+            &RenderConfig::hairColor, 0, 0,
+            "A natural hair colour, darker at the root: black, brown, blond, red (auburn) or "
+            "grey; custom: render.root_color and render.tip_color.",
+            Effect::Render)
+          .choices({"custom", "black", "brown", "blond", "red", "grey"}),
       param("render.root_color", "Root colour", "Rendering|Colour", &ViewConfig::render,
-            &RenderConfig::rootColor, 0, 1, "Hair colour at the root.", Effect::Render)
-          .asColor(),
+            &RenderConfig::rootColor, 0, 1, "Hair colour at the root (render.hair_color custom).",
+            Effect::Render)
+          .asColor()
+          .onlyWhen(customHairColor),
       param("render.tip_color", "Tip colour", "Rendering|Colour", &ViewConfig::render,
-            &RenderConfig::tipColor, 0, 1, "Hair colour at the tip.", Effect::Render)
-          .asColor(),
+            &RenderConfig::tipColor, 0, 1, "Hair colour at the tip (render.hair_color custom).",
+            Effect::Render)
+          .asColor()
+          .onlyWhen(customHairColor),
       param("render.color_variation", "Colour variation", "Rendering|Colour", &ViewConfig::render,
             &RenderConfig::colorVariation, 0.0, 1.0, "Per-strand random variation of brightness.",
             Effect::Render),
@@ -53,7 +78,8 @@ std::vector<Param<ViewConfig>> build() {
             &RenderConfig::layerSpacing, 0.0005, 0.2, "Depth between deep opacity map layers (m).",
             Effect::Render),
       param("render.shadow_map_size", "Shadow map size", "Rendering|Shadows", &ViewConfig::render,
-            &RenderConfig::shadowMapSize, 128, 4096, "Resolution of the deep opacity maps.",
+            &RenderConfig::shadowMapSize, 128, 4096,
+            "Resolution of the deep opacity maps: sharper shadows, equally dark at every size.",
             Effect::Render),
       param("render.head_color", "Head colour", "Rendering|Colour", &ViewConfig::render,
             &RenderConfig::headColor, 0, 1, "Colour of the head.", Effect::Render)

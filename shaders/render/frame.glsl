@@ -18,12 +18,16 @@ layout(std140, binding = FRAME_UNIFORMS_BINDING) uniform FrameUniforms {
   vec4 uHeadColor;      // rgb; a: 1 when shadows are on
   vec4 uBackground;     // rgb
   vec4 uViewport;       // width, height, 1/width, 1/height
-  vec4 uLightRange;     // x: metres per unit of light depth; y: map size; z: 1/size
+  vec4 uLightRange;     // x: metres per unit of light depth; y: map size; z: 1/size;
+                        // w: a texel's side (m)
   vec4 uFollow;         // x: follow spread at the root (m); y: extra spread at the tip (x);
                         // z: opacity scale of the shadow passes (1 / share of strands drawn)
   ivec4 uCounts;        // x: subdivision; y: follow hairs per guide; z: point bits;
                         // w: strand flags (1 groom colours, 2 groom thickness)
   ivec4 uCounts2;       // x: subdivision of the shadow passes; y: head spheres
+  vec4 uWidth;          // x: strand width on screen (m; 0: uSpecStrength.z pixels instead);
+                        // y: pixels per metre at view depth 1; z: the width (m) a strand
+                        // stands for in the shadow maps
 };
 
 const float kPi = 3.14159265358979;

@@ -1,13 +1,28 @@
 // Hair, every pass. SHADOW_PASS: points seen from the light, drawn as line strips into the
-// deep opacity maps. Otherwise: camera-facing ribbons of render.strand_width pixels, shaded
-// per vertex with the deep-opacity transmittance.
+// deep opacity maps. Otherwise: camera-facing ribbons of render.strand_width pixels (or
+// render.strand_width_m metres), shaded per vertex with the deep-opacity transmittance.
 #include "render/hair_common.glsl"
 
 #ifdef SHADOW_PASS
 
+out float vOpacity;  // what each fragment adds to the opacity layers (hair_opacity.frag)
+
 void main() {
   HairVertex v = hairVertex(uCounts2.x);
   gl_Position = uLightViewProj * vec4(v.position, 1.0);
+  // A line one texel wide lights one texel per step along its major axis: per unit of length
+  // it lights max(|dx|, |dy|) / texel texels, where the strand covers width x length. Each
+  // fragment then stands for width / (texel max(|dx|, |dy|)) of its texel, and adding the
+  // strand's opacity times that share makes the opacity per square metre of the light's view
+  // the hair's own, whatever the map's resolution. (An opacity per fragment alone would
+  // darken the shadows by the texel's side: four times at 256 texels as at 1024.) The light
+  // is orthographic, so the tangent's direction in its view is the same in clip space.
+  vec2 d = (uLightViewProj * vec4(v.tangent, 0.0)).xy;
+  float len = length(d);
+  float major = len > 1e-12 ? max(abs(d.x), abs(d.y)) / len : 1.0;
+  float share = uWidth.z * strandWidthFactor(v) / (uLightRange.w * major);
+  // uFollow.z: more opacity per strand when only a share of the strands is drawn.
+  vOpacity = uTipColor.a * uFollow.z * share;
 }
 
 #else
@@ -73,7 +88,6 @@ void main() {
   // Colour: root-to-tip gradient, per-strand brightness variation, groom colours if any.
   uint h = pcgHash(v.strand);
   vec3 root = uRootColor.rgb, tip = uTipColor.rgb;
-  float thickness = 1.0;
   if ((uCounts.w & 1) != 0) {
     // A groom colour is the strand's colour; the preset's gradient keeps its darker root.
     vec3 c = strandAttributes[v.guide].rgb;
@@ -81,7 +95,6 @@ void main() {
     root = c * (lt > 0.0 ? clamp(lr / lt, 0.0, 1.0) : 1.0);
     tip = c;
   }
-  if ((uCounts.w & 2) != 0) thickness = strandAttributes[v.guide].a;
   float variation = 1.0 + uRootColor.a * (2.0 * hashToUnit(h) - 1.0);
   vec3 albedo = mix(root, tip, smoothstep(0.0, 1.0, v.s)) * variation;
 
@@ -93,8 +106,10 @@ void main() {
   vec4 dc = uViewProj * vec4(v.tangent, 0.0);
   vec2 dir = (dc.xy * c.w - c.xy * dc.w) * uViewport.xy;  // d(pixels)/d(parameter), scaled
   dir = dot(dir, dir) > 1e-20 ? normalize(dir) : vec2(1.0, 0.0);
-  // Thinner toward the tip, as a hair is.
-  float width = uSpecStrength.z * thickness * mix(1.0, 0.5, smoothstep(0.7, 1.0, v.s));
+  // In pixels, or in metres seen from the camera: pixels per metre at depth 1 over the depth
+  // (clip w: the view depth in a perspective, 1 in an orthographic view).
+  float width = strandWidthFactor(v) *
+                (uWidth.x > 0.0 ? uWidth.x * uWidth.y / max(c.w, 1e-6) : uSpecStrength.z);
   // A ribbon narrower than about a pixel and a half misses a fixed sample position in some
   // pixels along its length and breaks into dots: draw it that wide and cover
   // proportionally fewer samples instead (width-based fading).

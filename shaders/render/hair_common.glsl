@@ -96,6 +96,14 @@ vec3 followOffset(uint guide, uint follow, uint first, uint n, uint seg, float u
   return d;
 }
 
+// A strand's width relative to the nominal one: the groom's thickness where it has one, and
+// thinner toward the tip, as a hair is. Every pass uses it: the ribbons' width on screen and
+// the opacity a strand puts into the shadow maps.
+float strandWidthFactor(HairVertex v) {
+  float thickness = (uCounts.w & 2) != 0 ? strandAttributes[v.guide].a : 1.0;
+  return thickness * mix(1.0, 0.5, smoothstep(0.7, 1.0, v.s));
+}
+
 // Decodes the vertex and evaluates its strand. `subdivision` is the pass's spline segments
 // per simulated segment.
 HairVertex hairVertex(int subdivision) {

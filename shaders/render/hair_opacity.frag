@@ -4,11 +4,11 @@
 #include "render/frame.glsl"
 
 layout(binding = LIGHT_DEPTH_UNIT) uniform sampler2D uLightDepth;
+in float vOpacity;  // the strand's opacity times the share of the texel it covers (hair.vert)
 out vec4 fragLayers;
 
 void main() {
   float z0 = texelFetch(uLightDepth, ivec2(gl_FragCoord.xy), 0).r;
   float t = (gl_FragCoord.z - z0) * (uLightRange.x / uSpecStrength.w);
-  // uFollow.z: more opacity per strand when only a share of the strands is drawn.
-  fragLayers = uTipColor.a * uFollow.z * vec4(step(t, 1.0), step(t, 2.0), step(t, 3.0), 1.0);
+  fragLayers = vOpacity * vec4(step(t, 1.0), step(t, 2.0), step(t, 3.0), 1.0);
 }

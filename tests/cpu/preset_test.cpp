@@ -10,6 +10,7 @@
 
 #include "app/params.h"
 #include "app/preset.h"
+#include "render/hair_color.h"
 #include "render/view_params.h"
 #include "sim/params.h"
 #include "sim/scene_checks.h"
@@ -192,4 +193,53 @@ TEST_CASE("a parameter's type is its field's, and the modules' lists make the pr
   // Defaults are the config structs' own.
   CHECK(valueText(*findParam("sim.dt"), Preset{}) ==
         paramToJson(*findSimParam("sim.dt"), Config{}).dump());
+}
+
+TEST_CASE("render.hair_color: natural colours by name from JSON and --set, each its own") {
+  Preset c;
+  CHECK(c.view.render.hairColor == HairColor::Custom);  // presets look as they did
+  PresetErrors e;
+  REQUIRE(parsePreset(R"({"render": {"hair_color": "blond"}})", "p.json", c, e));
+  CHECK(c.view.render.hairColor == HairColor::Blond);
+  CHECK(paramFromText(*findParam("render.hair_color"), c, "red") == "");
+  CHECK(c.view.render.hairColor == HairColor::Red);
+  CHECK(paramFromText(*findParam("render.hair_color"), c, "purple") != "");
+  CHECK(c.view.render.hairColor == HairColor::Red);
+  CHECK(parseErrors(R"({"render": {"hair_color": "ginger"}})").find("hair_color") !=
+        std::string::npos);
+
+  // Each natural colour differs from every other at the root and the tip, is darker at the
+  // root, and ignores the custom colours; custom gives them back.
+  RenderConfig r;
+  r.rootColor = {0.9f, 0.0f, 0.9f};
+  r.tipColor = {0.0f, 0.9f, 0.0f};
+  const std::vector<HairColor> natural = {HairColor::Black, HairColor::Brown, HairColor::Blond,
+                                          HairColor::Red, HairColor::Grey};
+  auto luma = [](glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; };
+  for (std::size_t i = 0; i < natural.size(); ++i) {
+    INFO("colour " << int(natural[i]));
+    const HairColors a = hairColors(natural[i], r);
+    CHECK(luma(a.root) < luma(a.tip));
+    CHECK(a.root != r.rootColor);
+    for (std::size_t j = 0; j < i; ++j) {
+      const HairColors b = hairColors(natural[j], r);
+      CHECK(a.root != b.root);
+      CHECK(a.tip != b.tip);
+    }
+  }
+  CHECK(luma(hairColors(HairColor::Black, r).tip) < luma(hairColors(HairColor::Brown, r).tip));
+  CHECK(luma(hairColors(HairColor::Brown, r).tip) < luma(hairColors(HairColor::Blond, r).tip));
+  // Red hair is red: its tip's red well above its blue; grey is nearly neutral.
+  const HairColors red = hairColors(HairColor::Red, r), grey = hairColors(HairColor::Grey, r);
+  CHECK(red.tip.r > 4.0f * red.tip.b);
+  CHECK(grey.tip.r - grey.tip.b < 0.1f);
+  r.hairColor = HairColor::Custom;
+  CHECK(hairColors(r).root == r.rootColor);
+  CHECK(hairColors(r).tip == r.tipColor);
+  // The panel greys the custom colours out while a natural colour is chosen.
+  Preset p;
+  CHECK(findParam("render.root_color")->applies(p));
+  p.view.render.hairColor = HairColor::Grey;
+  CHECK_FALSE(findParam("render.root_color")->applies(p));
+  CHECK_FALSE(findParam("render.tip_color")->applies(p));
 }

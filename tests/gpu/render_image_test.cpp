@@ -7,8 +7,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <string>
 #include <vector>
 
+#include "app/params.h"
 #include "gl/shader_source.h"
 #include "tests/gpu/render_test_scene.h"
 
@@ -175,6 +178,102 @@ TEST_CASE("Render: groom colours reach the screen", "[render][image]") {
   INFO("mean hair colour " << s.meanRgb[0] << " " << s.meanRgb[1] << " " << s.meanRgb[2]);
   CHECK(s.meanRgb[1] > s.meanRgb[0] + 10.0);
   CHECK(s.meanRgb[1] > s.meanRgb[2] + 10.0);
+}
+
+TEST_CASE("Render: natural hair colours: black darker than brown, brown than blond; red is red",
+          "[render][image]") {
+  test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 1500));
+  const test::Image bare = scene.render(320, 180, nullptr, false);
+  const test::Image custom = scene.render(320, 180);
+  const std::vector<bool> mask = test::hairMask(custom, bare);
+  std::map<std::string, Stats> stats;
+  for (const char* name : {"black", "brown", "blond", "red", "grey"}) {
+    Preset p = scene.preset();
+    REQUIRE(paramFromText(*findParam("render.hair_color"), p, name) == "");
+    const test::Image img = scene.render(320, 180, &p);
+    test::dumpImage(img, std::string("hair_color_") + name);
+    stats[name] = hairStats(img, mask);
+    INFO(name << ": luma " << stats[name].meanLuma << ", rgb " << stats[name].meanRgb[0] << " "
+              << stats[name].meanRgb[1] << " " << stats[name].meanRgb[2]);
+    CHECK(stats[name].share > 0.05);
+  }
+  const double black = stats["black"].meanLuma, brown = stats["brown"].meanLuma,
+               blond = stats["blond"].meanLuma;
+  INFO("luma: black " << black << ", brown " << brown << ", blond " << blond);
+  // Measured 0.84 and 0.57: every strand's white highlight, and the backdrop through the
+  // thin strands at the hair's edges, lift black hair's mean.
+  CHECK(black < 0.9 * brown);
+  CHECK(brown < 0.75 * blond);
+  CHECK(blond > black + 40.0);
+  const Stats& red = stats["red"];
+  const Stats& grey = stats["grey"];
+  INFO("red " << red.meanRgb[0] << " " << red.meanRgb[2] << "; grey " << grey.meanRgb[0] << " "
+              << grey.meanRgb[2]);
+  CHECK(red.meanRgb[0] > red.meanRgb[2] + 25.0);
+  // Redder than brown, not just brighter: red over green by more.
+  CHECK(red.meanRgb[0] - red.meanRgb[1] > stats["brown"].meanRgb[0] - stats["brown"].meanRgb[1]);
+  CHECK(std::abs(grey.meanRgb[0] - grey.meanRgb[2]) < 20.0);
+  CHECK(grey.meanLuma > brown);
+  // Brown is the default colours, which this preset keeps (custom).
+  CHECK(hairStats(custom, mask).meanLuma == brown);
+}
+
+// Hair's coverage in pixels (the pixels' worth of frame it hides) from a frame with black,
+// unlit hair (it hides what is behind it and adds nothing) and the same frame without it,
+// in linear light: the resolve averages the samples' linear colours.
+double coveredPixels(const test::Image& hair, const test::Image& bare) {
+  auto linear = [](std::uint8_t v) {
+    const double c = v / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  double sum = 0.0;
+  for (int y = 0; y < hair.height; ++y)
+    for (int x = 0; x < hair.width; ++x) {
+      const double b = linear(bare.at(x, y)[1]), h = linear(hair.at(x, y)[1]);
+      if (b > 0.02) sum += std::clamp(1.0 - h / b, 0.0, 1.0);
+    }
+  return sum;
+}
+
+TEST_CASE("Render: a strand width in metres narrows with the camera's distance",
+          "[render][image]") {
+  // Few strands, so they seldom overlap and the coverage adds up strand by strand.
+  Preset c = test::presetConfig("paper_fig1_straight.json", 150);
+  c.view.render.hairColor = HairColor::Custom;
+  c.view.render.rootColor = c.view.render.tipColor = glm::vec3(0.0f);
+  c.view.render.specularStrength1 = c.view.render.specularStrength2 = 0.0f;
+  c.view.render.shadows = false;
+  c.view.render.opacity = 0.3f;  // strands cover a share of the samples: overlaps add up
+  test::RenderScene scene(c);
+  const int w = 480, h = 270;
+  auto coverage = [&](float distance, float widthPx, float widthM) {
+    Preset p = scene.preset();
+    p.view.camera.distance = distance;
+    p.view.render.strandWidth = widthPx;
+    p.view.render.strandWidthM = widthM;
+    const test::Image hair = scene.render(w, h, &p);
+    const test::Image bare = scene.render(w, h, &p, false);
+    test::dumpImage(hair, "width_" + std::to_string(distance) + "_" + std::to_string(widthM));
+    return coveredPixels(hair, bare);
+  };
+  // 2 mm: a pixel wide at 0.75 m on this frame (370 pixels per metre at 1 m), half a pixel at
+  // 1.5 m; both drawn 1.5 pixels wide over a share of the samples. Twice as far, a strand is
+  // half as long and half as wide on screen: a quarter of the pixels. One a fixed number of
+  // pixels wide covers half (less where the strands, closer together, overlap).
+  const double nearM = coverage(0.75f, 1.5f, 0.002f), farM = coverage(1.5f, 1.5f, 0.002f);
+  const double nearPx = coverage(0.75f, 1.5f, 0.0f), farPx = coverage(1.5f, 1.5f, 0.0f);
+  INFO("pixels covered, width in metres: " << nearM << " near, " << farM << " far (" << farM / nearM
+                                           << "); in pixels: " << nearPx << " near, " << farPx
+                                           << " far (" << farPx / nearPx << ")");
+  // Measured 0.26 in metres, 0.43 in pixels.
+  CHECK(nearM > 500.0);
+  CHECK(farM / nearM > 0.18);
+  CHECK(farM / nearM < 0.32);
+  CHECK(farPx / nearPx > 0.38);
+  // Where the two agree, the same coverage: 2 mm and 1 pixel at 0.75 m.
+  const double nearPx1 = coverage(0.75f, 1.0f, 0.0f);
+  INFO("1 pixel at 0.75 m: " << nearPx1);
+  CHECK(std::abs(nearM - nearPx1) < 0.15 * nearPx1);
 }
 
 TEST_CASE("Render: without strands or positions the head and backdrop are still drawn",
