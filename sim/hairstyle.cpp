@@ -181,7 +181,9 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
              : glm::mix(double(h.lengthMin), double(h.lengthMax), random01(h.seed, s, 3));
   // Hair from higher roots lies further out, over the hair from lower roots: layers by root
   // height, so that strands draped over the head pass over each other instead of through.
-  const double layer = margin + double(h.volume) * std::clamp((root.y + 0.03) / 0.13, 0.0, 1.0);
+  // Toward the face hair lies close (standing off the forehead, it would fall over the face).
+  const double layer = margin + double(h.volume) * std::clamp((root.y + 0.03) / 0.13, 0.0, 1.0) *
+                                    (1.0 - std::clamp(2.0 * dir.z, 0.0, 1.0));
 
   // Centreline: leaves along the scalp normal, turns at a rate set by `fall` toward the comb
   // direction (which hangs down once off the top of the head), drapes over the head where it

@@ -91,7 +91,7 @@ std::vector<Param<Config>> build() {
             "(the eyes stay open).",
             Effect::Rebuild),
       param("hairstyle.volume", "Volume", "Hairstyle", &Config::hairstyle,
-            &HairstyleConfig::volume, 0.0, 0.03,
+            &HairstyleConfig::volume, 0.0, 0.05,
             "Thickness of the hair's layer over the scalp (m): hair from higher roots lies this "
             "much further out, over the hair from lower roots.",
             Effect::Rebuild)
