@@ -161,7 +161,12 @@ bool loadPreset(const std::string& path, Preset& out, PresetErrors& errors) {
   }
   std::stringstream ss;
   ss << in.rdbuf();
-  return parsePreset(ss.str(), path, out, errors);
+  // head.mesh is relative to the preset's folder (checked on parsing, so set before).
+  Preset c = out;
+  c.scene.head.meshDir = std::filesystem::absolute(path).parent_path().string();
+  if (!parsePreset(ss.str(), path, c, errors)) return false;
+  out = std::move(c);
+  return true;
 }
 
 json presetToJson(const Preset& c) {

@@ -50,15 +50,17 @@ HeadMesh::HeadMesh() {
 
 void HeadMesh::update(const Config& scene, const Pose& head) {
   std::vector<glm::vec4> data;
-  mannequin_ = headField(scene) != nullptr;
+  const SurfaceMesh* surface = headSurface(scene);
+  mannequin_ = surface != nullptr;
   if (mannequin_) {
-    if (mannequinGpu_.indexCount == 0) {
-      // Uploaded once, from the scalp centre, so that a vertex's position is also its
-      // direction on the scalp map (render/scalp_map.h).
-      const SurfaceMesh& m = mannequinMesh();
+    if (surface != uploaded_) {
+      // Uploaded once per head (the mannequin or head.mesh's OBJ), from the scalp centre, so
+      // that a vertex's position is also its direction on the scalp map (render/scalp_map.h).
+      const SurfaceMesh& m = *surface;
       std::vector<glm::vec3> positions(m.positions);
       for (glm::vec3& p : positions) p -= glm::vec3(kMannequinScalpCentre);
       mannequinGpu_ = upload(positions, m.normals, m.indices);
+      uploaded_ = surface;
     }
     data.emplace_back(glm::vec3(head.apply(kMannequinScalpCentre)), 1.0f);
   } else {

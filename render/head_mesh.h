@@ -1,6 +1,6 @@
 // The head as drawn: a mesh in the head's frame, instanced once per placement (world centre,
 // scale) of an SSBO and turned by the head's rotation (head.vert). Spheres: a unit UV sphere
-// once per head sphere. The mannequin: its mesh (sim/head_shape.h) once.
+// once per head sphere. The mannequin or head.mesh: its mesh (sim/head_shape.h) once.
 #pragma once
 
 #include <vector>
@@ -15,8 +15,8 @@ namespace csm {
 class HeadMesh {
  public:
   HeadMesh();
-  // This frame's head: the mannequin's mesh where the scene's head is its field, else the
-  // scene's spheres, at the head's pose.
+  // This frame's head: the mannequin's or head.mesh's surface where the scene's head is a field,
+  // else the scene's spheres, at the head's pose.
   void update(const Config& scene, const Pose& head);
   void bind() const;  // the placements' SSBO
   void draw() const;
@@ -36,6 +36,7 @@ class HeadMesh {
   gl::Buffer placementBuffer_{gl::NoCreate};
   int placements_ = 0;
   bool mannequin_ = false;
+  const SurfaceMesh* uploaded_ = nullptr;  // the head in mannequinGpu_
 };
 
 }  // namespace csm

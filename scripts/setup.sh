@@ -10,6 +10,7 @@ packages=(
   cmake g++ make pkg-config
   libeigen3-dev libglm-dev nlohmann-json3-dev catch2
   libglfw3-dev libepoxy-dev libegl-dev libgl-dev libimgui-dev libpng-dev
+  libtinyobjloader-dev           # OBJ heads (head.mesh)
   libegl-mesa0 libgl1-mesa-dri   # Mesa: llvmpipe where there is no GPU
   xvfb xauth                     # the window under a virtual display (tests, no-display runs)
   python3 python3-matplotlib     # test scripts and benchmark charts

@@ -80,6 +80,8 @@ struct HairstyleConfig {
 };
 
 struct HeadConfig {
+  std::string mesh;     // an OBJ head (head frame, metres); empty = the built-in mannequin
+  std::string meshDir;  // where a relative `mesh` is found: the preset's folder (not a parameter)
   std::vector<Sphere> spheres{
       {{0.0f, 0.0f, 0.0f}, 0.1f}, {{0.0f, -0.065f, 0.03f}, 0.07f}, {{0.0f, -0.16f, -0.01f}, 0.05f}};
   HeadMotion motion = HeadMotion::None;

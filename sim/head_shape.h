@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -48,7 +49,8 @@ const DistanceGrid& mannequinGrid();
 // Where the scalp is measured from on the mannequin: directions from here name scalp points.
 inline constexpr glm::dvec3 kMannequinScalpCentre{0.0, 0.0, -0.008};
 
-// The head the scene collides with and draws: the mannequin's field, or no field (spheres).
+// The head the scene collides with and draws: the field of head.mesh or else the mannequin's
+// when collision.head_shape is sdf; no field (spheres) otherwise.
 const DistanceGrid* headField(const Config& c);
 
 // A field placed in the world by the head's pose: the head a measure counts particles in.
@@ -83,6 +85,27 @@ struct SurfaceMesh {
 SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact = {});
 // The mannequin's mesh, made once.
 const SurfaceMesh& mannequinMesh();
+
+// The surface drawn for the scene's head: head.mesh's or the mannequin's when
+// collision.head_shape is sdf; none (spheres) otherwise.
+const SurfaceMesh* headSurface(const Config& c);
+
+// The signed distance to a closed, outward-facing triangle mesh, sampled on the nodes of its
+// box grown by `margin`, spaced `cell`: exact distances near the surface, the nearest
+// triangle carried outwards from there (Tsai 2002's closest point sweeping), the sign by the
+// parity of crossings along each row of nodes; the gradient points away from the nearest point.
+DistanceGrid meshDistanceGrid(const SurfaceMesh& m, double cell, double margin);
+
+// A head read from an OBJ (head.mesh) and its field (4 mm, a 2 cm margin).
+struct LoadedHead {
+  SurfaceMesh mesh;
+  DistanceGrid grid;
+};
+// Reads, checks and samples the OBJ at `path` once per process; later calls share it (the
+// solvers and the renderer). nullptr with a message naming the file and line on failure.
+const LoadedHead* loadHeadMesh(const std::string& path, std::string* error);
+// head.mesh resolved against the folder of the preset it came from (empty: the mannequin).
+std::string headMeshPath(const Config& c);
 
 // Edges of a mesh used other than once in each direction (0 for a closed, consistently
 // oriented surface).

@@ -121,6 +121,11 @@ std::vector<Param<Config>> build() {
             &HairstyleConfig::followSpread, 0.0, 0.05,
             "Distance (m) of follow hairs from their guide at the root.", Effect::Render)
           .onlyWhen(hasFollowHairs),
+      param("head.mesh", "Head mesh", "Head", &Config::head, &HeadConfig::mesh, 0, 0,
+            "A Wavefront OBJ head (metres, head frame: y up, face +z, crown about 0.1 m above the "
+            "origin; closed) to collide with and draw when collision.head_shape is sdf; empty = "
+            "the built-in mannequin. Relative paths are relative to the preset.",
+            Effect::Rebuild),
       param("head.spheres", "Head spheres", "Head", &Config::head, &HeadConfig::spheres, -10, 10,
             "Spheres (centre in the head frame, radius) that the hair collides with; the first is "
             "the scalp the hair grows from.",
@@ -232,8 +237,9 @@ std::vector<Param<Config>> build() {
           .alias("full", int(CollisionMode::Strands)),
       param("collision.head_shape", "Head shape", "Simulation|Collision", &Config::collision,
             &CollisionConfig::headShape, 0, 0,
-            "sdf: the built-in mannequin (head, neck, shoulders) as a signed distance field "
-            "sampled at 4 mm, collided with and drawn; spheres: head.spheres, as the paper does.",
+            "sdf: the built-in mannequin (head, neck, shoulders), or head.mesh, as a signed "
+            "distance field sampled at 4 mm, collided with and drawn; spheres: head.spheres, as "
+            "the paper does.",
             Effect::Rebuild)
           .choices({"sdf", "spheres"}),
       param("collision.radius", "Hair radius", "Simulation|Collision", &Config::collision,

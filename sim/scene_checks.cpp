@@ -4,6 +4,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/head_shape.h"
+
 namespace csm {
 
 std::vector<std::string> crossCheck(const Config& c) {
@@ -23,6 +25,10 @@ std::vector<std::string> crossCheck(const Config& c) {
                 " pins every particle of the shortest strand");
   if (glm::length(c.wind.direction) < 1e-6f && c.wind.strength > 0.0f)
     e.push_back("wind.direction: must not be zero when wind.strength is above 0");
+  // Read (and its field sampled) once per file: the scene that runs shares it.
+  std::string meshError;
+  if (!c.head.mesh.empty() && !loadHeadMesh(headMeshPath(c), &meshError))
+    e.push_back("head.mesh: " + meshError);
   return e;
 }
 

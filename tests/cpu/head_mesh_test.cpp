@@ -1,0 +1,291 @@
+// A head read from an OBJ (head.mesh): its field's sign and distance against the mesh it came
+// from, malformed files refused with their file and line, and the scene taking it up.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include "app/preset.h"
+#include "sim/hairstyle.h"
+#include "sim/head_shape.h"
+#include "sim/io/obj_mesh.h"
+#include "sim/scene_checks.h"
+
+using namespace csm;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kRadius = 0.1;
+
+// An icosahedron split `levels` times, its vertices on the sphere of kRadius about the origin.
+SurfaceMesh icosphere(int levels) {
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<glm::dvec3> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                               {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                               {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<uint32_t> f = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                             4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                             6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
+  for (int l = 0; l < levels; ++l) {
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+    auto middle = [&](uint32_t a, uint32_t b) {
+      auto [it, added] = mid.try_emplace({std::min(a, b), std::max(a, b)}, uint32_t(p.size()));
+      if (added) p.push_back(0.5 * (p[a] + p[b]));
+      return it->second;
+    };
+    std::vector<uint32_t> next;
+    for (size_t i = 0; i < f.size(); i += 3) {
+      const uint32_t a = f[i], b = f[i + 1], c = f[i + 2];
+      const uint32_t ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
+      next.insert(next.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
+    }
+    f = std::move(next);
+  }
+  SurfaceMesh m;
+  for (const glm::dvec3& q : p) m.positions.emplace_back(kRadius * glm::normalize(q));
+  m.indices = f;
+  return m;
+}
+
+std::string objText(const SurfaceMesh& m) {
+  std::ostringstream s;
+  s.precision(9);
+  s << "# icosphere\no sphere\n";
+  for (const glm::vec3& p : m.positions) s << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  for (size_t i = 0; i < m.indices.size(); i += 3)
+    s << "f " << m.indices[i] + 1 << " " << m.indices[i + 1] + 1 << " " << m.indices[i + 2] + 1
+      << "\n";
+  return s.str();
+}
+
+// A cube of half side 0.05 m as six quads (lines 2-9 the vertices, 10-15 the faces), outward.
+std::string cubeText(const std::string& lastFace = "f 2 4 8 6") {
+  return "# cube\n"
+         "v -0.05 -0.05 -0.05\nv 0.05 -0.05 -0.05\nv -0.05 0.05 -0.05\nv 0.05 0.05 -0.05\n"
+         "v -0.05 -0.05 0.05\nv 0.05 -0.05 0.05\nv -0.05 0.05 0.05\nv 0.05 0.05 0.05\n"
+         "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\n" +
+         lastFace + "\n";
+}
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() /
+           ("csm_head_mesh_" + std::to_string(reinterpret_cast<uintptr_t>(this)));
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string write(const std::string& name, const std::string& text) const {
+    const std::string file = (path / name).string();
+    std::ofstream(file, std::ios::binary) << text;
+    return file;
+  }
+};
+
+double meshDistance(const SurfaceMesh& m, const glm::dvec3& p) {
+  // Brute force, for the check: the distance to each triangle by its plane and edges.
+  double best = 1e300;
+  for (size_t i = 0; i < m.indices.size(); i += 3) {
+    const glm::dvec3 a(m.positions[m.indices[i]]), b(m.positions[m.indices[i + 1]]),
+        c(m.positions[m.indices[i + 2]]);
+    const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
+    const glm::dvec3 q = p - glm::dot(p - a, n) * n;
+    const bool in = glm::dot(glm::cross(b - a, q - a), n) >= 0 &&
+                    glm::dot(glm::cross(c - b, q - b), n) >= 0 &&
+                    glm::dot(glm::cross(a - c, q - c), n) >= 0;
+    if (in) best = std::min(best, std::abs(glm::dot(p - a, n)));
+    auto seg = [&](const glm::dvec3& u, const glm::dvec3& v) {
+      const double h = std::clamp(glm::dot(p - u, v - u) / glm::dot(v - u, v - u), 0.0, 1.0);
+      return glm::length(p - u - h * (v - u));
+    };
+    best = std::min({best, seg(a, b), seg(b, c), seg(c, a)});
+  }
+  return best;
+}
+
+std::vector<glm::dvec3> spread(const glm::dvec3& lo, const glm::dvec3& hi, int count) {
+  std::vector<glm::dvec3> out;
+  for (int i = 0; i < count; ++i) {
+    const glm::dvec3 u(std::fmod(0.5 + i * 0.7548776662, 1.0),
+                       std::fmod(0.5 + i * 0.5698402910, 1.0),
+                       std::fmod(0.5 + i * 0.4301597090, 1.0));
+    out.push_back(lo + u * (hi - lo));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("an OBJ sphere's field: the sign right and the distance the mesh's near the surface",
+          "[head_mesh]") {
+  TempDir dir;
+  const SurfaceMesh sphere = icosphere(3);
+  const std::string path = dir.write("sphere.obj", objText(sphere));
+  std::string error;
+  const LoadedHead* head = loadHeadMesh(path, &error);
+  REQUIRE(head);
+  CHECK(error.empty());
+  CHECK(openEdges(head->mesh) == 0);
+  const DistanceGrid& g = head->grid;
+  const double cell = g.cell;
+  CHECK(cell == Approx(0.004));
+  int near = 0;
+  double worst = 0.0;
+  for (const glm::dvec3& p : spread(glm::dvec3(-0.14), glm::dvec3(0.14), 4000)) {
+    const double d = g.sample(p);
+    const double exact = meshDistance(head->mesh, p);
+    // Inside the sphere the mesh's inside (the mesh lies within 0.4 mm of the sphere).
+    const double r = glm::length(p);
+    if (r < kRadius - 0.001) CHECK(d < 0.0);
+    if (r > kRadius + 0.001) CHECK(d > 0.0);
+    if (exact < 0.012) {
+      ++near;
+      worst = std::max(worst, std::abs(std::abs(d) - exact));
+    }
+  }
+  CHECK(near > 200);
+  INFO("worst distance error near the surface " << worst << " m");
+  CHECK(worst < 0.1 * cell);
+  // The gradient points outwards, of about unit length.
+  glm::dvec3 grad;
+  g.sample({0.0, 0.0, 0.102}, &grad);
+  CHECK(glm::dot(glm::normalize(grad), glm::dvec3(0, 0, 1)) > 0.99);
+  CHECK(glm::length(grad) == Approx(1.0).margin(0.05));
+  // Shared: the same file again is the same field.
+  CHECK(loadHeadMesh(path, nullptr) == head);
+  // Roots snapped onto it (as a groom file's are) land on the surface.
+  const glm::dvec3 snapped = projectToSurface(g, {0.03, 0.09, 0.02});
+  CHECK(std::abs(glm::length(snapped) - kRadius) < 0.001);
+}
+
+TEST_CASE("an OBJ cube of quads, its faces turned inwards, gives the cube's field", "[head_mesh]") {
+  TempDir dir;
+  // Every face reversed: the reader turns the surface outwards.
+  std::string text =
+      "v -0.05 -0.05 -0.05\nv 0.05 -0.05 -0.05\nv -0.05 0.05 -0.05\n"
+      "v 0.05 0.05 -0.05\nv -0.05 -0.05 0.05\nv 0.05 -0.05 0.05\n"
+      "v -0.05 0.05 0.05\nv 0.05 0.05 0.05\n"
+      "f 2 4 3 1\nf 7 8 6 5\nf 5 6 2 1\nf 4 8 7 3\nf 3 7 5 1\nf 6 8 4 2\n";
+  const std::string path = dir.write("cube.obj", text);
+  const LoadedHead* head = loadHeadMesh(path, nullptr);
+  REQUIRE(head);
+  CHECK(head->mesh.indices.size() == 36);
+  for (const glm::dvec3& p : spread(glm::dvec3(-0.08), glm::dvec3(0.08), 3000)) {
+    const glm::dvec3 q = glm::abs(p) - 0.05;
+    const double exact = glm::length(glm::max(q, 0.0)) + std::min(std::max({q.x, q.y, q.z}), 0.0);
+    if (std::abs(exact) < 0.002) continue;  // the sign at the surface is anyone's
+    const double d = head->grid.sample(p);
+    CHECK((d < 0.0) == (exact < 0.0));
+    // Away from edges and corners a distance to a plane interpolates exactly.
+    if (std::abs(exact) < 0.01 && std::max({q.x, q.y, q.z}) > 0.0 &&
+        int(q.x > -0.01) + int(q.y > -0.01) + int(q.z > -0.01) == 1)
+      CHECK(d == Approx(exact).margin(1e-4));
+  }
+}
+
+TEST_CASE("malformed OBJ heads are refused with the file and the line", "[head_mesh]") {
+  TempDir dir;
+  auto refusal = [&](const std::string& name, const std::string& text) {
+    const std::string path = dir.write(name, text);
+    const io::ObjReadResult r = io::readObjMesh(path);
+    CHECK(r.mesh.has_value() == r.error.empty());
+    return r.error;
+  };
+  const std::string cube = cubeText();
+  REQUIRE(refusal("good.obj", cube).empty());
+  // A face index out of range on line 15 (the file has 8 vertices).
+  std::string e = refusal("range.obj", cubeText("f 2 4 9 6"));
+  CHECK_THAT(e, Catch::Contains((dir.path / "range.obj").string() + ":15: face vertex index 9 "
+                                                                    "is out of range: 8 vertices"));
+  e = refusal("negative.obj", cubeText("f 2 4 -9 6"));
+  CHECK_THAT(e, Catch::Contains("negative.obj:15: face vertex index -9 is out of range"));
+  e = refusal("zero.obj", cubeText("f 0 4 8 6"));
+  CHECK_THAT(e, Catch::Contains("zero.obj:15: face vertex index 0"));
+  // A non-numeric vertex coordinate on line 4.
+  std::string text = cube;
+  text.replace(text.find("v 0.05 -0.05 -0.05"), 18, "v 0.05 abc -0.05");
+  e = refusal("nan.obj", text);
+  CHECK_THAT(e, Catch::Contains("nan.obj:3: vertex coordinate \"abc\" is not a number"));
+  text = cube;
+  text.replace(text.find("v 0.05 0.05 0.05"), 16, "v 0.05 inf 0.05");
+  CHECK_THAT(refusal("inf.obj", text), Catch::Contains("inf.obj:9: vertex coordinate \"inf\" is "
+                                                       "not finite"));
+  CHECK_THAT(refusal("short.obj", cubeText("f 2 4")),
+             Catch::Contains("short.obj:15: a face needs at least 3 vertices"));
+  CHECK_THAT(refusal("noint.obj", cubeText("f 2 4 x 6")),
+             Catch::Contains("noint.obj:15: face vertex index \"x\" is not an integer"));
+  // No faces, no vertices.
+  CHECK_THAT(refusal("nofaces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+             Catch::Contains("nofaces.obj: no faces"));
+  CHECK_THAT(refusal("empty.obj", "# nothing\n"), Catch::Contains("empty.obj: no vertices"));
+  // Open: the cube without its last face; the first face with an open edge is on line 10.
+  CHECK_THAT(refusal("open.obj", cubeText("")),
+             Catch::Contains("open.obj:10: the surface is not closed: 4 edges"));
+  // One face turned against its neighbours is not consistently oriented.
+  CHECK_THAT(refusal("flipped.obj", cubeText("f 6 8 4 2")),
+             Catch::Contains("flipped.obj:10: the surface is not closed"));
+  // Centimetres.
+  std::string big = cube;
+  for (size_t at = 0; (at = big.find("0.05", at)) != std::string::npos; at += 2)
+    big.replace(at, 4, "50");
+  CHECK_THAT(refusal("cm.obj", big), Catch::Contains("cm.obj: the mesh is 100.0"));
+  // Missing.
+  const io::ObjReadResult missing = io::readObjMesh((dir.path / "absent.obj").string());
+  CHECK_THAT(missing.error, Catch::Contains((dir.path / "absent.obj").string() + ": "));
+}
+
+TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the preset",
+          "[head_mesh]") {
+  TempDir dir;
+  dir.write("sphere.obj", objText(icosphere(2)));
+  dir.write("bad.obj", cubeText("f 2 4 9 6"));
+  Config c;
+  c.collision.headShape = HeadShape::Sdf;
+  CHECK(headField(c) == &mannequinGrid());
+  CHECK(headSurface(c) == &mannequinMesh());
+  c.head.mesh = "sphere.obj";
+  c.head.meshDir = dir.path.string();
+  CHECK(crossCheck(c).empty());
+  const LoadedHead* head = loadHeadMesh((dir.path / "sphere.obj").string(), nullptr);
+  REQUIRE(head);
+  CHECK(headField(c) == &head->grid);
+  CHECK(headSurface(c) == &head->mesh);
+  c.collision.headShape = HeadShape::Spheres;
+  CHECK(headField(c) == nullptr);
+  CHECK(headSurface(c) == nullptr);
+  c.collision.headShape = HeadShape::Sdf;
+
+  // Hair grown on it has its roots on the sphere (seen from the mannequin's scalp centre).
+  c.hairstyle.strands = 200;
+  const Groom g = growHairstyle(c);
+  REQUIRE(g.strandCount() == 200);
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    CHECK(std::abs(glm::length(glm::dvec3(g.points[g.first[s]])) - kRadius) < 0.002);
+
+  c.head.mesh = "bad.obj";
+  const auto problems = crossCheck(c);
+  REQUIRE(problems.size() == 1);
+  CHECK_THAT(problems[0], Catch::StartsWith("head.mesh: " + (dir.path / "bad.obj").string() +
+                                            ":15: face vertex index 9"));
+
+  // A preset names it relative to its own folder.
+  dir.write("good.json", R"({"head": {"mesh": "sphere.obj"}, "hairstyle": {"strands": 10}})");
+  dir.write("bad.json", R"({"head": {"mesh": "bad.obj"}})");
+  Preset p = defaultPreset();
+  PresetErrors errors;
+  CHECK(loadPreset((dir.path / "good.json").string(), p, errors));
+  CHECK(p.scene.head.mesh == "sphere.obj");
+  CHECK(headField(p.scene) == &head->grid);
+  Preset q = defaultPreset();
+  CHECK_FALSE(loadPreset((dir.path / "bad.json").string(), q, errors));
+  CHECK_THAT(errors.text(),
+             Catch::Contains("bad.json: head.mesh: " + (dir.path / "bad.obj").string() + ":15: "));
+}
