@@ -10,6 +10,7 @@
 
 #include "render/renderer.h"
 #include "app/params.h"
+#include "sim/head_shape.h"
 
 namespace csm {
 namespace {
@@ -63,7 +64,7 @@ void frameHead(CameraConfig& camera, const Config& config, const Pose& head) {
     lo = glm::min(lo, c - r);
     hi = glm::max(hi, c + r);
   };
-  const std::vector<Sphere>& spheres = config.head.spheres;
+  const std::vector<Sphere>& spheres = headSpheres(config);
   for (const Sphere& s : spheres) add(glm::dvec3(s.center), s.radius);
   const double scalp = spheres.empty() ? 0.1 : spheres.front().radius;
   const double hair = config.hairstyle.file.empty() ? config.hairstyle.lengthMax : 2.0 * scalp;

@@ -16,6 +16,7 @@
 #include "render/camera.h"
 #include "render/hair_color.h"
 #include "render/scalp_map.h"
+#include "sim/head_shape.h"
 
 namespace csm {
 namespace {
@@ -299,7 +300,7 @@ void HairRenderer::render(const FrameView& frame) {
       std::clamp(amount.shadowMapSize > 0 ? amount.shadowMapSize : look.shadowMapSize, 16, 8192);
   const int subdivision =
       std::clamp(amount.subdivision > 0 ? amount.subdivision : look.subdivision, 1, 64);
-  geometryFor(subdivision).update(*frame.groom, frame.generation, subdivision, c.head.spheres);
+  geometryFor(subdivision).update(*frame.groom, frame.generation, subdivision, headSpheres(c));
   if (scalpKey_ != std::make_pair(frame.groom, frame.generation)) {
     scalp_ = makeScalpMap(*frame.groom, scalpSpheres(c));
     scalpKey_ = {frame.groom, frame.generation};

@@ -64,7 +64,7 @@ void HeadMesh::update(const Config& scene, const Pose& head) {
     }
     data.emplace_back(glm::vec3(head.apply(kMannequinScalpCentre)), 1.0f);
   } else {
-    for (const Sphere& s : worldSpheres(scene.head.spheres, head))
+    for (const Sphere& s : worldSpheres(headSpheres(scene), head))
       data.emplace_back(s.center, s.radius);
   }
   placements_ = int(data.size());

@@ -95,7 +95,7 @@ ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres) 
 }
 
 std::vector<Sphere> scalpSpheres(const Config& scene) {
-  if (!headField(scene)) return scene.head.spheres;
+  if (!headField(scene)) return headSpheres(scene);
   return {Sphere{glm::vec3(kMannequinScalpCentre), 0.09f}};
 }
 

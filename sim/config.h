@@ -84,6 +84,7 @@ struct HeadConfig {
   std::string meshDir;  // where a relative `mesh` is found: the preset's folder (not a parameter)
   std::vector<Sphere> spheres{
       {{0.0f, 0.0f, 0.0f}, 0.1f}, {{0.0f, -0.065f, 0.03f}, 0.07f}, {{0.0f, -0.16f, -0.01f}, 0.05f}};
+  bool fitSpheres = false;  // as many spheres as `spheres`, fitted to the head's field
   HeadMotion motion = HeadMotion::None;
   float amplitude = 20.0f;              // degrees (nod, shake, sway) or centimetres (bounce)
   float frequency = 0.5f;               // Hz

@@ -271,7 +271,7 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
 }  // namespace
 
 Groom growHairstyle(const Config& c) {
-  return growHairstyle(c.hairstyle, c.head.spheres, c.collision.radius, headField(c));
+  return growHairstyle(c.hairstyle, headSpheres(c), c.collision.radius, headField(c));
 }
 
 bool onScalp(const HairstyleConfig& h, const glm::dvec3& d, bool mannequin) {
@@ -348,7 +348,7 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
   GroomReport local;
   GroomReport& r = report ? *report : local;
   r = {};
-  if (c.head.spheres.empty()) {
+  if (headSpheres(c).empty()) {
     if (error) *error = "head.spheres: at least one sphere is needed to grow hair from";
     return false;
   }
@@ -372,7 +372,7 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
   fit.autoFit = h.importScale <= 0.0f;
   fit.rotationDeg = h.importRotation;
   fit.offset = h.importOffset;
-  fit.headSpheres = c.head.spheres;
+  fit.headSpheres = headSpheres(c);
   fit.headField = headField(c);
   fit.snapRoots = true;
   io::fitToHead(g, fit);

@@ -52,6 +52,22 @@ inline constexpr glm::dvec3 kMannequinScalpCentre{0.0, 0.0, -0.008};
 // The head the scene collides with and draws: the field of head.mesh or else the mannequin's
 // when collision.head_shape is sdf; no field (spheres) otherwise.
 const DistanceGrid* headField(const Config& c);
+// The field of the head's shape whatever collision.head_shape says: head.mesh's, or the
+// mannequin's.
+const DistanceGrid& headShapeField(const Config& c);
+
+// `count` spheres inside the field's shape, centres on the plane x = 0 (the head is symmetric
+// about it), searched on the field's nodes in y and z, each as large as fits there (radius =
+// -distance at its centre, less what its surface still pokes out where the field is not an
+// exact distance): first the largest, then each the one that covers the most field nodes
+// (every second one) inside the shape not yet covered. Only the head above y = -0.2 m
+// counts and holds centres, so the shoulders take none. Deterministic.
+std::vector<Sphere> fitSpheres(const DistanceGrid& g, int count);
+
+// The spheres the scene collides with, grows hair from and draws when collision.head_shape is
+// spheres: head.spheres, or as many fitted to headShapeField (made once per field and count)
+// when head.fit_spheres is set.
+const std::vector<Sphere>& headSpheres(const Config& c);
 
 // A field placed in the world by the head's pose: the head a measure counts particles in.
 struct PosedField {

@@ -143,6 +143,7 @@ Scene cantileverScene(int particles, double length, int strands) {
   c.wind.strength = 0.0f;
   c.head.motion = HeadMotion::None;
   c.head.spheres = {{{0.0f, 10.0f, 0.0f}, 0.01f}};  // out of the way
+  c.head.fitSpheres = false;
   return s;
 }
 
@@ -250,6 +251,7 @@ Scene pendulumScene(int particles, double length, double amplitude, double frame
   c.wind.strength = 0.0f;
   c.head.motion = HeadMotion::None;
   c.head.spheres = {{{0.0f, 10.0f, 0.0f}, 0.01f}};  // out of the way
+  c.head.fitSpheres = false;
   return s;
 }
 

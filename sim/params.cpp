@@ -85,13 +85,13 @@ std::vector<Param<Config>> build() {
             "on the head's left or right. Hair lies on the scalp away from the parting.",
             Effect::Rebuild)
           .choices({"none", "centre", "left", "right"}),
-      param("hairstyle.fringe", "Fringe", "Hairstyle", &Config::hairstyle,
-            &HairstyleConfig::fringe, 0, 1,
+      param("hairstyle.fringe", "Fringe", "Hairstyle", &Config::hairstyle, &HairstyleConfig::fringe,
+            0, 1,
             "Hair from the front of the scalp falls forward over the forehead, cut at the brow "
             "(the eyes stay open).",
             Effect::Rebuild),
-      param("hairstyle.volume", "Volume", "Hairstyle", &Config::hairstyle,
-            &HairstyleConfig::volume, 0.0, 0.05,
+      param("hairstyle.volume", "Volume", "Hairstyle", &Config::hairstyle, &HairstyleConfig::volume,
+            0.0, 0.05,
             "Thickness of the hair's layer over the scalp (m): hair from higher roots lies this "
             "much further out, over the hair from lower roots.",
             Effect::Rebuild)
@@ -129,6 +129,11 @@ std::vector<Param<Config>> build() {
       param("head.spheres", "Head spheres", "Head", &Config::head, &HeadConfig::spheres, -10, 10,
             "Spheres (centre in the head frame, radius) that the hair collides with; the first is "
             "the scalp the hair grows from.",
+            Effect::Rebuild),
+      param("head.fit_spheres", "Fit spheres", "Head", &Config::head, &HeadConfig::fitSpheres, 0, 1,
+            "Replace head.spheres by as many spheres fitted inside head.mesh (or the mannequin): "
+            "the largest ball inside it, then each the ball that covers most of the rest of the "
+            "head above y = -0.2 m (not the shoulders).",
             Effect::Rebuild),
       param("head.motion", "Motion", "Head", &Config::head, &HeadConfig::motion, 0, 0,
             "How the head moves: none, nod, shake, spin, sway or bounce.", Effect::Live)

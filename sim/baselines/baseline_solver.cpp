@@ -9,6 +9,7 @@
 #include "sim/baselines/follow_the_leader.h"
 #include "sim/baselines/mass_spring.h"
 #include "sim/baselines/pbd.h"
+#include "sim/head_shape.h"
 #include "sim/wind.h"
 
 namespace csm {
@@ -38,7 +39,7 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
     if (i + 2 < n && strandOf_[i] == strandOf_[i + 2])
       bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
   }
-  spheres_ = worldSpheres(config.head.spheres, head);
+  spheres_ = worldSpheres(headSpheres(config), head);
   samples_.clear();
   onReset();
 }
@@ -56,7 +57,7 @@ void BaselineSolver::stepFrame(const Pose& from, const Pose& to) {
 }
 
 void BaselineSolver::prepareStep(const Pose& head) {
-  spheres_ = worldSpheres(config_.head.spheres, head);
+  spheres_ = worldSpheres(headSpheres(config_), head);
 }
 
 glm::dvec3 BaselineSolver::externalAcceleration(uint32_t i, double h) const {

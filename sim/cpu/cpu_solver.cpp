@@ -266,7 +266,7 @@ ContactSettings CpuSolver::contactSettings() const {
 void CpuSolver::step(double h, const Pose& head) {
   if (stages_.size() < 5) clearStages();  // a single step called directly
   const Pose before = head_;
-  const std::vector<Sphere> spheres = worldSpheres(config_.head.spheres, head);
+  const std::vector<Sphere> spheres = worldSpheres(headSpheres(config_), head);
   auto t0 = Clock::now();
   predict(h, head);
   stages_[0].ms += msSince(t0);
@@ -549,7 +549,7 @@ void CpuSolver::requestSample(long frame) {
   FrameSample sample;
   sample.frame = frame;
   sample.accuracy =
-      measureAccuracy(x_, v_, first_, restLength_, worldSpheres(config_.head.spheres, head_),
+      measureAccuracy(x_, v_, first_, restLength_, worldSpheres(headSpheres(config_), head_),
                       regions_.pinned, PosedField{headField(config_), head_});
   if (strandContacts(config_.collision.mode)) {
     sample.contacts = contacts_;

@@ -152,7 +152,7 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.contact = glm::vec4(reach, col.compliance, col.friction, 0.0f);
   p.misc = glm::vec4(sim.dftl, wind.drag, 0.0f, 0.0f);
   p.ints = glm::ivec4(0, int(sim.stiffnessModel), sim.rotationIterations,
-                      int(config_.head.spheres.size()));
+                      int(headSpheres(config_).size()));
   const bool windOn = wind.strength > 0.0f && wind.drag > 0.0f;
   p.flags =
       glm::uvec4(sim.strainLimiting, collidesWithHead(col.mode), windOn, strandContacts(col.mode));
@@ -199,7 +199,7 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
     s.time = glm::vec4(float(t), float(h), float(twistStepOf(sim, h, sim.rotationIterations)),
                        float(keep));
     std::memcpy(blob.data() + sizeof(p) + k * sizeof(s), &s, sizeof(s));
-    for (const Sphere& sp : worldSpheres(config_.head.spheres, poses[k]))
+    for (const Sphere& sp : worldSpheres(headSpheres(config_), poses[k]))
       spheres.emplace_back(sp.center, sp.radius);
     t += h;  // as CpuSolver advances its clock, step by step
   }
@@ -335,9 +335,9 @@ ContactStats GpuSolver::readContactStats() {
 unsigned GpuSolver::lastSubstepSpheres() const {
   // The spheres buffer holds the head's spheres for each step of the last writeParams: the
   // measures use the last step's.
-  if (config_.head.spheres.empty()) return 0;
+  if (headSpheres(config_).empty()) return 0;
   const size_t uploaded = size_t(spheres_.size()) / sizeof(glm::vec4);
-  return unsigned(uploaded - std::min(uploaded, config_.head.spheres.size()));
+  return unsigned(uploaded - std::min(uploaded, headSpheres(config_).size()));
 }
 
 void GpuSolver::requestSample(long frame) {

@@ -270,6 +270,19 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   for (size_t s = 0; s < g.strandCount(); ++s)
     CHECK(std::abs(glm::length(glm::dvec3(g.points[g.first[s]])) - kRadius) < 0.002);
 
+  // Spheres fitted to it: the first is the sphere itself.
+  c.collision.headShape = HeadShape::Spheres;
+  c.head.fitSpheres = true;
+  c.head.spheres = {{{0.0f, 0.5f, 0.0f}, 0.01f}, {{0.0f, 0.6f, 0.0f}, 0.01f}};  // only counted
+  const std::vector<Sphere>& fitted = headSpheres(c);
+  REQUIRE(fitted.size() == c.head.spheres.size());
+  const double cell = head->grid.cell;
+  CHECK(glm::length(glm::dvec3(fitted[0].center)) < cell);
+  CHECK(std::abs(fitted[0].radius - kRadius) < cell);
+  c.head.fitSpheres = false;
+  c.head.spheres = HeadConfig{}.spheres;
+  c.collision.headShape = HeadShape::Sdf;
+
   c.head.mesh = "bad.obj";
   const auto problems = crossCheck(c);
   REQUIRE(problems.size() == 1);

@@ -310,3 +310,69 @@ TEST_CASE("Hairstyle: a fringe covers the forehead and ends above the eyes", "[h
     forehead += std::abs(p.x) < 0.045 && p.z > 0.06 && p.y > 0.015 && p.y < 0.05;
   CHECK(forehead < fringe / 10);
 }
+
+TEST_CASE("Mannequin: spheres fitted to it lie inside it and cover the head above the neck",
+          "[head]") {
+  const DistanceGrid& g = mannequinGrid();
+  const double cell = g.cell;
+  const std::vector<Sphere> fitted = fitSpheres(g, 3);
+  REQUIRE(fitted.size() == 3);
+  CHECK(fitSpheres(g, 3) == fitted);  // deterministic
+  for (const Sphere& s : fitted) {
+    const glm::dvec3 c(s.center);
+    INFO("sphere (" << c.x << ", " << c.y << ", " << c.z << ") r " << s.radius);
+    CHECK(c.x == 0.0);
+    CHECK(c.y > -0.2);
+    CHECK(s.radius > 0.02f);
+    CHECK(mannequinDistance(c) <= -s.radius + cell);
+    // Its whole surface lies within a cell of the inside.
+    double worst = -1.0;
+    for (int i = 0; i < 400; ++i) {  // a Fibonacci spiral of directions
+      const double y = 1.0 - (i + 0.5) / 200.0, a = i * 2.399963229728653;
+      const double r = std::sqrt(1.0 - y * y);
+      const glm::dvec3 d(r * std::cos(a), y, r * std::sin(a));
+      worst = std::max(worst, mannequinDistance(c + double(s.radius) * d));
+    }
+    INFO("furthest outside on its surface " << worst);
+    CHECK(worst <= cell);
+  }
+  // The first is the cranium, the largest.
+  CHECK(fitted[0].radius >= fitted[1].radius);
+  CHECK(fitted[0].radius >= fitted[2].radius);
+  CHECK(fitted[0].center.y > -0.02f);
+  // Nodes inside the head above the neck, inside some sphere.
+  size_t inside = 0, covered = 0;
+  for (int k = 0; k < g.dims.z; ++k)
+    for (int j = 0; j < g.dims.y; ++j)
+      for (int i = 0; i < g.dims.x; ++i) {
+        const glm::dvec3 p = glm::dvec3(g.origin) + cell * glm::dvec3(i, j, k);
+        if (p.y <= -0.1 || g.nodes[g.index(i, j, k)].w >= 0.0f) continue;
+        ++inside;
+        for (const Sphere& s : fitted)
+          if (glm::length(p - glm::dvec3(s.center)) <= s.radius) {
+            ++covered;
+            break;
+          }
+      }
+  const double share = double(covered) / double(inside);
+  INFO("covered " << covered << " of " << inside << " nodes: " << share);
+  CHECK(share > 0.6);
+}
+
+TEST_CASE("head.fit_spheres: the scene collides with and grows hair from the fitted spheres",
+          "[head]") {
+  Config c = test::smallScene(300);
+  c.collision.headShape = HeadShape::Spheres;
+  CHECK(headSpheres(c) == c.head.spheres);
+  c.head.fitSpheres = true;
+  const std::vector<Sphere>& spheres = headSpheres(c);
+  CHECK(spheres == fitSpheres(mannequinGrid(), 3));
+  CHECK(&headSpheres(c) == &spheres);  // made once
+  CHECK(spheres != c.head.spheres);
+  const Sphere scalp = fitSpheres(mannequinGrid(), 3).front();
+  const Groom g = test::growFor(c);
+  REQUIRE(g.strandCount() == 300);
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    CHECK(std::abs(glm::length(glm::dvec3(g.points[g.first[s]] - scalp.center)) - scalp.radius) <
+          1e-4);
+}
