@@ -54,13 +54,22 @@ TEST_CASE("Render: deep opacity layers hold opacity that grows with depth", "[re
   CHECK(deeper > hairTexels / 2);
 }
 
-TEST_CASE("Render: hair away from the light is darker with shadows on", "[render][shadow]") {
+namespace {
+
+// Fig. 1 with 2,000 strands, the camera in front (+z) and the light from the right (+x): the
+// left of the image faces away from the light.
+Preset sideLitFig1() {
   Preset c = test::presetConfig("paper_fig1_straight.json", 2000);
-  // Camera in front (+z), light from the right (+x): the left of the image faces away.
   c.view.camera.yaw = 0.0f;
   c.view.camera.pitch = 5.0f;
   c.view.light.direction = {-1.0f, -0.3f, 0.0f};
-  test::RenderScene scene(c);
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("Render: hair away from the light is darker with shadows on", "[render][shadow]") {
+  test::RenderScene scene(sideLitFig1());
   Preset off = scene.preset();
   off.view.render.shadows = false;
   const test::Image on = scene.render(480, 270);
@@ -100,11 +109,7 @@ TEST_CASE("Render: hair away from the light is darker with shadows on", "[render
 // The hair on the side facing the light is measured: it is shadowed by the hair in front of
 // it alone (the far side is in the head's shadow as well, and that is dark at every size).
 TEST_CASE("Render: shadow darkness does not depend on the shadow map's size", "[render][shadow]") {
-  Preset c = test::presetConfig("paper_fig1_straight.json", 2000);
-  c.view.camera.yaw = 0.0f;
-  c.view.camera.pitch = 5.0f;
-  c.view.light.direction = {-1.0f, -0.3f, 0.0f};
-  test::RenderScene scene(c);
+  test::RenderScene scene(sideLitFig1());
   Preset off = scene.preset();
   off.view.render.shadows = false;
   const int w = 480, h = 270;
