@@ -66,8 +66,8 @@ struct HairstyleConfig {
   float fall = 0.6f;            // 0 = strands stick out along the normal, 1 = fall straight down
   float sweep = 0.7f;           // how far hair from the front is swept back from the face
   Parting parting = Parting::None;
-  bool fringe = false;          // hair from the front of the scalp falls forward, cut at the brow
-  float volume = 0.006f;        // thickness of the hair's layer over the scalp (m)
+  bool fringe = false;    // hair from the front of the scalp falls forward, cut at the brow
+  float volume = 0.006f;  // thickness of the hair's layer over the scalp (m)
   int seed = 1;
   // Imported grooms.
   float importScale = 0.0f;  // 0 = fit to the head automatically

@@ -204,7 +204,8 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
   };
   // The root leaves between the normal and the comb: a strand that left along the normal could
   // swing about it freely (its pinned first segment holds no twist) and fall over the face.
-  const glm::dvec3 leave = glm::normalize(glm::mix(head.normal(root), combAt(root), double(h.fall)));
+  const glm::dvec3 leave =
+      glm::normalize(glm::mix(head.normal(root), combAt(root), double(h.fall)));
   std::vector<glm::dvec3> centre{root};
   glm::dvec3 p = root, t = leave;
   for (int i = 1; i <= steps; ++i) {
