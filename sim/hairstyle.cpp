@@ -93,27 +93,26 @@ struct GrowthHead {
     const Sphere& scalp = spheres.front();
     return glm::dvec3(scalp.center) + dir * double(scalp.radius);
   }
-  // The outward direction of the head's surface nearest p.
-  glm::dvec3 normal(const glm::dvec3& p) const {
-    glm::dvec3 n;
+  // Distance from p to the head's surface (negative inside), and the outward direction of
+  // the surface nearest p.
+  double distance(const glm::dvec3& p, glm::dvec3& normal) const {
+    double nearest = 1e30;
+    glm::dvec3 n(0.0);
     if (field) {
-      field->sample(p, &n);
+      nearest = field->sample(p, &n);
     } else {
-      double nearest = 1e30;
       for (const Sphere& s : spheres) {
         const double d = glm::length(p - glm::dvec3(s.center)) - s.radius;
         if (d < nearest) nearest = d, n = p - glm::dvec3(s.center);
       }
     }
-    return glm::length(n) > 1e-12 ? glm::normalize(n) : glm::dvec3(0.0, 1.0, 0.0);
-  }
-  // Distance from p to the head's surface (negative inside).
-  double distance(const glm::dvec3& p) const {
-    if (field) return field->sample(p);
-    double nearest = 1e30;
-    for (const Sphere& s : spheres)
-      nearest = std::min(nearest, glm::length(p - glm::dvec3(s.center)) - double(s.radius));
+    normal = glm::length(n) > 1e-12 ? glm::normalize(n) : glm::dvec3(0.0, 1.0, 0.0);
     return nearest;
+  }
+  glm::dvec3 normal(const glm::dvec3& p) const {
+    glm::dvec3 n;
+    distance(p, n);
+    return n;
   }
   bool pushOut(glm::dvec3& p, double margin) const {
     return field ? pushOutOfField(*field, p, margin) : pushOutOfSpheres(p, spheres, margin);
@@ -225,8 +224,8 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
     }
     // On top of the head hair lies on it: a strand above its layer is drawn back down to it,
     // so hair from the crown does not stand off as a dome (down the sides it drapes).
-    const glm::dvec3 n = head.normal(next);
-    const double above = head.distance(next) - layer;
+    glm::dvec3 n;
+    const double above = head.distance(next, n) - layer;
     if (i > 1 && above > 0.0 && n.y > 0.5) {
       next -= n * std::min(above, 0.25 * length / steps);
       t = glm::normalize(next - p);

@@ -147,10 +147,19 @@ const LoadedHead* loadHeadMesh(const std::string& path, std::string* error) {
   return (loaded[path] = std::move(head)).get();
 }
 
+namespace {
+
+// The OBJ head.mesh names, or null for the mannequin (and for a file gone since the scene was
+// checked). Presets and --set are checked (crossCheck) before a scene runs, so this finds it
+// loaded.
+const LoadedHead* meshHead(const Config& c) {
+  return c.head.mesh.empty() ? nullptr : loadHeadMesh(headMeshPath(c), nullptr);
+}
+
+}  // namespace
+
 const DistanceGrid& headShapeField(const Config& c) {
-  if (c.head.mesh.empty()) return mannequinGrid();
-  // Presets and --set are checked (crossCheck) before a scene runs, so this finds it loaded.
-  const LoadedHead* head = loadHeadMesh(headMeshPath(c), nullptr);
+  const LoadedHead* head = meshHead(c);
   return head ? head->grid : mannequinGrid();
 }
 
@@ -246,8 +255,7 @@ const std::vector<Sphere>& headSpheres(const Config& c) {
 
 const SurfaceMesh* headSurface(const Config& c) {
   if (c.collision.headShape != HeadShape::Sdf) return nullptr;
-  if (c.head.mesh.empty()) return &mannequinMesh();
-  const LoadedHead* head = loadHeadMesh(headMeshPath(c), nullptr);
+  const LoadedHead* head = meshHead(c);
   return head ? &head->mesh : &mannequinMesh();
 }
 

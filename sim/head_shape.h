@@ -69,6 +69,16 @@ std::vector<Sphere> fitSpheres(const DistanceGrid& g, int count);
 // when head.fit_spheres is set.
 const std::vector<Sphere>& headSpheres(const Config& c);
 
+// What a solver collides with, resolved once when its scene is set (headField and headSpheres
+// look a loaded mesh or fitted spheres up by path and under a lock): read every step.
+struct SceneHead {
+  const DistanceGrid* field = nullptr;  // null: the spheres
+  std::vector<Sphere> spheres;          // head frame
+};
+inline SceneHead sceneHead(const Config& c) {
+  return {headField(c), headSpheres(c)};
+}
+
 // A field placed in the world by the head's pose: the head a measure counts particles in.
 struct PosedField {
   const DistanceGrid* grid = nullptr;

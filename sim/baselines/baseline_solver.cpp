@@ -39,7 +39,8 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
     if (i + 2 < n && strandOf_[i] == strandOf_[i + 2])
       bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
   }
-  spheres_ = worldSpheres(headSpheres(config), head);
+  headSpheres_ = headSpheres(config);
+  spheres_ = worldSpheres(headSpheres_, head);
   samples_.clear();
   onReset();
 }
@@ -57,7 +58,7 @@ void BaselineSolver::stepFrame(const Pose& from, const Pose& to) {
 }
 
 void BaselineSolver::prepareStep(const Pose& head) {
-  spheres_ = worldSpheres(headSpheres(config_), head);
+  spheres_ = worldSpheres(headSpheres_, head);
 }
 
 glm::dvec3 BaselineSolver::externalAcceleration(uint32_t i, double h) const {

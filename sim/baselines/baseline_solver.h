@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "sim/hair_state.h"
+#include "sim/head_shape.h"
 #include "sim/solver.h"
 
 namespace csm {
@@ -36,7 +37,10 @@ class BaselineSolver : public Solver {
   explicit BaselineSolver(const BaselineParams& params) : params_(params) {}
 
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
-  void setConfig(const Config& config) override { config_ = config; }
+  void setConfig(const Config& config) override {
+    config_ = config;
+    headSpheres_ = headSpheres(config);
+  }
   void stepFrame(const Pose& from, const Pose& to) override;
 
   size_t strandCount() const override { return first_.size() - 1; }
@@ -80,6 +84,7 @@ class BaselineSolver : public Solver {
 
   BaselineParams params_;
   Config config_;
+  std::vector<Sphere> headSpheres_;  // config_'s, head frame, resolved once
   double time_ = 0.0;
   std::vector<uint32_t> first_{0};
   std::vector<uint32_t> strandOf_;

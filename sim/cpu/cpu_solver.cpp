@@ -152,6 +152,7 @@ double measureWindowCoefficient(int w) {
 
 void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   config_ = config;
+  shape_ = sceneHead(config_);
   time_ = 0.0;
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
@@ -215,6 +216,7 @@ void CpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   config_ = config;
+  shape_ = sceneHead(config_);
   if (rebuild) rebuildRegions();
   if (regrid) resetVolume();
 }
@@ -266,7 +268,7 @@ ContactSettings CpuSolver::contactSettings() const {
 void CpuSolver::step(double h, const Pose& head) {
   if (stages_.size() < 5) clearStages();  // a single step called directly
   const Pose before = head_;
-  const std::vector<Sphere> spheres = worldSpheres(headSpheres(config_), head);
+  const std::vector<Sphere> spheres = worldSpheres(shape_.spheres, head);
   auto t0 = Clock::now();
   predict(h, head);
   stages_[0].ms += msSince(t0);
@@ -455,7 +457,7 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
   const double r = config_.collision.radius;
   const double friction = config_.collision.headFriction;
   const double dftl = sim.dftl;
-  const DistanceGrid* field = headField(config_);
+  const DistanceGrid* field = shape_.field;
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
@@ -549,8 +551,8 @@ void CpuSolver::requestSample(long frame) {
   FrameSample sample;
   sample.frame = frame;
   sample.accuracy =
-      measureAccuracy(x_, v_, first_, restLength_, worldSpheres(headSpheres(config_), head_),
-                      regions_.pinned, PosedField{headField(config_), head_});
+      measureAccuracy(x_, v_, first_, restLength_, worldSpheres(shape_.spheres, head_),
+                      regions_.pinned, PosedField{shape_.field, head_});
   if (strandContacts(config_.collision.mode)) {
     sample.contacts = contacts_;
     sample.contactsMeasured = true;

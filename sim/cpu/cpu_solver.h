@@ -12,6 +12,7 @@
 
 #include "sim/contacts.h"
 #include "sim/hair_state.h"
+#include "sim/head_shape.h"
 #include "sim/solver.h"
 #include "sim/volume.h"
 
@@ -94,6 +95,7 @@ class CpuSolver final : public Solver {
 
   RegionSums sums_;
   Config config_;
+  SceneHead shape_;  // config_'s head, resolved once
   double time_ = 0.0;
   Pose head_;  // the head pose at the end of the last step
 

@@ -58,6 +58,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
 
 void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   config_ = config;
+  shape_ = sceneHead(config_);
   time_ = 0.0;
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
@@ -96,13 +97,14 @@ void GpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   config_ = config;
+  shape_ = sceneHead(config_);
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) resetVolume();
-  if (headField(config_) != uploadedField_) uploadHeadField();
+  if (shape_.field != uploadedField_) uploadHeadField();
 }
 
 void GpuSolver::uploadHeadField() {
-  const DistanceGrid* field = headField(config_);
+  const DistanceGrid* field = shape_.field;
   if (field == uploadedField_ && headField_.id() != 0) return;
   gpu::fill(headField_, field ? field->nodes : std::vector<glm::vec4>(1));
   gpu::view(headFieldTex_, headField_, GL_RGBA32F);
@@ -151,8 +153,8 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   const float reach = 2.0f * col.radius + col.margin;
   p.contact = glm::vec4(reach, col.compliance, col.friction, 0.0f);
   p.misc = glm::vec4(sim.dftl, wind.drag, 0.0f, 0.0f);
-  p.ints = glm::ivec4(0, int(sim.stiffnessModel), sim.rotationIterations,
-                      int(headSpheres(config_).size()));
+  p.ints =
+      glm::ivec4(0, int(sim.stiffnessModel), sim.rotationIterations, int(shape_.spheres.size()));
   const bool windOn = wind.strength > 0.0f && wind.drag > 0.0f;
   p.flags =
       glm::uvec4(sim.strainLimiting, collidesWithHead(col.mode), windOn, strandContacts(col.mode));
@@ -199,7 +201,7 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
     s.time = glm::vec4(float(t), float(h), float(twistStepOf(sim, h, sim.rotationIterations)),
                        float(keep));
     std::memcpy(blob.data() + sizeof(p) + k * sizeof(s), &s, sizeof(s));
-    for (const Sphere& sp : worldSpheres(headSpheres(config_), poses[k]))
+    for (const Sphere& sp : worldSpheres(shape_.spheres, poses[k]))
       spheres.emplace_back(sp.center, sp.radius);
     t += h;  // as CpuSolver advances its clock, step by step
   }
@@ -335,9 +337,9 @@ ContactStats GpuSolver::readContactStats() {
 unsigned GpuSolver::lastSubstepSpheres() const {
   // The spheres buffer holds the head's spheres for each step of the last writeParams: the
   // measures use the last step's.
-  if (headSpheres(config_).empty()) return 0;
+  if (shape_.spheres.empty()) return 0;
   const size_t uploaded = size_t(spheres_.size()) / sizeof(glm::vec4);
-  return unsigned(uploaded - std::min(uploaded, headSpheres(config_).size()));
+  return unsigned(uploaded - std::min(uploaded, shape_.spheres.size()));
 }
 
 void GpuSolver::requestSample(long frame) {

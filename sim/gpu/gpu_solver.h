@@ -25,6 +25,7 @@
 #include "sim/gpu/stage_timer.h"
 #include "sim/gpu/strand_buffers.h"
 #include "sim/hair_state.h"
+#include "sim/head_shape.h"
 #include "sim/solver.h"
 
 namespace csm {
@@ -102,6 +103,7 @@ class GpuSolver final : public Solver {
   void uploadHeadField();               // the head's distance field, when it is one
 
   Config config_;
+  SceneHead shape_;  // config_'s head, resolved once
   double time_ = 0.0;
   Pose head_;
   HairState state_;  // the layout the regions are built from
