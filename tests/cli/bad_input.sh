@@ -5,22 +5,7 @@ bin=$1
 src=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-fail=0
-
-expect() {  # expect STATUS PATTERN -- ARGS...
-  local want=$1 pattern=$2
-  shift 3
-  local out status
-  out=$("$bin" "$@" 2>&1)
-  status=$?
-  if [ "$status" -ne "$want" ]; then
-    echo "FAIL: csmhair $* exited $status, expected $want"; echo "$out"; fail=1
-  elif ! grep -qF -- "$pattern" <<<"$out"; then
-    echo "FAIL: csmhair $*: output lacks '$pattern'"; echo "$out"; fail=1
-  else
-    echo "ok: csmhair $* -> $status: $(head -n1 <<<"$out")"
-  fi
-}
+. "$(dirname "$0")/expect.sh"
 
 printf '{"sim": {"dt": "fast"}}' >"$tmp/type.json"
 printf '{"sim": {"substeps": 0}}' >"$tmp/range.json"
