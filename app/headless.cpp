@@ -211,6 +211,16 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                  "the strand contacts (over 2,048 candidate pairs, or a grid cell the search "
                  "could not finish): some or all of their contacts were missing\n",
                  (unsigned long long)seen.crowded);
+  if (sim.carriedFrames() > 0)
+    std::fprintf(stderr,
+                 "csmhair: note: in %ld frames the head moved its roots faster than %.0f m/s: the "
+                 "hair went with it, rigidly, for the part beyond\n",
+                 sim.carriedFrames(), kMaxRootSpeed);
+  if (seen.oversize > 0)
+    std::fprintf(stderr,
+                 "csmhair: warning: up to %llu segments a frame were too long for the collision "
+                 "grid's cells or not finite: they had no strand contacts\n",
+                 (unsigned long long)seen.oversize);
   if (!options.exportHair.empty()) {
     // The final strands in world space, as a cyHair file for other tools.
     sim.solver().readPositions(x);
@@ -250,6 +260,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     d.device = options.solver == "gpu" && context ? context->renderer() : std::string("cpu");
     nlohmann::json meta = describeRun(d);
     meta["mode"] = "headless";
+    meta["head_carried_frames"] = sim.carriedFrames();
     if (renderer) {
       meta["drawn_strands"] = drawnStrandCount(sim.solver().strandCount(), c);
       meta["render_size"] = {options.width, options.height};

@@ -138,6 +138,13 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
               "not pack that densely: the strands are too many for this collision radius, or\n"
               "the simulation is exploding.");
   }
+  if (f.carriedFrames > 0)
+    warning("head jumps: %llu frames carried the hair with the head",
+            (unsigned long long)f.carriedFrames,
+            "In these frames (since the last reset) the head moved its roots faster than\n"
+            "2 m/s (a reset of the drag, a fast drag, a motion at its extremes): the hair went\n"
+            "with it, rigidly, for the part of the motion beyond that speed instead of being\n"
+            "flung.");
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);
   ImGui::Text("particles %zu", f.particles);

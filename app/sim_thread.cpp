@@ -249,6 +249,7 @@ void SimThread::publish(long ticket) {
     f->head = sim_->headPose();
     f->strands = solver.strandCount();
     f->particles = solver.particleCount();
+    f->carriedFrames = sim_->carriedFrames();
     f->stiffness = solver.stiffness();
     f->stepMs = driver_->lastStepMs();
     f->stages = solver.stageTimes();

@@ -61,6 +61,7 @@ struct SimFrame {
   GroomReport groomReport;
   Pose head;  // where the head was at the end of the frame
   std::size_t strands = 0, particles = 0;
+  long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)
   StiffnessInfo stiffness;
   std::string solver;  // the solver's name
   // The simulation's own figures: the last step's wall time (to completion) and stages, the

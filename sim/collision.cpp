@@ -76,29 +76,59 @@ std::vector<SegmentPair> findContactsBruteForce(std::span<const glm::dvec3> x,
 }
 
 std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
-                                          std::span<const uint32_t> strand, double maxDistance) {
+                                          std::span<const uint32_t> strand, double maxDistance,
+                                          uint64_t* oversize) {
   std::vector<SegmentPair> out;
+  if (oversize) *oversize = 0;
   const uint32_t n = uint32_t(x.size());
   std::vector<uint32_t> segments;
-  double total = 0.0;
+  std::vector<double> lengths;
   for (uint32_t i = 0; i < n; ++i)
     if (segmentExists(strand, i)) {
+      const double length = glm::length(x[i + 1] - x[i]);
+      // A segment with a non-finite end (a simulation that blew up) is in no cell: its
+      // cell index would be undefined.
+      if (!std::isfinite(length)) {
+        if (oversize) ++*oversize;
+        continue;
+      }
       segments.push_back(i);
-      total += glm::length(x[i + 1] - x[i]);
+      lengths.push_back(length);
     }
   if (segments.empty()) return out;
   // Each segment goes into every cell its box (inflated by half the contact distance) touches,
   // so cells can be much smaller than a segment: in dense hair a cell as long as a segment
   // holds hundreds of them, and the 27-cell search around a midpoint tests thousands of pairs
   // per segment. A pair is tested only in the cell holding the lowest corner of the overlap of
-  // the two boxes, so it is found exactly once.
-  const double cell = std::max(2.0 * maxDistance, 0.5 * total / double(segments.size()));
+  // the two boxes, so it is found exactly once. The median length sets the cell, so that a few
+  // segments stretched far (an exploding simulation) do not put all the hair in one cell.
+  std::vector<double> sorted = lengths;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double cell = std::max(2.0 * maxDistance, 0.5 * sorted[sorted.size() / 2]);
   const double pad = 0.5 * maxDistance;
   auto lower = [&](uint32_t i) { return glm::min(x[i], x[i + 1]) - pad; };
   auto upper = [&](uint32_t i) { return glm::max(x[i], x[i + 1]) + pad; };
   auto cellOf = [&](const glm::dvec3& p) {
     return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
   };
+  // A segment whose box spans more cells than this along an axis (16 median segments: no hair
+  // the strain limit holds) is left out and counted, so the search stays bounded in time and
+  // memory whatever the positions; the cell indices of the rest stay far inside int64.
+  constexpr double kMaxCellsPerAxis = 32.0;
+  {
+    size_t kept = 0;
+    for (uint32_t i : segments) {
+      const glm::dvec3 span = (upper(i) - lower(i)) / cell;
+      const glm::dvec3 at = glm::abs(lower(i)) / cell;
+      if (std::max({span.x, span.y, span.z}) > kMaxCellsPerAxis ||
+          std::max({at.x, at.y, at.z}) > 1e15) {
+        if (oversize) ++*oversize;
+        continue;
+      }
+      segments[kept++] = i;
+    }
+    segments.resize(kept);
+  }
   struct Entry {
     glm::i64vec3 c;
     uint32_t seg;

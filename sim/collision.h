@@ -32,10 +32,12 @@ inline constexpr uint32_t kStrandGap = 2;
 std::vector<SegmentPair> findContactsBruteForce(std::span<const glm::dvec3> x,
                                                 std::span<const uint32_t> particleStrand,
                                                 double maxDistance);
-// The same pairs, found through a uniform grid whose cells (half a mean segment, at least twice
-// the contact distance) hold every segment whose padded box touches them.
+// The same pairs, found through a uniform grid whose cells (half the median segment, at least
+// twice the contact distance) hold every segment whose padded box touches them. Segments with a
+// non-finite end or a box longer than 32 cells along an axis are left out (no pairs for them)
+// and counted in *oversize.
 std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
                                           std::span<const uint32_t> particleStrand,
-                                          double maxDistance);
+                                          double maxDistance, uint64_t* oversize = nullptr);
 
 }  // namespace csm

@@ -92,8 +92,11 @@ ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const 
                                  std::span<const uint32_t> strand, const ContactSettings& settings,
                                  const ContactCandidates& previous, ContactStats& stats) {
   const double r = settings.radius, twoR = 2.0 * r;
-  const std::vector<SegmentPair> pairs = findContactsGrid(x, strand, twoR + settings.margin);
+  uint64_t oversize = 0;
+  const std::vector<SegmentPair> pairs =
+      findContactsGrid(x, strand, twoR + settings.margin, &oversize);
   stats = ContactStats{};
+  stats.oversize = oversize;
   stats.candidates = pairs.size();
   ContactCandidates out;
   const size_t n = x.size();

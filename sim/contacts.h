@@ -40,8 +40,9 @@ struct ContactStats {
   uint64_t crossingsClose = 0;
   // Frames since the solver's reset whose candidates did not fit its buffers (a running
   // count: those frames had no strand contacts; the GPU solver grows the buffers to what they
-  // needed as the next frame begins), and segments of this list too long for the grid's cells (in
-  // no cell: no contacts for them). Always 0 on the CPU reference, which has no fixed buffers.
+  // needed as the next frame begins; always 0 on the CPU reference, which has no fixed buffers),
+  // and segments of this list too long for the grid's cells or with a non-finite end (in no
+  // cell: no contacts for them).
   uint64_t overflows = 0;
   uint64_t oversize = 0;
   // Segments of this list left without some or all of their candidates in a crowd: more than

@@ -10,6 +10,10 @@
 
 namespace csm {
 
+// The most particles a strand may have: the GPU solver keeps a strand's prefix sums in a
+// shader's private arrays of this size at most. Grooms with longer strands are refused.
+inline constexpr uint32_t kMaxStrandParticles = 256;
+
 struct Groom {
   // Strand s owns points [first[s], first[s + 1]); first.size() == strandCount() + 1.
   std::vector<uint32_t> first{0};

@@ -389,6 +389,16 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
     if (error) *error = path + ": " + problem;
     return false;
   }
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    if (g.strandSize(s) > kMaxStrandParticles) {
+      if (error)
+        *error = path + ": strand " + std::to_string(s) + " has " +
+                 std::to_string(g.strandSize(s)) + " points, more than the " +
+                 std::to_string(kMaxStrandParticles) +
+                 " a strand the solvers take: set hairstyle.resample_tolerance above 0 to thin "
+                 "it to at most hairstyle.max_particles";
+      return false;
+    }
   r.simulatedPoints = g.pointCount();
   out = std::move(g);
   return true;

@@ -16,6 +16,11 @@ Pose compose(const Pose& a, const Pose& b) {
   return {glm::normalize(a.rotation * b.rotation), a.rotation * b.translation + a.translation};
 }
 
+Pose inverse(const Pose& p) {
+  const glm::dquat r = glm::conjugate(p.rotation);
+  return {r, -(r * p.translation)};
+}
+
 Pose interpolate(const Pose& a, const Pose& b, double s) {
   return {glm::slerp(a.rotation, b.rotation, s), glm::mix(a.translation, b.translation, s)};
 }

@@ -22,6 +22,8 @@ struct Pose {
 
 // a after b: first b, then a.
 Pose compose(const Pose& a, const Pose& b);
+// The pose that undoes p.
+Pose inverse(const Pose& p);
 // Slerp of the rotation, lerp of the translation.
 Pose interpolate(const Pose& a, const Pose& b, double s);
 // A rotation of `degrees` about `axis` through `pivot`.

@@ -19,6 +19,11 @@
 namespace csm {
 
 double DistanceGrid::sample(const glm::dvec3& p, glm::dvec3* gradient) const {
+  if (!std::isfinite(p.x + p.y + p.z)) {
+    // No cell to read (floor(NaN) has no integer): not a distance either.
+    if (gradient) *gradient = glm::dvec3(0.0);
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   const glm::dvec3 f = (p - glm::dvec3(origin)) / double(cell);
   const glm::dvec3 top = glm::dvec3(dims - 1);
   const glm::dvec3 inside = glm::clamp(f, glm::dvec3(0.0), top);
@@ -432,7 +437,7 @@ bool PosedField::contains(const glm::dvec3& world) const {
 bool pushOutOfField(const DistanceGrid& g, glm::dvec3& p, double radius, glm::dvec3* normal) {
   glm::dvec3 grad;
   double d = g.sample(p, &grad);
-  if (d >= radius) return false;
+  if (!(d < radius)) return false;  // outside, or not finite
   // The field is close to a distance, not exactly one (smooth unions, interpolation): a
   // second step takes what the first left.
   for (int step = 0; step < 2 && d < radius; ++step) {

@@ -1,5 +1,9 @@
 #include "sim/simulation.h"
 
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
 #include "sim/cpu/cpu_solver.h"
 #include "sim/hairstyle.h"
 #include "sim/params.h"
@@ -10,7 +14,7 @@ namespace csm {
 bool Simulation::load(const Config& config, const std::string& baseDir, std::string* error) {
   if (!regrow(config, baseDir, error)) return false;
   reset();
-  return true;
+  return solverReady(error);
 }
 
 bool Simulation::regrow(const Config& config, const std::string& baseDir, std::string* error) {
@@ -26,6 +30,7 @@ bool Simulation::regrow(const Config& config, const std::string& baseDir, std::s
   config_ = config;
   baseDir_ = baseDir;
   groom_ = std::make_shared<const Groom>(std::move(groom));
+  boundRoots();
   ++generation_;
   return true;
 }
@@ -36,16 +41,60 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     if (!regrow(config, baseDir_, error)) return false;
     lastPose_ = headPoseAt(time_);
     solver_->reset(*groom_, config_, lastPose_);
-    return true;
+    return solverReady(error);
   }
   config_ = config;
   solver_->setConfig(config_);
   return true;
 }
 
+bool Simulation::solverReady(std::string* error) const {
+  const std::string failure = solver_->failure();
+  if (failure.empty()) return true;
+  if (error) *error = std::string(solver_->name()) + " solver: " + failure;
+  return false;
+}
+
+void Simulation::boundRoots() {
+  const Groom& g = *groom_;
+  glm::dvec3 lo(0.0), hi(0.0);
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    const glm::dvec3 r(g.points[g.first[s]]);
+    lo = s == 0 ? r : glm::min(lo, r);
+    hi = s == 0 ? r : glm::max(hi, r);
+  }
+  rootCentre_ = 0.5 * (lo + hi);
+  rootRadius_ = 0.0;
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    rootRadius_ =
+        std::max(rootRadius_, glm::length(glm::dvec3(g.points[g.first[s]]) - rootCentre_));
+}
+
+Pose Simulation::jumpTo(const Pose& to) const {
+  // How far a root moves at most: the centre's displacement plus the radius times the turn's
+  // chord, 2 sin(angle / 2).
+  const glm::dquat turn = to.rotation * glm::conjugate(lastPose_.rotation);
+  const double halfSine = std::min(1.0, glm::length(glm::dvec3(turn.x, turn.y, turn.z)));
+  const double reach = glm::length(to.apply(rootCentre_) - lastPose_.apply(rootCentre_)) +
+                       2.0 * halfSine * rootRadius_;
+  const double allowed = kMaxRootSpeed * double(config_.sim.dt);
+  if (!(reach > allowed)) return Pose{};
+  // Past the bound: how far the farthest root does move.
+  double farthest = 0.0;
+  const Groom& g = *groom_;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    const glm::dvec3 r(g.points[g.first[s]]);
+    farthest = std::max(farthest, glm::length(to.apply(r) - lastPose_.apply(r)));
+  }
+  if (!(farthest > allowed)) return Pose{};
+  const Pose carriedTo = interpolate(lastPose_, to, 1.0 - allowed / farthest);
+  return compose(carriedTo, inverse(lastPose_));
+}
+
 void Simulation::reset() {
   time_ = 0.0;
   frame_ = 0;
+  carried_ = 0;
   lastPose_ = headPoseAt(0.0);
   solver_->reset(*groom_, config_, lastPose_);
 }
@@ -57,6 +106,13 @@ Pose Simulation::headPoseAt(double t) const {
 void Simulation::stepFrame() {
   const double next = time_ + config_.sim.dt;
   const Pose to = headPoseAt(next);
+  const Pose jump = jumpTo(to);
+  if (jump.rotation != glm::dquat(1.0, 0.0, 0.0, 0.0) || jump.translation != glm::dvec3(0.0)) {
+    // The hair goes with the head for the part of its motion too fast to simulate.
+    solver_->carry(jump);
+    lastPose_ = compose(jump, lastPose_);
+    ++carried_;
+  }
   solver_->stepFrame(lastPose_, to);
   lastPose_ = to;
   time_ = next;

@@ -14,6 +14,13 @@
 
 namespace csm {
 
+// The fastest the roots may move with the head (m/s). A head that moves its roots faster (a
+// jump: a reset of the viewer's drag, a fast drag, a scripted motion at its extremes) carries
+// the hair with it, rigidly, for the part of the frame's motion beyond this speed; the rest
+// is simulated. A head shaken hard turns at about 700 degrees a second, which moves roots
+// 10-12 cm from the neck's axis at 1.2-1.5 m/s.
+inline constexpr double kMaxRootSpeed = 2.0;
+
 class Simulation {
  public:
   explicit Simulation(std::unique_ptr<Solver> solver) : solver_(std::move(solver)) {}
@@ -44,12 +51,20 @@ class Simulation {
   const std::string& baseDir() const { return baseDir_; }
   double time() const { return time_; }
   long frame() const { return frame_; }
+  // Frames since the last reset whose head motion was partly carried (kMaxRootSpeed).
+  long carriedFrames() const { return carried_; }
   // Bumped whenever the groom is regrown, so renderers know to rebuild their buffers.
   long generation() const { return generation_; }
 
  private:
   // Grows the groom for `config` and keeps it; the solver is not touched.
   bool regrow(const Config& config, const std::string& baseDir, std::string* error);
+  void boundRoots();
+  // False, saying why, when the solver could not take the groom at its reset.
+  bool solverReady(std::string* error) const;
+  // The part of the head's motion from lastPose_ to `to` that moves the roots faster than
+  // kMaxRootSpeed, as a rigid transform of the world (identity when none).
+  Pose jumpTo(const Pose& to) const;
 
   std::unique_ptr<Solver> solver_;
   Config config_;
@@ -58,6 +73,10 @@ class Simulation {
   GroomReport groomReport_;
   Pose userPose_;
   Pose lastPose_;
+  // The roots' bounding sphere in the head frame, for their speed.
+  glm::dvec3 rootCentre_{0.0};
+  double rootRadius_ = 0.0;
+  long carried_ = 0;
   double time_ = 0.0;
   long frame_ = 0;
   long generation_ = 0;

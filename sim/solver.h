@@ -73,6 +73,11 @@ class Solver {
   // solver's state (region rotations, contact forces) stays. For tests, and to resume a state.
   virtual void writeState(const std::vector<glm::vec4>& positions,
                           const std::vector<glm::vec4>& velocities) = 0;
+  // Moves the whole hair rigidly by `by` (positions, velocities and whatever rotations the
+  // solver keeps), and the head where the last frame left it, as if the hair were fixed to the
+  // head: what a head that jumps does to it (Simulation::stepFrame). This default moves the
+  // particles only, through the read-backs.
+  virtual void carry(const Pose& by);
 
   // The GL name of an SSBO holding the current positions (vec4 per particle, in particle
   // order) when the solver keeps them on the GPU; 0 when the caller must upload readPositions.
@@ -90,6 +95,8 @@ class Solver {
   virtual void setContactMeasures(bool always) { (void)always; }
   // The stiffness it runs with: steps per frame, alpha, windows (CSM solvers).
   virtual StiffnessInfo stiffness() const { return {}; }
+  // Why the last reset left the solver unable to step (it then steps nothing); empty when fine.
+  virtual std::string failure() const { return {}; }
 };
 
 }  // namespace csm

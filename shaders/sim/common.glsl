@@ -74,13 +74,16 @@ mat3 quatToMat(vec4 q) {
 // rank-deficient (straight strands). The turn about the rest-frame `axis` (unit, or zero) is
 // taken at twistStep of its size (see csm::extractRotation). Same arithmetic, in float.
 vec4 extractRotation(mat3 A, float invJ, vec4 q, int iterations, vec3 axis, float twistStep) {
+  // A non-finite stored rotation starts again from none; a non-finite A leaves q as it is
+  // (the warm start would otherwise keep a NaN for good).
+  if (any(isnan(q)) || any(isinf(q))) q = vec4(0.0, 0.0, 0.0, 1.0);
   for (int it = 0; it < iterations; ++it) {
     mat3 R = quatToMat(q);
     vec3 omega = (cross(R[0], A[0]) + cross(R[1], A[1]) + cross(R[2], A[2])) * invJ;
     vec3 e = R * axis;
     omega -= (1.0 - twistStep) * dot(omega, e) * e;
     float angle = length(omega);
-    if (angle < 1e-12) break;
+    if (isnan(angle) || isinf(angle) || angle < 1e-12) break;
     float half_ = 0.5 * angle;
     q = quatMul(vec4(sin(half_) * (omega / angle), cos(half_)), q);
     q = q / length(q);

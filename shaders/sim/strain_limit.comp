@@ -103,9 +103,12 @@ void main() {
     vec3 strained = x;
     bool touching = false;
     vec3 fieldNormal = vec3(0.0);
-    if (headCollide && headIsField()) {
+    // A non-finite particle stays so, for the NaN check to see: the pushes below would put it
+    // on the head (their fallback normal) as if nothing had happened.
+    bool collide = headCollide && !any(isnan(x)) && !any(isinf(x));
+    if (collide && headIsField()) {
       touching = pushOutOfHeadField(x, xPrev, st.head, r, maxLength, fieldNormal);
-    } else if (headCollide) {
+    } else if (collide) {
       // Overlapping spheres can push a particle into each other: repeat until it is clear.
       for (int pass = 0; pass < 4; ++pass) {
         bool moved = false;

@@ -88,6 +88,9 @@ bool pushOutOfHeadField(const DistanceGrid& g, const Pose& head, glm::dvec3& p,
 void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, int iterations,
                      const Eigen::Vector3d& axis, double twistStep) {
   if (!(J > 0.0)) return;
+  // A rotation made non-finite by a non-finite step would stay so for good through the warm
+  // start: start again from no rotation, and leave q as it is when A is not finite.
+  if (!q.coeffs().allFinite()) q = Eigen::Quaterniond::Identity();
   const double axisLength = axis.norm();
   const bool twist = twistStep < 1.0 && axisLength > 0.0;
   for (int it = 0; it < iterations; ++it) {
@@ -102,7 +105,7 @@ void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, 
       omega -= (1.0 - twistStep) * omega.dot(e) * e;
     }
     const double angle = omega.norm();
-    if (angle < 1e-12) break;
+    if (!(angle >= 1e-12) || !std::isfinite(angle)) break;
     q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, omega / angle)) * q;
     q.normalize();
   }
@@ -481,9 +484,12 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
         const glm::dvec3 strained = x_[i];
         bool touching = false;
         glm::dvec3 fieldNormal(0.0);
-        if (headCollide && field) {
+        // A non-finite particle stays so, for the NaN check to see: the pushes below would put
+        // it on the head (their fallback normal) as if nothing had happened.
+        const bool collide = headCollide && std::isfinite(x_[i].x + x_[i].y + x_[i].z);
+        if (collide && field) {
           touching = pushOutOfHeadField(*field, head, x_[i], x_[i - 1], r, maxLength, fieldNormal);
-        } else if (headCollide) {
+        } else if (collide) {
           // Overlapping spheres can push a particle into each other: repeat until it is clear.
           for (int pass = 0; pass < 4; ++pass) {
             bool moved = false;
@@ -545,6 +551,14 @@ void CpuSolver::writeState(const std::vector<glm::vec4>& positions,
     x_[i] = glm::dvec3(glm::vec3(positions[i]));
   for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
     v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+}
+
+void CpuSolver::carry(const Pose& by) {
+  for (glm::dvec3& p : x_) p = by.apply(p);
+  for (glm::dvec3& u : v_) u = by.rotation * u;
+  const Eigen::Quaterniond turn = toEigen(by.rotation);
+  for (Eigen::Quaterniond& q : q_) q = (turn * q).normalized();
+  head_ = compose(by, head_);
 }
 
 void CpuSolver::requestSample(long frame) {

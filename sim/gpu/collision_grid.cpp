@@ -89,9 +89,9 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
 }
 
 double CollisionGrid::cellSize(float reach) const {
-  // Cells of at least twice the candidate distance and half a mean segment, as the CPU
-  // reference (findContactsGrid): a segment then enters ~2-12 cells, and a cell holds about a
-  // sixteenth of what a cell as long as a segment holds.
+  // Cells of at least twice the candidate distance and half a mean rest segment (the CPU
+  // reference, findContactsGrid, takes half the current median): a segment then enters ~2-12
+  // cells, and a cell holds about a sixteenth of what a cell as long as a segment holds.
   return std::max({2.0 * double(reach), 0.5 * meanSegment_, 1e-6});
 }
 

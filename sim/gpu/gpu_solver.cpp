@@ -37,6 +37,12 @@ GpuSolver::~GpuSolver() = default;
 
 bool GpuSolver::build(int maxStrandSize, std::string* error) {
   const int maxN = std::max(kMaxNStep, (maxStrandSize + kMaxNStep - 1) / kMaxNStep * kMaxNStep);
+  if (maxStrandSize > int(kMaxStrandParticles)) {
+    if (error)
+      *error = "a strand of " + std::to_string(maxStrandSize) +
+               " particles: the GPU solver takes at most " + std::to_string(kMaxStrandParticles);
+    return false;
+  }
   if (builtMaxN_ == 0) {
     if (!passes_.predict.build("sim/predict.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !passes_.strainLimit.build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
@@ -63,11 +69,13 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
   hair_.upload(state_, head.rotation);
-  std::string error;
-  if (!build(hair_.longestStrand, &error)) {
-    // The shaders built at create() with MAX_N 32; a longer strand needs a recompile, which
-    // only fails if the driver runs out of resources.
-    gl::logMessage(gl::LogLevel::Error, error);
+  // The shaders built at create() with MAX_N 32; a longer strand needs a recompile, which
+  // fails past kMaxStrandParticles or if the driver runs out of resources. The solver then
+  // steps nothing and says why (Simulation::load refuses the scene).
+  failure_.clear();
+  if (!build(hair_.longestStrand, &failure_)) {
+    if (failure_.empty()) failure_ = "the GPU solver's shaders did not build";
+    gl::logMessage(gl::LogLevel::Error, failure_);
   }
   // Rest lengths set the cell edge (DESIGN.md section 1.7): strain limiting keeps the current
   // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
@@ -234,7 +242,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     poses[k] = interpolate(from, to, double(k + 1) / substeps);
     before[k] = k == 0 ? head_ : poses[k - 1];
   }
-  if (hair_.particles == 0) {
+  if (hair_.particles == 0 || !failure_.empty()) {
     time_ += substeps * h;
     head_ = poses.back();
     return;
@@ -328,6 +336,20 @@ void GpuSolver::writeState(const std::vector<glm::vec4>& positions,
   for (glm::vec4& p : x) p.w = 1.0f;
   hair_.position.upload(x);
   hair_.velocity.upload(v);
+}
+
+void GpuSolver::carry(const Pose& by) {
+  if (hair_.particles == 0) return;
+  Solver::carry(by);
+  // Each region's rotation turns with the hair (the warm start of its next extraction).
+  std::vector<glm::vec4> q = hair_.rotation.download<glm::vec4>(hair_.particles);
+  for (glm::vec4& r : q) {
+    const glm::dquat turned = glm::normalize(
+        by.rotation * glm::dquat(double(r.w), double(r.x), double(r.y), double(r.z)));
+    r = glm::vec4(float(turned.x), float(turned.y), float(turned.z), float(turned.w));
+  }
+  hair_.rotation.upload(q);
+  head_ = compose(by, head_);
 }
 
 ContactStats GpuSolver::readContactStats() {

@@ -38,6 +38,7 @@ class GpuSolver final : public Solver {
   ~GpuSolver() override;
 
   std::string_view name() const override { return "gpu"; }
+  std::string failure() const override { return failure_; }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setConfig(const Config& config) override;
   void stepFrame(const Pose& from, const Pose& to) override;
@@ -49,6 +50,7 @@ class GpuSolver final : public Solver {
   void finish() override;
   void readPositions(std::vector<glm::vec4>& out) override;
   void readVelocities(std::vector<glm::vec4>& out) override;
+  void carry(const Pose& by) override;
   void writeState(const std::vector<glm::vec4>& positions,
                   const std::vector<glm::vec4>& velocities) override;
   unsigned positionBuffer() override { return hair_.position.id(); }
@@ -109,6 +111,7 @@ class GpuSolver final : public Solver {
   HairState state_;  // the layout the regions are built from
   Regions regions_;
   int builtMaxN_ = 0;
+  std::string failure_;  // set by reset when the groom's strands cannot be simulated
   gpu::SimParams params_{};
 
   struct Passes {

@@ -433,9 +433,15 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
   REQUIRE(stages.size() == 6);
   const char* names[] = {"integrate", "shape_matching", "strain_limiting",
                          "grid",      "contacts",       "volume"};
+  // Strand contacts, no volume: every stage but the volume's did work and took time; the
+  // volume's took none.
   for (size_t k = 0; k < 6; ++k) {
+    INFO(stages[k].name << " " << stages[k].ms << " ms");
     CHECK(stages[k].name == names[k]);
-    CHECK(stages[k].ms >= 0.0);
+    if (k < 5)
+      CHECK(stages[k].ms > 0.0);
+    else
+      CHECK(stages[k].ms == 0.0);
     CHECK(stages[k].ms < 60e3);
   }
 
