@@ -167,10 +167,12 @@ std::vector<Param<Config>> build() {
             Effect::Live)
           .onlyWhen(calibratedModel),
       param("sim.window_length", "Stiffness window", "Simulation", &Config::sim,
-            &SimConfig::windowLength, 0.002, 1.0,
+            &SimConfig::windowLength, 0.002, 0.1,
             "Calibrated: half-length of each shape-matching region along the strand (m; the panel "
             "shows cm). Regions never hold fewer than 3 particles. A longer window gives smoother "
-            "bends and needs fewer steps for the same stiffness.",
+            "bends and needs fewer steps for the same stiffness. At most 10 cm: a window that "
+            "holds most of a strand barely pulls it to its goals (alpha under 0.002 a step), and "
+            "the strain limit's sweep then whips the hair (docs/RELIABILITY.md, torture map).",
             Effect::Live)
           .logScale()
           .onlyWhen(calibratedModel)

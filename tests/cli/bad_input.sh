@@ -23,7 +23,7 @@ expect 2 "cannot open" -- "$tmp/missing.json" --headless --solver cpu
 expect 2 "--set sim.substeps=abc: expected an integer" -- --headless --solver cpu --set sim.substeps=abc
 expect 2 "--set sim.nothing=1: unknown parameter" -- --headless --solver cpu --set sim.nothing=1
 expect 2 'sim.stiffness_model=stiff: "stiff" is not one of paper|calibrated' -- --headless --solver cpu --set sim.stiffness_model=stiff
-expect 2 "sim.window_length=2: value 2 is out of range [0.002, 1]" -- --headless --solver cpu --set sim.window_length=2
+expect 2 "sim.window_length=2: value 2 is out of range [0.002, 0.1]" -- --headless --solver cpu --set sim.window_length=2
 expect 0 "sim.bending_stiffness" -- --list-params
 # A stiffness that asks for more steps than allowed runs, and says so even with --quiet.
 expect 0 "warning: the stiffness asks for" -- --headless --no-render --quiet --solver cpu --frames 1 --set hairstyle.strands=50 --set sim.window_length=0.01 --set sim.max_substeps=4
