@@ -325,6 +325,24 @@ namespace csm {
 
 namespace {
 
+// Empty when every point of the fitted groom is finite and no strand has collapsed to a point.
+std::string checkFitted(const Groom& g) {
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    bool moves = false;
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) {
+      const glm::vec3& p = g.points[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        return "point " + std::to_string(i - g.first[s]) + " of strand " + std::to_string(s) +
+               " is not finite";
+      moves = moves || p != g.points[g.first[s]];
+    }
+    if (!moves) return "strand " + std::to_string(s) + " has zero length";
+    if (s < g.thickness.size() && !std::isfinite(g.thickness[s]))
+      return "the thickness of strand " + std::to_string(s) + " is not finite";
+  }
+  return {};
+}
+
 // Keeps `count` strands spread evenly over the file's order (all when count covers them).
 void keepStrands(Groom& g, size_t count) {
   const size_t total = g.strandCount();
@@ -364,7 +382,15 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
     if (error) *error = read.error;
     return false;
   }
-  Groom g = std::move(*read.groom);
+  return fitFileGroom(c, std::move(*read.groom), path, out, error, &r);
+}
+
+bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out, std::string* error,
+                  GroomReport* report) {
+  GroomReport local;
+  GroomReport& r = report ? *report : local;
+  r = {};
+  const HairstyleConfig& h = c.hairstyle;
   r.fileStrands = g.strandCount();
   keepStrands(g, size_t(h.strands));
   io::FitOptions fit;
@@ -375,7 +401,17 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
   fit.headSpheres = headSpheres(c);
   fit.headField = headField(c);
   fit.snapRoots = true;
-  io::fitToHead(g, fit);
+  const io::FitReport fitted = io::fitToHead(g, fit);
+  // The reader checked that the file's points are finite and its strands go somewhere, but the
+  // fit can undo both: points near float's limit rotated or scaled past it, a tiny spread of
+  // roots scaled up to the head's size, or a tiny import scale that collapses a strand.
+  if (const std::string problem = checkFitted(g); !problem.empty()) {
+    if (error)
+      *error = path + ": " + problem + " after fitting to the head (scale " +
+               std::to_string(fitted.scale) +
+               "); check hairstyle.import_scale, import_rotation and import_offset";
+    return false;
+  }
   r.filePoints = g.pointCount();
   if (h.resampleTolerance > 0.0f) {
     io::ResampleOptions opt;

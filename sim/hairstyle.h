@@ -47,6 +47,11 @@ struct GroomReport {
 bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::string* error,
                 GroomReport* report = nullptr);
 
+// What buildGroom does with a groom file once read (`g`, from `path`): the strands kept, the
+// fit to the head, the roots snapped, the resampling, the checks.
+bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out, std::string* error,
+                  GroomReport* report = nullptr);
+
 // `path` against the folder of the preset it came from ("" for the built-in preset): groom
 // files named in a preset are relative to it.
 std::string resolveRelative(const std::string& baseDir, const std::string& path);

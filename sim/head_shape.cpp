@@ -26,7 +26,11 @@ double DistanceGrid::sample(const glm::dvec3& p, glm::dvec3* gradient) const {
   }
   const glm::dvec3 f = (p - glm::dvec3(origin)) / double(cell);
   const glm::dvec3 top = glm::dvec3(dims - 1);
-  const glm::dvec3 inside = glm::clamp(f, glm::dvec3(0.0), top);
+  glm::dvec3 inside = glm::clamp(f, glm::dvec3(0.0), top);
+  // A point that is not finite (a groom scaled past float's range, a state gone bad) reads the
+  // first cell and gets a distance that is not finite, never a cast of NaN to an index.
+  for (int a = 0; a < 3; ++a)
+    if (std::isnan(inside[a])) inside[a] = 0.0;
   // Beyond the border: the border's distance plus the way to it (the border lies outside the
   // shape, so this stays positive and grows away from it).
   const double beyond = glm::length(f - inside) * double(cell);
@@ -421,9 +425,18 @@ DistanceGrid meshDistanceGrid(const SurfaceMesh& m, double cell, double margin) 
           const glm::dvec3 away = p - nearestOnTriangle(p, a, b, c);
           const double len = glm::length(away);
           // At the surface (within what rounding and the ray's offset leave uncertain) the
-          // direction away from it is the face's normal.
-          const glm::dvec3 grad =
-              len > 1e-3 * cell ? sign * away / len : glm::normalize(glm::cross(b - a, c - a));
+          // direction away from it is the face's normal; a face with no area (three vertices
+          // on a line, which a closed surface may hold) has none: its vertices' normals.
+          const glm::dvec3 face = glm::cross(b - a, c - a);
+          const double area = glm::length(face);
+          glm::dvec3 grad = len > 1e-3 * cell ? sign * away / len : face / area;
+          if (!(len > 1e-3 * cell) && !(area > 0.0)) {
+            glm::dvec3 n(0.0);
+            if (m.normals.size() == m.positions.size())
+              for (int v = 0; v < 3; ++v) n += glm::dvec3(m.normals[m.indices[3 * t + v]]);
+            const double nl = glm::length(n);
+            grad = nl > 1e-12 ? n / nl : glm::dvec3(0.0, 1.0, 0.0);
+          }
           g.nodes[n] = glm::vec4(glm::vec3(grad), float(sign * dist[n]));
         }
   });

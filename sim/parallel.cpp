@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <cstdlib>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -113,7 +114,17 @@ ThreadPool& sharedPool() {
 }  // namespace
 
 size_t coreCount() {
-  return std::max(1u, std::thread::hardware_concurrency());
+  static const size_t count = [] {
+    size_t n = std::max(1u, std::thread::hardware_concurrency());
+    // CSM_THREADS caps the threads (a shared machine; the fuzz targets run on one).
+    if (const char* limit = std::getenv("CSM_THREADS")) {
+      char* end = nullptr;
+      const long asked = std::strtol(limit, &end, 10);
+      if (end != limit && *end == '\0' && asked > 0) n = std::min(n, size_t(asked));
+    }
+    return n;
+  }();
+  return count;
 }
 
 void runOnPool(size_t count, const std::function<void(size_t)>& task) {

@@ -10,6 +10,7 @@
 
 namespace csm {
 
+// The machine's cores, or fewer when the environment variable CSM_THREADS says so (read once).
 size_t coreCount();
 
 // Runs task(0) ... task(count - 1), each once, on the shared pool's threads and the calling

@@ -17,7 +17,11 @@ constexpr int kMaxNodesPerAxis = 256;
 template <class Visit>
 void VolumeGrid::forCorners(const glm::dvec3& x, Visit visit) const {
   const glm::dvec3 u = (x - origin_) / cell_;
-  const glm::ivec3 base = glm::clamp(glm::ivec3(glm::floor(u)), glm::ivec3(0), dims_ - 2);
+  // Clamped before the cast to int: a point far off (or not finite) takes the border's cell.
+  glm::dvec3 cellOf = glm::clamp(glm::floor(u), glm::dvec3(0.0), glm::dvec3(dims_ - 2));
+  for (int a = 0; a < 3; ++a)
+    if (std::isnan(cellOf[a])) cellOf[a] = 0.0;
+  const glm::ivec3 base(cellOf);
   const glm::dvec3 f = glm::clamp(u - glm::dvec3(base), 0.0, 1.0);
   for (int c = 0; c < 8; ++c) {
     const glm::ivec3 d(c & 1, (c >> 1) & 1, c >> 2);

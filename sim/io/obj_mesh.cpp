@@ -35,14 +35,14 @@ bool parseNumber(std::string_view s, double& v) {
   const std::string text(s);
   char* end = nullptr;
   v = std::strtod(text.c_str(), &end);
-  return end != text.c_str() && *end == '\0';
+  return end != text.c_str() && end == text.c_str() + text.size();
 }
 
 bool parseIndex(std::string_view s, long& v) {
   const std::string text(s);
   char* end = nullptr;
   v = std::strtol(text.c_str(), &end, 10);
-  return end != text.c_str() && *end == '\0';
+  return end != text.c_str() && end == text.c_str() + text.size();
 }
 
 // The lines of the file, comments and continuation aside (a head exporter writes neither
@@ -79,6 +79,11 @@ std::string checkLines(std::string_view text, const std::string& path,
   auto at = [&](size_t number, const std::string& message) {
     return path + ":" + std::to_string(number) + ": " + message;
   };
+  // tinyobjloader reads a line only up to a NUL byte: what it saw would not be what is
+  // checked below.
+  for (const auto& [number, line] : all)
+    if (line.find('\0') != std::string_view::npos)
+      return at(number, "a NUL byte; an OBJ file is text");
   long seen[3] = {0, 0, 0};
   static const char* kind[3] = {"vertex", "texture coordinate", "normal"};
   static const char* kinds[3] = {"vertices", "texture coordinates", "normals"};
@@ -141,14 +146,16 @@ std::string checkLines(std::string_view text, const std::string& path,
 }  // namespace
 
 ObjReadResult readObjMesh(const std::string& path) {
-  ObjReadResult r;
   std::string error;
   const auto bytes = detail::readFileBytes(path, kMaxBytes, &error);
-  if (!bytes) {
-    r.error = error;
-    return r;
-  }
-  const std::string text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+  if (!bytes) return {std::nullopt, error};
+  return parseObjMesh(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
+                      path);
+}
+
+ObjReadResult parseObjMesh(std::string_view data, const std::string& path) {
+  ObjReadResult r;
+  const std::string text(data);
   std::vector<size_t> faceLines;
   r.error = checkLines(text, path, faceLines);
   if (!r.error.empty()) return r;

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "sim/head_shape.h"
 
@@ -24,5 +25,7 @@ struct ObjReadResult {
 // not closed and consistently oriented (an open surface has no inside to give the field its
 // sign); a mesh over 1 m across (not in metres).
 ObjReadResult readObjMesh(const std::string& path);
+// The same from the file's text in memory; `name` stands for the path in messages.
+ObjReadResult parseObjMesh(std::string_view text, const std::string& name);
 
 }  // namespace csm::io

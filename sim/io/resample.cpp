@@ -53,7 +53,9 @@ float localDeviation(std::span<const glm::vec3> strand, const std::vector<double
   const double step = s.back() / segments;
   float worst = 0.0f;
   for (size_t i = 0; i < strand.size(); ++i) {
-    const auto j = static_cast<size_t>(std::min<double>(s[i] / step, segments - 1));
+    // Written so that a NaN (a strand of infinite length) gives segment 0, not a cast of NaN.
+    const double at = s[i] / step;
+    const auto j = at > 0.0 ? static_cast<size_t>(std::min<double>(at, segments - 1)) : size_t(0);
     float d = pointSegmentDistance(strand[i], resampled[j], resampled[j + 1]);
     if (j > 0) d = std::min(d, pointSegmentDistance(strand[i], resampled[j - 1], resampled[j]));
     if (j + 2 <= segments) {

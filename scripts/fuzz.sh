@@ -1,0 +1,125 @@
+#!/usr/bin/env bash
+# Fuzzes the readers of everything csmhair takes from outside (tests/fuzz: presets, cyHair,
+# TressFX, OBJ heads) with libFuzzer under ASan, LeakSanitizer and UBSan, in build-fuzz/
+# (clang; configured and built here when needed, clang and libFuzzer installed when missing).
+#   scripts/fuzz.sh short [SECONDS]          CI: every target SECONDS (30) on a copy of its
+#                                            seeds, after every regression input once
+#   scripts/fuzz.sh long [SECONDS|-runs=N]   every target for SECONDS or N runs (default
+#                                            -runs=10000000), one after the other, one process;
+#                                            the corpus grows in build-fuzz/corpus/<target>/
+#   scripts/fuzz.sh regressions              every input under tests/fuzz/regressions/ once
+#   scripts/fuzz.sh build                    only build the targets
+# FUZZ_TARGETS="preset obj" picks targets; FUZZ_JOBS sets the build's jobs (default: cores).
+# Prints per target: executions, time, exec/s, coverage (libFuzzer's cov: edges, ft: features),
+# corpus, findings. Exits non-zero on any finding (crash, leak, undefined behaviour, timeout
+# over 10 s, more than 2 GB); its input is kept in build-fuzz/findings/<target>/, and
+#   build-fuzz/tests/fuzz/fuzz_<target> <input>
+# reproduces it. A fixed finding's input goes to tests/fuzz/regressions/<target>/.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build="$root/build-fuzz"
+fuzz="$root/tests/fuzz"
+mode=${1:-short}
+targets=(${FUZZ_TARGETS:-preset cyhair tressfx obj})
+
+case "$mode" in
+  short) limit=(-max_total_time="${2:-30}") ;;
+  long)
+    arg=${2:--runs=10000000}
+    if [[ "$arg" == -runs=* ]]; then limit=("$arg"); else limit=(-max_total_time="$arg"); fi ;;
+  regressions | build) limit=() ;;
+  *) echo "fuzz.sh: unknown mode '$mode' (short, long, regressions, build)" >&2; exit 2 ;;
+esac
+
+# Debian's clang and its libFuzzer runtime (libclang_rt.fuzzer), as scripts/setup.sh installs.
+missing=()
+command -v clang++ >/dev/null || missing+=(clang)
+compgen -G "/usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a" >/dev/null ||
+  missing+=(libclang-rt-14-dev)
+for p in cmake make libeigen3-dev libglm-dev nlohmann-json3-dev libtinyobjloader-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "fuzz: installing ${missing[*]}" >&2
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCSM_FUZZ=ON \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+fi
+cmake --build "$build" -j "${FUZZ_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+[ "$mode" = build ] && exit 0
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
+# A finding: a crash, a sanitizer report (UBSan aborts: -fno-sanitize-recover=all), a leak, one
+# input over 10 s (a hang) or over 2 GB.
+common=(-rss_limit_mb=2048 -timeout=10 -malloc_limit_mb=2048)
+status=0
+declare -a report
+
+regressions() {
+  local t=$1 dir="$fuzz/regressions/$1"
+  compgen -G "$dir/*" >/dev/null || return 0
+  local log="$build/logs/regressions_$t.log"
+  if "$build/tests/fuzz/fuzz_$t" "${common[@]}" "$dir"/* >"$log" 2>&1; then
+    echo "fuzz: $t: $(find "$dir" -type f | wc -l) regression inputs pass"
+  else
+    echo "fuzz: $t: a regression input fails again; see $log" >&2
+    tail -n 30 "$log" >&2
+    status=1
+  fi
+}
+
+run() {
+  local t=$1 corpus findings="$build/findings/$1" log="$build/logs/${mode}_$1.log"
+  mkdir -p "$findings"
+  if [ "$mode" = long ]; then
+    corpus="$build/corpus/$t"  # grows from run to run
+  else
+    corpus=$(mktemp -d)  # the seeds stay as they are
+  fi
+  mkdir -p "$corpus"
+  cp -n "$fuzz/corpus/$t"/* "$corpus"/
+  [ "$t" = preset ] && cp -n "$root/presets"/*.json "$corpus"/
+  local opts=("${common[@]}" "${limit[@]}" -print_final_stats=1 -artifact_prefix="$findings/"
+              -max_len=$([ "$t" = preset ] && echo 8192 || echo 4096))
+  [ -f "$fuzz/$t.dict" ] && opts+=(-dict="$fuzz/$t.dict")
+  local before after start end rc=0
+  before=$(find "$findings" -type f | wc -l)
+  start=$(date +%s)
+  "$build/tests/fuzz/fuzz_$t" "${opts[@]}" "$corpus" >"$log" 2>&1 || rc=$?
+  end=$(date +%s)
+  after=$(find "$findings" -type f | wc -l)
+  local runs eps last cov ft corp
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  eps=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
+  last=$(grep -E '^#[0-9]+[[:space:]]+(DONE|pulse|NEW|REDUCE|INITED)' "$log" | tail -n 1 || true)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
+  corp=$(sed -n 's/.* corp: \([0-9]*\/[0-9]*[bKM]*\).*/\1/p' <<<"$last")
+  local found=$((after - before))
+  [ $rc -ne 0 ] && [ $found -eq 0 ] && found=1
+  report+=("$(printf '%-8s %12s %8s %8s %6s %7s %12s %8s' "$t" "${runs:-?}" "$((end - start))" \
+    "${eps:-?}" "${cov:-?}" "${ft:-?}" "${corp:-?}" "$found")")
+  if [ $rc -ne 0 ]; then
+    echo "fuzz: $t: FINDING (exit $rc); input in $findings/, log $log:" >&2
+    grep -E 'ERROR|runtime error|fuzz target:|SUMMARY|Test unit written' "$log" | head -n 20 >&2
+    status=1
+  fi
+  [ "$mode" = long ] || rm -rf "$corpus"
+}
+
+mkdir -p "$build/logs"
+for t in "${targets[@]}"; do regressions "$t"; done
+if [ "$mode" != regressions ]; then
+  for t in "${targets[@]}"; do run "$t"; done
+  printf '%-8s %12s %8s %8s %6s %7s %12s %8s\n' target executions time_s exec/s cov ft corpus \
+    findings
+  printf '%s\n' "${report[@]}"
+fi
+exit $status

@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""Writes the hand-made seeds of tests/fuzz/corpus/ (presets, cyHair, TressFX, OBJ). The shipped
+presets/*.json are seeds too: scripts/fuzz.sh adds them to the preset target's corpus.
+Run from anywhere: python3 tests/fuzz/make_seeds.py"""
+import math
+import os
+import struct
+
+here = os.path.dirname(os.path.abspath(__file__))
+
+
+def out(target, name, data):
+    d = os.path.join(here, "corpus", target)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, name), "wb" if isinstance(data, bytes) else "w") as f:
+        f.write(data)
+
+
+def strands(count, points, curl=0.0, scale=1.0):
+    """Strands rising from a cap of a 10-unit sphere, then hanging down."""
+    out = []
+    for s in range(count):
+        a = 2 * math.pi * s / count
+        root = (10 * math.cos(a) * 0.5, 10 * 0.85, 10 * math.sin(a) * 0.5)
+        pts = []
+        for i in range(points):
+            t = i / max(1, points - 1)
+            pts.append(((root[0] * (1 + 0.3 * t) + curl * math.cos(7 * t)) * scale,
+                        (root[1] - 20 * t * t) * scale,
+                        (root[2] * (1 + 0.3 * t) + curl * math.sin(7 * t)) * scale))
+        out.append(pts)
+    return out
+
+
+def cyhair(ss, segments_array=True, thickness=False, transparency=False, colors=False,
+           default_segments=0):
+    arrays = 2 | (1 if segments_array else 0) | (4 if thickness else 0) | \
+        (8 if transparency else 0) | (16 if colors else 0)
+    npts = sum(len(s) for s in ss)
+    head = b"HAIR" + struct.pack("<IIII", len(ss), npts, arrays, default_segments)
+    head += struct.pack("<fffff", 0.1, 0.0, 0.5, 0.4, 0.3)
+    head += b"fuzz seed".ljust(88, b"\0")
+    assert len(head) == 128
+    body = b""
+    if segments_array:
+        body += b"".join(struct.pack("<H", len(s) - 1) for s in ss)
+    body += b"".join(struct.pack("<fff", *p) for s in ss for p in s)
+    if thickness:
+        body += b"".join(struct.pack("<f", 0.01 + 0.001 * i) for s in ss for i, _ in enumerate(s))
+    if transparency:
+        body += b"".join(struct.pack("<f", 0.2) for s in ss for _ in s)
+    if colors:
+        body += b"".join(struct.pack("<fff", 0.5, 0.3, 0.1) for s in ss for _ in s)
+    return head + body
+
+
+def tressfx(ss, strand_uv=False, vertex_uv=False, thickness=False, colors=False):
+    n, per = len(ss), len(ss[0])
+    arrays = [struct.pack("<ffff", *p, 0.0 if i < 2 else 1.0) for s in ss
+              for i, p in enumerate(s)]
+    layout = [b"".join(arrays)]
+    layout.append(b"".join(struct.pack("<ff", 0.5, 0.5) for _ in ss) if strand_uv else b"")
+    layout.append(b"".join(struct.pack("<ff", 0.1, 0.9) for s in ss for _ in s)
+                  if vertex_uv else b"")
+    layout.append(b"".join(struct.pack("<f", 0.02) for _ in ss) if thickness else b"")
+    layout.append(b"".join(struct.pack("<ffff", 0.6, 0.4, 0.2, 1.0) for s in ss for _ in s)
+                  if colors else b"")
+    body, offsets, at = b"", [], 160
+    for a in layout:
+        if not a:
+            offsets.append(0)
+            continue
+        pad = (-at) % 8
+        body += b"\0" * pad
+        at += pad
+        offsets.append(at)
+        body += a
+        at += len(a)
+    head = struct.pack("<fII", 4.0, n, per) + struct.pack("<5I", *offsets)
+    head = head.ljust(160, b"\0")
+    return head + body
+
+
+def obj(vertices, faces, extra=""):
+    text = "# fuzz seed\n" + extra
+    text += "".join("v %.5f %.5f %.5f\n" % v for v in vertices)
+    text += "".join("f " + " ".join(str(i) for i in f) + "\n" for f in faces)
+    return text
+
+
+def main():
+    out("preset", "empty_object.json", "{}\n")
+    out("preset", "small_volume.json",
+        '{"hairstyle": {"strands": 4, "length_max": 0.1, "length_min": 0.05, '
+        '"curl_radius": 0.01, "parting": "left", "fringe": true},\n'
+        ' "collision": {"mode": "volume+strands", "head_shape": "spheres"},\n'
+        ' "head": {"motion": "nod", "fit_spheres": false},\n'
+        ' "sim": {"stiffness_model": "paper", "dftl": 0.5},\n'
+        ' "wind": {"strength": 3.0}}\n')
+    out("preset", "fitted_spheres.json",
+        '{"hairstyle.strands": 3, "head.fit_spheres": true, "collision.head_shape": "sdf",\n'
+        ' "hairstyle.particles_per_strand": 6, "hairstyle.file": ""}\n')
+    out("preset", "bad_key.json", '{"hairstyle": {"strand": 10}, "sim": {"dt": 2}}\n')
+    out("preset", "file_names.json",
+        '{"hairstyle": {"file": "groom.hair"}, "head": {"mesh": "head.obj"}}\n')
+
+    out("cyhair", "segments.hair", cyhair(strands(3, 5)))
+    out("cyhair", "default_segments.hair",
+        cyhair(strands(2, 4), segments_array=False, default_segments=3))
+    out("cyhair", "all_arrays.hair",
+        cyhair(strands(3, 4, curl=1.0), thickness=True, transparency=True, colors=True))
+    out("cyhair", "long_strand.hair", cyhair(strands(2, 40, curl=2.0)))
+    out("cyhair", "metres.hair", cyhair(strands(2, 6, scale=0.01)))
+    out("cyhair", "truncated.hair", cyhair(strands(2, 3))[:150])
+
+    out("tressfx", "positions.tfx", tressfx(strands(3, 4)))
+    out("tressfx", "all_arrays.tfx",
+        tressfx(strands(2, 4, curl=1.0), strand_uv=True, vertex_uv=True, thickness=True,
+                colors=True))
+    out("tressfx", "long_strands.tfx", tressfx(strands(2, 32, curl=2.0)))
+    out("tressfx", "truncated.tfx", tressfx(strands(2, 4))[:200])
+
+    r = 0.1
+    tet = [(r, r, r), (r, -r, -r), (-r, r, -r), (-r, -r, r)]
+    out("obj", "tetrahedron.obj", obj(tet, [(1, 2, 3), (1, 4, 2), (1, 3, 4), (2, 4, 3)]))
+    cube = [(x * r, y * r, z * r) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
+    quads = [(1, 2, 4, 3), (5, 7, 8, 6), (1, 5, 6, 2), (3, 4, 8, 7), (1, 3, 7, 5), (2, 6, 8, 4)]
+    out("obj", "cube_quads.obj", obj(cube, quads, "o cube\nvn 0 1 0\nvt 0 0\n"))
+    out("obj", "cube_slashes.obj",
+        obj(cube, [tuple("%d/1/1" % i for i in q) for q in quads], "vn 0 1 0\nvt 0 0\n"))
+    out("obj", "cube_negative.obj",
+        obj(cube, [tuple(i - 9 for i in q) for q in quads]))
+    octa = [(r, 0, 0), (-r, 0, 0), (0, r, 0), (0, -r, 0), (0, 0, r), (0, 0, -r)]
+    of = [(1, 3, 5), (3, 2, 5), (2, 4, 5), (4, 1, 5), (3, 1, 6), (2, 3, 6), (4, 2, 6), (1, 4, 6)]
+    out("obj", "octahedron_inward.obj", obj(octa, [f[::-1] for f in of]))
+    out("obj", "open.obj", obj(tet, [(1, 2, 3), (1, 4, 2), (1, 3, 4)]))
+    out("obj", "bad_index.obj", obj(tet, [(1, 2, 3), (1, 4, 2), (1, 3, 4), (2, 4, 9)]))
+
+
+if __name__ == "__main__":
+    main()
