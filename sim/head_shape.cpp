@@ -20,17 +20,14 @@ namespace csm {
 
 double DistanceGrid::sample(const glm::dvec3& p, glm::dvec3* gradient) const {
   if (!std::isfinite(p.x + p.y + p.z)) {
-    // No cell to read (floor(NaN) has no integer): not a distance either.
+    // No cell to read (floor(NaN) has no integer; a groom scaled past float's range, a state
+    // gone bad): not a distance either.
     if (gradient) *gradient = glm::dvec3(0.0);
     return std::numeric_limits<double>::quiet_NaN();
   }
   const glm::dvec3 f = (p - glm::dvec3(origin)) / double(cell);
   const glm::dvec3 top = glm::dvec3(dims - 1);
-  glm::dvec3 inside = glm::clamp(f, glm::dvec3(0.0), top);
-  // A point that is not finite (a groom scaled past float's range, a state gone bad) reads the
-  // first cell and gets a distance that is not finite, never a cast of NaN to an index.
-  for (int a = 0; a < 3; ++a)
-    if (std::isnan(inside[a])) inside[a] = 0.0;
+  const glm::dvec3 inside = glm::clamp(f, glm::dvec3(0.0), top);
   // Beyond the border: the border's distance plus the way to it (the border lies outside the
   // shape, so this stays positive and grows away from it).
   const double beyond = glm::length(f - inside) * double(cell);
