@@ -1,10 +1,12 @@
 #!/usr/bin/python3
 """Charts for docs/BENCHMARKS.md ("Speed against accuracy") from the CSV csmhair-bench writes.
 
-usage: /usr/bin/python3 scripts/charts.py DIR
+usage: /usr/bin/python3 scripts/charts.py DIR [SECTION...]
 
 Reads DIR/{methods,stability,resolution,region_sums,scaling,scene_choices,window_coefficient,
-window_sag,modes}.csv (whichever are there) and writes PNG and SVG charts next to them. Needs only Debian's python3-matplotlib.
+window_sag,modes,torture,soak_rss}.csv (whichever are there; with SECTIONs, only those
+sections': methods, stability, ..., window, modes, torture, soak) and writes PNG and SVG charts
+next to them. Needs only Debian's python3-matplotlib.
 """
 import csv
 import json
@@ -414,30 +416,130 @@ def modes_chart(rows, out):
     save(fig, out, "modes")
 
 
+
+# ---- reliability: the torture map and the soak (docs/RELIABILITY.md) --------------------------
+
+TORTURE_COLOURS = ["#b7e4b0", "#fdae61", "#e34a33", "#7f0000", "#ffffff"]
+TORTURE_LABELS = ["pass", "fails one criterion", "fails two or more", "non-finite",
+                  "not run"]
+
+
+def torture_note(r):
+    """The worst measure of a cell, short: what failed, else the stretch and peak speed."""
+    if r["finite"] != "1":
+        return f"NaN f{r['nonfinite_frame']}"
+    parts = []
+    if r["stretch_ok"] != "1":
+        parts.append(f"S{100 * num(r, 'max_strain'):.0f}%")
+    if r["head_ok"] != "1":
+        parts.append(f"H{num(r, 'deepest_mm'):.1f}mm")
+    if r["speed_ok"] != "1":
+        parts.append(f"V{num(r, 'peak_speed'):.0f}/{num(r, 'speed_bound'):.0f}")
+    if not parts:
+        return f"{num(r, 'peak_speed'):.1f}"
+    return "\n".join(parts)
+
+
+def torture_chart(rows, out):
+    """csmhair-bench --only torture: every cell (axis = value, rows) in every collision mode and
+    solver (columns), coloured by the criteria it fails."""
+    cells, columns = [], []
+    for r in rows:
+        key = (r["axis"], r["value"])
+        if key not in cells:
+            cells.append(key)
+        col = (r["solver"], r["mode"])
+        if col not in columns:
+            columns.append(col)
+    grid = [[4] * len(columns) for _ in cells]
+    fig, ax = plt.subplots(figsize=(1.05 * len(columns) + 3.2, 0.3 * len(cells) + 1.6))
+    for r in rows:
+        i, j = cells.index((r["axis"], r["value"])), columns.index((r["solver"], r["mode"]))
+        failed = sum(r[k] != "1" for k in ("stretch_ok", "head_ok", "speed_ok"))
+        grid[i][j] = 3 if r["finite"] != "1" else min(failed, 2)
+        ax.text(j, i, torture_note(r), ha="center", va="center", fontsize=5.2,
+                color="white" if grid[i][j] == 3 else "black")
+    ax.imshow(grid, cmap=ListedColormap(TORTURE_COLOURS), vmin=-0.5,
+              vmax=len(TORTURE_COLOURS) - 0.5, aspect="auto")
+    ax.set_xticks(range(len(columns)))
+    ax.set_xticklabels([f"{s.upper()}\n{m}" for s, m in columns], fontsize=6.5)
+    ax.xaxis.tick_top()
+    ax.set_yticks(range(len(cells)))
+    ax.set_yticklabels([f"{a}: {v}" for a, v in cells], fontsize=6.5)
+    for i in range(1, len(cells)):
+        if cells[i][0] != cells[i - 1][0]:
+            ax.axhline(i - 0.5, color="black", linewidth=0.6)
+    for j in range(1, len(columns)):
+        if columns[j][0] != columns[j - 1][0]:
+            ax.axvline(j - 0.5, color="black", linewidth=1.2)
+    ax.grid(False)
+    handles = [plt.Rectangle((0, 0), 1, 1, color=c, ec="#999999") for c in TORTURE_COLOURS]
+    fig.legend(handles, TORTURE_LABELS, loc="lower center", ncol=5, fontsize=7, frameon=False)
+    strands = int(num(rows[0], "strands"))
+    fig.suptitle(f"Torture map: the default preset, {strands} strands, one factor at a time; "
+                 "text: S = largest stretch, H = deepest inside the head, V = peak speed / "
+                 "bound (m/s); a passing cell shows its peak speed", fontsize=8)
+    fig.tight_layout(rect=(0, 0.03, 1, 0.97))
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(out, f"torture.{ext}"),
+                    metadata={"Date": None} if ext == "svg" else None)
+    plt.close(fig)
+    print("charts.py: torture.png, torture.svg")
+
+
+def soak_chart(rows, out):
+    """csmhair-bench --only soak: the resident set over the run, per solver."""
+    summary = {r["solver"]: r for r in (read(os.path.join(out, "soak.csv")) or [])}
+    fig, ax = plt.subplots(figsize=(6.5, 3.2))
+    for solver in sorted({r["solver"] for r in rows}):
+        pts = [(num(r, "frame"), num(r, "rss_kb") / 1024) for r in rows if r["solver"] == solver]
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=".", label=solver.upper())
+        if solver in summary:
+            ax.axvline(num(summary[solver], "moving_frames"), color="#999999", linestyle=":")
+    ax.set_xlabel("frame (dotted: the head stops)")
+    ax.set_ylabel("resident set (MiB)")
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize=7)
+    ax.set_title("Soak: memory over the run", fontsize=9)
+    save(fig, out, "soak")
+
+
 def main():
-    if len(sys.argv) != 2:
+    if len(sys.argv) < 2:
         print(__doc__, file=sys.stderr)
         return 2
     out = sys.argv[1]
+    # Sections named after DIR: only their charts (csmhair-bench --only passes them).
+    only = set(sys.argv[2:])
+
+    def wanted(name):
+        return not only or name in only
+
     meta = {}
     if os.path.exists(os.path.join(out, "meta.json")):
         with open(os.path.join(out, "meta.json")) as f:
             meta = json.load(f)
-    methods = read(os.path.join(out, "methods.csv"))
+    methods = read(os.path.join(out, "methods.csv")) if wanted("methods") else None
     if methods:
         note = (f"{int(num(methods[0], 'strands'))} strands, "
                 f"{int(num(methods[0], 'particles'))} particles, nodding head")
         cost_charts(methods, out, note)
-    for name, fn in (("stability", stability_chart), ("scaling", scaling_chart),
-                     ("region_sums", region_chart), ("resolution", resolution_chart),
-                     ("scene_choices", scene_chart), ("modes", modes_chart)):
-        rows = read(os.path.join(out, f"{name}.csv"))
+    for name, section, fn in (("stability", "stability", stability_chart),
+                              ("scaling", "scaling", scaling_chart),
+                              ("region_sums", "region_sums", region_chart),
+                              ("resolution", "resolution", resolution_chart),
+                              ("scene_choices", "scene_choices", scene_chart),
+                              ("modes", "modes", modes_chart),
+                              ("torture", "torture", torture_chart),
+                              ("soak_rss", "soak", soak_chart)):
+        rows = read(os.path.join(out, f"{name}.csv")) if wanted(section) else None
         if rows:
             fn(rows, out)
-    coefficients = read(os.path.join(out, "window_coefficient.csv"))
-    sags = read(os.path.join(out, "window_sag.csv"))
-    if coefficients or sags:
-        window_chart(coefficients, sags, out)
+    if wanted("window"):
+        coefficients = read(os.path.join(out, "window_coefficient.csv"))
+        sags = read(os.path.join(out, "window_sag.csv"))
+        if coefficients or sags:
+            window_chart(coefficients, sags, out)
     if meta:
         print(f"charts.py: from {meta.get('command', '?')} on {meta.get('cores', '?')} cores, "
               f"{meta.get('cpu', '?')}")

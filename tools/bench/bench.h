@@ -94,5 +94,10 @@ void runRegionSums(const Options& o);
 void runScaling(const Options& o);
 void runSceneChoices(const Options& o);
 void runWindow(const Options& o);
+// The torture map and the soak (tools/bench/torture.cpp, sim/torture.h).
+void runTortureMap(const Options& o);
+void runSoakSection(const Options& o);
+// The default preset with `strands` strands: the torture map's base scene.
+Config tortureBase(const Options& o, int strands);
 
 }  // namespace csm::bench

@@ -1,6 +1,7 @@
 // csmhair-bench: regenerates the speed-against-accuracy CSV and charts of docs/BENCHMARKS.md.
 //
 //   csmhair-bench [--quick] [--gpu] [--out DIR] [--only SECTION]... [--threads N] [--no-charts]
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -25,8 +26,8 @@ namespace {
 using namespace csm;
 using namespace csm::bench;
 
-const char* kSections[] = {"methods", "stability",     "resolution", "region_sums",
-                           "scaling", "scene_choices", "window"};
+const char* kSections[] = {"methods",       "stability", "resolution", "region_sums", "scaling",
+                           "scene_choices", "window",    "torture",    "soak"};
 
 void usage(FILE* f) {
   std::fprintf(f,
@@ -37,7 +38,8 @@ void usage(FILE* f) {
                "  --gpu            create a headless GL context and include the GPU solver\n"
                "  --out DIR        where CSV and charts go (default: docs/charts of the source)\n"
                "  --only SECTION   run only this section (repeatable): methods, stability,\n"
-               "                   resolution, region_sums, scaling, scene_choices, window\n"
+               "                   resolution, region_sums, scaling, scene_choices, window,\n"
+               "                   torture, soak (these two run only when named)\n"
                "  --threads N      workers for accuracy runs (default 2; timings run alone)\n"
                "  --no-charts      write CSV only; do not run scripts/charts.py\n"
                "  --help           this text\n");
@@ -164,6 +166,12 @@ int main(int argc, char** argv) {
   section("scaling", runScaling);
   section("scene_choices", runSceneChoices);
   section("window", runWindow);
+  // Reliability, not speed (docs/RELIABILITY.md): only when asked for by name.
+  auto named = [&](const char* name) {
+    return std::find(o.only.begin(), o.only.end(), name) != o.only.end();
+  };
+  if (named("torture")) section("torture", runTortureMap);
+  if (named("soak")) section("soak", runSoakSection);
   meta["seconds"] = seconds;
   meta["seconds_total"] = std::chrono::duration<double>(Clock::now() - start).count();
   {
@@ -173,7 +181,9 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "simulation: %.0f s; CSV in %s\n", meta["seconds_total"].get<double>(),
                o.out.c_str());
   if (o.charts) {
-    const std::string cmd = "/usr/bin/python3 '" + o.source + "/scripts/charts.py' '" + o.out + "'";
+    // Only the sections run: the others' charts stay as their runs left them.
+    std::string cmd = "/usr/bin/python3 '" + o.source + "/scripts/charts.py' '" + o.out + "'";
+    for (const std::string& s : o.only) cmd += " " + s;
     std::fprintf(stderr, "%s\n", cmd.c_str());
     const int rc = std::system(cmd.c_str());
     if (rc != 0) {

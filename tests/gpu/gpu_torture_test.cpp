@@ -1,0 +1,48 @@
+// The torture map's far ends on the GPU solver, on the real GL driver (llvmpipe where there is
+// no GPU): the cells and criteria of tests/cpu/torture_test.cpp (tests/torture_cases.h), in
+// float. [jump] is the head turned 90 deg between two frames.
+#include <catch2/catch.hpp>
+
+#include "sim/gpu/gpu_solver.h"
+#include "tests/gpu/gl_fixture.h"
+#include "tests/torture_cases.h"
+
+using namespace csm;
+
+namespace {
+
+std::unique_ptr<Solver> makeGpu() {
+  test::glContext();
+  std::string error;
+  std::unique_ptr<GpuSolver> gpu = GpuSolver::create(&error);
+  INFO(error);
+  REQUIRE(gpu);
+  return gpu;
+}
+
+}  // namespace
+
+TEST_CASE("GPU torture map: sim.dt 1/240 and 1/24 s", "[gpu][torture][dt]") {
+  test::checkTortureAxis(makeGpu, "gpu", "dt");
+}
+
+TEST_CASE("GPU torture map: 1 and 8 substeps", "[gpu][torture][substeps]") {
+  test::checkTortureAxis(makeGpu, "gpu", "substeps");
+}
+
+TEST_CASE("GPU torture map: the narrowest and widest stiffness windows", "[gpu][torture][window]") {
+  test::checkTortureAxis(makeGpu, "gpu", "window");
+}
+
+TEST_CASE("GPU torture map: wind 0 and 50 m/s", "[gpu][torture][wind]") {
+  test::checkTortureAxis(makeGpu, "gpu", "wind");
+}
+
+TEST_CASE("GPU torture map: every head motion at 180 deg (cm) and 10 Hz",
+          "[gpu][torture][motion]") {
+  test::checkTortureAxis(makeGpu, "gpu", "motion");
+}
+
+TEST_CASE("GPU torture map: the head turned 90 deg between two frames", "[gpu][torture][jump]") {
+  test::checkTortureAxis(makeGpu, "gpu", "jump");
+}
