@@ -212,10 +212,11 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                  "could not finish): some or all of their contacts were missing\n",
                  (unsigned long long)seen.crowded);
   if (sim.carriedFrames() > 0)
-    std::fprintf(stderr,
-                 "csmhair: note: in %ld frames the head moved its roots faster than %.0f m/s: the "
-                 "hair went with it, rigidly, for the part beyond\n",
-                 sim.carriedFrames(), kMaxRootSpeed);
+    std::fprintf(
+        stderr,
+        "csmhair: note: in %ld frames a move of the head moved its roots faster than %.0f m/s: the "
+        "hair went with it, rigidly, for the part beyond\n",
+        sim.carriedFrames(), kMaxRootSpeed);
   if (seen.oversize > 0)
     std::fprintf(stderr,
                  "csmhair: warning: up to %llu segments a frame were too long for the collision "

@@ -142,9 +142,8 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
     warning("head jumps: %llu frames carried the hair with the head",
             (unsigned long long)f.carriedFrames,
             "In these frames (since the last reset) the head moved its roots faster than\n"
-            "2 m/s (a reset of the drag, a fast drag, a motion at its extremes): the hair went\n"
-            "with it, rigidly, for the part of the motion beyond that speed instead of being\n"
-            "flung.");
+            "2 m/s (a reset of the drag, a fast drag): the hair went with it, rigidly, for the\n"
+            "part of the move beyond that speed instead of being flung.");
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);
   ImGui::Text("particles %zu", f.particles);

@@ -40,6 +40,7 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     // Keep the clock and the camera: only the hair starts again from rest.
     if (!regrow(config, baseDir_, error)) return false;
     lastPose_ = headPoseAt(time_);
+    lastUserPose_ = userPose_;
     solver_->reset(*groom_, config_, lastPose_);
     return solverReady(error);
   }
@@ -70,13 +71,13 @@ void Simulation::boundRoots() {
         std::max(rootRadius_, glm::length(glm::dvec3(g.points[g.first[s]]) - rootCentre_));
 }
 
-Pose Simulation::jumpTo(const Pose& to) const {
+Pose Simulation::jumpOf(const Pose& from, const Pose& to) const {
   // How far a root moves at most: the centre's displacement plus the radius times the turn's
   // chord, 2 sin(angle / 2).
-  const glm::dquat turn = to.rotation * glm::conjugate(lastPose_.rotation);
+  const glm::dquat turn = to.rotation * glm::conjugate(from.rotation);
   const double halfSine = std::min(1.0, glm::length(glm::dvec3(turn.x, turn.y, turn.z)));
-  const double reach = glm::length(to.apply(rootCentre_) - lastPose_.apply(rootCentre_)) +
-                       2.0 * halfSine * rootRadius_;
+  const double reach =
+      glm::length(to.apply(rootCentre_) - from.apply(rootCentre_)) + 2.0 * halfSine * rootRadius_;
   const double allowed = kMaxRootSpeed * double(config_.sim.dt);
   if (!(reach > allowed)) return Pose{};
   // Past the bound: how far the farthest root does move.
@@ -84,11 +85,11 @@ Pose Simulation::jumpTo(const Pose& to) const {
   const Groom& g = *groom_;
   for (size_t s = 0; s < g.strandCount(); ++s) {
     const glm::dvec3 r(g.points[g.first[s]]);
-    farthest = std::max(farthest, glm::length(to.apply(r) - lastPose_.apply(r)));
+    farthest = std::max(farthest, glm::length(to.apply(r) - from.apply(r)));
   }
   if (!(farthest > allowed)) return Pose{};
-  const Pose carriedTo = interpolate(lastPose_, to, 1.0 - allowed / farthest);
-  return compose(carriedTo, inverse(lastPose_));
+  const Pose carriedTo = interpolate(from, to, 1.0 - allowed / farthest);
+  return compose(carriedTo, inverse(from));
 }
 
 void Simulation::reset() {
@@ -96,6 +97,7 @@ void Simulation::reset() {
   frame_ = 0;
   carried_ = 0;
   lastPose_ = headPoseAt(0.0);
+  lastUserPose_ = userPose_;
   solver_->reset(*groom_, config_, lastPose_);
 }
 
@@ -106,7 +108,9 @@ Pose Simulation::headPoseAt(double t) const {
 void Simulation::stepFrame() {
   const double next = time_ + config_.sim.dt;
   const Pose to = headPoseAt(next);
-  const Pose jump = jumpTo(to);
+  // The user's move of the head this frame (a drag, a reset of it), beyond the preset's motion.
+  const Pose motion = csm::headPose(config_.head, next);
+  const Pose jump = jumpOf(compose(lastUserPose_, motion), to);
   if (jump.rotation != glm::dquat(1.0, 0.0, 0.0, 0.0) || jump.translation != glm::dvec3(0.0)) {
     // The hair goes with the head for the part of its motion too fast to simulate.
     solver_->carry(jump);
@@ -115,6 +119,7 @@ void Simulation::stepFrame() {
   }
   solver_->stepFrame(lastPose_, to);
   lastPose_ = to;
+  lastUserPose_ = userPose_;
   time_ = next;
   ++frame_;
 }

@@ -14,11 +14,11 @@
 
 namespace csm {
 
-// The fastest the roots may move with the head (m/s). A head that moves its roots faster (a
-// jump: a reset of the viewer's drag, a fast drag, a scripted motion at its extremes) carries
-// the hair with it, rigidly, for the part of the frame's motion beyond this speed; the rest
-// is simulated. A head shaken hard turns at about 700 degrees a second, which moves roots
-// 10-12 cm from the neck's axis at 1.2-1.5 m/s.
+// The fastest the user's move of the head may move the roots (m/s). A head the user moves
+// faster (a jump: a reset of the viewer's drag, a fast drag, setUserPose) carries the hair
+// with it, rigidly, for the part of the move beyond this speed; the rest, and the preset's
+// own motion, are simulated. A head shaken hard turns at about 700 degrees a second, which moves
+// roots 10-12 cm from the neck's axis at 1.2-1.5 m/s.
 inline constexpr double kMaxRootSpeed = 2.0;
 
 class Simulation {
@@ -51,7 +51,7 @@ class Simulation {
   const std::string& baseDir() const { return baseDir_; }
   double time() const { return time_; }
   long frame() const { return frame_; }
-  // Frames since the last reset whose head motion was partly carried (kMaxRootSpeed).
+  // Frames since the last reset whose user move of the head was partly carried (kMaxRootSpeed).
   long carriedFrames() const { return carried_; }
   // Bumped whenever the groom is regrown, so renderers know to rebuild their buffers.
   long generation() const { return generation_; }
@@ -62,9 +62,9 @@ class Simulation {
   void boundRoots();
   // False, saying why, when the solver could not take the groom at its reset.
   bool solverReady(std::string* error) const;
-  // The part of the head's motion from lastPose_ to `to` that moves the roots faster than
+  // The part of the head's move from `from` to `to` that moves the roots faster than
   // kMaxRootSpeed, as a rigid transform of the world (identity when none).
-  Pose jumpTo(const Pose& to) const;
+  Pose jumpOf(const Pose& from, const Pose& to) const;
 
   std::unique_ptr<Solver> solver_;
   Config config_;
@@ -72,6 +72,7 @@ class Simulation {
   std::shared_ptr<const Groom> groom_ = std::make_shared<const Groom>();
   GroomReport groomReport_;
   Pose userPose_;
+  Pose lastUserPose_;  // the user's pose the last frame ran with
   Pose lastPose_;
   // The roots' bounding sphere in the head frame, for their speed.
   glm::dvec3 rootCentre_{0.0};

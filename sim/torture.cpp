@@ -35,7 +35,7 @@ bool finite(const glm::vec4& p) {
 
 // The far ends: the for the step (1/240-1/24 s) and the substeps (1-8), the parameter
 // table's (sim/params.cpp) for the rest; tests/cpu/torture_test.cpp checks them against it.
-constexpr float kWindowLengthMin = 0.002f, kWindowLengthMax = 1.0f;
+constexpr float kWindowLengthMin = 0.002f, kWindowLengthMax = 0.1f;
 constexpr int kPaperWindowMin = 1, kPaperWindowMax = 32;
 constexpr float kWindMax = 50.0f;
 constexpr float kAmplitudeMax = 180.0f, kFrequencyMax = 10.0f;
@@ -68,7 +68,7 @@ std::vector<TortureCell> axes(const Config& base, TortureScope scope, double dur
       c.config.sim.substeps = s;
       c.config.sim.maxSubsteps = s;
     });
-  for (float l : full ? std::vector<float>{kWindowLengthMin, 0.01f, 0.1f, 0.2f, kWindowLengthMax}
+  for (float l : full ? std::vector<float>{kWindowLengthMin, 0.01f, 0.04f, kWindowLengthMax}
                       : std::vector<float>{kWindowLengthMin, kWindowLengthMax})
     add("window", format("calibrated %g cm", 100.0 * l), [&](TortureCell& c) {
       c.config.sim.stiffnessModel = StiffnessModel::Calibrated;
