@@ -32,20 +32,13 @@ case "$mode" in
 esac
 
 # Debian's clang and its libFuzzer runtime (libclang_rt.fuzzer), as scripts/setup.sh installs.
-missing=()
-command -v clang++ >/dev/null || missing+=(clang)
+# shellcheck source=scripts/packages.sh
+source "$root/scripts/packages.sh"
+packages=(cmake make libeigen3-dev libglm-dev nlohmann-json3-dev libtinyobjloader-dev)
+command -v clang++ >/dev/null || packages+=(clang)
 compgen -G "/usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a" >/dev/null ||
-  missing+=(libclang-rt-14-dev)
-for p in cmake make libeigen3-dev libglm-dev nlohmann-json3-dev libtinyobjloader-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "fuzz: installing ${missing[*]}" >&2
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  $sudo apt-get update
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y --no-install-recommends "${missing[@]}"
-fi
+  packages+=(libclang-rt-14-dev)
+install_missing fuzz "${packages[@]}"
 
 if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCSM_FUZZ=ON \

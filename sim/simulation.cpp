@@ -107,9 +107,9 @@ Pose Simulation::headPoseAt(double t) const {
 
 void Simulation::stepFrame() {
   const double next = time_ + config_.sim.dt;
-  const Pose to = headPoseAt(next);
   // The user's move of the head this frame (a drag, a reset of it), beyond the preset's motion.
   const Pose motion = csm::headPose(config_.head, next);
+  const Pose to = compose(userPose_, motion);
   const Pose jump = jumpOf(compose(lastUserPose_, motion), to);
   if (jump.rotation != glm::dquat(1.0, 0.0, 0.0, 0.0) || jump.translation != glm::dvec3(0.0)) {
     // The hair goes with the head for the part of its motion too fast to simulate.

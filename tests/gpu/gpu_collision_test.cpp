@@ -18,6 +18,7 @@
 #include "sim/hairstyle.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
+#include "tests/gpu/gpu_solver_fixture.h"
 
 using namespace csm;
 using test::strandOf;
@@ -82,16 +83,6 @@ Compared compare(GpuSolver& gpu, const Groom& g, double r) {
   return c;
 }
 
-// A GPU solver on the shared context; REQUIREs that it could be made (the reason in the log).
-std::unique_ptr<GpuSolver> makeGpuSolver() {
-  test::glContext();
-  std::string error;
-  std::unique_ptr<GpuSolver> gpu = GpuSolver::create(&error);
-  INFO(error);
-  REQUIRE(gpu);
-  return gpu;
-}
-
 // A bundle of 15 x 15 parallel strands 0.3 mm apart along z, 6 particles 4 mm apart; the
 // roots staggered along z by up to `stagger` mm (from strand to strand), so that strands side
 // by side sag differently under gravity across them.
@@ -122,7 +113,7 @@ Config contactConfig(bool head) {
 }  // namespace
 
 TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collision]") {
-  auto gpu = makeGpuSolver();
+  auto gpu = test::gpuSolver();
   for (double step : {0.004, 0.012}) {
     const Groom g = tangle(400, step, 7);
     for (double r : {0.0005, 0.002, 0.008}) {
@@ -186,7 +177,7 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
 
 TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu][collision]") {
   // Hair fallen under gravity and wind: dense near the scalp, where most pairs are.
-  auto gpu = makeGpuSolver();
+  auto gpu = test::gpuSolver();
   Config c;
   c.hairstyle.strands = 1500;
   c.hairstyle.particlesPerStrand = 12;
@@ -225,7 +216,7 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
   auto penetrations = [&](CollisionMode mode, ContactStats* stats) {
     Config m = c;
     m.collision.mode = mode;
-    auto gpu = makeGpuSolver();
+    auto gpu = test::gpuSolver();
     gpu->reset(g, m, headPose(m.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 90; ++f, t += m.sim.dt)
@@ -253,7 +244,7 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   // Long diagonal segments between short ones (cells follow the mean length) each pass
   // through several cells (6.9 entries a segment here, of the clipped pieces; 17 with whole
   // boxes): the entries still fit what reset reserved from the boxes.
-  auto gpu = makeGpuSolver();
+  auto gpu = test::gpuSolver();
   Groom g;
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(-0.03f, 0.03f), d(-1.0f, 1.0f);
@@ -322,7 +313,7 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
   // frame lists no candidates (the counters say how many pairs it needed, and count the frame
   // as one over capacity); the next one, after a sample reads the counters, fits and lists
   // them.
-  auto gpu = makeGpuSolver();
+  auto gpu = test::gpuSolver();
   const Groom g = packedBundle(0);
   const Config c = contactConfig(true);
   gpu->reset(g, c, Pose{});
@@ -380,7 +371,7 @@ TEST_CASE("GPU lists: a segment lists all of 1500 candidates and none of 2500",
   for (int crossing : {1500, 2500}) {
     INFO(crossing << " crossing segments");
     const Groom g = crowd(crossing);
-    auto gpu = makeGpuSolver();
+    auto gpu = test::gpuSolver();
     gpu->reset(g, c, Pose{});
     gpu->detectContacts();
     const auto lists = gpu->readCandidates();
@@ -417,7 +408,7 @@ TEST_CASE("GPU grid: its buffers stay within what the device's storage blocks ho
   const Groom g = packedBundle(0);
   const Config c = contactConfig(true);
   const uint64_t cap = 128 * 1024;
-  auto gpu = makeGpuSolver();
+  auto gpu = test::gpuSolver();
   gpu->limitGridStorage(cap);
   gpu->reset(g, c, Pose{});
   for (int f = 0; f < 3; ++f) gpu->stepFrame(Pose{}, Pose{});
@@ -431,7 +422,7 @@ TEST_CASE("GPU grid: its buffers stay within what the device's storage blocks ho
   const auto lists = gpu->readCandidates();
   CHECK(std::all_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); }));
   // Uncapped, the same scene fits from the second frame on.
-  auto free = makeGpuSolver();
+  auto free = test::gpuSolver();
   free->reset(g, c, Pose{});
   for (int f = 0; f < 3; ++f) free->stepFrame(Pose{}, Pose{});
   CHECK(free->readContactStats().overflows == 1);
@@ -449,7 +440,7 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
   Config c = contactConfig(false);
   c.sim.gravity = glm::vec3(0.0f, -9.81f, 0.0f);
   c.sim.rootLength = 0.004f;  // the head holds the first segment; the rest sags
-  auto eager = makeGpuSolver(), never = makeGpuSolver();
+  auto eager = test::gpuSolver(), never = test::gpuSolver();
   eager->reset(g, c, Pose{});
   never->reset(g, c, Pose{});
   const uint32_t capacity = eager->gridStats().pairCapacity;
@@ -469,7 +460,7 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
     CHECK(s->gridStats().pairCapacity > capacity);
   }
   // The contacts change this motion, so a frame without them would show.
-  auto headOnly = makeGpuSolver();
+  auto headOnly = test::gpuSolver();
   c.collision.mode = CollisionMode::Head;
   headOnly->reset(g, c, Pose{});
   for (int f = 0; f < 4; ++f) headOnly->stepFrame(Pose{}, Pose{});
@@ -479,7 +470,7 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
 }
 
 TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision]") {
-  auto gpu = makeGpuSolver();
+  auto gpu = test::gpuSolver();
   Groom g = tangle(200, 0.004, 5);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   g.addStrand({glm::vec3(0.0f), glm::vec3(nan, 0.0f, 0.0f), glm::vec3(0.0f, 1e35f, 0.0f)});

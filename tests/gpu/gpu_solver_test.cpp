@@ -17,20 +17,12 @@
 #include "app/preset.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
+#include "tests/gpu/gpu_solver_fixture.h"
 #include "tests/strand_contact_scenes.h"
 
 using namespace csm;
 
 namespace {
-
-std::unique_ptr<GpuSolver> makeGpu() {
-  test::glContext();
-  std::string error;
-  auto gpu = GpuSolver::create(&error);
-  INFO(error);
-  REQUIRE(gpu);
-  return gpu;
-}
 
 // The CPU tests' small scene with strands of up to 20 particles (the tolerance below).
 Config smallScene(int strands) {
@@ -67,7 +59,7 @@ Difference difference(const std::vector<glm::vec4>& gpu, const std::vector<glm::
 // Whether two configs of one groom (a's) and head motion, run on the GPU for `frames`
 // frames, leave some particle more than 1 mm apart: the setting that differs did act.
 bool endsApart(const Config& a, const Config& b, int frames) {
-  auto first = makeGpu(), second = makeGpu();
+  auto first = test::gpuSolver(), second = test::gpuSolver();
   const Groom g = grow(a);
   first->reset(g, a, Pose{});
   second->reset(g, b, Pose{});
@@ -84,7 +76,7 @@ bool endsApart(const Config& a, const Config& b, int frames) {
 
 Difference runBoth(const Config& c, int frames, double limit) {
   const Groom g = grow(c);
-  auto gpu = makeGpu();
+  auto gpu = test::gpuSolver();
   CpuSolver cpu;
   cpu.reset(g, c, headPose(c.head, 0.0));
   gpu->reset(g, c, headPose(c.head, 0.0));
@@ -247,7 +239,7 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
   c.collision.mode = CollisionMode::Strands;
   c.wind.strength = 3.0f;
   const Groom g = grow(c);
-  auto gpu = makeGpu();
+  auto gpu = test::gpuSolver();
   CpuSolver cpu;
   cpu.reset(g, c, Pose{});
   gpu->reset(g, c, Pose{});
@@ -291,7 +283,7 @@ TEST_CASE("GPU: a strand dropped across another stays on top for 2 s", "[gpu][co
   for (CollisionMode mode : {CollisionMode::Strands, CollisionMode::Head}) {
     Config c = test::drapeConfig();
     c.collision.mode = mode;
-    auto gpu = makeGpu();
+    auto gpu = test::gpuSolver();
     gpu->reset(test::drapeGroom(), c, Pose{});
     for (int f = 0; f < 120; ++f) gpu->stepFrame(Pose{}, Pose{});
     std::vector<glm::vec4> x;
@@ -321,7 +313,7 @@ TEST_CASE("GPU: strand contacts add no motion to a rest groom with gravity off",
   auto run = [&](CollisionMode mode, ContactStats* stats) {
     Config m = c;
     m.collision.mode = mode;
-    auto gpu = makeGpu();
+    auto gpu = test::gpuSolver();
     gpu->reset(g, m, Pose{});
     std::vector<glm::vec4> rest, x;
     gpu->readPositions(rest);
@@ -354,7 +346,7 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
   c.hairstyle.strands = 800;
   const Groom g = grow(c);
   auto run = [&] {
-    auto gpu = makeGpu();
+    auto gpu = test::gpuSolver();
     gpu->reset(g, c, headPose(c.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 30; ++f, t += c.sim.dt)
@@ -386,7 +378,7 @@ TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][sol
   c.hairstyle.strands = 600;
   REQUIRE(c.collision.mode == CollisionMode::Strands);
   const Groom g = grow(c);
-  auto gpu = makeGpu();
+  auto gpu = test::gpuSolver();
   gpu->reset(g, c, headPose(c.head, 0.0));
   const int frames = 1000 / c.sim.substeps;
   double t = 0.0;
@@ -408,7 +400,7 @@ TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][sol
 }
 
 TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][solver]") {
-  auto gpu = makeGpu();
+  auto gpu = test::gpuSolver();
   Config c = smallScene(50);
   c.collision.mode = CollisionMode::Strands;
   const Groom g = grow(c);
@@ -531,7 +523,7 @@ TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measure
   c.head.amplitude = 40.0f;
   c.head.frequency = 1.5f;
   const Groom g = grow(c);
-  auto gpu = makeGpu();
+  auto gpu = test::gpuSolver();
   gpu->reset(g, c, headPose(c.head, 0.0));
   double t = 0.0;
   for (int f = 0; f < 20; ++f, t += c.sim.dt) {
@@ -580,8 +572,8 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   Config c = smallScene(400);
   c.collision.mode = CollisionMode::Head;
   const Groom g = grow(c);
-  auto gpu = makeGpu();
-  auto plain = makeGpu();
+  auto gpu = test::gpuSolver();
+  auto plain = test::gpuSolver();
   gpu->reset(g, c, Pose{});
   plain->reset(g, c, Pose{});
   gpu->stepFrame(Pose{}, Pose{});

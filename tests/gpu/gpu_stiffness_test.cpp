@@ -7,45 +7,33 @@
 
 #include "sim/gpu/gpu_solver.h"
 #include "tests/gpu/gl_fixture.h"
+#include "tests/gpu/gpu_solver_fixture.h"
 #include "tests/stiffness_cases.h"
 
 using namespace csm;
 
-namespace {
-
-std::unique_ptr<Solver> makeGpu() {
-  test::glContext();
-  std::string error;
-  std::unique_ptr<GpuSolver> gpu = GpuSolver::create(&error);
-  INFO(error);
-  REQUIRE(gpu);
-  return gpu;
-}
-
-}  // namespace
-
 TEST_CASE("GPU stiffness: the default scene at 5e-6, 1e-4 and 1e-2 kg/m agrees after 1 s",
           "[gpu][stiffness]") {
-  test::checkDensityCancels(makeGpu);
+  test::checkDensityCancels(test::gpuSolver);
 }
 
 TEST_CASE("GPU stiffness: a clamped strand sags the same at 8 to 64 substeps", "[gpu][stiffness]") {
-  test::checkSagAcrossSubsteps(makeGpu);
+  test::checkSagAcrossSubsteps(test::gpuSolver);
 }
 
 TEST_CASE("GPU stiffness: the nodding default scene converges as the step shrinks",
           "[gpu][stiffness]") {
-  test::checkSceneConverges(makeGpu);
+  test::checkSceneConverges(test::gpuSolver);
 }
 
 TEST_CASE("GPU stiffness: 30, 60 and 120 frames a second with automatic substeps agree",
           "[gpu][stiffness]") {
-  test::checkFrameRates(makeGpu);
+  test::checkFrameRates(test::gpuSolver);
 }
 
 TEST_CASE("GPU stiffness: 16, 24 and 32 particles on the same strand sag and swing alike",
           "[gpu][stiffness]") {
-  test::checkResolution(makeGpu);
+  test::checkResolution(test::gpuSolver);
 }
 
 TEST_CASE("GPU stiffness: the goals of a free strand keep sum m v", "[gpu][stiffness]") {
@@ -53,5 +41,5 @@ TEST_CASE("GPU stiffness: the goals of a free strand keep sum m v", "[gpu][stiff
   // carries ~5e-6 m/s of rounding against the strand's ~0.4 m/s: ~1e-5 per particle, less in
   // the sum of 24. The per-particle weighting the per-region masses replaced moved the momentum
   // by ~2e-2 a step (the CPU reference, in double, keeps it to 1e-13).
-  test::checkMomentum(makeGpu, 1e-4);
+  test::checkMomentum(test::gpuSolver, 1e-4);
 }

@@ -5,47 +5,35 @@
 
 #include "sim/gpu/gpu_solver.h"
 #include "tests/gpu/gl_fixture.h"
+#include "tests/gpu/gpu_solver_fixture.h"
 #include "tests/torture_cases.h"
 
 using namespace csm;
 
-namespace {
-
-std::unique_ptr<Solver> makeGpu() {
-  test::glContext();
-  std::string error;
-  std::unique_ptr<GpuSolver> gpu = GpuSolver::create(&error);
-  INFO(error);
-  REQUIRE(gpu);
-  return gpu;
-}
-
-}  // namespace
-
 TEST_CASE("GPU torture map: sim.dt 1/240 and 1/24 s", "[gpu][torture][dt]") {
-  test::checkTortureAxis(makeGpu, "gpu", "dt");
+  test::checkTortureAxis(test::gpuSolver, "gpu", "dt");
 }
 
 TEST_CASE("GPU torture map: 1 and 8 substeps", "[gpu][torture][substeps]") {
-  test::checkTortureAxis(makeGpu, "gpu", "substeps");
+  test::checkTortureAxis(test::gpuSolver, "gpu", "substeps");
 }
 
 TEST_CASE("GPU torture map: the narrowest and widest stiffness windows", "[gpu][torture][window]") {
-  test::checkTortureAxis(makeGpu, "gpu", "window");
+  test::checkTortureAxis(test::gpuSolver, "gpu", "window");
 }
 
 // Open findings (docs/RELIABILITY.md, "Torture map"): wind at 50 m/s and the nod and bounce
 // at 180 deg (cm) and 10 Hz still stretch the hair past its limit and press it into the head.
 // Hidden from ctest until fixed; run them with the tag [open].
 TEST_CASE("GPU torture map: wind 0 and 50 m/s", "[.open][gpu][torture][wind]") {
-  test::checkTortureAxis(makeGpu, "gpu", "wind");
+  test::checkTortureAxis(test::gpuSolver, "gpu", "wind");
 }
 
 TEST_CASE("GPU torture map: every head motion at 180 deg (cm) and 10 Hz",
           "[.open][gpu][torture][motion]") {
-  test::checkTortureAxis(makeGpu, "gpu", "motion");
+  test::checkTortureAxis(test::gpuSolver, "gpu", "motion");
 }
 
 TEST_CASE("GPU torture map: the head turned 90 deg between two frames", "[gpu][torture][jump]") {
-  test::checkTortureAxis(makeGpu, "gpu", "jump");
+  test::checkTortureAxis(test::gpuSolver, "gpu", "jump");
 }
