@@ -52,6 +52,82 @@ bool pushOutOfSphere(inout vec3 p, vec3 prev, vec3 c, float radius, float maxLen
   return true;
 }
 
+// How far p (world) lies outside the head's surface (not inflated): its field, or the nearest
+// of its spheres.
+float outsideHead(vec3 p, mat4 head, uint sphereBase) {
+  if (headIsField()) return headFieldSample(toHeadFrame(head, p)).w;
+  float d = 1e30;
+  for (int k = 0; k < P.ints.w; ++k) {
+    vec4 sp = spheres[sphereBase + uint(k)];
+    d = min(d, length(p - sp.xyz) - sp.w);
+  }
+  return d;
+}
+
+// One push of p out of the head inflated by r, within reach of prev where it can. `normal`
+// gets the field's outward normal (spheres: left as it is).
+bool pushHead(inout vec3 p, vec3 prev, mat4 head, uint sphereBase, float r, float maxLength,
+              inout vec3 normal) {
+  if (headIsField()) {
+    vec3 n;
+    bool touching = pushOutOfHeadField(p, prev, head, r, maxLength, n);
+    if (touching) normal = n;
+    return touching;
+  }
+  // Overlapping spheres can push a particle into each other: repeat until it is clear.
+  bool touching = false;
+  for (int pass = 0; pass < 4; ++pass) {
+    bool moved = false;
+    for (int k = 0; k < P.ints.w; ++k) {
+      vec4 sp = spheres[sphereBase + uint(k)];
+      moved = pushOutOfSphere(p, prev, sp.xyz, sp.w + r, maxLength) || moved;
+    }
+    touching = touching || moved;
+    if (!moved) break;
+  }
+  return touching;
+}
+
+// Pushes p (where the strain limit put it, within maxLength of prev) out of the head and keeps
+// it within reach of prev: the push, and where that is out of reach or still in the head (p went
+// deep, where the surface nearest is another part of the head than the one prev lies over; a
+// concave part, where the tangent plane cuts into the head) the push again from the nearest
+// point of reach, twice; the last resort, the point where the segment from prev enters the
+// head, by bisection. "In the head": deeper than the surface and than prev. The float twin of
+// HeadCollider::pushOut in sim/cpu/cpu_solver.cpp.
+bool pushOutOfHead(inout vec3 p, vec3 prev, mat4 head, uint sphereBase, float r, float maxLength,
+                   inout vec3 normal) {
+  if (!pushHead(p, prev, head, sphereBase, r, maxLength, normal)) return false;
+  if (maxLength <= 0.0) return true;
+  float level = 1e30;  // min(0, how far prev lies outside), read once when needed
+  for (int pass = 0;; ++pass) {
+    float len = length(p - prev);
+    bool reach = len <= maxLength * (1.0 + 1e-5);
+    float depth = outsideHead(p, head, sphereBase);
+    if (reach && depth >= 0.0) return true;
+    if (level == 1e30) level = min(0.0, outsideHead(prev, head, sphereBase));
+    if (reach && depth >= level) return true;
+    if (!reach) p = prev + (p - prev) * (maxLength / len);
+    if (pass == 2) break;
+    pushHead(p, prev, head, sphereBase, r, maxLength, normal);
+  }
+  float lo = 0.0, hi = 1.0;
+  for (int k = 0; k < 20; ++k) {
+    float mid = 0.5 * (lo + hi);
+    if (outsideHead(prev + mid * (p - prev), head, sphereBase) >= level) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+  }
+  p = prev + lo * (p - prev);
+  if (headIsField()) {
+    vec3 grad = headFieldSample(toHeadFrame(head, p)).xyz;
+    if (length(grad) > 1e-12) normal = mat3(head) * normalize(grad);
+  }
+  return true;
+}
+
 void main() {
   uint id = globalIndex();
   if (id >= P.counts.y) return;
@@ -101,25 +177,12 @@ void main() {
       if (len > maxLength) x = xPrev + d * (maxLength / len);
     }
     vec3 strained = x;
-    bool touching = false;
     vec3 fieldNormal = vec3(0.0);
     // A non-finite particle stays so, for the NaN check to see: the pushes below would put it
     // on the head (their fallback normal) as if nothing had happened.
     bool collide = headCollide && !any(isnan(x)) && !any(isinf(x));
-    if (collide && headIsField()) {
-      touching = pushOutOfHeadField(x, xPrev, st.head, r, maxLength, fieldNormal);
-    } else if (collide) {
-      // Overlapping spheres can push a particle into each other: repeat until it is clear.
-      for (int pass = 0; pass < 4; ++pass) {
-        bool moved = false;
-        for (int k = 0; k < sphereCount; ++k) {
-          vec4 sp = spheres[sphereBase + uint(k)];
-          moved = pushOutOfSphere(x, xPrev, sp.xyz, sp.w + r, maxLength) || moved;
-        }
-        touching = touching || moved;
-        if (!moved) break;
-      }
-    }
+    bool touching = collide && pushOutOfHead(x, xPrev, st.head, sphereBase, r, maxLength,
+                                             fieldNormal);
     vec3 vBeforeHead = v + (strained - start) / h;
     v = vBeforeHead + (x - strained) / h;
     if (touching) {

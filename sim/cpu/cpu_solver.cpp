@@ -83,6 +83,77 @@ bool pushOutOfHeadField(const DistanceGrid& g, const Pose& head, glm::dvec3& p,
   return true;
 }
 
+// The head as limitStrain collides with it: its distance field, or its spheres (world), the
+// surface inflated by the hair's radius.
+struct HeadCollider {
+  const DistanceGrid* field;
+  const std::vector<Sphere>& spheres;
+  const Pose& head;
+  double radius;
+
+  // How far q lies outside the head's surface (not inflated).
+  double outside(const glm::dvec3& q) const {
+    if (field) return field->sample(glm::inverse(head.rotation) * (q - head.translation));
+    double d = INFINITY;
+    for (const Sphere& sp : spheres)
+      d = std::min(d, glm::length(q - glm::dvec3(sp.center)) - double(sp.radius));
+    return d;
+  }
+
+  // One push of p out of the inflated surface, within reach of prev where it can (above).
+  // `normal` gets the field's outward normal (spheres: left as it is).
+  bool push(glm::dvec3& p, const glm::dvec3& prev, double maxLength, glm::dvec3& normal) const {
+    if (field) return pushOutOfHeadField(*field, head, p, prev, radius, maxLength, normal);
+    // Overlapping spheres can push a particle into each other: repeat until it is clear.
+    bool touching = false;
+    for (int pass = 0; pass < 4; ++pass) {
+      bool moved = false;
+      for (const Sphere& sp : spheres)
+        moved |= pushOutOfSphere(p, prev, glm::dvec3(sp.center), sp.radius + radius, maxLength);
+      touching |= moved;
+      if (!moved) break;
+    }
+    return touching;
+  }
+
+  // Pushes p (where the strain limit put it, within maxLength of prev) out of the head and
+  // keeps it within reach of prev: the push, and where that is out of reach or still in the
+  // head (p went deep, where the surface nearest is another part of the head than the one
+  // prev lies over; a concave part, where the tangent plane cuts into the head) the push again
+  // from the nearest point of reach, twice; the last resort, the point where the segment from
+  // prev enters the head, found by bisection. "In the head": deeper than the surface and than
+  // prev (a root on the scalp lies within the radius). Returns whether p touched the head.
+  bool pushOut(glm::dvec3& p, const glm::dvec3& prev, double maxLength, glm::dvec3& normal) const {
+    if (!push(p, prev, maxLength, normal)) return false;
+    if (maxLength <= 0.0) return true;
+    double level = NAN;  // min(0, how far prev lies outside), read once when needed
+    for (int pass = 0;; ++pass) {
+      const double length = glm::length(p - prev);
+      const bool reach = length <= maxLength * (1.0 + 1e-6);
+      const double depth = outside(p);
+      if (reach && depth >= 0.0) return true;
+      if (std::isnan(level)) level = std::min(0.0, outside(prev));
+      if (reach && depth >= level) return true;
+      if (!reach) p = prev + (p - prev) * (maxLength / length);
+      if (pass == 2) break;
+      push(p, prev, maxLength, normal);
+    }
+    double lo = 0.0, hi = 1.0;
+    for (int k = 0; k < 20; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (outside(prev + mid * (p - prev)) >= level ? lo : hi) = mid;
+    }
+    p = prev + lo * (p - prev);
+    if (field) {
+      glm::dvec3 grad;
+      field->sample(glm::inverse(head.rotation) * (p - head.translation), &grad);
+      const double len = glm::length(grad);
+      if (len > 1e-12) normal = head.rotation * (grad / len);
+    }
+    return true;
+  }
+};
+
 }  // namespace
 
 void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, int iterations,
@@ -461,6 +532,7 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
   const double friction = config_.collision.headFriction;
   const double dftl = sim.dftl;
   const DistanceGrid* field = shape_.field;
+  const HeadCollider collider{field, spheres, head, r};
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
@@ -482,24 +554,11 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
           if (len > maxLength) x_[i] = x_[i - 1] + d * (maxLength / len);
         }
         const glm::dvec3 strained = x_[i];
-        bool touching = false;
         glm::dvec3 fieldNormal(0.0);
         // A non-finite particle stays so, for the NaN check to see: the pushes below would put
         // it on the head (their fallback normal) as if nothing had happened.
         const bool collide = headCollide && std::isfinite(x_[i].x + x_[i].y + x_[i].z);
-        if (collide && field) {
-          touching = pushOutOfHeadField(*field, head, x_[i], x_[i - 1], r, maxLength, fieldNormal);
-        } else if (collide) {
-          // Overlapping spheres can push a particle into each other: repeat until it is clear.
-          for (int pass = 0; pass < 4; ++pass) {
-            bool moved = false;
-            for (const Sphere& sp : spheres)
-              moved |= pushOutOfSphere(x_[i], x_[i - 1], glm::dvec3(sp.center), sp.radius + r,
-                                       maxLength);
-            touching |= moved;
-            if (!moved) break;
-          }
-        }
+        const bool touching = collide && collider.pushOut(x_[i], x_[i - 1], maxLength, fieldNormal);
         const glm::dvec3 vBeforeHead = v_[i] + (strained - start) / h;
         v_[i] = vBeforeHead + (x_[i] - strained) / h;
         if (touching) {

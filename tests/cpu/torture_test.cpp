@@ -95,15 +95,11 @@ TEST_CASE("torture map, CPU: the narrowest and widest stiffness windows", "[tort
   checkTortureAxis(cpu(), "cpu", "window");
 }
 
-// Open findings (docs/RELIABILITY.md, "Torture map"): wind at 50 m/s and the nod and bounce
-// at 180 deg (cm) and 10 Hz still stretch the hair past its limit and press it into the head.
-// Hidden from ctest until fixed; run them with the tag [open].
-TEST_CASE("torture map, CPU: wind 0 and 50 m/s", "[.open][torture][wind]") {
+TEST_CASE("torture map, CPU: wind 0 and 50 m/s", "[torture][wind]") {
   checkTortureAxis(cpu(), "cpu", "wind");
 }
 
-TEST_CASE("torture map, CPU: every head motion at 180 deg (cm) and 10 Hz",
-          "[.open][torture][motion]") {
+TEST_CASE("torture map, CPU: every head motion at 180 deg (cm) and 10 Hz", "[torture][motion]") {
   checkTortureAxis(cpu(), "cpu", "motion");
 }
 

@@ -22,15 +22,12 @@ TEST_CASE("GPU torture map: the narrowest and widest stiffness windows", "[gpu][
   test::checkTortureAxis(test::gpuSolver, "gpu", "window");
 }
 
-// Open findings (docs/RELIABILITY.md, "Torture map"): wind at 50 m/s and the nod and bounce
-// at 180 deg (cm) and 10 Hz still stretch the hair past its limit and press it into the head.
-// Hidden from ctest until fixed; run them with the tag [open].
-TEST_CASE("GPU torture map: wind 0 and 50 m/s", "[.open][gpu][torture][wind]") {
+TEST_CASE("GPU torture map: wind 0 and 50 m/s", "[gpu][torture][wind]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "wind");
 }
 
 TEST_CASE("GPU torture map: every head motion at 180 deg (cm) and 10 Hz",
-          "[.open][gpu][torture][motion]") {
+          "[gpu][torture][motion]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "motion");
 }
 
