@@ -134,6 +134,14 @@ bool parsePreset(std::string_view text, const std::string& source, Preset& out,
     errors.messages.push_back(source + ":" + lineColumn(text, byte) + " (byte " +
                               std::to_string(byte) + "): invalid JSON: " + detail);
     return false;
+  } catch (const json::exception& e) {
+    // Well-formed JSON that nlohmann cannot hold, such as a number beyond double's range
+    // (out_of_range.406, "1e999"): no byte offset comes with it.
+    std::string what = e.what();
+    size_t bracket = what.find("] ");
+    std::string detail = bracket == std::string::npos ? what : what.substr(bracket + 2);
+    errors.messages.push_back(source + ": invalid JSON: " + detail);
+    return false;
   }
   if (!doc.is_object()) {
     errors.messages.push_back(source + ": the top level must be a JSON object");

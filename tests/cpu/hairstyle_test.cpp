@@ -68,3 +68,41 @@ TEST_CASE("roots sit on the scalp and the rest of the strand outside the head") 
         CHECK(glm::length(g.points[i] - sp.center) >= sp.radius + c.collision.radius);
   }
 }
+
+// Found by fuzz_cyhair and fuzz_tressfx (tests/fuzz/regressions/): a groom file's points are
+// finite, but the fit to the head could carry them past float's range (and on to NaN in the
+// field's reads and the resampler's casts), or collapse a strand to a point.
+TEST_CASE("a groom the fit carries out of float's range, or collapses, is refused") {
+  Config c;
+  c.hairstyle.strands = 10;
+  // Roots 1e-37 apart: the automatic fit scales them up to the head (by ~1e36), and the tips,
+  // 1000 units off, past float's largest value.
+  Groom far;
+  far.addStrand({{0, 0, 0}, {0, 1000, 0}, {0, 2000, 0}});
+  far.addStrand({{1e-37f, 0, 0}, {1e-37f, 1000, 0}, {1e-37f, 2000, 0}});
+  for (HeadShape shape : {HeadShape::Spheres, HeadShape::Sdf}) {
+    c.collision.headShape = shape;
+    Groom out;
+    std::string error;
+    CHECK_FALSE(fitFileGroom(c, far, "far.hair", out, &error));
+    CHECK_THAT(error, Catch::Contains("far.hair: point 1 of strand 0 is not finite after fitting "
+                                      "to the head"));
+    CHECK_THAT(error, Catch::Contains("hairstyle.import_scale"));
+  }
+  // A given scale of 1e-30 takes a strand 1e-20 long below float's smallest value.
+  Groom tiny;
+  tiny.addStrand({{0, 0, 0}, {1e-20f, 0, 0}});
+  c.collision.headShape = HeadShape::Spheres;
+  c.hairstyle.importScale = 1e-30f;
+  Groom out;
+  std::string error;
+  CHECK_FALSE(fitFileGroom(c, tiny, "tiny.hair", out, &error));
+  CHECK_THAT(error, Catch::Contains("tiny.hair: strand 0 has zero length after fitting"));
+  // And a sound groom still fits.
+  c.hairstyle.importScale = 0.0f;
+  Groom fine;
+  fine.addStrand({{0, 10, 0}, {0, 5, 1}, {0, 0, 2}});
+  fine.addStrand({{3, 9, 0}, {4, 5, 1}, {5, 0, 2}});
+  CHECK(fitFileGroom(c, fine, "fine.hair", out, &error));
+  CHECK(out.strandCount() == 2);
+}

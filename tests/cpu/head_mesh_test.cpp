@@ -302,3 +302,31 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   CHECK_THAT(errors.text(),
              Catch::Contains("bad.json: head.mesh: " + (dir.path / "bad.obj").string() + ":15: "));
 }
+
+// Found by fuzz_obj (tests/fuzz/regressions/obj/): a NUL byte ended tinyobjloader's line
+// where our checks read on; a face with no area (three vertices on a line) gave the field's
+// nodes on it the face's normal, NaN.
+TEST_CASE("OBJ heads: NUL bytes are refused, and faces with no area keep the field finite",
+          "[head_mesh]") {
+  std::string text = cubeText();
+  text.insert(text.find("v 0.05 -0.05 -0.05") + 9, std::string("\0\0 7", 4));
+  const io::ObjReadResult nul = io::parseObjMesh(text, "nul.obj");
+  CHECK_FALSE(nul.mesh);
+  CHECK_THAT(nul.error, Catch::Contains("nul.obj:3: a NUL byte; an OBJ file is text"));
+
+  // Vertices 1, 3 and 7 lie on the line x = y = z, and so do nodes of the field's grid.
+  const std::string sliver =
+      "v -0.1 -0.1 -0.1\nv -0.1 -0.1 0.1\nv 0 0 0\nv 0.1 -0.1 -0.1\nv 0.1 -0.1 0.05\n"
+      "v 0.1 0.1 -0.1\nv 0.1 0.1 0.1\n"
+      "f 1 2 3\nf 4 6 7\nf 4 7 5\nf 1 4 5\nf 1 5 2\nf 1 3 7\nf 1 7 6\nf 1 6 4\nf 2 5 7\n"
+      "f 2 7 3\n";
+  const io::ObjReadResult r = io::parseObjMesh(sliver, "sliver.obj");
+  REQUIRE(r.mesh);
+  // fuzz_obj's cell (a tenth of the box with its margins) put nodes on that line.
+  for (double cell : {0.004, (double(0.1f) - double(-0.1f) + 0.04) / 9.0}) {
+    const DistanceGrid g = meshDistanceGrid(*r.mesh, cell, 0.02);
+    size_t bad = 0;
+    for (const glm::vec4& n : g.nodes) bad += !std::isfinite(n.x + n.y + n.z + n.w);
+    CHECK(bad == 0);
+  }
+}

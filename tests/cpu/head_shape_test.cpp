@@ -376,3 +376,16 @@ TEST_CASE("head.fit_spheres: the scene collides with and grows hair from the fit
     CHECK(std::abs(glm::length(glm::dvec3(g.points[g.first[s]] - scalp.center)) - scalp.radius) <
           1e-4);
 }
+
+// Found by fuzz_cyhair and fuzz_tressfx (tests/fuzz/regressions/*/fit_nan_root_sampled.*): a
+// point that is not finite made the cell index a cast of NaN, read far outside the grid.
+TEST_CASE("Mannequin: the field read at a point that is not finite says so", "[head]") {
+  const DistanceGrid& g = mannequinGrid();
+  glm::dvec3 gradient;
+  CHECK_FALSE(std::isfinite(g.sample(glm::dvec3(NAN, 0.0, 0.0), &gradient)));
+  CHECK_FALSE(std::isfinite(g.sample(glm::dvec3(0.0, INFINITY, 0.0))));
+  CHECK(g.sample(glm::dvec3(0.0, 1e30, 0.0)) > 1e29);
+  glm::dvec3 p(0.0, NAN, 0.0);
+  pushOutOfField(g, p, 0.001);  // no read outside the grid
+  CHECK(std::isfinite(g.sample(glm::dvec3(0.0, 0.2, 0.0))));
+}

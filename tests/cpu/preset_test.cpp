@@ -243,3 +243,12 @@ TEST_CASE("render.hair_color: natural colours by name from JSON and --set, each 
   CHECK_FALSE(findParam("render.root_color")->applies(p));
   CHECK_FALSE(findParam("render.tip_color")->applies(p));
 }
+
+// Found by fuzz_preset (tests/fuzz/regressions/preset/number_overflow.json): nlohmann throws
+// out_of_range, not parse_error, for a number beyond double's range; it escaped parsePreset.
+TEST_CASE("a number beyond double's range is refused with a message, not thrown") {
+  CHECK_THAT(parseErrors(R"({"sim": {"dt": 1e999}})"),
+             Catch::Contains("bad.json: invalid JSON: number overflow parsing '1e999'"));
+  CHECK_THAT(parseErrors(R"({"hairstyle": {"strands": -4e400}})"),
+             Catch::Contains("bad.json: invalid JSON: number overflow"));
+}
