@@ -22,9 +22,9 @@ std::vector<std::string_view> tokens(std::string_view line) {
   std::vector<std::string_view> out;
   size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
     size_t j = i;
-    while (j < line.size() && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
+    while (j < line.size() && line[j] != ' ' && line[j] != '\t') ++j;
     if (j > i) out.push_back(line.substr(i, j - i));
     i = j;
   }
@@ -46,18 +46,19 @@ bool parseIndex(std::string_view s, long& v) {
 }
 
 // The lines of the file, comments and continuation aside (a head exporter writes neither
-// across lines), with their 1-based numbers.
+// across lines), with their 1-based numbers. A line ends at "\n", "\r\n" or a lone "\r", as
+// tinyobjloader reads them: a split of our own would check other lines than the ones it reads.
 std::vector<std::pair<size_t, std::string_view>> lines(std::string_view text) {
   std::vector<std::pair<size_t, std::string_view>> out;
   size_t start = 0, number = 1;
   while (start <= text.size()) {
-    size_t end = text.find('\n', start);
+    size_t end = text.find_first_of("\r\n", start);
     if (end == std::string_view::npos) end = text.size();
     std::string_view line = text.substr(start, end - start);
     if (const size_t hash = line.find('#'); hash != std::string_view::npos)
       line = line.substr(0, hash);
     out.emplace_back(number++, line);
-    start = end + 1;
+    start = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
   }
   return out;
 }
@@ -184,7 +185,17 @@ ObjReadResult parseObjMesh(std::string_view data, const std::string& path) {
     welded[v] = it->second;
   }
   size_t faces = 0;
-  for (const tinyobj::shape_t& s : reader.GetShapes()) faces += s.mesh.num_face_vertices.size();
+  for (const tinyobj::shape_t& s : reader.GetShapes()) {
+    faces += s.mesh.num_face_vertices.size();
+    // Our checks above saw every index in range; tinyobjloader must agree before we index.
+    for (const tinyobj::index_t& i : s.mesh.indices)
+      if (i.vertex_index < 0 || size_t(i.vertex_index) >= welded.size()) {
+        r.error = path + ": a face refers to vertex " + std::to_string(i.vertex_index + 1) +
+                  " of the " + std::to_string(welded.size()) +
+                  " tinyobjloader read; the file's lines are not plain OBJ";
+        return r;
+      }
+  }
   const bool linesKnown = faces == faceLines.size();
   std::vector<size_t> triangleLine;
   size_t face = 0;

@@ -330,3 +330,30 @@ TEST_CASE("OBJ heads: NUL bytes are refused, and faces with no area keep the fie
     CHECK(bad == 0);
   }
 }
+
+// Found by fuzz_obj (tests/fuzz/regressions/obj/carriage_return_after_v.obj): tinyobjloader
+// ends a line at a lone "\r" too, so "v\r 0.1 0.1 0.1" is no vertex to it; our checks counted
+// one, passed a face that used it, and the faces were indexed past the vertices read. Now our
+// lines are its lines, and a "v" with no coordinates is refused.
+TEST_CASE("OBJ heads: lines end where tinyobjloader ends them ('\\n', '\\r\\n', a lone '\\r')",
+          "[head_mesh]") {
+  const std::string text = cubeText();
+  std::string split = text;
+  split.replace(split.find("v 0.05 -0.05 -0.05"), 2, "v\r");
+  const io::ObjReadResult r = io::parseObjMesh(split, "split.obj");
+  CHECK_FALSE(r.mesh);
+  CHECK_THAT(r.error, Catch::Contains("split.obj:3: vertex has 0 coordinates, expected 3"));
+
+  // The same cube with Windows and classic Mac line ends reads as with "\n".
+  const io::ObjReadResult plain = io::parseObjMesh(text, "cube.obj");
+  REQUIRE(plain.mesh);
+  for (const std::string end : {"\r\n", "\r"}) {
+    std::string other;
+    for (char c : text) other += c == '\n' ? end : std::string(1, c);
+    const io::ObjReadResult r2 = io::parseObjMesh(other, "cube.obj");
+    INFO("line end " << (end == "\r" ? "\\r" : "\\r\\n") << ": " << r2.error);
+    REQUIRE(r2.mesh);
+    CHECK(r2.mesh->positions == plain.mesh->positions);
+    CHECK(r2.mesh->indices == plain.mesh->indices);
+  }
+}
