@@ -302,6 +302,32 @@ Config soakScene(const Config& preset, int strands) {
   return c;
 }
 
+double StrandDistances::quantile(double q) const {
+  if (mm.empty()) return 0.0;
+  const size_t i = std::min(mm.size() - 1, size_t(std::ceil(q * double(mm.size()))) - (q > 0));
+  return mm[i];
+}
+
+size_t StrandDistances::beyond(double limit) const {
+  return size_t(mm.end() - std::upper_bound(mm.begin(), mm.end(), limit));
+}
+
+StrandDistances strandDistances(const Groom& groom, int pinned, const std::vector<glm::vec4>& a,
+                                const std::vector<glm::vec4>& b) {
+  StrandDistances out;
+  for (size_t s = 0; s < groom.strandCount(); ++s) {
+    double sum = 0.0;
+    int n = 0;
+    for (uint32_t i = groom.first[s] + uint32_t(pinned); i < groom.first[s + 1]; ++i, ++n) {
+      const glm::dvec3 d = d3(a[i]) - d3(b[i]);
+      sum += glm::dot(d, d);
+    }
+    if (n > 0) out.mm.push_back(1000.0 * std::sqrt(sum / n));
+  }
+  std::sort(out.mm.begin(), out.mm.end());
+  return out;
+}
+
 SoakResult runSoak(const SolverFactory& make, const Config& base, const SoakOptions& o,
                    const std::function<void(long, const SoakResult&)>& progress) {
   using Clock = std::chrono::steady_clock;
@@ -385,6 +411,7 @@ SoakResult runSoak(const SolverFactory& make, const Config& base, const SoakOpti
     ErrorAccumulator acc(groom, base.sim.pinned);
     acc.add(x, settled);
     r.toRest = acc.result();
+    r.strandsToRest = strandDistances(groom, base.sim.pinned, x, settled);
     if (!halfway.empty()) {
       ErrorAccumulator drift(groom, base.sim.pinned);
       drift.add(x, halfway);

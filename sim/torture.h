@@ -91,13 +91,26 @@ struct SoakOptions {
   double warmUpFraction = 0.1;  // memory growth is counted from here
 };
 
-// What a soak must keep to (docs/RELIABILITY.md, "Soak"), set from what the soak measures:
-// the resident set grows 60 kB after warm-up over 100,000 frames; with strand contacts the
-// hair settles 9 mm (10,000 frames) to 18 mm (100,000) RMS from the rest run, not on it.
+// What a soak must keep to (docs/RELIABILITY.md, "Soak"), set from what the soak measures,
+// with a margin: the resident set grows under 1 MB after warm-up over 100,000 frames; with
+// strand contacts half the strands settle within 3.2-3.5 mm RMS of the rest run, nine in ten
+// within 17 (100,000 frames) to 26 mm (10,000), and one or two elsewhere (13 cm).
 struct SoakCriteria {
   long memoryGrowthKb = 2048;  // RSS at the end <= RSS after warm-up + this
-  double restRmsMm = 20.0;     // RMS distance from the settled rest run at the end
+  // Each strand's RMS distance from its settled rest (its free particles) at the end: with
+  // strand contacts a shaken strand may come to lie elsewhere, the others come back.
+  double medianStrandMm = 5.0;  // half the strands within this
+  double p90StrandMm = 30.0;    // nine in ten within this
 };
+
+// Each strand's RMS distance (mm) between two states of its free particles, sorted ascending.
+struct StrandDistances {
+  std::vector<double> mm;
+  double quantile(double q) const;  // 0.5: the median (0 when empty)
+  size_t beyond(double mm) const;   // strands farther than mm
+};
+StrandDistances strandDistances(const Groom& groom, int pinned, const std::vector<glm::vec4>& a,
+                                const std::vector<glm::vec4>& b);
 
 struct SoakResult {
   long frames = 0;
@@ -115,6 +128,7 @@ struct SoakResult {
   // Free particles against the settled rest run (mm) at the end, and the same a moment after
   // the head stopped (how far the motion had taken it).
   PositionError toRest;
+  StrandDistances strandsToRest;  // the same per strand
   PositionError atStop;
   // How far the hair moved over the second half of the still part: settled hair does not creep.
   PositionError stillDrift;

@@ -144,6 +144,9 @@ void runSoakSection(const Options& o) {
                "at_stop_max_mm",
                "to_rest_rms_mm",
                "to_rest_max_mm",
+               "strand_median_mm",
+               "strand_p90_mm",
+               "strand_max_mm",
                "still_drift_rms_mm",
                "still_drift_max_mm",
                "rest_run_wall_s"});
@@ -163,6 +166,8 @@ void runSoakSection(const Options& o) {
     summary.add(r.wallSeconds).add(r.framesPerSecond);
     summary.add(r.rssStartKb).add(r.rssWarmKb).add(r.rssEndKb).add(r.rssMaxKb).add(r.hwmEndKb);
     summary.add(r.atStop.rmsMm).add(r.atStop.maxMm).add(r.toRest.rmsMm).add(r.toRest.maxMm);
+    summary.add(r.strandsToRest.quantile(0.5)).add(r.strandsToRest.quantile(0.9));
+    summary.add(r.strandsToRest.quantile(1.0));
     summary.add(r.stillDrift.rmsMm).add(r.stillDrift.maxMm);
     summary.add(r.restWallSeconds);
     summary.endRow();
@@ -170,12 +175,13 @@ void runSoakSection(const Options& o) {
                  "  %s: %s, largest stretch %.4f (frame %ld; %ld frames past the limit), "
                  "%.0f frames/s, RSS %ld -> %ld kB (after warm-up %ld, max %ld), "
                  "from rest %.3f mm RMS %.3f max a second after the stop, at the end "
-                 "%.4f RMS %.4f max; drift over the last half of the still part %.5f RMS "
-                 "%.5f max\n",
+                 "%.4f RMS %.4f max, per strand %.2f mm median %.2f 90th percentile %.2f "
+                 "max; drift over the last half of the still part %.5f RMS %.5f max\n",
                  p.solver.c_str(), r.finite ? "finite" : "NON-FINITE", r.maxStrain,
                  r.maxStrainFrame, r.strainedFrames, r.framesPerSecond, r.rssStartKb, r.rssEndKb,
                  r.rssWarmKb, r.rssMaxKb, r.atStop.rmsMm, r.atStop.maxMm, r.toRest.rmsMm,
-                 r.toRest.maxMm, r.stillDrift.rmsMm, r.stillDrift.maxMm);
+                 r.toRest.maxMm, r.strandsToRest.quantile(0.5), r.strandsToRest.quantile(0.9),
+                 r.strandsToRest.quantile(1.0), r.stillDrift.rmsMm, r.stillDrift.maxMm);
   }
   samples.write(o.out + "/soak_rss.csv");
   summary.write(o.out + "/soak.csv");
