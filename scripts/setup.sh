@@ -14,6 +14,7 @@ packages=(
   libegl-mesa0 libgl1-mesa-dri   # Mesa: llvmpipe where there is no GPU
   xvfb xauth                     # the window under a virtual display (tests, no-display runs)
   python3 python3-matplotlib     # test scripts and benchmark charts
+  ffmpeg                         # headless --video (its ffprobe reads the file back in the tests)
 )
 # shellcheck source=scripts/packages.sh
 source "$root/scripts/packages.sh"
