@@ -32,6 +32,9 @@ usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx] [options]
   --no-render            headless: simulate only
   --video FILE.mp4       headless: pipe frames to ffmpeg
   --export-hair FILE     write the final strands as a cyHair .hair file
+  --export-hair-sequence DIR
+                         headless: write every kept frame (--every) as DIR/frame_00001.hair,
+                         ... (cyHair, the same strands in each)
   --screenshot FILE.png  window: save what the window shows after --exit-after frames
                          (at full quality)
   --exit-after N         window: simulate N frames as fast as they come (not paced to
@@ -107,6 +110,8 @@ std::optional<Options> parseCommandLine(int argc, char** argv, std::string* erro
       o.noRender = true;
     } else if (arg == "--video") {
       if (!value(o.video)) return fail("--video needs a file name");
+    } else if (arg == "--export-hair-sequence") {
+      if (!value(o.exportSequence)) return fail("--export-hair-sequence needs a directory");
     } else if (arg == "--export-hair") {
       if (!value(o.exportHair)) return fail("--export-hair needs a file name");
     } else if (arg == "--screenshot") {

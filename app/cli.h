@@ -28,6 +28,7 @@ struct Options {
   bool noRender = false;
   std::string video;
   std::string exportHair;
+  std::string exportSequence;  // --export-hair-sequence DIR
   // Window scripting.
   std::string screenshot;
   long exitAfter = -1;

@@ -14,6 +14,7 @@
 #include "render/position_source.h"
 #include "sim/head.h"
 #include "sim/io/cyhair.h"
+#include "sim/io/hair_sequence.h"
 #include "sim/metrics.h"
 #include "sim/gpu/make_solver.h"
 #include "sim/simulation.h"
@@ -53,6 +54,10 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                    options.outDir.c_str(), ec ? ": " : "", ec ? ec.message().c_str() : "");
       return 1;
     }
+  }
+  if (!options.exportSequence.empty() && !io::prepareSequenceDir(options.exportSequence, &error)) {
+    std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
+    return 1;
   }
   // One offscreen GL context for both the GPU solver and the renderer.
   std::unique_ptr<gl::HeadlessContext> context;
@@ -140,6 +145,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     }
   };
   long simulated = 0;
+  long exported = 0;  // frames written by --export-hair-sequence
   for (long f = 0; f < frames; ++f) {
     driver.step();
     ++simulated;
@@ -148,6 +154,14 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     if (driver.stopped()) {
       nanStop();
       break;
+    }
+    if (!options.exportSequence.empty() && (f + 1) % options.every == 0) {
+      sim.solver().readPositions(x);
+      ++exported;
+      if (!io::writeSequenceFrame(options.exportSequence, exported, groom, x, &error)) {
+        std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
+        return 1;
+      }
     }
     if (renderer && (f + 1) % options.every == 0) {
       const unsigned buffer = positions.update(sim.solver());
@@ -225,12 +239,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   if (!options.exportHair.empty()) {
     // The final strands in world space, as a cyHair file for other tools.
     sim.solver().readPositions(x);
-    Groom out;
-    out.first = groom.first;
-    out.points.reserve(x.size());
-    for (const glm::vec4& p : x) out.points.emplace_back(p);
-    out.color = groom.color;
-    out.thickness = groom.thickness;
+    const Groom out = io::posedGroom(groom, x);
     if (!io::writeCyHair(options.exportHair, out, &error)) {
       std::fprintf(stderr, "csmhair: %s\n", error.c_str());
       return 1;
@@ -239,6 +248,9 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
       std::fprintf(stderr, "csmhair: wrote %zu strands to %s\n", out.strandCount(),
                    options.exportHair.c_str());
   }
+  if (exported > 0 && !options.quiet)
+    std::fprintf(stderr, "csmhair: wrote %ld frames of %zu strands into %s\n", exported,
+                 groom.strandCount(), options.exportSequence.c_str());
   if (video) {
     if (!video->close(&error)) {
       std::fprintf(stderr, "csmhair: %s\n", error.c_str());
