@@ -124,4 +124,40 @@ void Simulation::stepFrame() {
   ++frame_;
 }
 
+void Simulation::save(SimulationState& out) const {
+  out.generation = generation_;
+  out.frame = frame_;
+  out.time = time_;
+  out.carried = carried_;
+  out.userPose = userPose_;
+  out.lastUserPose = lastUserPose_;
+  out.lastPose = lastPose_;
+  out.config = config_;
+  solver_->saveState(out.solver);
+}
+
+bool Simulation::restore(const SimulationState& in, std::string* error) {
+  if (in.generation != generation_) {
+    if (error) *error = "the saved state is of another groom (the hair was regrown since)";
+    return false;
+  }
+  // The config it ran with first (live parameters only, the groom being the same): a changed
+  // window rebuilds the regions, which the saved rotations then fill.
+  const Config now = config_;
+  config_ = in.config;
+  solver_->setConfig(config_);
+  if (!solver_->restoreState(in.solver, error)) {
+    config_ = now;
+    solver_->setConfig(config_);
+    return false;
+  }
+  frame_ = in.frame;
+  time_ = in.time;
+  carried_ = in.carried;
+  userPose_ = in.userPose;
+  lastUserPose_ = in.lastUserPose;
+  lastPose_ = in.lastPose;
+  return true;
+}
+
 }  // namespace csm

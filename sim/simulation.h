@@ -21,6 +21,19 @@ namespace csm {
 // roots 10-12 cm from the neck's axis at 1.2-1.5 m/s.
 inline constexpr double kMaxRootSpeed = 2.0;
 
+// A point of a running scene to go back to (sim/recorder.h): the solver's whole state, the
+// clock, the head's poses and the config it ran with, for the groom of one generation.
+struct SimulationState {
+  long generation = -1;  // the groom it belongs to (Simulation::generation)
+  long frame = 0;
+  double time = 0.0;
+  long carried = 0;
+  Pose userPose, lastUserPose, lastPose;
+  Config config;
+  SolverState solver;
+  size_t bytes() const { return sizeof(*this) + solver.bytes.size(); }
+};
+
 class Simulation {
  public:
   explicit Simulation(std::unique_ptr<Solver> solver) : solver_(std::move(solver)) {}
@@ -34,6 +47,11 @@ class Simulation {
   void reset();
 
   void stepFrame();
+  // Saves where the scene is; restores it, config included, so that the frames after run as
+  // they did from there. Fails (false, *error set) for a state of another groom (a regrow in
+  // between) and then changes nothing.
+  void save(SimulationState& out) const;
+  bool restore(const SimulationState& in, std::string* error);
   // An extra transform of the head on top of the preset's motion (the viewer's drag).
   void setUserPose(const Pose& pose) { userPose_ = pose; }
   const Pose& userPose() const { return userPose_; }

@@ -2,6 +2,7 @@
 // the baselines used by the benchmarks.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +34,13 @@ struct FrameSample {
   // Whether `contacts` measured anything: false when the mode builds no candidate lists
   // (hair-hair off) and the solver was not asked to measure contacts anyway.
   bool contactsMeasured = false;
+};
+
+// Everything a solver's next frames depend on, as bytes in the solver's own precision
+// (positions, velocities, each region's rotation, its clock and head): restored, the solver
+// runs on exactly as it did from there (the viewer's timeline, sim/recorder.h).
+struct SolverState {
+  std::vector<std::byte> bytes;
 };
 
 class Solver {
@@ -73,6 +81,12 @@ class Solver {
   // solver's state (region rotations, contact forces) stays. For tests, and to resume a state.
   virtual void writeState(const std::vector<glm::vec4>& positions,
                           const std::vector<glm::vec4>& velocities) = 0;
+  // Saves, and restores, what the next frames depend on. The default keeps the read-backs
+  // (float) and the clock; the CSM solvers keep their whole state, so that a restored solver
+  // steps to the same bits. restoreState fails (false, *error set) for a state of another
+  // scene (another particle count).
+  virtual void saveState(SolverState& out);
+  virtual bool restoreState(const SolverState& in, std::string* error);
   // Moves the whole hair rigidly by `by` (positions, velocities and whatever rotations the
   // solver keeps), and the head where the last frame left it, as if the hair were fixed to the
   // head: what a head that jumps does to it (Simulation::stepFrame). This default moves the

@@ -8,6 +8,7 @@
 
 #include "sim/head_shape.h"
 #include "sim/parallel.h"
+#include "sim/state_bytes.h"
 #include "sim/wind.h"
 
 namespace csm {
@@ -610,6 +611,38 @@ void CpuSolver::writeState(const std::vector<glm::vec4>& positions,
     x_[i] = glm::dvec3(glm::vec3(positions[i]));
   for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
     v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+}
+
+void CpuSolver::saveState(SolverState& out) {
+  StateWriter w(out.bytes);
+  w.put(x_.size());
+  w.putVector(x_);
+  w.putVector(v_);
+  std::vector<glm::dvec4> q(q_.size());
+  for (size_t i = 0; i < q_.size(); ++i) q[i] = {q_[i].x(), q_[i].y(), q_[i].z(), q_[i].w()};
+  w.putVector(q);
+  w.put(time_);
+  w.put(head_);
+}
+
+bool CpuSolver::restoreState(const SolverState& in, std::string* error) {
+  StateReader r(in.bytes);
+  std::vector<glm::dvec3> x, v;
+  std::vector<glm::dvec4> q;
+  double time = 0.0;
+  Pose head;
+  if (!r.expectCount(x_.size(), "particles", error)) return false;
+  if (!r.getVector(x, x_.size()) || !r.getVector(v, x_.size()) || !r.getVector(q, q_.size()) ||
+      !r.get(time) || !r.get(head) || !r.done(error)) {
+    if (error && error->empty()) *error = "a saved state of another solver";
+    return false;
+  }
+  x_ = std::move(x);
+  v_ = std::move(v);
+  for (size_t i = 0; i < q_.size(); ++i) q_[i] = Eigen::Quaterniond(q[i].w, q[i].x, q[i].y, q[i].z);
+  time_ = time;
+  head_ = head;
+  return true;
 }
 
 void CpuSolver::carry(const Pose& by) {

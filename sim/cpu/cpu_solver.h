@@ -61,6 +61,8 @@ class CpuSolver final : public Solver {
   void readPositions(std::vector<glm::vec4>& out) override;
   void readVelocities(std::vector<glm::vec4>& out) override;
   void carry(const Pose& by) override;
+  void saveState(SolverState& out) override;
+  bool restoreState(const SolverState& in, std::string* error) override;
   void writeState(const std::vector<glm::vec4>& positions,
                   const std::vector<glm::vec4>& velocities) override;
   // Measured at once: the state is on the CPU.

@@ -12,6 +12,7 @@
 #include "gl/draw.h"
 #include "sim/gpu/buffer_fill.h"
 #include "sim/head_shape.h"
+#include "sim/state_bytes.h"
 #include "shaders/sim/bindings.glsl"
 
 namespace csm {
@@ -336,6 +337,40 @@ void GpuSolver::writeState(const std::vector<glm::vec4>& positions,
   for (glm::vec4& p : x) p.w = 1.0f;
   hair_.position.upload(x);
   hair_.velocity.upload(v);
+}
+
+void GpuSolver::saveState(SolverState& out) {
+  // The state the passes step, as the GPU holds it (float, bit for bit).
+  const size_t n = hair_.particles;
+  StateWriter w(out.bytes);
+  w.put(n);
+  w.putVector(n ? hair_.position.download<glm::vec4>(n) : std::vector<glm::vec4>{});
+  w.putVector(n ? hair_.velocity.download<glm::vec4>(n) : std::vector<glm::vec4>{});
+  w.putVector(n ? hair_.rotation.download<glm::vec4>(n) : std::vector<glm::vec4>{});
+  w.put(time_);
+  w.put(head_);
+}
+
+bool GpuSolver::restoreState(const SolverState& in, std::string* error) {
+  const size_t n = hair_.particles;
+  StateReader r(in.bytes);
+  std::vector<glm::vec4> x, v, q;
+  double time = 0.0;
+  Pose head;
+  if (!r.expectCount(n, "particles", error)) return false;
+  if (!r.getVector(x, n) || !r.getVector(v, n) || !r.getVector(q, n) || !r.get(time) ||
+      !r.get(head) || !r.done(error)) {
+    if (error && error->empty()) *error = "a saved state of another solver";
+    return false;
+  }
+  if (n > 0) {
+    hair_.position.upload(x);
+    hair_.velocity.upload(v);
+    hair_.rotation.upload(q);
+  }
+  time_ = time;
+  head_ = head;
+  return true;
 }
 
 void GpuSolver::carry(const Pose& by) {

@@ -51,6 +51,8 @@ class GpuSolver final : public Solver {
   void readPositions(std::vector<glm::vec4>& out) override;
   void readVelocities(std::vector<glm::vec4>& out) override;
   void carry(const Pose& by) override;
+  void saveState(SolverState& out) override;
+  bool restoreState(const SolverState& in, std::string* error) override;
   void writeState(const std::vector<glm::vec4>& positions,
                   const std::vector<glm::vec4>& velocities) override;
   unsigned positionBuffer() override { return hair_.position.id(); }

@@ -1,0 +1,128 @@
+#include "sim/recorder.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace csm {
+namespace {
+
+std::vector<glm::vec3> positionsOf(Solver& solver) {
+  std::vector<glm::vec4> x;
+  solver.readPositions(x);
+  return std::vector<glm::vec3>(x.begin(), x.end());
+}
+
+}  // namespace
+
+size_t Recorder::Frame::bytes() const {
+  return sizeof(Frame) + positions.size() * sizeof(glm::vec3) + (key ? key->bytes() : 0);
+}
+
+Recorder::Recorder(RecorderOptions options) : options_(options) {
+  options_.keyframeEvery = std::max(1, options_.keyframeEvery);
+}
+
+void Recorder::setBudget(size_t bytes) {
+  options_.budgetBytes = bytes;
+  trim();
+}
+
+void Recorder::clear() {
+  frames_.clear();
+  bytes_ = 0;
+}
+
+size_t Recorder::keyframeCount() const {
+  return size_t(std::count_if(frames_.begin(), frames_.end(),
+                              [](const Frame& f) { return f.key != nullptr; }));
+}
+
+bool Recorder::dropOldestSpan() {
+  size_t next = 1;
+  while (next < frames_.size() && !frames_[next].key) ++next;
+  if (next >= frames_.size()) return false;  // one span left (or none)
+  for (size_t k = 0; k < next; ++k) {
+    bytes_ -= frames_.front().bytes();
+    frames_.pop_front();
+  }
+  return true;
+}
+
+void Recorder::trim() {
+  while (bytes_ > options_.budgetBytes && dropOldestSpan()) {
+  }
+  if (bytes_ > options_.budgetBytes) clear();  // one span alone is over a shrunk budget
+}
+
+void Recorder::record(Simulation& sim) {
+  if (!frames_.empty() && (sim.generation() != generation_ || sim.frame() != lastFrame() + 1))
+    clear();
+  if (frames_.empty()) {
+    generation_ = sim.generation();
+    start_ = sim.frame();
+  }
+  Frame f;
+  f.frame = sim.frame();
+  f.positions = positionsOf(sim.solver());
+  auto keep = [&] {
+    auto state = std::make_shared<SimulationState>();
+    sim.save(*state);
+    f.key = std::move(state);
+  };
+  if ((f.frame - start_) % options_.keyframeEvery == 0) keep();
+  // Room first, from the oldest spans; when the newest span alone is too big, start again here.
+  while (bytes_ + f.bytes() > options_.budgetBytes && dropOldestSpan()) {
+  }
+  if (bytes_ + f.bytes() > options_.budgetBytes) {
+    clear();
+    start_ = f.frame;
+    if (!f.key) keep();
+    if (f.bytes() > options_.budgetBytes) {
+      ++refused_;
+      return;
+    }
+  }
+  bytes_ += f.bytes();
+  frames_.push_back(std::move(f));
+}
+
+const std::vector<glm::vec3>* Recorder::positions(long frame) const {
+  if (frames_.empty() || frame < firstFrame() || frame > lastFrame()) return nullptr;
+  return &frames_[size_t(frame - firstFrame())].positions;
+}
+
+bool Recorder::resume(Simulation& sim, long frame, std::string* error, double* mismatch) {
+  if (frames_.empty() || frame < firstFrame() || frame > lastFrame()) {
+    if (error)
+      *error = "frame " + std::to_string(frame) + " is not recorded" +
+               (frames_.empty() ? std::string(" (nothing is)")
+                                : " (frames " + std::to_string(firstFrame()) + "-" +
+                                      std::to_string(lastFrame()) + " are)");
+    return false;
+  }
+  size_t at = size_t(frame - firstFrame());
+  size_t key = at;
+  while (!frames_[key].key) --key;  // the first frame kept is a keyframe
+  // Stepped again with the parameters it ran with; from there on, today's.
+  const Config today = sim.config();
+  if (!sim.restore(*frames_[key].key, error)) return false;
+  for (long f = frames_[key].frame; f < frame; ++f) sim.stepFrame();
+  if (!sim.setConfig(today, error)) return false;
+  if (mismatch) {
+    const std::vector<glm::vec3> now = positionsOf(sim.solver());
+    const std::vector<glm::vec3>& then = frames_[at].positions;
+    double worst = now.size() == then.size() ? 0.0 : INFINITY;
+    for (size_t i = 0; i < now.size() && i < then.size(); ++i)
+      worst = std::max(worst, double(glm::length(now[i] - then[i])));
+    *mismatch = worst;
+  }
+  while (frames_.size() > at + 1) {
+    bytes_ -= frames_.back().bytes();
+    frames_.pop_back();
+  }
+  return true;
+}
+
+}  // namespace csm

@@ -1,0 +1,171 @@
+// The timeline's recording (sim/recorder.h) on both solvers (the GPU one on the real GL
+// driver, llvmpipe where there is no GPU): resuming from a recorded frame gives the frames
+// that were recorded after it, bit for bit; the cache keeps within its memory budget.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "sim/cpu/cpu_solver.h"
+#include "sim/recorder.h"
+#include "sim/simulation.h"
+#include "tests/cpu/test_scenes.h"
+#include "tests/gpu/gpu_solver_fixture.h"
+
+using namespace csm;
+
+namespace {
+
+std::unique_ptr<Solver> solverNamed(const std::string& name) {
+  if (name == "gpu") return test::gpuSolver();
+  return std::make_unique<CpuSolver>();
+}
+
+// Strand contacts, a gusty wind and a nodding head: every part of the state in play.
+Config busyScene() {
+  Config c = test::smallScene(60);
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.headShape = HeadShape::Sdf;
+  c.head.motion = HeadMotion::Nod;
+  c.head.amplitude = 30.0f;
+  c.head.frequency = 1.0f;
+  c.wind.strength = 4.0f;
+  c.wind.gusts = 0.5f;
+  return c;
+}
+
+std::vector<glm::vec3> positionsOf(Simulation& sim) {
+  std::vector<glm::vec4> x;
+  sim.solver().readPositions(x);
+  return std::vector<glm::vec3>(x.begin(), x.end());
+}
+
+}  // namespace
+
+TEST_CASE("Recorder: record 120 frames, resume from 60: the frames after it as recorded",
+          "[recorder][gpu]") {
+  const std::string name = GENERATE(std::string("cpu"), std::string("gpu"));
+  INFO("solver " << name);
+  Simulation sim(solverNamed(name));
+  std::string error;
+  REQUIRE(sim.load(busyScene(), ".", &error));
+  Recorder recorder;  // keyframes every 30 frames
+  recorder.record(sim);
+  std::vector<std::vector<glm::vec3>> recorded{positionsOf(sim)};
+  for (int f = 1; f <= 120; ++f) {
+    sim.stepFrame();
+    recorder.record(sim);
+    recorded.push_back(positionsOf(sim));
+  }
+  REQUIRE(recorder.firstFrame() == 0);
+  REQUIRE(recorder.lastFrame() == 120);
+  CHECK(recorder.keyframeCount() == 5);  // 0, 30, 60, 90, 120
+  CHECK(*recorder.positions(77) == recorded[77]);
+
+  for (long from : {60L, 75L}) {  // a keyframe, and 15 frames past one
+    INFO("resumed from frame " << from);
+    double mismatch = -1.0;
+    REQUIRE(recorder.resume(sim, from, &error, &mismatch));
+    CHECK(mismatch == 0.0);
+    CHECK(sim.frame() == from);
+    CHECK(recorder.lastFrame() == from);  // the frames after it are recorded again
+    size_t differ = 0;
+    for (long f = from + 1; f <= 120; ++f) {
+      sim.stepFrame();
+      recorder.record(sim);
+      differ += positionsOf(sim) != recorded[size_t(f)];
+    }
+    CHECK(differ == 0);
+    CHECK(recorder.lastFrame() == 120);
+    CHECK(recorder.firstFrame() == 0);
+  }
+  // A change made after the recording: resuming replays the recorded frames with what they
+  // ran with, and goes on with the change.
+  Config windier = sim.config();
+  windier.wind.strength = 9.0f;
+  REQUIRE(sim.setConfig(windier, &error));
+  double mismatch = -1.0;
+  REQUIRE(recorder.resume(sim, 45, &error, &mismatch));
+  CHECK(mismatch == 0.0);
+  CHECK(sim.config().wind.strength == 9.0f);
+  sim.stepFrame();
+  CHECK(positionsOf(sim) != recorded[46]);
+  // A frame not recorded is refused, saying which are.
+  CHECK_FALSE(recorder.resume(sim, 121, &error));
+  CHECK(error == "frame 121 is not recorded (frames 0-45 are)");
+}
+
+TEST_CASE("Recorder: the cache never exceeds its memory budget, and every frame kept resumes",
+          "[recorder][gpu]") {
+  const std::string name = GENERATE(std::string("cpu"), std::string("gpu"));
+  INFO("solver " << name);
+  Simulation sim(solverNamed(name));
+  std::string error;
+  REQUIRE(sim.load(busyScene(), ".", &error));
+  // The size of a span of 10 frames, measured on a first recording.
+  Recorder probe({size_t(1) << 30, 10});
+  for (int f = 0; f < 10; ++f) {
+    sim.stepFrame();
+    probe.record(sim);
+  }
+  const size_t span = probe.bytes();
+  // Room for three and a half spans.
+  Recorder recorder({span * 7 / 2, 10});
+  size_t most = 0;
+  for (int f = 0; f < 200; ++f) {
+    sim.stepFrame();
+    recorder.record(sim);
+    most = std::max(most, recorder.bytes());
+  }
+  INFO("span " << span << " B, budget " << recorder.options().budgetBytes << " B, most held "
+               << most << " B, " << recorder.frameCount() << " frames kept");
+  CHECK(most <= recorder.options().budgetBytes);
+  CHECK(recorder.frameCount() >= 25);  // whole spans go, oldest first
+  CHECK(recorder.frameCount() <= 35);
+  CHECK(recorder.lastFrame() == sim.frame());
+  CHECK(recorder.refused() == 0);
+  // The first frame kept is a keyframe: it resumes, with no mismatch.
+  const long first = recorder.firstFrame();
+  const std::vector<glm::vec3> kept = *recorder.positions(first + 3);
+  double mismatch = -1.0;
+  REQUIRE(recorder.resume(sim, first + 3, &error, &mismatch));
+  CHECK(mismatch == 0.0);
+  CHECK(positionsOf(sim) == kept);
+  CHECK_FALSE(recorder.resume(sim, first - 1, &error));
+
+  // A budget shrunk below the recording drops the oldest spans at once.
+  recorder.setBudget(span * 3 / 2);
+  CHECK(recorder.bytes() <= span * 3 / 2);
+  CHECK(!recorder.empty());
+  // A budget smaller than one keyframe keeps nothing and counts what it refused.
+  Recorder tiny({1024, 10});
+  sim.stepFrame();
+  tiny.record(sim);
+  CHECK(tiny.empty());
+  CHECK(tiny.bytes() == 0);
+  CHECK(tiny.refused() == 1);
+}
+
+TEST_CASE("Recorder: a regrown groom starts the recording again; its states are refused",
+          "[recorder]") {
+  Simulation sim(std::make_unique<CpuSolver>());
+  std::string error;
+  Config c = test::smallScene(30);
+  REQUIRE(sim.load(c, ".", &error));
+  Recorder recorder;
+  for (int f = 0; f < 5; ++f) {
+    sim.stepFrame();
+    recorder.record(sim);
+  }
+  SimulationState before;
+  sim.save(before);
+  c.hairstyle.strands = 40;  // regrows
+  REQUIRE(sim.setConfig(c, &error));
+  CHECK_FALSE(sim.restore(before, &error));
+  CHECK_THAT(error, Catch::Contains("another groom"));
+  sim.stepFrame();
+  recorder.record(sim);
+  CHECK(recorder.frameCount() == 1);
+  CHECK(recorder.firstFrame() == sim.frame());
+}
