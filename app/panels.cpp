@@ -403,6 +403,7 @@ void drawBanners(Viewer& viewer) {
 void drawPanels(Viewer& viewer, PanelState& state) {
   drawParameterPanel(viewer, state);
   if (state.showStats) drawStatsPanel(viewer, state);
+  if (state.showTimeline) drawTimelinePanel(viewer, state);
   if (state.showHelp) drawHelpPanel(state);
   drawBanners(viewer);
 }

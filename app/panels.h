@@ -18,6 +18,9 @@ class Viewer;
 struct PanelState {
   bool showHelp = true;
   bool showStats = true;
+  bool showTimeline = true;
+  float bakeSeconds = 2.0f;
+  int cacheMb = 512;
   std::string saveAsName;
   int selectedPreset = -1;
   std::vector<std::filesystem::path> presetDirs, presetFiles;
@@ -47,6 +50,7 @@ void drawPanels(Viewer& viewer, PanelState& state);
 void drawParameterPanel(Viewer& viewer, PanelState& state);
 void drawPresetSection(Viewer& viewer, PanelState& state);
 void drawStatsPanel(Viewer& viewer, PanelState& state);
+void drawTimelinePanel(Viewer& viewer, PanelState& state);
 void drawHelpPanel(PanelState& state);
 void drawBanners(Viewer& viewer);
 

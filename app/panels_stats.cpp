@@ -76,6 +76,10 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
               viewer.loading()  ? "  (loading)"
               : viewer.paused() ? "  (paused)"
                                 : "");
+  ImGui::Text("timeline: %.1f of %.0f MB, %ld frames%s", double(f.timeline.bytes) / (1 << 20),
+              double(f.timeline.budget) / (1 << 20),
+              f.timeline.first >= 0 ? f.timeline.last - f.timeline.first + 1 : 0L,
+              f.timeline.shown >= 0 ? ", one shown" : "");
   ImGui::TextDisabled("picture: %s quality",
                       viewer.lastQuality() == DrawQuality::Interactive ? "interactive" : "full");
   if (ImGui::IsItemHovered())

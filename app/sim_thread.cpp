@@ -92,7 +92,7 @@ void SimThread::run(std::string* startError, Started* started) {
       for (;;) {
         if (pending_.any()) break;
         if (canStep()) {
-          if (!options_.paced || paused_) break;
+          if (!options_.paced || paused_ || bakeLeft_ > 0) break;
           const auto due =
               anchorWall_ + std::chrono::duration_cast<Clock::duration>(
                                 std::chrono::duration<double>(sim_->time() - anchorSim_));
@@ -163,18 +163,56 @@ void SimThread::apply(Pending& p, long ticket) {
   if (restarted) {
     driver_->restart();
     maxStrain_.clear();
+    shown_ = -1;
+    bakeLeft_ = 0;
+    if (recording_) timeline_.record(*sim_);  // frame 0, or the frame a regrow starts from
   }
+  const bool resumed = applyTimeline(p, ticket);
   // The paced clock starts again from here when the hair starts again or starts moving; not
   // on every command (a drag posts one a frame), which would let it run ahead of real time.
-  if (restarted || (p.paused && !*p.paused) || p.steps > 0) {
+  if (restarted || resumed || (p.paused && !*p.paused) || p.steps > 0 || p.bake) {
     anchorWall_ = Clock::now();
     anchorSim_ = sim_->time();
   }
   applied_ = ticket;
 }
 
+bool SimThread::applyTimeline(const Pending& p, long ticket) {
+  if (p.recording) recording_ = *p.recording;
+  if (p.budget) timeline_.setBudget(*p.budget);
+  if (p.show) {
+    shown_ = *p.show >= 0 && timeline_.at(*p.show) ? *p.show : -1;
+    if (shown_ >= 0) paused_ = true;
+  }
+  bool resumed = false;
+  if (p.resume && loaded_) {
+    std::string error;
+    double mismatch = 0.0;
+    if (timeline_.resume(*sim_, *p.resume, &error, &mismatch)) {
+      driver_->restart();
+      maxStrain_.clear();
+      shown_ = -1;
+      paused_ = true;
+      resumed = true;
+      std::string text = "resumed from frame " + std::to_string(*p.resume);
+      if (mismatch > 0.0)
+        text += "; stepped again it differs from the recording by up to " +
+                std::to_string(mismatch * 1000.0) + " mm";
+      event(SimEvent::Kind::Resumed, ticket, text);
+    } else {
+      event(SimEvent::Kind::ResumeFailed, ticket, "cannot resume: " + error);
+    }
+  }
+  if (p.bake && loaded_) {
+    bakeLeft_ = bakeTotal_ = std::max(0L, *p.bake);
+    shown_ = -1;
+    if (bakeLeft_ > 0) paused_ = false;
+  }
+  return resumed;
+}
+
 bool SimThread::canStep() const {
-  if (!loaded_ || driver_->stopped()) return false;
+  if (!loaded_ || driver_->stopped() || shown_ >= 0) return false;
   if (options_.frameLimit >= 0 && sim_->frame() >= options_.frameLimit) return false;
   return !paused_ || steps_ > 0;
 }
@@ -182,6 +220,8 @@ bool SimThread::canStep() const {
 void SimThread::stepFrame() {
   if (paused_ && steps_ > 0) --steps_;
   driver_->step();
+  if (recording_) timeline_.record(*sim_);
+  if (bakeLeft_ > 0 && --bakeLeft_ == 0) paused_ = true;
   std::vector<FrameSample> samples = driver_->takeSamples();
   for (const FrameSample& s : samples) maxStrain_.push(float(s.accuracy.maxStrain));
   if (options_.recordMetrics) {
@@ -258,8 +298,30 @@ void SimThread::publish(long ticket) {
     f->nanFrame = driver_->nanFrame();
     f->nanParticles = driver_->nanParticles();
     f->idle = !canStep();
+    SimFrame::Timeline& t = f->timeline;
+    t.recording = recording_;
+    t.first = timeline_.firstFrame();
+    t.last = timeline_.lastFrame();
+    t.live = sim_->frame();
+    t.bytes = timeline_.bytes();
+    t.budget = timeline_.options().budgetBytes;
+    t.keyframes = timeline_.keyframeCount();
+    t.bakeLeft = bakeLeft_;
+    t.bakeTotal = bakeTotal_;
+    t.refused = timeline_.refused();
+    const Recorder::Shown* shown = shown_ >= 0 ? timeline_.at(shown_) : nullptr;
     const unsigned buffer = gl_ ? solver.positionBuffer() : 0;
-    if (buffer != 0 && f->particles > 0) {
+    if (shown) {
+      // A recorded frame on show: its positions, time and head instead of the live ones.
+      t.shown = shown->frame;
+      f->frame = shown->frame;
+      f->time = shown->time;
+      f->head = shown->head;
+      auto host = std::make_shared<std::vector<glm::vec4>>();
+      host->reserve(shown->positions.size());
+      for (const glm::vec3& x : shown->positions) host->emplace_back(x, 1.0f);
+      f->hostPositions = std::move(host);
+    } else if (buffer != 0 && f->particles > 0) {
       f->slot = writeSlot(buffer, f->particles * sizeof(glm::vec4));
       f->positionBuffer = slots_[f->slot].buffer.id();
     } else {
@@ -324,6 +386,29 @@ long SimThread::setPaused(bool paused) {
 
 long SimThread::step() {
   return post([](Pending& p, long) { ++p.steps; });
+}
+
+long SimThread::setRecording(bool on) {
+  return post([&](Pending& p, long) { p.recording = on; });
+}
+
+long SimThread::setCacheBudget(size_t bytes) {
+  return post([&](Pending& p, long) { p.budget = bytes; });
+}
+
+long SimThread::show(long frame) {
+  return post([&](Pending& p, long) { p.show = frame; });
+}
+
+long SimThread::resume(long frame) {
+  return post([&](Pending& p, long) {
+    p.show.reset();
+    p.resume = frame;
+  });
+}
+
+long SimThread::bake(long frames) {
+  return post([&](Pending& p, long) { p.bake = frames; });
 }
 
 long SimThread::latestSerial() const {

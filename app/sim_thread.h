@@ -37,6 +37,7 @@
 #include "sim/config.h"
 #include "sim/groom.h"
 #include "sim/head.h"
+#include "sim/recorder.h"
 #include "sim/hairstyle.h"
 #include "sim/solver.h"
 #include "sim/stiffness.h"
@@ -75,6 +76,17 @@ struct SimFrame {
   long nanFrame = -1;
   uint64_t nanParticles = 0;
   bool idle = false;  // will step no further without a command (paused, stopped, limit)
+  // The timeline (sim/recorder.h): what is recorded, and the recorded frame on show instead
+  // of the live one (then `frame`, `time`, `head` and the positions are that frame's).
+  struct Timeline {
+    bool recording = true;
+    long first = -1, last = -1;  // the recorded frames
+    long shown = -1;             // -1: the live frame
+    long live = 0;               // the simulation's own frame
+    size_t bytes = 0, budget = 0, keyframes = 0;
+    long bakeLeft = 0, bakeTotal = 0;  // a bake's frames still to run, of how many
+    long refused = 0;                  // frames too big for the budget alone
+  } timeline;
   // This frame's positions (vec4 per particle): a buffer of the share group, to draw after
   // SimThread::acquire() (which orders the window's context after the copy), or a host copy.
   unsigned positionBuffer = 0;
@@ -90,6 +102,8 @@ struct SimEvent {
     ConfigRefused,  // text: why; the frames carry the config that still runs
     Regrew,         // text: "N strands, M particles"
     Nan,            // text: the frame and the particle count
+    Resumed,        // text: "resumed from frame N"
+    ResumeFailed,   // text: why
   };
   Kind kind;
   long ticket = 0;
@@ -135,6 +149,15 @@ class SimThread {
   long setUserPose(const Pose& pose);
   long setPaused(bool paused);
   long step();  // one frame, while paused
+  // The timeline: record every frame (on by default) within a memory budget; show a recorded
+  // frame instead of the live one (the simulation pauses; -1: live again); resume the
+  // simulation from a recorded frame (paused there); bake: run `frames` frames as fast as
+  // they go (recording them), then pause.
+  long setRecording(bool on);
+  long setCacheBudget(size_t bytes);
+  long show(long frame);
+  long resume(long frame);
+  long bake(long frames);
 
   // Waits until every command posted so far is applied and published; false on timeout.
   bool sync(double timeoutSeconds = 120.0);
@@ -167,8 +190,14 @@ class SimThread {
     std::optional<Pose> userPose;
     std::optional<bool> paused;
     int steps = 0;
+    std::optional<bool> recording;
+    std::optional<size_t> budget;
+    std::optional<long> show, resume, bake;
     bool quit = false;
-    bool any() const { return open || config || reset || userPose || paused || steps > 0 || quit; }
+    bool any() const {
+      return open || config || reset || userPose || paused || steps > 0 || recording || budget ||
+             show || resume || bake || quit;
+    }
   };
   struct Slot {
     gl::Buffer buffer{gl::NoCreate};
@@ -180,6 +209,7 @@ class SimThread {
   bool makeSolver(std::string* error, Started* started);
   long post(const std::function<void(Pending&, long ticket)>& edit);
   void apply(Pending& p, long ticket);
+  bool applyTimeline(const Pending& p, long ticket);  // true when it resumed
   bool canStep() const;
   void stepFrame();
   void publish(long ticket);
@@ -212,6 +242,10 @@ class SimThread {
   long applied_ = 0;
   long serial_ = 0;
   History maxStrain_{120};
+  Recorder timeline_;
+  bool recording_ = true;
+  long shown_ = -1;
+  long bakeLeft_ = 0, bakeTotal_ = 0;
   // Real-time pacing: the wall time and sim time the clock last started from.
   std::chrono::steady_clock::time_point anchorWall_;
   double anchorSim_ = 0.0;

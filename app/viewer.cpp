@@ -195,6 +195,12 @@ void Viewer::handle(const SimEvent& e) {
     case SimEvent::Kind::Regrew:
       log(MessageLevel::Info, "regrew the hair: " + e.text);
       break;
+    case SimEvent::Kind::Resumed:
+      log(MessageLevel::Info, e.text + "; paused (Space goes on)");
+      break;
+    case SimEvent::Kind::ResumeFailed:
+      log(MessageLevel::Error, e.text);
+      break;
     case SimEvent::Kind::Nan:
       if (e.ticket >= resetTicket_) {
         setPaused(true);
@@ -393,7 +399,70 @@ void Viewer::updateTitle() {
 
 void Viewer::setPaused(bool paused) {
   paused_ = paused;
+  playing_ = false;
+  // Going on from a recorded frame on show is the live frame going on; resumeFrom() goes on
+  // from the frame shown.
+  if (!paused && frame_->timeline.shown >= 0) sim_->show(-1);
   sim_->setPaused(paused);
+}
+
+void Viewer::showRecorded(long frame) {
+  if (frame >= 0) paused_ = true;
+  sim_->show(frame);
+}
+
+void Viewer::playRecording(bool play) {
+  const SimFrame::Timeline& t = frame_->timeline;
+  playing_ = play && t.first >= 0;
+  if (!playing_) return;
+  paused_ = true;
+  playFrom_ = t.shown >= 0 && t.shown < t.last ? t.shown : t.first;
+  playStart_ = Clock::now();
+  sim_->show(playFrom_);
+}
+
+void Viewer::advancePlayback() {
+  if (!playing_) return;
+  const SimFrame::Timeline& t = frame_->timeline;
+  const double dt = std::max(1e-6, double(frame_->config.sim.dt));
+  long frame =
+      playFrom_ + long(std::chrono::duration<double>(Clock::now() - playStart_).count() / dt);
+  if (t.last < 0) {
+    playing_ = false;
+    return;
+  }
+  if (frame > t.last) {
+    if (loopPlayback_) {
+      playFrom_ = t.first;
+      playStart_ = Clock::now();
+      frame = t.first;
+    } else {
+      frame = t.last;
+      playing_ = false;
+    }
+  }
+  if (frame != t.shown) sim_->show(frame);
+}
+
+void Viewer::resumeFrom(long frame) {
+  playing_ = false;
+  paused_ = true;
+  sim_->resume(frame);
+}
+
+void Viewer::bake(double seconds) {
+  playing_ = false;
+  paused_ = false;
+  const double dt = std::max(1e-6, double(current_.scene.sim.dt));
+  sim_->bake(std::max(1L, std::lround(seconds / dt)));
+}
+
+void Viewer::setRecording(bool on) {
+  sim_->setRecording(on);
+}
+
+void Viewer::setCacheBudget(size_t bytes) {
+  sim_->setCacheBudget(bytes);
 }
 
 void Viewer::stepOnce() {
@@ -629,6 +698,7 @@ void Viewer::runFrame() {
   ImGui::NewFrame();
 
   takeSimFrame();
+  advancePlayback();
   handleKeys();
   handleMouse();
   drawPanels(*this, *panels_);
@@ -662,7 +732,7 @@ int Viewer::run() {
       const auto now = Clock::now();
       const bool busy = now - window_->lastInput() < std::chrono::seconds(1) ||
                         now - lastMotion_ < seconds(kStillSeconds) || screenshotPending() ||
-                        pendingOpen_ || sim_->latestSerial() != frame_->serial;
+                        pendingOpen_ || playing_ || sim_->latestSerial() != frame_->serial;
       const auto next = start + (busy ? busyBudget : idleBudget);
       if (now >= next || window_->shouldClose()) break;
       glfwWaitEventsTimeout(std::chrono::duration<double>(next - now).count());

@@ -113,6 +113,19 @@ class Viewer {
   bool paused() const { return paused_; }
   void stepOnce();   // one frame, paused
   void resetHair();  // back to rest, time 0; clears a NaN stop
+  // The timeline (the simulation thread's recording, sim/recorder.h). Showing a recorded
+  // frame pauses the simulation (-1: the live frame again); playing shows the recording at
+  // real time from the frame shown, looping or stopping at its end; resume goes on simulating
+  // from a recorded frame (paused there); bake runs seconds of simulation as fast as they go.
+  void showRecorded(long frame);
+  void playRecording(bool play);
+  bool playingRecording() const { return playing_; }
+  void setLoopRecording(bool loop) { loopPlayback_ = loop; }
+  bool loopRecording() const { return loopPlayback_; }
+  void resumeFrom(long frame);
+  void bake(double seconds);
+  void setRecording(bool on);
+  void setCacheBudget(size_t bytes);
   void resetView();  // the preset's camera
   void frameHead();
   void resetHead();  // undo the mouse's head pose
@@ -242,6 +255,11 @@ class Viewer {
 
   Pose userPose_;
   bool paused_ = false;
+  // Playing the recording back: from which frame, since when (the UI's clock).
+  bool playing_ = false, loopPlayback_ = true;
+  long playFrom_ = 0;
+  std::chrono::steady_clock::time_point playStart_;
+  void advancePlayback();
   long resetTicket_ = 0;  // frames before it may still show a NaN the reset clears
   long framesDrawn_ = 0;
   std::string title_;

@@ -17,7 +17,7 @@ std::vector<glm::vec3> positionsOf(Solver& solver) {
 }  // namespace
 
 size_t Recorder::Frame::bytes() const {
-  return sizeof(Frame) + positions.size() * sizeof(glm::vec3) + (key ? key->bytes() : 0);
+  return sizeof(Frame) + shown.positions.size() * sizeof(glm::vec3) + (key ? key->bytes() : 0);
 }
 
 Recorder::Recorder(RecorderOptions options) : options_(options) {
@@ -64,20 +64,22 @@ void Recorder::record(Simulation& sim) {
     start_ = sim.frame();
   }
   Frame f;
-  f.frame = sim.frame();
-  f.positions = positionsOf(sim.solver());
+  f.shown.frame = sim.frame();
+  f.shown.time = sim.time();
+  f.shown.head = sim.headPose();
+  f.shown.positions = positionsOf(sim.solver());
   auto keep = [&] {
     auto state = std::make_shared<SimulationState>();
     sim.save(*state);
     f.key = std::move(state);
   };
-  if ((f.frame - start_) % options_.keyframeEvery == 0) keep();
+  if ((f.shown.frame - start_) % options_.keyframeEvery == 0) keep();
   // Room first, from the oldest spans; when the newest span alone is too big, start again here.
   while (bytes_ + f.bytes() > options_.budgetBytes && dropOldestSpan()) {
   }
   if (bytes_ + f.bytes() > options_.budgetBytes) {
     clear();
-    start_ = f.frame;
+    start_ = f.shown.frame;
     if (!f.key) keep();
     if (f.bytes() > options_.budgetBytes) {
       ++refused_;
@@ -88,9 +90,9 @@ void Recorder::record(Simulation& sim) {
   frames_.push_back(std::move(f));
 }
 
-const std::vector<glm::vec3>* Recorder::positions(long frame) const {
+const Recorder::Shown* Recorder::at(long frame) const {
   if (frames_.empty() || frame < firstFrame() || frame > lastFrame()) return nullptr;
-  return &frames_[size_t(frame - firstFrame())].positions;
+  return &frames_[size_t(frame - firstFrame())].shown;
 }
 
 bool Recorder::resume(Simulation& sim, long frame, std::string* error, double* mismatch) {
@@ -108,11 +110,11 @@ bool Recorder::resume(Simulation& sim, long frame, std::string* error, double* m
   // Stepped again with the parameters it ran with; from there on, today's.
   const Config today = sim.config();
   if (!sim.restore(*frames_[key].key, error)) return false;
-  for (long f = frames_[key].frame; f < frame; ++f) sim.stepFrame();
+  for (long f = frames_[key].shown.frame; f < frame; ++f) sim.stepFrame();
   if (!sim.setConfig(today, error)) return false;
   if (mismatch) {
     const std::vector<glm::vec3> now = positionsOf(sim.solver());
-    const std::vector<glm::vec3>& then = frames_[at].positions;
+    const std::vector<glm::vec3>& then = frames_[at].shown.positions;
     double worst = now.size() == then.size() ? 0.0 : INFINITY;
     for (size_t i = 0; i < now.size() && i < then.size(); ++i)
       worst = std::max(worst, double(glm::length(now[i] - then[i])));

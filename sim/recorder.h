@@ -42,16 +42,27 @@ class Recorder {
 
   bool empty() const { return frames_.empty(); }
   size_t frameCount() const { return frames_.size(); }
-  long firstFrame() const { return frames_.empty() ? -1 : frames_.front().frame; }
-  long lastFrame() const { return frames_.empty() ? -1 : frames_.back().frame; }
+  long firstFrame() const { return frames_.empty() ? -1 : frames_.front().shown.frame; }
+  long lastFrame() const { return frames_.empty() ? -1 : frames_.back().shown.frame; }
   size_t keyframeCount() const;
   // Bytes held: positions, saved states and bookkeeping; never above the budget.
   size_t bytes() const { return bytes_; }
   // Frames that could not be kept at all: one keyframe alone is larger than the budget.
   long refused() const { return refused_; }
 
-  // The positions of a recorded frame, in the groom's order; null when it is not recorded.
-  const std::vector<glm::vec3>* positions(long frame) const;
+  // A recorded frame as it is shown: its positions (in the groom's order), its time and where
+  // the head was; null when it is not recorded.
+  struct Shown {
+    long frame = 0;
+    double time = 0.0;
+    Pose head;
+    std::vector<glm::vec3> positions;
+  };
+  const Shown* at(long frame) const;
+  const std::vector<glm::vec3>* positions(long frame) const {
+    const Shown* f = at(frame);
+    return f ? &f->positions : nullptr;
+  }
 
   // Puts `sim` at recorded frame `frame`: restores the keyframe at or before it and steps on
   // with the parameters those frames ran with; from there the simulation goes on with the
@@ -64,8 +75,7 @@ class Recorder {
 
  private:
   struct Frame {
-    long frame = 0;
-    std::vector<glm::vec3> positions;
+    Shown shown;
     std::shared_ptr<const SimulationState> key;  // the whole state on keyframes
     size_t bytes() const;
   };

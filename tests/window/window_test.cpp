@@ -650,3 +650,113 @@ TEST_CASE("window: interactive quality while simulating, full when still and for
   CHECK(v->lastQuality() == DrawQuality::Full);
   removeTemp(dir);
 }
+
+// Pixels of the scene's middle that differ between two screenshots (the panels and banners
+// around it differ with the frame's text).
+double sceneDifference(const Image& a, const Image& b) {
+  REQUIRE(a.width == b.width);
+  REQUIRE(a.height == b.height);
+  const int x0 = a.width * 33 / 100, x1 = a.width * 67 / 100;
+  const int y0 = a.height * 20 / 100, y1 = a.height * 77 / 100;
+  long differ = 0, all = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x, ++all) {
+      const uint8_t *p = a.pixel(x, y), *q = b.pixel(x, y);
+      differ += p[0] != q[0] || p[1] != q[1] || p[2] != q[2];
+    }
+  return double(differ) / double(all);
+}
+
+TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels show the frame",
+          "[window][timeline]") {
+  const fs::path dir = tempDir();
+  ViewerOptions o;
+  o.vsync = false;
+  o.quiet = true;
+  o.paced = false;
+  o.frameLimit = 40;  // the simulation stops at frame 40, and again after a resume
+  std::string error;
+  std::unique_ptr<Viewer> v = Viewer::create(o, &error);
+  INFO(error);
+  REQUIRE(v);
+  Preset c = defaultPreset();
+  c.scene.hairstyle.strands = 400;
+  c.scene.head.amplitude = 30.0f;  // a nod that moves the hair between frames
+  c.scene.head.frequency = 1.5f;
+  REQUIRE(v->open(c, "", "", &error));
+  REQUIRE(v->waitForSimFrame(40));
+  REQUIRE(v->sync());
+  const SimFrame::Timeline& t = v->simFrame().timeline;
+  REQUIRE(v->simFrame().frame == 40);
+  CHECK(t.first == 0);
+  CHECK(t.last == 40);
+  CHECK(t.shown == -1);
+  CHECK(t.bytes > 0);
+  CHECK(t.bytes <= t.budget);
+  const Image live = screenshot(*v, dir / "live40.png");
+
+  // Scrubbed back to frame 12: that frame's picture, the simulation paused at 40.
+  v->showRecorded(12);
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().timeline.shown == 12);
+  CHECK(v->simFrame().frame == 12);
+  CHECK(v->simFrame().timeline.live == 40);
+  const Image at12 = screenshot(*v, dir / "recorded12.png");
+  CHECK(sceneDifference(at12, live) > 0.01);
+  // Frame 40 from the recording is the live frame 40, pixel for pixel.
+  v->showRecorded(40);
+  REQUIRE(v->sync());
+  CHECK(sceneDifference(screenshot(*v, dir / "recorded40.png"), live) == 0.0);
+
+  // Played back from frame 12 at real time (1/60 s a frame), looping: it moves on.
+  v->showRecorded(12);
+  REQUIRE(v->sync());
+  v->playRecording(true);
+  CHECK(v->playingRecording());
+  const auto until = Clock::now() + std::chrono::milliseconds(400);
+  while (Clock::now() < until) {
+    v->runFrame();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  REQUIRE(v->sync());
+  const long played = v->simFrame().timeline.shown;
+  INFO("after 0.4 s of playback: frame " << played);
+  CHECK(played > 16);
+  v->playRecording(false);
+
+  // Resumed from frame 20 and run on to the limit (40): the frames as recorded, the same
+  // picture at 40.
+  v->showRecorded(20);
+  REQUIRE(v->sync());
+  const Image at20 = screenshot(*v, dir / "recorded20.png");
+  v->resumeFrom(20);
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().timeline.shown == -1);
+  CHECK(v->simFrame().frame == 20);
+  CHECK(v->simFrame().timeline.last == 20);
+  CHECK(v->paused());
+  CHECK(sceneDifference(screenshot(*v, dir / "resumed20.png"), at20) == 0.0);
+  bool said = false;
+  for (const ViewerMessage& m : v->messages())
+    said |= m.text.rfind("resumed from frame 20", 0) == 0;
+  CHECK(said);
+  v->setPaused(false);
+  REQUIRE(v->waitForSimFrame(40));
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().frame == 40);
+  CHECK(v->simFrame().timeline.last == 40);
+  CHECK(sceneDifference(screenshot(*v, dir / "again40.png"), live) == 0.0);
+
+  // A bake: 10 frames as fast as they go, recorded, then paused (the limit lifted by a reset
+  // would start again at 0: bake from the resumed 20 instead).
+  v->resumeFrom(20);
+  REQUIRE(v->sync());
+  v->bake(10.0 / 60.0);
+  REQUIRE(v->waitForSimFrame(30));
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().frame == 30);
+  CHECK(v->simFrame().timeline.last == 30);
+  CHECK(v->simFrame().timeline.bakeLeft == 0);
+  CHECK(v->simFrame().idle);
+  removeTemp(dir);
+}

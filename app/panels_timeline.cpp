@@ -1,0 +1,109 @@
+// The Timeline panel: the simulation thread's recording (sim/recorder.h) to scrub, play,
+// loop, step through and resume from, a bake of seconds with its progress, and the cache's
+// memory against its budget.
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "app/panels.h"
+#include "app/viewer.h"
+
+namespace csm {
+
+void drawTimelinePanel(Viewer& viewer, PanelState& state) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  // Along the bottom, between the Parameters and the Help panels; its height fits its rows.
+  ImGui::SetNextWindowPos(
+      ImVec2(vp->WorkPos.x + 0.55f * vp->WorkSize.x, vp->WorkPos.y + vp->WorkSize.y - 30.0f),
+      ImGuiCond_FirstUseEver, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowSize(ImVec2(0.45f * vp->WorkSize.x, 0.0f), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Timeline", &state.showTimeline)) {
+    ImGui::End();
+    return;
+  }
+  const SimFrame& f = viewer.simFrame();
+  const SimFrame::Timeline& t = f.timeline;
+  const bool recorded = t.first >= 0;
+  const long at = t.shown >= 0 ? t.shown : t.live;
+
+  if (recorded) {
+    int frame = int(std::clamp(at, t.first, t.last));
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderInt("##frame", &frame, int(t.first), int(t.last),
+                         t.shown >= 0 ? "recorded frame %d" : "live, frame %d")) {
+      viewer.playRecording(false);
+      viewer.showRecorded(frame);
+    }
+  } else {
+    ImGui::TextDisabled("nothing recorded yet");
+  }
+  ImGui::BeginDisabled(!recorded);
+  if (ImGui::Button("|<")) {
+    viewer.playRecording(false);
+    viewer.showRecorded(t.first);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("<")) {
+    viewer.playRecording(false);
+    viewer.showRecorded(std::max(t.first, at - 1));
+  }
+  ImGui::SameLine();
+  if (ImGui::Button(viewer.playingRecording() ? "Stop" : "Play", ImVec2(48.0f, 0.0f)))
+    viewer.playRecording(!viewer.playingRecording());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play the recording back at real time");
+  ImGui::SameLine();
+  if (ImGui::Button(">")) {
+    viewer.playRecording(false);
+    viewer.showRecorded(std::min(t.last, at + 1));
+  }
+  ImGui::SameLine();
+  if (ImGui::Button(">|")) {
+    viewer.playRecording(false);
+    viewer.showRecorded(t.last);
+  }
+  ImGui::SameLine();
+  bool loop = viewer.loopRecording();
+  if (ImGui::Checkbox("Loop", &loop)) viewer.setLoopRecording(loop);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(t.shown < 0);
+  if (ImGui::Button("Resume from here")) viewer.resumeFrom(t.shown);
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "Simulate on from the frame shown, with the parameters as they are now.\n"
+        "The frames recorded after it are dropped and recorded again.");
+  ImGui::SameLine();
+  if (ImGui::Button("Live")) viewer.showRecorded(-1);
+  ImGui::EndDisabled();
+  ImGui::EndDisabled();
+
+  bool recording = t.recording;
+  if (ImGui::Checkbox("Record", &recording)) viewer.setRecording(recording);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90.0f);
+  ImGui::InputFloat("s", &state.bakeSeconds, 0.5f, 2.0f, "%.1f");
+  state.bakeSeconds = std::clamp(state.bakeSeconds, 0.1f, 600.0f);
+  ImGui::SameLine();
+  if (ImGui::Button("Bake")) viewer.bake(state.bakeSeconds);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Simulate (and record) this many seconds as fast as they go, then pause");
+  if (t.bakeLeft > 0 && t.bakeTotal > 0) {
+    ImGui::SameLine();
+    char text[48];
+    std::snprintf(text, sizeof text, "%ld / %ld frames", t.bakeTotal - t.bakeLeft, t.bakeTotal);
+    ImGui::ProgressBar(float(t.bakeTotal - t.bakeLeft) / float(t.bakeTotal), ImVec2(-1.0f, 0.0f),
+                       text);
+  }
+  ImGui::SetNextItemWidth(160.0f);
+  if (ImGui::SliderInt("cache MB", &state.cacheMb, 16, 8192, "%d MB", ImGuiSliderFlags_Logarithmic))
+    viewer.setCacheBudget(size_t(state.cacheMb) << 20);
+  ImGui::SameLine();
+  ImGui::Text("%.1f of %.0f MB, %ld frames (%zu keyframes)", double(t.bytes) / (1 << 20),
+              double(t.budget) / (1 << 20), recorded ? t.last - t.first + 1 : 0L, t.keyframes);
+  if (t.refused > 0)
+    ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
+                       "%ld frames not recorded: one keyframe is larger than the cache", t.refused);
+  ImGui::End();
+}
+
+}  // namespace csm
