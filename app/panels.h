@@ -21,6 +21,7 @@ struct PanelState {
   bool showTimeline = true;
   float bakeSeconds = 2.0f;
   int cacheMb = 512;
+  char exportDir[256] = "hair_sequence";
   std::string saveAsName;
   int selectedPreset = -1;
   std::vector<std::filesystem::path> presetDirs, presetFiles;

@@ -3,6 +3,7 @@
 // memory against its budget.
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include <imgui.h>
 
@@ -100,6 +101,39 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state) {
   ImGui::SameLine();
   ImGui::Text("%.1f of %.0f MB, %ld frames (%zu keyframes)", double(t.bytes) / (1 << 20),
               double(t.budget) / (1 << 20), recorded ? t.last - t.first + 1 : 0L, t.keyframes);
+  // Out: the recorded range as cyHair files.
+  ImGui::BeginDisabled(!recorded);
+  if (ImGui::Button("Export .hair")) viewer.exportRecorded(state.exportDir, t.first, t.last);
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Every recorded frame as FOLDER/frame_00001.hair, ... (cyHair)");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(200.0f);
+  ImGui::InputText("folder", state.exportDir, sizeof state.exportDir);
+  ImGui::EndDisabled();
+
+  // A/B: the recording kept as A, B simulated again over its span with today's parameters.
+  ImGui::BeginDisabled(!recorded);
+  if (ImGui::Button("Keep as A")) viewer.keepAsA();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Keep this recording, and its parameters, to compare with");
+  ImGui::EndDisabled();
+  if (t.aFirst >= 0) {
+    ImGui::SameLine();
+    if (ImGui::Button("Run B")) viewer.rerunFromA();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Simulate A's frames again from its first, with the parameters as they are now:\n"
+          "the same head motion and wind, which follow the clock");
+    ImGui::SameLine();
+    bool a = t.showingA;
+    if (ImGui::Checkbox("show A (B)", &a)) viewer.showA(a);
+    ImGui::SameLine();
+    std::string changed;
+    for (std::string_view k : viewer.keysChangedSinceA())
+      changed += (changed.empty() ? "" : ", ") + std::string(k);
+    ImGui::Text("A: frames %ld-%ld, %.1f MB; B differs in: %s", t.aFirst, t.aLast,
+                double(t.aBytes) / (1 << 20), changed.empty() ? "nothing yet" : changed.c_str());
+  }
   if (t.refused > 0)
     ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f),
                        "%ld frames not recorded: one keyframe is larger than the cache", t.refused);

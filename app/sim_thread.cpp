@@ -1,6 +1,7 @@
 #include "app/sim_thread.h"
 
 #include "sim/frame_driver.h"
+#include "sim/io/hair_sequence.h"
 #include "sim/simulation.h"
 
 namespace csm {
@@ -181,7 +182,8 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
   if (p.recording) recording_ = *p.recording;
   if (p.budget) timeline_.setBudget(*p.budget);
   if (p.show) {
-    shown_ = *p.show >= 0 && timeline_.at(*p.show) ? *p.show : -1;
+    const bool recorded = timeline_.at(*p.show) || (a_ && a_->at(*p.show));
+    shown_ = *p.show >= 0 && recorded ? *p.show : -1;
     if (shown_ >= 0) paused_ = true;
   }
   bool resumed = false;
@@ -202,6 +204,32 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
     } else {
       event(SimEvent::Kind::ResumeFailed, ticket, "cannot resume: " + error);
     }
+  }
+  if (p.keepA && loaded_) {
+    a_ = std::make_unique<Recorder>(timeline_);
+    aConfig_ = std::make_shared<const Config>(sim_->config());
+  }
+  if (p.showA) showingA_ = *p.showA && a_ != nullptr;
+  if (p.exportRange && loaded_) {
+    const auto& [dir, range] = *p.exportRange;
+    std::string error;
+    long written = 0;
+    bool ok = io::prepareSequenceDir(dir, &error);
+    for (long f = range.first; ok && f <= range.second; ++f) {
+      const Recorder::Shown* shown = timeline_.at(f);
+      if (!shown) {
+        error = "frame " + std::to_string(f) + " is not recorded";
+        ok = false;
+      } else {
+        ok = io::writeSequenceFrame(dir, ++written, sim_->groom(), shown->positions, &error);
+      }
+    }
+    if (ok)
+      event(SimEvent::Kind::Exported, ticket,
+            "wrote frames " + std::to_string(range.first) + "-" + std::to_string(range.second) +
+                " as " + std::to_string(written) + " cyHair files into " + dir);
+    else
+      event(SimEvent::Kind::ExportFailed, ticket, "export: " + error);
   }
   if (p.bake && loaded_) {
     bakeLeft_ = bakeTotal_ = std::max(0L, *p.bake);
@@ -309,7 +337,17 @@ void SimThread::publish(long ticket) {
     t.bakeLeft = bakeLeft_;
     t.bakeTotal = bakeTotal_;
     t.refused = timeline_.refused();
-    const Recorder::Shown* shown = shown_ >= 0 ? timeline_.at(shown_) : nullptr;
+    t.aFirst = a_ ? a_->firstFrame() : -1;
+    t.aLast = a_ ? a_->lastFrame() : -1;
+    t.aBytes = a_ ? a_->bytes() : 0;
+    t.aConfig = aConfig_;
+    const Recorder::Shown* shown = nullptr;
+    if (shown_ >= 0 && showingA_ && a_ && a_->at(shown_)) {
+      shown = a_->at(shown_);
+      t.showingA = true;
+    } else if (shown_ >= 0) {
+      shown = timeline_.at(shown_);
+    }
     const unsigned buffer = gl_ ? solver.positionBuffer() : 0;
     if (shown) {
       // A recorded frame on show: its positions, time and head instead of the live ones.
@@ -409,6 +447,19 @@ long SimThread::resume(long frame) {
 
 long SimThread::bake(long frames) {
   return post([&](Pending& p, long) { p.bake = frames; });
+}
+
+long SimThread::exportRecorded(const std::string& dir, long first, long last) {
+  return post(
+      [&](Pending& p, long) { p.exportRange = std::make_pair(dir, std::make_pair(first, last)); });
+}
+
+long SimThread::keepAsA() {
+  return post([](Pending& p, long) { p.keepA = true; });
+}
+
+long SimThread::showA(bool on) {
+  return post([&](Pending& p, long) { p.showA = on; });
 }
 
 long SimThread::latestSerial() const {

@@ -86,6 +86,12 @@ struct SimFrame {
     size_t bytes = 0, budget = 0, keyframes = 0;
     long bakeLeft = 0, bakeTotal = 0;  // a bake's frames still to run, of how many
     long refused = 0;                  // frames too big for the budget alone
+    // A kept recording to compare with (A/B): its frames, its memory, its parameters, and
+    // whether the frame on show is A's (the same frame number) instead of the recording's.
+    long aFirst = -1, aLast = -1;
+    size_t aBytes = 0;
+    bool showingA = false;
+    std::shared_ptr<const Config> aConfig;
   } timeline;
   // This frame's positions (vec4 per particle): a buffer of the share group, to draw after
   // SimThread::acquire() (which orders the window's context after the copy), or a host copy.
@@ -104,6 +110,8 @@ struct SimEvent {
     Nan,            // text: the frame and the particle count
     Resumed,        // text: "resumed from frame N"
     ResumeFailed,   // text: why
+    Exported,       // text: "wrote N frames ... into DIR"
+    ExportFailed,   // text: why
   };
   Kind kind;
   long ticket = 0;
@@ -158,6 +166,12 @@ class SimThread {
   long show(long frame);
   long resume(long frame);
   long bake(long frames);
+  // Writes the recorded frames first..last as DIR/frame_00001.hair, ... (sim/io/hair_sequence.h).
+  long exportRecorded(const std::string& dir, long first, long last);
+  // A/B: keep the recording as it is now as A (with its parameters); show A's frame instead of
+  // the recording's at the frame on show (or not).
+  long keepAsA();
+  long showA(bool on);
 
   // Waits until every command posted so far is applied and published; false on timeout.
   bool sync(double timeoutSeconds = 120.0);
@@ -193,10 +207,13 @@ class SimThread {
     std::optional<bool> recording;
     std::optional<size_t> budget;
     std::optional<long> show, resume, bake;
+    std::optional<std::pair<std::string, std::pair<long, long>>> exportRange;
+    bool keepA = false;
+    std::optional<bool> showA;
     bool quit = false;
     bool any() const {
       return open || config || reset || userPose || paused || steps > 0 || recording || budget ||
-             show || resume || bake || quit;
+             show || resume || bake || exportRange || keepA || showA || quit;
     }
   };
   struct Slot {
@@ -246,6 +263,9 @@ class SimThread {
   bool recording_ = true;
   long shown_ = -1;
   long bakeLeft_ = 0, bakeTotal_ = 0;
+  std::unique_ptr<Recorder> a_;  // the kept recording (A/B)
+  std::shared_ptr<const Config> aConfig_;
+  bool showingA_ = false;
   // Real-time pacing: the wall time and sim time the clock last started from.
   std::chrono::steady_clock::time_point anchorWall_;
   double anchorSim_ = 0.0;

@@ -199,7 +199,11 @@ void Viewer::handle(const SimEvent& e) {
       log(MessageLevel::Info, e.text + "; paused (Space goes on)");
       break;
     case SimEvent::Kind::ResumeFailed:
+    case SimEvent::Kind::ExportFailed:
       log(MessageLevel::Error, e.text);
+      break;
+    case SimEvent::Kind::Exported:
+      log(MessageLevel::Info, e.text);
       break;
     case SimEvent::Kind::Nan:
       if (e.ticket >= resetTicket_) {
@@ -463,6 +467,39 @@ void Viewer::setRecording(bool on) {
 
 void Viewer::setCacheBudget(size_t bytes) {
   sim_->setCacheBudget(bytes);
+}
+
+void Viewer::exportRecorded(const std::string& dir, long first, long last) {
+  sim_->exportRecorded(dir, first, last);
+}
+
+void Viewer::keepAsA() {
+  sim_->keepAsA();
+}
+
+void Viewer::rerunFromA() {
+  const SimFrame::Timeline& t = frame_->timeline;
+  if (t.aFirst < 0) return;
+  playing_ = false;
+  paused_ = false;
+  sim_->showA(false);
+  sim_->resume(t.aFirst);
+  sim_->bake(std::max(1L, t.aLast - t.aFirst));
+}
+
+void Viewer::showA(bool on) {
+  sim_->showA(on);
+}
+
+std::vector<std::string_view> Viewer::keysChangedSinceA() const {
+  std::vector<std::string_view> keys;
+  const std::shared_ptr<const Config>& a = frame_->timeline.aConfig;
+  if (!a) return keys;
+  Preset then = current_;
+  then.scene = *a;
+  for (const PresetParam& p : params())
+    if (p.group != "Camera" && !sameValue(p, then, current_)) keys.push_back(p.key);
+  return keys;
 }
 
 void Viewer::stepOnce() {

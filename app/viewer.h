@@ -126,6 +126,15 @@ class Viewer {
   void bake(double seconds);
   void setRecording(bool on);
   void setCacheBudget(size_t bytes);
+  // Writes the recorded frames first..last as DIR/frame_00001.hair, ... (cyHair).
+  void exportRecorded(const std::string& dir, long first, long last);
+  // A/B: keep the recording as A; simulate its span again from its first frame with the
+  // parameters as they are now (B: the same head motion and wind, which follow the clock);
+  // show A's frame instead of B's at the frame on show; the parameters B differs in.
+  void keepAsA();
+  void rerunFromA();
+  void showA(bool on);
+  std::vector<std::string_view> keysChangedSinceA() const;
   void resetView();  // the preset's camera
   void frameHead();
   void resetHead();  // undo the mouse's head pose

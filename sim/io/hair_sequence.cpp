@@ -8,14 +8,40 @@
 
 namespace csm::io {
 
-Groom posedGroom(const Groom& groom, const std::vector<glm::vec4>& positions) {
+namespace {
+
+template <class Vec>
+Groom posed(const Groom& groom, const std::vector<Vec>& positions) {
   Groom out;
   out.first = groom.first;
   out.points.reserve(positions.size());
-  for (const glm::vec4& p : positions) out.points.emplace_back(p);
+  for (const Vec& p : positions) out.points.emplace_back(p);
   out.color = groom.color;
   out.thickness = groom.thickness;
   return out;
+}
+
+template <class Vec>
+bool writeFrame(const std::string& dir, long n, const Groom& groom,
+                const std::vector<Vec>& positions, std::string* error) {
+  if (positions.size() != groom.pointCount()) {
+    if (error)
+      *error = "frame " + std::to_string(n) + " has " + std::to_string(positions.size()) +
+               " points, the groom " + std::to_string(groom.pointCount());
+    return false;
+  }
+  const std::string path = (std::filesystem::path(dir) / sequenceFrameName(n)).string();
+  return writeCyHair(path, posed(groom, positions), error);
+}
+
+}  // namespace
+
+Groom posedGroom(const Groom& groom, const std::vector<glm::vec4>& positions) {
+  return posed(groom, positions);
+}
+
+Groom posedGroom(const Groom& groom, const std::vector<glm::vec3>& positions) {
+  return posed(groom, positions);
 }
 
 std::string sequenceFrameName(long n) {
@@ -38,14 +64,12 @@ bool prepareSequenceDir(const std::string& dir, std::string* error) {
 
 bool writeSequenceFrame(const std::string& dir, long n, const Groom& groom,
                         const std::vector<glm::vec4>& positions, std::string* error) {
-  if (positions.size() != groom.pointCount()) {
-    if (error)
-      *error = "frame " + std::to_string(n) + " has " + std::to_string(positions.size()) +
-               " points, the groom " + std::to_string(groom.pointCount());
-    return false;
-  }
-  const std::string path = (std::filesystem::path(dir) / sequenceFrameName(n)).string();
-  return writeCyHair(path, posedGroom(groom, positions), error);
+  return writeFrame(dir, n, groom, positions, error);
+}
+
+bool writeSequenceFrame(const std::string& dir, long n, const Groom& groom,
+                        const std::vector<glm::vec3>& positions, std::string* error) {
+  return writeFrame(dir, n, groom, positions, error);
 }
 
 }  // namespace csm::io

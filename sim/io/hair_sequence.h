@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "sim/groom.h"
@@ -15,6 +16,7 @@ namespace csm::io {
 // `groom` with its points moved to `positions` (a solver's read-back, one per point, in the
 // groom's order); its strands, colours and thickness kept.
 Groom posedGroom(const Groom& groom, const std::vector<glm::vec4>& positions);
+Groom posedGroom(const Groom& groom, const std::vector<glm::vec3>& positions);
 
 // "frame_00001.hair" for n = 1.
 std::string sequenceFrameName(long n);
@@ -25,5 +27,7 @@ bool prepareSequenceDir(const std::string& dir, std::string* error);
 // Writes frame n of a sequence: dir/sequenceFrameName(n), whole or not at all (writeCyHair).
 bool writeSequenceFrame(const std::string& dir, long n, const Groom& groom,
                         const std::vector<glm::vec4>& positions, std::string* error);
+bool writeSequenceFrame(const std::string& dir, long n, const Groom& groom,
+                        const std::vector<glm::vec3>& positions, std::string* error);
 
 }  // namespace csm::io
