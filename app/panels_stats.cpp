@@ -76,7 +76,8 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
               viewer.loading()  ? "  (loading)"
               : viewer.paused() ? "  (paused)"
                                 : "");
-  ImGui::Text("timeline: %.1f of %.0f MB, %ld frames%s", double(f.timeline.bytes) / (1 << 20),
+  ImGui::Text("timeline: %.1f of %.0f MB, %ld frames%s",
+              double(f.timeline.bytes + f.timeline.aBytes) / (1 << 20),
               double(f.timeline.budget) / (1 << 20),
               f.timeline.first >= 0 ? f.timeline.last - f.timeline.first + 1 : 0L,
               f.timeline.shown >= 0 ? ", one shown" : "");

@@ -99,7 +99,7 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state) {
   if (ImGui::SliderInt("cache MB", &state.cacheMb, 16, 8192, "%d MB", ImGuiSliderFlags_Logarithmic))
     viewer.setCacheBudget(size_t(state.cacheMb) << 20);
   ImGui::SameLine();
-  ImGui::Text("%.1f of %.0f MB, %ld frames (%zu keyframes)", double(t.bytes) / (1 << 20),
+  ImGui::Text("%.1f of %.0f MB, %ld frames (%zu keyframes)", double(t.bytes + t.aBytes) / (1 << 20),
               double(t.budget) / (1 << 20), recorded ? t.last - t.first + 1 : 0L, t.keyframes);
   // Out: the recorded range as cyHair files.
   ImGui::BeginDisabled(!recorded);

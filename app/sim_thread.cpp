@@ -180,7 +180,7 @@ void SimThread::apply(Pending& p, long ticket) {
 
 bool SimThread::applyTimeline(const Pending& p, long ticket) {
   if (p.recording) recording_ = *p.recording;
-  if (p.budget) timeline_.setBudget(*p.budget);
+  if (p.budget) budget_ = *p.budget;
   if (p.show) {
     const bool recorded = timeline_.at(*p.show) || (a_ && a_->at(*p.show));
     shown_ = *p.show >= 0 && recorded ? *p.show : -1;
@@ -208,6 +208,12 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
   if (p.keepA && loaded_) {
     a_ = std::make_unique<Recorder>(timeline_);
     aConfig_ = std::make_shared<const Config>(sim_->config());
+  }
+  // One budget for both: the recording gets what A leaves (A shares the keyframes' saved states
+  // with it, but is counted whole).
+  if (p.budget || p.keepA) {
+    const size_t a = a_ ? a_->bytes() : 0;
+    timeline_.setBudget(budget_ > a ? budget_ - a : 0);
   }
   if (p.showA) showingA_ = *p.showA && a_ != nullptr;
   if (p.exportRange && loaded_) {
@@ -332,7 +338,7 @@ void SimThread::publish(long ticket) {
     t.last = timeline_.lastFrame();
     t.live = sim_->frame();
     t.bytes = timeline_.bytes();
-    t.budget = timeline_.options().budgetBytes;
+    t.budget = budget_;
     t.keyframes = timeline_.keyframeCount();
     t.bakeLeft = bakeLeft_;
     t.bakeTotal = bakeTotal_;

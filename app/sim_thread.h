@@ -80,12 +80,12 @@ struct SimFrame {
   // of the live one (then `frame`, `time`, `head` and the positions are that frame's).
   struct Timeline {
     bool recording = true;
-    long first = -1, last = -1;  // the recorded frames
-    long shown = -1;             // -1: the live frame
-    long live = 0;               // the simulation's own frame
-    size_t bytes = 0, budget = 0, keyframes = 0;
-    long bakeLeft = 0, bakeTotal = 0;  // a bake's frames still to run, of how many
-    long refused = 0;                  // frames too big for the budget alone
+    long first = -1, last = -1;                   // the recorded frames
+    long shown = -1;                              // -1: the live frame
+    long live = 0;                                // the simulation's own frame
+    size_t bytes = 0, budget = 0, keyframes = 0;  // the budget holds `bytes` and `aBytes`
+    long bakeLeft = 0, bakeTotal = 0;             // a bake's frames still to run, of how many
+    long refused = 0;                             // frames too big for the budget alone
     // A kept recording to compare with (A/B): its frames, its memory, its parameters, and
     // whether the frame on show is A's (the same frame number) instead of the recording's.
     long aFirst = -1, aLast = -1;
@@ -263,7 +263,8 @@ class SimThread {
   bool recording_ = true;
   long shown_ = -1;
   long bakeLeft_ = 0, bakeTotal_ = 0;
-  std::unique_ptr<Recorder> a_;  // the kept recording (A/B)
+  size_t budget_ = RecorderOptions{}.budgetBytes;  // the timeline's, A's included
+  std::unique_ptr<Recorder> a_;                    // the kept recording (A/B)
   std::shared_ptr<const Config> aConfig_;
   bool showingA_ = false;
   // Real-time pacing: the wall time and sim time the clock last started from.

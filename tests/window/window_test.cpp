@@ -783,6 +783,10 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   REQUIRE(v->sync());
   CHECK(v->simFrame().timeline.aFirst == 0);
   CHECK(v->simFrame().timeline.aLast == 30);
+  // A counts against the one budget: the recording and A within it.
+  CHECK(v->simFrame().timeline.aBytes > 0);
+  CHECK(v->simFrame().timeline.bytes + v->simFrame().timeline.aBytes <=
+        v->simFrame().timeline.budget);
   v->showRecorded(30);
   REQUIRE(v->sync());
   const Image a30 = screenshot(*v, dir / "a30.png");
@@ -794,6 +798,8 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   REQUIRE(v->waitForSimFrame(30));
   REQUIRE(v->sync());
   CHECK(v->simFrame().timeline.last == 30);
+  CHECK(v->simFrame().timeline.bytes + v->simFrame().timeline.aBytes <=
+        v->simFrame().timeline.budget);
   v->showRecorded(30);
   REQUIRE(v->sync());
   CHECK_FALSE(v->simFrame().timeline.showingA);
