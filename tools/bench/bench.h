@@ -94,6 +94,7 @@ void runRegionSums(const Options& o);
 void runScaling(const Options& o);
 void runSceneChoices(const Options& o);
 void runWindow(const Options& o);
+void runRecording(const Options& o);
 // The torture map and the soak (tools/bench/torture.cpp, sim/torture.h).
 void runTortureMap(const Options& o);
 void runSoakSection(const Options& o);

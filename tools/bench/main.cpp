@@ -27,7 +27,7 @@ using namespace csm;
 using namespace csm::bench;
 
 const char* kSections[] = {"methods",       "stability", "resolution", "region_sums", "scaling",
-                           "scene_choices", "window",    "torture",    "soak"};
+                           "scene_choices", "window",    "recording",  "torture",     "soak"};
 
 void usage(FILE* f) {
   std::fprintf(f,
@@ -39,6 +39,7 @@ void usage(FILE* f) {
                "  --out DIR        where CSV and charts go (default: docs/charts of the source)\n"
                "  --only SECTION   run only this section (repeatable): methods, stability,\n"
                "                   resolution, region_sums, scaling, scene_choices, window,\n"
+               "                   recording,\n"
                "                   torture, soak (these two run only when named)\n"
                "  --threads N      workers for accuracy runs (default 2; timings run alone)\n"
                "  --no-charts      write CSV only; do not run scripts/charts.py\n"
@@ -166,6 +167,7 @@ int main(int argc, char** argv) {
   section("scaling", runScaling);
   section("scene_choices", runSceneChoices);
   section("window", runWindow);
+  section("recording", runRecording);
   // Reliability, not speed (docs/RELIABILITY.md): only when asked for by name.
   auto named = [&](const char* name) {
     return std::find(o.only.begin(), o.only.end(), name) != o.only.end();
