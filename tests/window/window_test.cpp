@@ -56,13 +56,15 @@ void removeTemp(const fs::path& dir) {
   if (!keep || !*keep) fs::remove_all(dir);
 }
 
-std::unique_ptr<Viewer> makeViewer(SolverFactory factory = {}) {
+// frameLimit: the simulation stops at that frame (and again after a resume before it).
+std::unique_ptr<Viewer> makeViewer(SolverFactory factory = {}, long frameLimit = -1) {
   ViewerOptions o;
   o.width = 1280;
   o.height = 720;
   o.vsync = false;
   o.quiet = true;
   o.paced = false;  // as fast as it goes
+  o.frameLimit = frameLimit;
   o.makeSolver = std::move(factory);
   std::string error;
   std::unique_ptr<Viewer> v = Viewer::create(o, &error);
@@ -671,15 +673,8 @@ double sceneDifference(const Image& a, const Image& b) {
 TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels show the frame",
           "[window][timeline]") {
   const fs::path dir = tempDir();
-  ViewerOptions o;
-  o.vsync = false;
-  o.quiet = true;
-  o.paced = false;
-  o.frameLimit = 40;  // the simulation stops at frame 40, and again after a resume
+  std::unique_ptr<Viewer> v = makeViewer({}, 40);
   std::string error;
-  std::unique_ptr<Viewer> v = Viewer::create(o, &error);
-  INFO(error);
-  REQUIRE(v);
   Preset c = defaultPreset();
   c.scene.hairstyle.strands = 400;
   c.scene.head.amplitude = 30.0f;  // a nod that moves the hair between frames
@@ -765,15 +760,8 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
 TEST_CASE("window: A/B shows two settings over the same frames; the recording exports as .hair",
           "[window][timeline]") {
   const fs::path dir = tempDir();
-  ViewerOptions o;
-  o.vsync = false;
-  o.quiet = true;
-  o.paced = false;
-  o.frameLimit = 30;
+  std::unique_ptr<Viewer> v = makeViewer({}, 30);
   std::string error;
-  std::unique_ptr<Viewer> v = Viewer::create(o, &error);
-  INFO(error);
-  REQUIRE(v);
   Preset c = defaultPreset();
   c.scene.hairstyle.strands = 400;
   REQUIRE(v->open(c, "", "", &error));
