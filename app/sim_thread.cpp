@@ -208,6 +208,7 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
   if (p.keepA && loaded_) {
     a_ = std::make_unique<Recorder>(timeline_);
     aConfig_ = std::make_shared<const Config>(sim_->config());
+    aGeneration_ = sim_->generation();
   }
   // One budget for both: the recording gets what A leaves (A shares the keyframes' saved states
   // with it, but is counted whole).
@@ -347,6 +348,7 @@ void SimThread::publish(long ticket) {
     t.aLast = a_ ? a_->lastFrame() : -1;
     t.aBytes = a_ ? a_->bytes() : 0;
     t.aConfig = aConfig_;
+    t.aGeneration = aGeneration_;
     const Recorder::Shown* shown = nullptr;
     if (shown_ >= 0 && showingA_ && a_ && a_->at(shown_)) {
       shown = a_->at(shown_);

@@ -89,6 +89,7 @@ struct SimFrame {
     // A kept recording to compare with (A/B): its frames, its memory, its parameters, and
     // whether the frame on show is A's (the same frame number) instead of the recording's.
     long aFirst = -1, aLast = -1;
+    long aGeneration = -1;  // the groom A was recorded on (SimFrame::generation)
     size_t aBytes = 0;
     bool showingA = false;
     std::shared_ptr<const Config> aConfig;
@@ -266,6 +267,7 @@ class SimThread {
   size_t budget_ = RecorderOptions{}.budgetBytes;  // the timeline's, A's included
   std::unique_ptr<Recorder> a_;                    // the kept recording (A/B)
   std::shared_ptr<const Config> aConfig_;
+  long aGeneration_ = -1;
   bool showingA_ = false;
   // Real-time pacing: the wall time and sim time the clock last started from.
   std::chrono::steady_clock::time_point anchorWall_;

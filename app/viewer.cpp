@@ -480,6 +480,12 @@ void Viewer::keepAsA() {
 void Viewer::rerunFromA() {
   const SimFrame::Timeline& t = frame_->timeline;
   if (t.aFirst < 0) return;
+  if (t.aGeneration != frame_->generation) {
+    log(MessageLevel::Error,
+        "cannot run B: A was recorded on another groom (the hair was regrown since); keep a "
+        "new A");
+    return;
+  }
   playing_ = false;
   paused_ = false;
   sim_->showA(false);

@@ -834,5 +834,11 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   for (const ViewerMessage& m : v->messages())
     said |= m.text == "wrote frames 0-30 as 31 cyHair files into " + seq.string();
   CHECK(said);
+
+  // A regrown groom: A cannot be run again on it, and the viewer says so.
+  REQUIRE(v->setParam("hairstyle.strands", "300", &error));
+  REQUIRE(v->sync());
+  v->rerunFromA();
+  CHECK(v->messages().back().text.rfind("cannot run B: A was recorded on another groom", 0) == 0);
   removeTemp(dir);
 }
