@@ -67,8 +67,10 @@ def num(row, key):
         return math.nan
 
 
-def save(fig, out, name):
-    fig.tight_layout()
+def save(fig, out, name, rect=None):
+    """Lays out (within `rect` of the figure, when given: room for a legend or title) and
+    writes out/name.png and out/name.svg."""
+    fig.tight_layout(rect=rect)
     for ext in ("png", "svg"):
         path = os.path.join(out, f"{name}.{ext}")
         fig.savefig(path, metadata={"Date": None} if ext == "svg" else None)
@@ -203,12 +205,7 @@ def stability_chart(rows, out):
     fig.legend(handles, CAT_LABELS, loc="lower center", ncol=5, fontsize=7, frameon=False)
     fig.suptitle("Stability: four 25 cm strands released horizontally, 2 s; cell text = largest "
                  "stretch (or energy gain)", fontsize=9)
-    fig.tight_layout(rect=(0, 0.05, 1, 0.96))
-    for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out, f"stability.{ext}"),
-                    metadata={"Date": None} if ext == "svg" else None)
-    plt.close(fig)
-    print("charts.py: stability.png, stability.svg")
+    save(fig, out, "stability", rect=(0, 0.05, 1, 0.96))
 
 
 # ---- the rest ----------------------------------------------------------------------------------
@@ -479,12 +476,7 @@ def torture_chart(rows, out):
     fig.suptitle(f"Torture map: the default preset, {strands} strands, one factor at a time; "
                  "text: S = largest stretch, H = deepest inside the head, V = peak speed / "
                  "bound (m/s); a passing cell shows its peak speed", fontsize=8)
-    fig.tight_layout(rect=(0, 0.03, 1, 0.97))
-    for ext in ("png", "svg"):
-        fig.savefig(os.path.join(out, f"torture.{ext}"),
-                    metadata={"Date": None} if ext == "svg" else None)
-    plt.close(fig)
-    print("charts.py: torture.png, torture.svg")
+    save(fig, out, "torture", rect=(0, 0.03, 1, 0.97))
 
 
 def soak_chart(rows, out):
