@@ -168,14 +168,18 @@ Scene mainScene(const Options& o) {
   return s;
 }
 
-Scene presetScene(const Options& o, const std::string& preset, int strands) {
-  Scene s;
+Config presetConfig(const Options& o, const std::string& preset, int strands) {
   PresetErrors errors;
   Preset p = defaultPreset();
   if (!loadPreset(o.source + "/presets/" + preset + ".json", p, errors))
     std::fprintf(stderr, "csmhair-bench: %s\n", errors.text().c_str());
-  s.config = p.scene;
-  s.config.hairstyle.strands = strands;
+  p.scene.hairstyle.strands = strands;
+  return p.scene;
+}
+
+Scene presetScene(const Options& o, const std::string& preset, int strands) {
+  Scene s;
+  s.config = presetConfig(o, preset, strands);
   s.groom = growHairstyle(s.config);
   return s;
 }

@@ -57,6 +57,8 @@ std::vector<Setting> methodSettings(const Options& o);
 Scene mainScene(const Options& o);
 // The default preset with a given strand count (the "model no more than a scene needs" study).
 Scene presetScene(const Options& o, const std::string& preset, int strands);
+// The same scene's config alone, the groom not grown.
+Config presetConfig(const Options& o, const std::string& preset, int strands);
 
 // A cantilever strand (cantileverScene) run with a setting: the tip's path, frame by frame,
 // and its sag at the end. window < 0 keeps the setting's window; damping < 0 keeps the
@@ -98,7 +100,5 @@ void runRecording(const Options& o);
 // The torture map and the soak (tools/bench/torture.cpp, sim/torture.h).
 void runTortureMap(const Options& o);
 void runSoakSection(const Options& o);
-// The default preset with `strands` strands: the torture map's base scene.
-Config tortureBase(const Options& o, int strands);
 
 }  // namespace csm::bench

@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <memory>
 
-#include "app/preset.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/gpu/make_solver.h"
 #include "sim/recorder.h"
@@ -34,18 +33,13 @@ void runRecording(const Options& o) {
   const int frames = o.quick ? 31 : 61;  // keyframes at 0, 30, 60
   for (const std::string& name : solvers)
     for (int strands : counts) {
-      PresetErrors errors;
-      Preset p = defaultPreset();
-      if (!loadPreset(o.source + "/presets/default.json", p, errors))
-        std::fprintf(stderr, "csmhair-bench: %s\n", errors.text().c_str());
-      p.scene.hairstyle.strands = strands;
       std::unique_ptr<Solver> solver = name == "gpu"
                                            ? makeSolver("gpu", nullptr)
                                            : std::unique_ptr<Solver>(std::make_unique<CpuSolver>());
       if (!solver) continue;
       Simulation sim(std::move(solver));
       std::string error;
-      if (!sim.load(p.scene, o.source + "/presets", &error)) {
+      if (!sim.load(presetConfig(o, "default", strands), o.source + "/presets", &error)) {
         std::fprintf(stderr, "recording: %s\n", error.c_str());
         continue;
       }

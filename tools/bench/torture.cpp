@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "app/preset.h"
 #include "sim/cpu/cpu_solver.h"
 #include "sim/gpu/make_solver.h"
 #include "sim/hairstyle.h"
@@ -12,15 +11,6 @@
 #include "tools/bench/csv.h"
 
 namespace csm::bench {
-
-Config tortureBase(const Options& o, int strands) {
-  PresetErrors errors;
-  Preset p = defaultPreset();
-  if (!loadPreset(o.source + "/presets/default.json", p, errors))
-    std::fprintf(stderr, "csmhair-bench: %s\n", errors.text().c_str());
-  p.scene.hairstyle.strands = strands;
-  return p.scene;
-}
 
 namespace {
 
@@ -34,7 +24,7 @@ SolverFactory factory(const std::string& solver) {
 void runTortureMap(const Options& o) {
   const int strands = o.quick ? 60 : 150;
   const double duration = o.quick ? 1.0 : 2.0;
-  const Config base = tortureBase(o, strands);
+  const Config base = presetConfig(o, "default", strands);
   const TortureCriteria criteria;
   struct Run {
     std::string solver;
@@ -120,7 +110,7 @@ void runSoakSection(const Options& o) {
     plans.push_back({"gpu", s});
   }
   const int strands = 64;
-  const Config scene = soakScene(tortureBase(o, strands), strands);
+  const Config scene = soakScene(presetConfig(o, "default", strands), strands);
   Csv samples({"solver", "frame", "rss_kb"});
   Csv summary({"solver",
                "mode",
