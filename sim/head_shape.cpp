@@ -444,9 +444,11 @@ bool PosedField::contains(const glm::dvec3& world) const {
   return grid && grid->sample(glm::inverse(pose.rotation) * (world - pose.translation)) < 0.0;
 }
 
-bool pushOutOfField(const DistanceGrid& g, glm::dvec3& p, double radius, glm::dvec3* normal) {
+bool pushOutOfField(const DistanceGrid& g, glm::dvec3& p, double radius, glm::dvec3* normal,
+                    double* distance) {
   glm::dvec3 grad;
   double d = g.sample(p, &grad);
+  if (distance) *distance = d;
   if (!(d < radius)) return false;  // outside, or not finite
   // The field is close to a distance, not exactly one (smooth unions, interpolation): a
   // second step takes what the first left.
@@ -457,6 +459,7 @@ bool pushOutOfField(const DistanceGrid& g, glm::dvec3& p, double radius, glm::dv
     if (normal) *normal = n;
     d = g.sample(p, &grad);
   }
+  if (distance) *distance = d;
   return true;
 }
 

@@ -88,9 +88,10 @@ struct PosedField {
 };
 
 // Moves p (head frame) out of the field's surface inflated by `radius`; true when it moved.
-// `normal` gets the outward direction there.
+// `normal` gets the outward direction there, `distance` the field's distance where p is left
+// (its last read).
 bool pushOutOfField(const DistanceGrid& g, glm::dvec3& p, double radius,
-                    glm::dvec3* normal = nullptr);
+                    glm::dvec3* normal = nullptr, double* distance = nullptr);
 
 // Projects p onto the zero level of the field along its gradient (a few Newton steps).
 glm::dvec3 projectToSurface(const DistanceGrid& g, glm::dvec3 p);

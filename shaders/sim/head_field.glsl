@@ -41,11 +41,15 @@ vec3 toHeadFrame(mat4 head, vec3 x) {
 // second step takes what the first left: the field is close to a distance, not exactly one).
 // With a strain limit, keeps p within maxLength of prev: when the push is out of reach, the
 // nearest point of the circle where the tangent plane there meets the ball of reach.
+// `clearance` gets the field's distance at the point it leaves p at, where it read it (p
+// untouched, or the projection), else kUnknownClearance (the circle's point).
+const float kUnknownClearance = -1e30;
 bool pushOutOfHeadField(inout vec3 p, vec3 prev, mat4 head, float radius, float maxLength,
-                        out vec3 normal) {
+                        out vec3 normal, out float clearance) {
   normal = vec3(0.0, 1.0, 0.0);
   vec3 local = toHeadFrame(head, p);
   vec4 s = headFieldSample(local);
+  clearance = s.w;
   if (s.w >= radius) return false;
   vec3 n = vec3(0.0, 1.0, 0.0);
   for (int step = 0; step < 2 && s.w < radius; ++step) {
@@ -57,6 +61,7 @@ bool pushOutOfHeadField(inout vec3 p, vec3 prev, mat4 head, float radius, float 
   vec3 target = mat3(head) * local + head[3].xyz;
   normal = mat3(head) * n;
   p = target;
+  clearance = s.w;
   if (maxLength <= 0.0 || length(target - prev) <= maxLength) return true;
   float above = dot(prev - target, normal);
   if (abs(above) >= maxLength) return true;  // no circle: keep the projection
@@ -65,5 +70,6 @@ bool pushOutOfHeadField(inout vec3 p, vec3 prev, mat4 head, float radius, float 
   float sideLen = length(side);
   if (sideLen < 1e-15) return true;
   p = centre + side * (sqrt(maxLength * maxLength - above * above) / sideLen);
+  clearance = kUnknownClearance;
   return true;
 }

@@ -65,12 +65,14 @@ float outsideHead(vec3 p, mat4 head, uint sphereBase) {
 }
 
 // One push of p out of the head inflated by r, within reach of prev where it can. `normal`
-// gets the field's outward normal (spheres: left as it is).
+// gets the field's outward normal (spheres: left as it is); `clearance` how far the point it
+// returns lies outside the head, where the push read it (else kUnknownClearance).
 bool pushHead(inout vec3 p, vec3 prev, mat4 head, uint sphereBase, float r, float maxLength,
-              inout vec3 normal) {
+              inout vec3 normal, out float clearance) {
+  clearance = kUnknownClearance;
   if (headIsField()) {
     vec3 n;
-    bool touching = pushOutOfHeadField(p, prev, head, r, maxLength, n);
+    bool touching = pushOutOfHeadField(p, prev, head, r, maxLength, n, clearance);
     if (touching) normal = n;
     return touching;
   }
@@ -97,19 +99,22 @@ bool pushHead(inout vec3 p, vec3 prev, mat4 head, uint sphereBase, float r, floa
 // HeadCollider::pushOut in sim/cpu/cpu_solver.cpp.
 bool pushOutOfHead(inout vec3 p, vec3 prev, mat4 head, uint sphereBase, float r, float maxLength,
                    inout vec3 normal) {
-  if (!pushHead(p, prev, head, sphereBase, r, maxLength, normal)) return false;
+  float clearance;
+  if (!pushHead(p, prev, head, sphereBase, r, maxLength, normal, clearance)) return false;
   if (maxLength <= 0.0) return true;
   float level = 1e30;  // min(0, how far prev lies outside), read once when needed
   for (int pass = 0;; ++pass) {
     float len = length(p - prev);
     bool reach = len <= maxLength * (1.0 + 1e-5);
-    float depth = outsideHead(p, head, sphereBase);
+    // The push's own last read where it has one (the field's projection): no second read.
+    float depth =
+        clearance != kUnknownClearance ? clearance : outsideHead(p, head, sphereBase);
     if (reach && depth >= 0.0) return true;
     if (level == 1e30) level = min(0.0, outsideHead(prev, head, sphereBase));
     if (reach && depth >= level) return true;
     if (!reach) p = prev + (p - prev) * (maxLength / len);
     if (pass == 2) break;
-    pushHead(p, prev, head, sphereBase, r, maxLength, normal);
+    pushHead(p, prev, head, sphereBase, r, maxLength, normal, clearance);
   }
   float lo = 0.0, hi = 1.0;
   for (int k = 0; k < 20; ++k) {

@@ -64,12 +64,14 @@ bool pushOutOfSphere(glm::dvec3& p, const glm::dvec3& prev, const glm::dvec3& c,
 // The same for the head's distance field (sim/head_shape.h), read in the head's frame: p
 // moves along the field's normal out of the surface inflated by `radius`, and when that is
 // out of reach of prev, onto the nearest point of the circle where the surface's tangent
-// plane there meets the ball of reach. `normal` gets the outward normal (world).
+// plane there meets the ball of reach. `normal` gets the outward normal (world); `clearance`
+// the field's distance where p is left, where the push read it (p untouched, or the
+// projection), else NaN (the circle's point).
 bool pushOutOfHeadField(const DistanceGrid& g, const Pose& head, glm::dvec3& p,
-                        const glm::dvec3& prev, double radius, double maxLength,
-                        glm::dvec3& normal) {
+                        const glm::dvec3& prev, double radius, double maxLength, glm::dvec3& normal,
+                        double& clearance) {
   glm::dvec3 local = glm::inverse(head.rotation) * (p - head.translation), n;
-  if (!pushOutOfField(g, local, radius, &n)) return false;
+  if (!pushOutOfField(g, local, radius, &n, &clearance)) return false;
   const glm::dvec3 target = head.apply(local);
   normal = head.rotation * n;
   p = target;
@@ -81,6 +83,7 @@ bool pushOutOfHeadField(const DistanceGrid& g, const Pose& head, glm::dvec3& p,
   const double sideLen = glm::length(side);
   if (sideLen < 1e-15) return true;
   p = centre + side * (std::sqrt(maxLength * maxLength - above * above) / sideLen);
+  clearance = NAN;
   return true;
 }
 
@@ -102,9 +105,13 @@ struct HeadCollider {
   }
 
   // One push of p out of the inflated surface, within reach of prev where it can (above).
-  // `normal` gets the field's outward normal (spheres: left as it is).
-  bool push(glm::dvec3& p, const glm::dvec3& prev, double maxLength, glm::dvec3& normal) const {
-    if (field) return pushOutOfHeadField(*field, head, p, prev, radius, maxLength, normal);
+  // `normal` gets the field's outward normal (spheres: left as it is); `clearance` how far the
+  // point it leaves lies outside the head, where the push read it, else NaN.
+  bool push(glm::dvec3& p, const glm::dvec3& prev, double maxLength, glm::dvec3& normal,
+            double& clearance) const {
+    clearance = NAN;
+    if (field)
+      return pushOutOfHeadField(*field, head, p, prev, radius, maxLength, normal, clearance);
     // Overlapping spheres can push a particle into each other: repeat until it is clear.
     bool touching = false;
     for (int pass = 0; pass < 4; ++pass) {
@@ -125,19 +132,21 @@ struct HeadCollider {
   // prev enters the head, found by bisection. "In the head": deeper than the surface and than
   // prev (a root on the scalp lies within the radius). Returns whether p touched the head.
   bool pushOut(glm::dvec3& p, const glm::dvec3& prev, double maxLength, glm::dvec3& normal) const {
-    if (!push(p, prev, maxLength, normal)) return false;
+    double clearance;
+    if (!push(p, prev, maxLength, normal, clearance)) return false;
     if (maxLength <= 0.0) return true;
     double level = NAN;  // min(0, how far prev lies outside), read once when needed
     for (int pass = 0;; ++pass) {
       const double length = glm::length(p - prev);
       const bool reach = length <= maxLength * (1.0 + 1e-6);
-      const double depth = outside(p);
+      // The push's own last read where it has one (the field's projection): no second read.
+      const double depth = std::isnan(clearance) ? outside(p) : clearance;
       if (reach && depth >= 0.0) return true;
       if (std::isnan(level)) level = std::min(0.0, outside(prev));
       if (reach && depth >= level) return true;
       if (!reach) p = prev + (p - prev) * (maxLength / length);
       if (pass == 2) break;
-      push(p, prev, maxLength, normal);
+      push(p, prev, maxLength, normal, clearance);
     }
     double lo = 0.0, hi = 1.0;
     for (int k = 0; k < 20; ++k) {
