@@ -3,7 +3,7 @@
 // Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
 // bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
 // (no pass here declares more) but only 8 binding points; every driver we run on has more
-// than the 28 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+// than the 29 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
@@ -70,6 +70,10 @@
       // flags << 28 (sim/contacts.h), y the contact distance (float bits)
 #define CSM_BIND_LAST_CANDIDATES \
   25  // the same, last frame's (the two buffers swap each frame)
+#define CSM_BIND_SEGMENT_ORDER \
+  30  // uint per particle: the segments of each run of CSM_PARTICLE_GROUP by
+      // candidate count, most first (segment_order.comp), for the list pass
+      // and the contact solve
 #define CSM_BIND_VOLUME_SUMS \
   28  // int x4 per node of the volume grid: strand length (2^-24 m), length
       // times velocity (2^-24 m^2/s), x y z (sim/volume.h)

@@ -29,6 +29,11 @@ layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) buffer CandidateRange {
   uvec2 candidateRange[];
 };
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
+// The segments by candidate count (segment_order.comp): invocation i takes segment
+// segmentOrder[i], so a SIMD group's lists are of like length.
+layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
+  uint segmentOrder[];
+};
 
 uint keyOf(uvec2 c) { return c.x & kIndex; }
 
@@ -53,8 +58,8 @@ void siftDown(uint base, uint root, uint end) {
 }
 
 void main() {
-  uint a = globalIndex();
-  if (a >= P.counts.x) return;
+  if (globalIndex() >= P.counts.x) return;
+  uint a = segmentOrder[globalIndex()];
   uint here = P.grid.w * P.counts.x + a, before = (1u - P.grid.w) * P.counts.x + a;
   uint base = segBase[a];
   uint n = 0u;

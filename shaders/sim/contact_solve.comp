@@ -21,6 +21,11 @@ layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) readonly buffer CandidateRang
   uvec2 candidateRange[];
 };
 layout(std430, binding = CSM_BIND_CORRECTION) writeonly buffer Correction { vec4 correction[]; };
+// The segments by candidate count (segment_order.comp): invocation i takes segment
+// segmentOrder[i], so a SIMD group's lists are of like length.
+layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
+  uint segmentOrder[];
+};
 
 uniform uint substep;
 
@@ -33,8 +38,8 @@ vec2 inverseMasses(uint i) {
 }
 
 void main() {
-  uint a = globalIndex();
-  if (a >= P.counts.x) return;
+  if (globalIndex() >= P.counts.x) return;
+  uint a = segmentOrder[globalIndex()];
   uint here = P.grid.w * P.counts.x + a;
   uvec2 range = candidateRange[here];
   uint n = range.y;

@@ -54,6 +54,7 @@ bool CollisionGrid::build(std::string* error) {
          passes_.scatter.build("sim/grid_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.dispatchSize.build("sim/dispatch_size.comp", 1, {}, error) &&
          passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, {}, error) &&
+         passes_.order.build("sim/segment_order.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.pairScatter.build("sim/pair_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.lists.build("sim/candidate_lists.comp", CSM_PARTICLE_GROUP, {}, error) &&
          passes_.solve.build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {}, error);
@@ -82,6 +83,12 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<uint32_t>(segmentPairs_, segmentScan_);
   zeroed<uint32_t>(segmentBase_, segmentScan_ + 4);
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
+  {
+    // In index order until the first search orders them.
+    std::vector<uint32_t> order(particles);
+    for (size_t i = 0; i < particles; ++i) order[i] = uint32_t(i);
+    fill(segmentOrder_, order);
+  }
   view(gridStartTex_, gridStart_, GL_R32UI);
   searchPending_ = false;
   entryCapacity_ = 0;  // reserveFor sizes the entry buffer and the pair list
@@ -149,6 +156,7 @@ void CollisionGrid::bind() const {
   dispatch_.bindBase(ssbo, CSM_BIND_DISPATCH);
   segmentPairs_.bindBase(ssbo, CSM_BIND_SEGMENT_PAIRS);
   segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
+  segmentOrder_.bindBase(ssbo, CSM_BIND_SEGMENT_ORDER);
   candidates_[half_].bindBase(ssbo, CSM_BIND_CANDIDATES);
   candidates_[half_ ^ 1u].bindBase(ssbo, CSM_BIND_LAST_CANDIDATES);
   candidateRange_.bindBase(ssbo, CSM_BIND_CANDIDATE_RANGE);
@@ -183,6 +191,9 @@ void CollisionGrid::findCandidates(StageTimer* timer) {
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
+  // The segments by candidate count, for the list pass and the substeps' contact solves.
+  passes_.order.run(particles);
+  gl::memoryBarrier(kPassBarrier);
   dispatchFor(CSM_COUNTER_PAIR_LIST, pairListCapacity_, CSM_PARTICLE_GROUP,
               CSM_DISPATCH_PAIR_SCATTER);
   passes_.pairScatter.runIndirect(dispatch_, CSM_DISPATCH_PAIR_SCATTER);
@@ -311,6 +322,10 @@ std::vector<std::vector<std::pair<uint32_t, float>>> CollisionGrid::readCandidat
       out[i].emplace_back(c.x & ((1u << CSM_CANDIDATE_SHIFT) - 1u), std::bit_cast<float>(c.y));
     }
   return out;
+}
+
+std::vector<uint32_t> CollisionGrid::readSegmentOrder() const {
+  return segmentOrder_.download<uint32_t>(particles_);
 }
 
 ContactStats contactStatsOf(const uint32_t* c) {

@@ -86,6 +86,9 @@ class CollisionGrid {
   // This frame's candidates of each segment (other segment, contact distance), as
   // findCandidates lists them.
   std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates() const;
+  // Which segment each invocation of the list pass and the contact solve takes: the segments
+  // of each run of CSM_PARTICLE_GROUP by candidate count, most first, ties by index.
+  std::vector<uint32_t> readSegmentOrder() const;
 
  private:
   void growEntries(uint64_t needed);
@@ -120,14 +123,14 @@ class CollisionGrid {
   bool searchPending_ = false;     // searchCounters_ holds a search's, not yet read
 
   struct Passes {
-    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates,
+    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates, order,
         pairScatter, lists, solve;
   } passes_;
   gl::Buffer correction_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
       scanBlockSums_{gl::NoCreate}, entries_{gl::NoCreate}, counters_{gl::NoCreate},
       segmentPairs_{gl::NoCreate}, segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate},
       pairList_{gl::NoCreate}, pairSides_{gl::NoCreate}, candidateRange_{gl::NoCreate},
-      dispatch_{gl::NoCreate}, searchCounters_{gl::NoCreate};
+      dispatch_{gl::NoCreate}, searchCounters_{gl::NoCreate}, segmentOrder_{gl::NoCreate};
   gl::Fence searchEnd_;  // after the copy to searchCounters_
   gl::Buffer candidates_[2] = {gl::Buffer(gl::NoCreate), gl::Buffer(gl::NoCreate)};
   gl::BufferTexture entryTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};

@@ -84,6 +84,8 @@ class GpuSolver final : public Solver {
   std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates() {
     return grid_.readCandidates();
   }
+  // The order the list pass and the contact solve take the segments in (segment_order.comp).
+  std::vector<uint32_t> readSegmentOrder() const { return grid_.readSegmentOrder(); }
   // The grid of the last candidate pass (reads back): entries it needed, entries the buffers
   // hold (over it, the frame had no strand contacts), segments in no cell (not finite, or a
   // box over the cell cap), and the cell edge in metres.

@@ -13,6 +13,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "shaders/sim/bindings.glsl"
 #include "sim/collision.h"
 #include "sim/gpu/gpu_solver.h"
 #include "sim/hairstyle.h"
@@ -173,6 +174,50 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
       if (r > 0.005) CHECK(most > 64);
     }
   }
+}
+
+TEST_CASE("GPU lists: each run of segments is taken longest list first", "[gpu][collision]") {
+  // The list pass and the contact solve take the segments of each run of CSM_PARTICLE_GROUP
+  // by candidate count, most first, ties by index (segment_order.comp): within a run a
+  // permutation, counts non-increasing. Run on a tangle whose lists range from none to
+  // dozens, so that an order left by index would fail.
+  auto gpu = test::gpuSolver();
+  const Groom g = tangle(400, 0.012, 11);
+  Config c;
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.radius = 0.002f;
+  gpu->reset(g, c, Pose{});
+  gpu->detectContacts();
+  const auto lists = gpu->readCandidates();
+  const std::vector<uint32_t> order = gpu->readSegmentOrder();
+  REQUIRE(order.size() == g.pointCount());
+  const size_t run = CSM_PARTICLE_GROUP;
+  size_t outOfRun = 0, repeated = 0, misordered = 0, reordered = 0;
+  for (size_t first = 0; first < order.size(); first += run) {
+    const size_t end = std::min(order.size(), first + run);
+    std::vector<bool> seen(end - first, false);
+    for (size_t i = first; i < end; ++i) {
+      const uint32_t a = order[i];
+      if (a < first || a >= end) {
+        ++outOfRun;
+        continue;
+      }
+      if (seen[a - first]) ++repeated;
+      seen[a - first] = true;
+      reordered += a != i;
+      if (i > first && order[i - 1] >= first && order[i - 1] < end) {
+        const uint32_t b = order[i - 1];
+        const size_t nb = lists[b].size(), na = lists[a].size();
+        if (nb < na || (nb == na && b > a)) ++misordered;
+      }
+    }
+  }
+  INFO("out of their run " << outOfRun << ", repeated " << repeated << ", misordered " << misordered
+                           << ", moved " << reordered);
+  CHECK(outOfRun == 0);
+  CHECK(repeated == 0);
+  CHECK(misordered == 0);
+  CHECK(reordered > order.size() / 2);
 }
 
 TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu][collision]") {
