@@ -35,6 +35,10 @@ glm::dvec3 VolumeGrid::toHead(const glm::dvec3& x) const {
   return glm::conjugate(head_.rotation) * (x - head_.translation);
 }
 
+void VolumeGrid::release() {
+  *this = VolumeGrid();
+}
+
 void VolumeGrid::reset(std::span<const glm::dvec3> rest, std::span<const uint32_t> first,
                        double cell, double radius) {
   length_.assign(rest.size(), 0.0);

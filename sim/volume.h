@@ -31,9 +31,11 @@ struct VolumeSettings {
   double stiffness = 2.0;  // m^2/s^2: acceleration per unit gradient (1/m) of excess fraction
 };
 
-// Whether a change of settings needs a new grid (VolumeGrid::reset).
+// Whether a change of settings needs the grid built anew (VolumeGrid::reset) or let go
+// (VolumeGrid::release): only the volume modes keep one.
 inline bool volumeGridChanged(const CollisionConfig& a, const CollisionConfig& b) {
-  return a.volumeCell != b.volumeCell || a.radius != b.radius;
+  if (volumeForces(a.mode) != volumeForces(b.mode)) return true;
+  return volumeForces(b.mode) && (a.volumeCell != b.volumeCell || a.radius != b.radius);
 }
 
 class VolumeGrid {
@@ -42,6 +44,8 @@ class VolumeGrid {
   // longest strand and a cell. `rest` in the head frame, strands [first[s], first[s+1]).
   void reset(std::span<const glm::dvec3> rest, std::span<const uint32_t> first, double cell,
              double radius);
+  // Lets the grid and its sums go (a mode without the volume keeps none): empty after.
+  void release();
   bool empty() const { return nodes() == 0; }
   size_t nodes() const { return size_t(dims_.x) * dims_.y * dims_.z; }
   glm::ivec3 dims() const { return dims_; }

@@ -311,6 +311,10 @@ VolumeSettings CpuSolver::volumeSettings() const {
 }
 
 void CpuSolver::resetVolume() {
+  if (!volumeForces(config_.collision.mode)) {
+    volume_.release();
+    return;
+  }
   volume_.reset(rest_, first_, config_.collision.volumeCell, config_.collision.radius);
 }
 

@@ -71,6 +71,8 @@ class CpuSolver final : public Solver {
   void dropSamples() override { samples_.clear(); }
   std::vector<StageTime> stageTimes() override { return stages_; }
   ContactStats contactStats() override { return contacts_; }
+  // Nodes of the volume mode's grid: none unless collision.mode is a volume mode (tests).
+  size_t volumeNodes() const { return volume_.nodes(); }
   void setContactMeasures(bool always) override { measureContacts_ = always; }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 

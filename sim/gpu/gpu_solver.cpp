@@ -123,9 +123,14 @@ void GpuSolver::uploadHeadField() {
 void GpuSolver::resetVolume() {
   // The grid's geometry, each particle's length and the rest fraction come from the CPU
   // reference (set up once per groom); the GPU splats each frame.
-  std::vector<glm::dvec3> rest(state_.rest.size());
-  for (size_t i = 0; i < rest.size(); ++i) rest[i] = glm::dvec3(glm::vec3(state_.rest[i]));
-  volume_.reset(rest, state_.strandFirst, config_.collision.volumeCell, config_.collision.radius);
+  // A mode without the volume keeps no grid: its buffers shrink to one element.
+  if (volumeForces(config_.collision.mode)) {
+    std::vector<glm::dvec3> rest(state_.rest.size());
+    for (size_t i = 0; i < rest.size(); ++i) rest[i] = glm::dvec3(glm::vec3(state_.rest[i]));
+    volume_.reset(rest, state_.strandFirst, config_.collision.volumeCell, config_.collision.radius);
+  } else {
+    volume_.release();
+  }
   std::vector<float> length(volume_.particleLength().begin(), volume_.particleLength().end());
   gpu::fill(volumeLength_, length);
   gpu::fill(volumeRest_, volume_.restFraction());

@@ -59,6 +59,8 @@ class GpuSolver final : public Solver {
   std::vector<StageTime> stageTimes() override { return timer_.times(); }
   // Those of the latest sample taken: nothing is read back for them.
   ContactStats contactStats() override { return sampledContacts_; }
+  // Nodes of the volume mode's grid: none unless collision.mode is a volume mode (tests).
+  size_t volumeNodes() const { return volume_.nodes(); }
   void setContactMeasures(bool always) override { measureContacts_ = always; }
   void requestSample(long frame) override;
   std::optional<FrameSample> takeSample(bool wait = false) override;

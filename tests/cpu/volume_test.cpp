@@ -111,6 +111,38 @@ TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-d
   CHECK(world.y == Approx(push.x).margin(1e-12));
 }
 
+TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is chosen") {
+  Config c;
+  c.hairstyle.strands = 200;
+  c.collision.mode = CollisionMode::Head;
+  c.collision.volumeFraction = 0.02f;  // pushes where hair gathers
+  const Groom g = growHairstyle(c);
+  CpuSolver headOnly, switched;
+  headOnly.reset(g, c, Pose{});
+  switched.reset(g, c, Pose{});
+  CHECK(switched.volumeNodes() == 0);
+  for (int f = 0; f < 5; ++f) {
+    headOnly.stepFrame(Pose{}, Pose{});
+    switched.stepFrame(Pose{}, Pose{});
+  }
+  Config volume = c;
+  volume.collision.mode = CollisionMode::Volume;
+  switched.setConfig(volume);
+  CHECK(switched.volumeNodes() > 1000);
+  for (int f = 0; f < 20; ++f) {
+    headOnly.stepFrame(Pose{}, Pose{});
+    switched.stepFrame(Pose{}, Pose{});
+  }
+  // The grid built mid-run acts: the hair ends elsewhere than with the head alone.
+  double apart = 0.0;
+  for (size_t i = 0; i < headOnly.positions().size(); ++i)
+    apart = std::max(apart, glm::length(headOnly.positions()[i] - switched.positions()[i]));
+  INFO("farthest particle apart " << apart * 1e3 << " mm");
+  CHECK(apart > 1e-4);
+  switched.setConfig(c);
+  CHECK(switched.volumeNodes() == 0);
+}
+
 TEST_CASE("volume mode: with gravity off the rest groom stays still") {
   Config c;
   c.hairstyle.strands = 300;

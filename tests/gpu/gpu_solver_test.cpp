@@ -370,6 +370,41 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
   CHECK(std::memcmp(a.data(), e.data(), a.size() * sizeof(glm::vec4)) != 0);
 }
 
+TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is chosen",
+          "[gpu][solver]") {
+  Config c;
+  c.hairstyle.strands = 200;
+  c.collision.mode = CollisionMode::Head;
+  c.collision.volumeFraction = 0.02f;  // pushes where hair gathers
+  const Groom g = growHairstyle(c);
+  auto headOnly = test::gpuSolver(), switched = test::gpuSolver();
+  headOnly->reset(g, c, Pose{});
+  switched->reset(g, c, Pose{});
+  CHECK(switched->volumeNodes() == 0);
+  Config volume = c;
+  volume.collision.mode = CollisionMode::Volume;
+  switched->setConfig(volume);
+  CpuSolver cpu;
+  cpu.reset(g, volume, Pose{});
+  CHECK(switched->volumeNodes() == cpu.volumeNodes());
+  CHECK(switched->volumeNodes() > 1000);
+  for (int f = 0; f < 10; ++f) {
+    headOnly->stepFrame(Pose{}, Pose{});
+    switched->stepFrame(Pose{}, Pose{});
+  }
+  // The grid built after the reset acts: the hair ends elsewhere than with the head alone.
+  std::vector<glm::vec4> a, b;
+  headOnly->readPositions(a);
+  switched->readPositions(b);
+  double apart = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+    apart = std::max(apart, double(glm::length(glm::vec3(a[i]) - glm::vec3(b[i]))));
+  INFO("farthest particle apart " << apart * 1e3 << " mm");
+  CHECK(apart > 1e-4);
+  switched->setConfig(c);
+  CHECK(switched->volumeNodes() == 0);
+}
+
 TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][solver]") {
   Preset preset;
   PresetErrors errors;
