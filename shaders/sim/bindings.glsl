@@ -76,7 +76,8 @@
       // and the contact solve
 #define CSM_BIND_VOLUME_SUMS \
   28  // int x4 per node of the volume grid: strand length (2^-24 m), length
-      // times velocity (2^-24 m^2/s), x y z (sim/volume.h)
+      // times velocity (2^-24 m^2/s), x y z (sim/volume.h); then two ivec4,
+      // the nodes the splat reached (volumeBox in common.glsl)
 #define CSM_BIND_VOLUME_LENGTH 29  // float per particle: its share of strand length (m)
 #define CSM_BIND_VOLUME_FIELD \
   31  // vec4 x 2 per node, from this frame's sums (volume_field.comp):
@@ -124,7 +125,8 @@
 // Slots of the DISPATCH buffer.
 #define CSM_DISPATCH_CANDIDATES 0    // the candidate pass: one invocation per grid entry
 #define CSM_DISPATCH_PAIR_SCATTER 1  // the pair scatter: one per listed pair
-#define CSM_DISPATCHES 2
+#define CSM_DISPATCH_VOLUME_FIELD 2  // the volume's node pass: one per node of the hair's box
+#define CSM_DISPATCHES 3
 
 // Candidate lists (sim/contacts.h).
 #define CSM_MAX_SEGMENT_CELLS 64   // cells a segment may enter (see segmentCells)

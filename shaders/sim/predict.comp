@@ -20,6 +20,7 @@ layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffn
 };
 
 layout(binding = CSM_TEX_VOLUME_FIELD) uniform samplerBuffer volumeFieldTex;
+layout(binding = CSM_TEX_VOLUME_SUMS) uniform isamplerBuffer volumeSumsTex;
 
 uniform uint substep;
 
@@ -30,15 +31,23 @@ vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
   ivec3 base;
   vec3 f;
   volumeLocate((P.volumeToHead * vec4(xWorld, 1.0)).xyz, base, f);
+  // Nodes outside the box the splat reached hold 0 (volume_field.comp leaves them).
+  ivec3 dims = ivec3(P.volumeDims.xyz);
+  int nodes = dims.x * dims.y * dims.z;
+  ivec3 low, high;
+  volumeBox(texelFetch(volumeSumsTex, nodes), texelFetch(volumeSumsTex, nodes + 1), low, high);
   vec4 sums = vec4(0.0);
   vec3 gradient = vec3(0.0);
   for (int c = 0; c < 8; ++c) {
     ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
     vec3 a = mix(1.0 - f, f, vec3(d));
     float w = a.x * a.y * a.z;
-    int k = 2 * int(volumeNode(base + d));
-    sums += w * texelFetch(volumeFieldTex, k);
-    gradient += w * texelFetch(volumeFieldTex, k + 1).xyz;
+    ivec3 n = base + d;
+    bool inBox = all(greaterThanEqual(n, low)) && all(lessThanEqual(n, high));
+    int k = 2 * int(volumeNode(n));
+    vec4 s = texelFetch(volumeFieldTex, k), g = texelFetch(volumeFieldTex, k + 1);
+    sums += w * (inBox ? s : vec4(0.0));
+    gradient += w * (inBox ? g.xyz : vec3(0.0));
   }
   vec3 dv = vec3(0.0);
   if (sums.w > 0.0) dv += (1.0 - exp(-P.volume.x * h)) * (sums.xyz / sums.w - v);

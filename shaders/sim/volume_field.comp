@@ -1,5 +1,7 @@
 // The volume mode, once per frame after volume_splat.comp (the CPU reference is the end of
-// csm::VolumeGrid::splat in sim/volume.cpp), one invocation per node: what predict.comp
+// csm::VolumeGrid::splat in sim/volume.cpp), one invocation per node of the box the splat
+// reached (volumeBox; an indirect dispatch sized by volume_dispatch.comp: small hair in a
+// large grid pays for its own nodes, not the grid's): what predict.comp
 // interpolates at each particle, so that it reads 8 nodes' fields and no more:
 //  - the node's sums as floats, length times velocity then length (the hair's mean velocity
 //    is their interpolated ratio);
@@ -22,11 +24,15 @@ float excessAt(uint node) {
 }
 
 void main() {
-  uint node = globalIndex();
   ivec3 dims = ivec3(P.volumeDims.xyz);
-  if (node >= uint(dims.x * dims.y * dims.z)) return;
-  ivec3 n = ivec3(node % uint(dims.x), (node / uint(dims.x)) % uint(dims.y),
-                  node / uint(dims.x * dims.y));
+  int nodes = dims.x * dims.y * dims.z;
+  ivec3 low, high;
+  volumeBox(texelFetch(sumsTex, nodes), texelFetch(sumsTex, nodes + 1), low, high);
+  ivec3 box = max(high - low + 1, ivec3(0));
+  uint k = globalIndex();
+  if (k >= uint(box.x * box.y * box.z)) return;
+  ivec3 n = low + ivec3(k % uint(box.x), (k / uint(box.x)) % uint(box.y), k / uint(box.x * box.y));
+  uint node = volumeNode(n);
   vec3 gradient;
   for (int axis = 0; axis < 3; ++axis) {
     ivec3 below = n, above = n;

@@ -2,7 +2,8 @@
 // sim/volume.cpp), one invocation per particle: its share of strand length, and that length
 // times its velocity, onto the 8 nodes around it (trilinear weights) of the grid fixed to the
 // head where the frame starts. Fixed-point integer atomics: the sums do not depend on the
-// order (the grid is cleared before).
+// order (the grid is cleared before). It also keeps the box of the nodes reached, for the
+// node pass and predict.comp (volumeBox in common.glsl).
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -14,24 +15,45 @@ layout(std430, binding = CSM_BIND_VOLUME_LENGTH) readonly buffer VolumeLength {
 };
 layout(std430, binding = CSM_BIND_VOLUME_SUMS) buffer VolumeSums { int volumeSums[]; };
 
+shared int reachedLow[3], reachedHigh[3];
+
 void main() {
   uint i = globalIndex();
-  if (i >= P.counts.x) return;
-  vec3 x = texelFetch(posTex, int(i)).xyz;
-  if (any(isnan(x)) || any(isinf(x))) return;
-  vec3 v = texelFetch(velTex, int(i)).xyz;
-  ivec3 base;
-  vec3 f;
-  volumeLocate((P.volumeToHead * vec4(x, 1.0)).xyz, base, f);
-  float len = particleLength[i] * kVolumeUnit;
-  for (int c = 0; c < 8; ++c) {
-    ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
-    vec3 w3 = mix(1.0 - f, f, vec3(d));
-    float wl = w3.x * w3.y * w3.z * len;
-    uint k = 4u * volumeNode(base + d);
-    atomicAdd(volumeSums[k], int(round(wl)));
-    atomicAdd(volumeSums[k + 1u], int(round(wl * v.x)));
-    atomicAdd(volumeSums[k + 2u], int(round(wl * v.y)));
-    atomicAdd(volumeSums[k + 3u], int(round(wl * v.z)));
+  uint lid = gl_LocalInvocationID.x;
+  if (lid < 3u) {
+    reachedLow[lid] = 0;
+    reachedHigh[lid] = 0;
+  }
+  barrier();
+  vec3 x = i < P.counts.x ? texelFetch(posTex, int(i)).xyz : vec3(0.0);
+  bool splats = i < P.counts.x && !any(isnan(x)) && !any(isinf(x));
+  if (splats) {
+    vec3 v = texelFetch(velTex, int(i)).xyz;
+    ivec3 base;
+    vec3 f;
+    volumeLocate((P.volumeToHead * vec4(x, 1.0)).xyz, base, f);
+    float len = particleLength[i] * kVolumeUnit;
+    for (int c = 0; c < 8; ++c) {
+      ivec3 d = ivec3(c & 1, (c >> 1) & 1, c >> 2);
+      vec3 w3 = mix(1.0 - f, f, vec3(d));
+      float wl = w3.x * w3.y * w3.z * len;
+      uint k = 4u * volumeNode(base + d);
+      atomicAdd(volumeSums[k], int(round(wl)));
+      atomicAdd(volumeSums[k + 1u], int(round(wl * v.x)));
+      atomicAdd(volumeSums[k + 2u], int(round(wl * v.y)));
+      atomicAdd(volumeSums[k + 3u], int(round(wl * v.z)));
+    }
+    // The nodes reached, base to base + 1 (volumeBox's encoding), the group's first.
+    ivec3 dims = ivec3(P.volumeDims.xyz);
+    for (int a = 0; a < 3; ++a) {
+      atomicMax(reachedLow[a], dims[a] - base[a]);
+      atomicMax(reachedHigh[a], base[a] + 2);
+    }
+  }
+  barrier();
+  if (lid < 3u && reachedHigh[lid] > 0) {
+    uint tail = 4u * (P.volumeDims.x * P.volumeDims.y * P.volumeDims.z);
+    atomicMax(volumeSums[tail + lid], reachedLow[lid]);
+    atomicMax(volumeSums[tail + 4u + lid], reachedHigh[lid]);
   }
 }

@@ -70,6 +70,9 @@ class CollisionGrid {
   bool countersSeen(const uint32_t* counters);
 
   const gl::Buffer& counters() const { return counters_; }
+  // The indirect dispatch sizes (CSM_DISPATCH_*), bound at CSM_BIND_DISPATCH with the grid;
+  // the volume's node pass keeps its own slot there.
+  const gl::Buffer& dispatch() const { return dispatch_; }
   uint32_t entryCapacity() const { return entryCapacity_; }
   uint32_t pairListCapacity() const { return pairListCapacity_; }
   // Caps the buffers that grow with the hair's density (the entries, the pair list, its sides

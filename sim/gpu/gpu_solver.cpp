@@ -49,6 +49,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
         !passes_.strainLimit.build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
         !passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, {}, error) ||
         !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
+        !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, {}, error) ||
         !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !grid_.build(error))
       return false;
@@ -134,11 +135,18 @@ void GpuSolver::resetVolume() {
   std::vector<float> length(volume_.particleLength().begin(), volume_.particleLength().end());
   gpu::fill(volumeLength_, length);
   gpu::fill(volumeRest_, volume_.restFraction());
-  gpu::zeroed<glm::ivec4>(volumeSums_, volume_.nodes());
+  // The nodes' sums, then the box of the nodes the splat reached (volumeBox in common.glsl).
+  gpu::zeroed<glm::ivec4>(volumeSums_, volume_.empty() ? 0 : volume_.nodes() + 2);
   gpu::zeroed<glm::vec4>(volumeField_, 2 * volume_.nodes());
   gpu::view(volumeSumsTex_, volumeSums_, GL_RGBA32I);
   gpu::view(volumeRestTex_, volumeRest_, GL_R32F);
   gpu::view(volumeFieldTex_, volumeField_, GL_RGBA32F);
+}
+
+size_t GpuSolver::volumeNodesVisited() const {
+  const std::vector<glm::uvec4> d = grid_.dispatch().download<glm::uvec4>(CSM_DISPATCHES);
+  return size_t(d[CSM_DISPATCH_VOLUME_FIELD].x) * d[CSM_DISPATCH_VOLUME_FIELD].y *
+         CSM_PARTICLE_GROUP;
 }
 
 GpuSolver::GridStats GpuSolver::gridStats() {
@@ -271,7 +279,10 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     gl::memoryBarrier(gpu::kPassBarrier);
     passes_.volumeSplat.run(particles);
     gl::memoryBarrier(gpu::kPassBarrier);
-    passes_.volumeField.run(uint32_t(volume_.nodes()));
+    // Only the nodes of the box the hair reached: sized on the GPU.
+    passes_.volumeDispatch.set("groupSize", uint32_t(CSM_PARTICLE_GROUP)).run(1);
+    gl::memoryBarrier(gl::Barrier::Command);
+    passes_.volumeField.runIndirect(grid_.dispatch(), CSM_DISPATCH_VOLUME_FIELD);
     gl::memoryBarrier(gpu::kPassBarrier);
   }
   for (int k = 0; k < substeps; ++k) {

@@ -61,6 +61,9 @@ class GpuSolver final : public Solver {
   ContactStats contactStats() override { return sampledContacts_; }
   // Nodes of the volume mode's grid: none unless collision.mode is a volume mode (tests).
   size_t volumeNodes() const { return volume_.nodes(); }
+  // Nodes the volume's node pass ran on in the last frame: the box the splat reached (reads
+  // back its indirect dispatch; tests).
+  size_t volumeNodesVisited() const;
   void setContactMeasures(bool always) override { measureContacts_ = always; }
   void requestSample(long frame) override;
   std::optional<FrameSample> takeSample(bool wait = false) override;
@@ -121,7 +124,8 @@ class GpuSolver final : public Solver {
   gpu::SimParams params_{};
 
   struct Passes {
-    gpu::ComputePass predict, shapeMatch, strainLimit, measure, volumeSplat, volumeField;
+    gpu::ComputePass predict, shapeMatch, strainLimit, measure, volumeSplat, volumeDispatch,
+        volumeField;
   } passes_;
   gpu::StrandBuffers hair_;
   gpu::CollisionGrid grid_;
