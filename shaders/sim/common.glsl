@@ -313,14 +313,19 @@ uint volumeNode(ivec3 n) {
   return (uint(n.z) * P.volumeDims.y + uint(n.y)) * P.volumeDims.x + uint(n.x);
 }
 
+// Nodes of the volume grid.
+int volumeNodes() { return int(P.volumeDims.x * P.volumeDims.y * P.volumeDims.z); }
+
 // The nodes whose sums or gradient this frame's splat can have made non-zero: the box of the
 // nodes it reached, one node more each way (the gradient's central differences), within the
-// grid. The splat keeps the reached box in the two ivec4 after the nodes' sums, each axis as
-// an atomicMax from a cleared 0: `high` as the highest node + 1, `low` as the dimension less
-// the lowest node (so an untouched grid gives an empty box). Outside it every node's field is
-// 0, as on the CPU, and is neither computed nor read.
-void volumeBox(ivec4 lowSlot, ivec4 highSlot, out ivec3 low, out ivec3 high) {
+// grid; returns its extent (0 where nothing was reached). The splat keeps the reached box in
+// the two ivec4 after the nodes' sums (`sums`, a view of them), each axis as an atomicMax from
+// a cleared 0: the second as the highest node + 1, the first as the dimension less the lowest
+// node (so an untouched grid gives an empty box). Outside it every node's field is 0, as on
+// the CPU, and is neither computed nor read.
+ivec3 volumeBox(isamplerBuffer sums, out ivec3 low, out ivec3 high) {
   ivec3 dims = ivec3(P.volumeDims.xyz);
-  low = max(dims - lowSlot.xyz - 1, ivec3(0));
-  high = min(highSlot.xyz, dims - 1);
+  low = max(dims - texelFetch(sums, volumeNodes()).xyz - 1, ivec3(0));
+  high = min(texelFetch(sums, volumeNodes() + 1).xyz, dims - 1);
+  return max(high - low + 1, ivec3(0));
 }

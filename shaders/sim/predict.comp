@@ -32,10 +32,8 @@ vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
   vec3 f;
   volumeLocate((P.volumeToHead * vec4(xWorld, 1.0)).xyz, base, f);
   // Nodes outside the box the splat reached hold 0 (volume_field.comp leaves them).
-  ivec3 dims = ivec3(P.volumeDims.xyz);
-  int nodes = dims.x * dims.y * dims.z;
   ivec3 low, high;
-  volumeBox(texelFetch(volumeSumsTex, nodes), texelFetch(volumeSumsTex, nodes + 1), low, high);
+  volumeBox(volumeSumsTex, low, high);
   vec4 sums = vec4(0.0);
   vec3 gradient = vec3(0.0);
   for (int c = 0; c < 8; ++c) {

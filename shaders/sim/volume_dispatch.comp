@@ -11,11 +11,8 @@ layout(std430, binding = CSM_BIND_DISPATCH) writeonly buffer Dispatch { uvec4 di
 uniform uint groupSize;  // the node pass's local size
 
 void main() {
-  ivec3 dims = ivec3(P.volumeDims.xyz);
-  int nodes = dims.x * dims.y * dims.z;
   ivec3 low, high;
-  volumeBox(texelFetch(sumsTex, nodes), texelFetch(sumsTex, nodes + 1), low, high);
-  ivec3 box = max(high - low + 1, ivec3(0));
+  ivec3 box = volumeBox(sumsTex, low, high);
   uint items = uint(box.x * box.y * box.z);
   uint groups = (items + groupSize - 1u) / groupSize;
   uint x = min(groups, 65535u);

@@ -25,10 +25,8 @@ float excessAt(uint node) {
 
 void main() {
   ivec3 dims = ivec3(P.volumeDims.xyz);
-  int nodes = dims.x * dims.y * dims.z;
   ivec3 low, high;
-  volumeBox(texelFetch(sumsTex, nodes), texelFetch(sumsTex, nodes + 1), low, high);
-  ivec3 box = max(high - low + 1, ivec3(0));
+  ivec3 box = volumeBox(sumsTex, low, high);
   uint k = globalIndex();
   if (k >= uint(box.x * box.y * box.z)) return;
   ivec3 n = low + ivec3(k % uint(box.x), (k / uint(box.x)) % uint(box.y), k / uint(box.x * box.y));

@@ -52,7 +52,7 @@ void main() {
   }
   barrier();
   if (lid < 3u && reachedHigh[lid] > 0) {
-    uint tail = 4u * (P.volumeDims.x * P.volumeDims.y * P.volumeDims.z);
+    uint tail = 4u * uint(volumeNodes());
     atomicMax(volumeSums[tail + lid], reachedLow[lid]);
     atomicMax(volumeSums[tail + 4u + lid], reachedHigh[lid]);
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <numeric>
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
@@ -83,12 +84,9 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<uint32_t>(segmentPairs_, segmentScan_);
   zeroed<uint32_t>(segmentBase_, segmentScan_ + 4);
   zeroed<uint32_t>(segmentScanBlocks_, segmentScan_ / CSM_SCAN_LEAF + 1);
-  {
-    // In index order until the first search orders them.
-    std::vector<uint32_t> order(particles);
-    for (size_t i = 0; i < particles; ++i) order[i] = uint32_t(i);
-    fill(segmentOrder_, order);
-  }
+  std::vector<uint32_t> order(particles);  // in index order until the first search
+  std::iota(order.begin(), order.end(), 0u);
+  fill(segmentOrder_, order);
   view(gridStartTex_, gridStart_, GL_R32UI);
   searchPending_ = false;
   entryCapacity_ = 0;  // reserveFor sizes the entry buffer and the pair list
