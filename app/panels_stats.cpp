@@ -130,9 +130,9 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
       warning("hair-hair lists full in %llu frames (no strand contacts there)", contacts.overflows,
               "A frame whose candidate pairs do not fit the GPU's buffers applies no strand\n"
               "contacts and counts no crossings; the buffers grow to what it needed as the\n"
-              "next frame begins (up to what the device's storage blocks hold: 8.4 M pairs\n"
-              "on llvmpipe), so the frames after it fit. Counted since the simulation was\n"
-              "last reset.");
+              "next frame begins (up to what the device's buffer textures hold: 134 M pairs\n"
+              "on llvmpipe and NVIDIA), so the frames after it fit. Counted since the\n"
+              "simulation was last reset.");
     if (contacts.oversize > 0)
       warning("%llu segments too long for the grid's cells: no contacts for them",
               contacts.oversize, nullptr);

@@ -11,6 +11,12 @@ BufferTexture::BufferTexture(const Buffer& buffer, GLenum internalFormat) {
   attach(buffer, internalFormat);
 }
 
+BufferTexture::BufferTexture(const Buffer& buffer, GLenum internalFormat, GLintptr offset,
+                             GLsizeiptr size) {
+  glGenTextures(1, &id_);
+  attachRange(buffer, internalFormat, offset, size);
+}
+
 BufferTexture::~BufferTexture() {
   if (id_) glDeleteTextures(1, &id_);
 }
@@ -44,10 +50,23 @@ void BufferTexture::attach(const Buffer& buffer, GLenum internalFormat) {
   maybeCheckErrors("BufferTexture::attach");
 }
 
+void BufferTexture::attachRange(const Buffer& buffer, GLenum internalFormat, GLintptr offset,
+                                GLsizeiptr size) {
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, id_);
+  glTexBufferRange(GL_TEXTURE_BUFFER, internalFormat, buffer.id(), offset, size);
+  maybeCheckErrors("BufferTexture::attachRange");
+}
+
 void BufferTexture::bind(GLuint unit) const {
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_BUFFER, id_);
   maybeCheckErrors("BufferTexture::bind");
+}
+
+void BufferTexture::bindImage(GLuint unit, GLenum access, GLenum format) const {
+  glBindImageTexture(unit, id_, 0, GL_FALSE, 0, access, format);
+  maybeCheckErrors("BufferTexture::bindImage");
 }
 
 }  // namespace csm::gl

@@ -41,6 +41,7 @@ Caps queryCaps() {
   c.maxUniformBlockSize = integer(GL_MAX_UNIFORM_BLOCK_SIZE);
   c.maxTextureSize = integer(GL_MAX_TEXTURE_SIZE);
   c.maxTextureBufferSize = integer(GL_MAX_TEXTURE_BUFFER_SIZE);
+  c.textureBufferOffsetAlignment = integer(GL_TEXTURE_BUFFER_OFFSET_ALIGNMENT);
   c.maxArrayTextureLayers = integer(GL_MAX_ARRAY_TEXTURE_LAYERS);
   c.maxColorAttachments = integer(GL_MAX_COLOR_ATTACHMENTS);
   c.maxSamples = integer(GL_MAX_SAMPLES);
@@ -73,6 +74,7 @@ std::string Caps::summary() const {
   s += "max uniform block size:     " + n(maxUniformBlockSize) + " bytes\n";
   s += "max texture size:           " + n(maxTextureSize) + "\n";
   s += "max texture buffer size:    " + n(maxTextureBufferSize) + " texels\n";
+  s += "texture buffer offset align: " + n(textureBufferOffsetAlignment) + " bytes\n";
   s += "max array texture layers:   " + n(maxArrayTextureLayers) + "\n";
   s += "max color attachments:      " + n(maxColorAttachments) + "\n";
   s += "max samples:                " + n(maxSamples) + "\n";

@@ -22,7 +22,8 @@ struct Caps {
   GLint maxComputeSharedMemorySize = 0;  // bytes
   GLint maxUniformBlockSize = 0;         // bytes
   GLint maxTextureSize = 0;
-  GLint maxTextureBufferSize = 0;  // texels of one buffer texture
+  GLint maxTextureBufferSize = 0;          // texels of one buffer texture
+  GLint textureBufferOffsetAlignment = 0;  // bytes: where a view of a buffer's range may start
   GLint maxArrayTextureLayers = 0;
   GLint maxColorAttachments = 0;
   GLint maxSamples = 0;

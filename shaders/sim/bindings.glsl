@@ -3,7 +3,7 @@
 // Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
 // bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
 // (no pass here declares more) but only 8 binding points; every driver we run on has more
-// than the 29 used here (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+// than the 27 used here, 0-26 (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
@@ -45,9 +45,6 @@
   14                             // uint per bucket + 4: exclusive scan of the counts; entry
                                  // `buckets` is the total the grid needed
 #define CSM_BIND_SCAN_BLOCKS 15  // uint per CSM_SCAN_LEAF buckets: block sums, then their scan
-#define CSM_BIND_PAIR_LIST 16     // uvec4 per candidate pair, in no order: a, b | flags << 28, the
-                                  // contact distance (float bits), unused
-#define CSM_BIND_ENTRIES 17       // uvec4 per grid entry (packEntry in common.glsl)
 #define CSM_BIND_COUNTERS \
   18                                  // uint[CSM_COUNTERS]: the CSM_COUNTER_* below
 #define CSM_BIND_DISPATCH \
@@ -58,29 +55,20 @@
       // frame's, P.grid.w says which): where each segment's candidates
       // start in CANDIDATES (LAST_CANDIDATES for last frame's), and how
       // many
-#define CSM_BIND_PAIR_SIDES \
-  21  // uvec2 x 2 per candidate pair: each segment's candidates (as in
-      // CANDIDATES), from its SEGMENT_BASE on, in no order
 #define CSM_BIND_INVERSE_MASS \
-  27  // float per particle: its inverse mass as the strand contacts
+  16  // float per particle: its inverse mass as the strand contacts
       // see it, 0 when the head holds it (csm::contactInverseMass)
-#define CSM_BIND_CANDIDATES \
-  26  // uvec2 x 2 per slot of the pair list: this frame's lists, each
-      // segment's candidates in ascending order, x the other segment |
-      // flags << 28 (sim/contacts.h), y the contact distance (float bits)
-#define CSM_BIND_LAST_CANDIDATES \
-  25  // the same, last frame's (the two buffers swap each frame)
 #define CSM_BIND_SEGMENT_ORDER \
-  30  // uint per particle: the segments of each run of CSM_PARTICLE_GROUP by
+  17  // uint per particle: the segments of each run of CSM_PARTICLE_GROUP by
       // candidate count, most first (segment_order.comp), for the list pass
       // and the contact solve
 #define CSM_BIND_VOLUME_SUMS \
-  28  // int x4 per node of the volume grid: strand length (2^-24 m), length
+  21  // int x4 per node of the volume grid: strand length (2^-24 m), length
       // times velocity (2^-24 m^2/s), x y z (sim/volume.h); then two ivec4,
       // the nodes the splat reached (volumeBox in common.glsl)
-#define CSM_BIND_VOLUME_LENGTH 29  // float per particle: its share of strand length (m)
+#define CSM_BIND_VOLUME_LENGTH 25  // float per particle: its share of strand length (m)
 #define CSM_BIND_VOLUME_FIELD \
-  31  // vec4 x 2 per node, from this frame's sums (volume_field.comp):
+  26  // vec4 x 2 per node, from this frame's sums (volume_field.comp):
       // length times velocity x y z and length, as floats; the gradient of
       // the volume fraction over what is allowed (1/m, head frame), 0
 
@@ -99,6 +87,30 @@
 #define CSM_TEX_VOLUME_SUMS 9
 #define CSM_TEX_VOLUME_REST 10  // float per node: the volume fraction the rest groom fills
 #define CSM_TEX_HEAD_FIELD 11   // vec4 per node of the head's distance field: gradient, distance
+
+// Image units of the buffers that grow with the hair's density (imageBuffer views, read and
+// written with imageLoad / imageStore): a view holds GL_MAX_TEXTURE_BUFFER_SIZE texels (2^27 on
+// llvmpipe and NVIDIA) where a storage block holds GL_MAX_SHADER_STORAGE_BLOCK_SIZE bytes (128
+// MiB on llvmpipe and Intel's Mesa: 8.4 M candidate pairs). The sides and the lists, two texels
+// a pair, are each seen through two views, the second from texel `listSplit` on (a uniform of
+// the passes that use them, the texels of one view): 2^27 pairs in all (134 M). Those passes
+// are built twice, with CSM_SPLIT_VIEWS defined and without; the second view is used only when
+// the lists outgrow the first. GL 4.3 guarantees 8 image units and 8 images per compute
+// shader: these are units 0-7, and no pass declares more than 6.
+#define CSM_IMAGE_ENTRIES 0     // rgba32ui per grid entry (packEntry in common.glsl); read by
+                                // texelFetch through CSM_TEX_ENTRIES
+#define CSM_IMAGE_PAIR_LIST 1   // rgba32ui per candidate pair, in no order: a, b | flags << 28,
+                                // the contact distance (float bits), unused
+#define CSM_IMAGE_PAIR_SIDES 2  // rg32ui x 2 per candidate pair: each segment's candidates (as
+                                // in CANDIDATES), from its SEGMENT_BASE on, in no order
+#define CSM_IMAGE_PAIR_SIDES_HIGH 3  // the same from texel listSplit on
+#define CSM_IMAGE_CANDIDATES 4  // rg32ui x 2 per slot of the pair list: this frame's lists, each
+                                // segment's candidates in ascending order, x the other segment
+                                // | flags << 28 (sim/contacts.h), y the contact distance (float
+                                // bits)
+#define CSM_IMAGE_CANDIDATES_HIGH 5
+#define CSM_IMAGE_LAST_CANDIDATES 6  // the same, last frame's (the two buffers swap each frame)
+#define CSM_IMAGE_LAST_CANDIDATES_HIGH 7
 
 // Slots of the COUNTERS buffer.
 #define CSM_COUNTER_ENTRIES 0

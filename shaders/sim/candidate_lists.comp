@@ -17,14 +17,16 @@ layout(local_size_x = CSM_PARTICLE_GROUP) in;
 layout(binding = CSM_TEX_GRID_START) uniform usamplerBuffer gridStartTex;
 
 layout(std430, binding = CSM_BIND_SEGMENT_BASE) readonly buffer SegmentBase { uint segBase[]; };
-layout(std430, binding = CSM_BIND_PAIR_SIDES) readonly buffer PairSides { uvec2 pairSides[]; };
-layout(std430, binding = CSM_BIND_CANDIDATES) buffer Candidates { uvec2 candidates[]; };
-// Not declared readonly: so declared, llvmpipe (Mesa 22.3.6) matched fewer of last frame's
-// pairs (1,164 of 1,285 on the GPU-against-CPU test scene) and counted fewer crossings than the
-// CPU reference.
-layout(std430, binding = CSM_BIND_LAST_CANDIDATES) buffer LastCandidates {
-  uvec2 lastCandidates[];
-};
+layout(binding = CSM_IMAGE_PAIR_SIDES, rg32ui) readonly uniform uimageBuffer pairSides;
+layout(binding = CSM_IMAGE_CANDIDATES, rg32ui) uniform uimageBuffer candidates;
+layout(binding = CSM_IMAGE_LAST_CANDIDATES, rg32ui) readonly uniform uimageBuffer lastCandidates;
+#ifdef CSM_SPLIT_VIEWS
+layout(binding = CSM_IMAGE_PAIR_SIDES_HIGH, rg32ui) readonly uniform uimageBuffer pairSidesHigh;
+layout(binding = CSM_IMAGE_CANDIDATES_HIGH, rg32ui) uniform uimageBuffer candidatesHigh;
+layout(binding = CSM_IMAGE_LAST_CANDIDATES_HIGH, rg32ui) readonly uniform uimageBuffer
+    lastCandidatesHigh;
+uniform uint listSplit;  // the first slot of each *_HIGH view
+#endif
 layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) buffer CandidateRange {
   uvec2 candidateRange[];
 };
@@ -36,25 +38,52 @@ layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
 };
 
 uint keyOf(uvec2 c) { return c.x & kIndex; }
+// Slot i of the sides, this frame's lists and last frame's, wherever its view is.
+uvec2 sideAt(uint i) {
+#ifdef CSM_SPLIT_VIEWS
+  if (i >= listSplit) return imageLoad(pairSidesHigh, int(i - listSplit)).xy;
+#endif
+  return imageLoad(pairSides, int(i)).xy;
+}
+uvec2 candidateAt(uint i) {
+#ifdef CSM_SPLIT_VIEWS
+  if (i >= listSplit) return imageLoad(candidatesHigh, int(i - listSplit)).xy;
+#endif
+  return imageLoad(candidates, int(i)).xy;
+}
+void setCandidate(uint i, uvec2 c) {
+#ifdef CSM_SPLIT_VIEWS
+  if (i >= listSplit)
+    imageStore(candidatesHigh, int(i - listSplit), uvec4(c, 0u, 0u));
+  else
+#endif
+    imageStore(candidates, int(i), uvec4(c, 0u, 0u));
+}
+uint lastOther(uint i) {
+#ifdef CSM_SPLIT_VIEWS
+  if (i >= listSplit) return imageLoad(lastCandidatesHigh, int(i - listSplit)).x;
+#endif
+  return imageLoad(lastCandidates, int(i)).x;
+}
 
 // Max-heap on candidates[base, base + end): moves the candidate at `root` down to its place.
 void siftDown(uint base, uint root, uint end) {
-  uvec2 v = candidates[base + root];
+  uvec2 v = candidateAt(base + root);
   uint i = root;
   for (uint child = 2u * i + 1u; child < end; child = 2u * i + 1u) {
-    uvec2 c = candidates[base + child];
+    uvec2 c = candidateAt(base + child);
     if (child + 1u < end) {
-      uvec2 right = candidates[base + child + 1u];
+      uvec2 right = candidateAt(base + child + 1u);
       if (keyOf(right) > keyOf(c)) {
         c = right;
         ++child;
       }
     }
     if (keyOf(c) <= keyOf(v)) break;
-    candidates[base + i] = c;
+    setCandidate(base + i, c);
     i = child;
   }
-  candidates[base + i] = v;
+  setCandidate(base + i, v);
 }
 
 void main() {
@@ -72,14 +101,14 @@ void main() {
   bool crowded = fits && crowdedSides(sides);
   if (fits && !crowded) {
     for (uint k = 0u; k < sides; ++k) {
-      uvec2 c = pairSides[base + k];
-      if (c.x != kNoCandidate) candidates[base + n++] = c;
+      uvec2 c = sideAt(base + k);
+      if (c.x != kNoCandidate) setCandidate(base + n++, c);
     }
     for (uint root = n / 2u; root > 0u; --root) siftDown(base, root - 1u, n);
     for (uint end = n; end > 1u; --end) {
-      uvec2 top = candidates[base];
-      candidates[base] = candidates[base + end - 1u];
-      candidates[base + end - 1u] = top;
+      uvec2 top = candidateAt(base);
+      setCandidate(base, candidateAt(base + end - 1u));
+      setCandidate(base + end - 1u, top);
       siftDown(base, 0u, end - 1u);
     }
   }
@@ -89,15 +118,18 @@ void main() {
   uint j = 0u, k = 0u, previous = 0u;
   bool sorted = true;
   for (; k < n; ++k) {
-    uvec2 c = candidates[base + k];
+    uvec2 c = candidateAt(base + k);
     uint b = c.x & kIndex;
     if (k > 0u && b <= previous) sorted = false;
     previous = b;
     if (b < a) continue;
-    while (j < last.y && (lastCandidates[last.x + j].x & kIndex) < b) ++j;
-    if (j < last.y && (lastCandidates[last.x + j].x & kIndex) == b &&
-        crossed(lastCandidates[last.x + j].x >> uint(CSM_CANDIDATE_SHIFT),
-                c.x >> uint(CSM_CANDIDATE_SHIFT))) {
+    uint other = 0u;
+    for (; j < last.y; ++j) {
+      other = lastOther(last.x + j);
+      if ((other & kIndex) >= b) break;
+    }
+    if (j < last.y && (other & kIndex) == b &&
+        crossed(other >> uint(CSM_CANDIDATE_SHIFT), c.x >> uint(CSM_CANDIDATE_SHIFT))) {
       ++crossings;
       if (uintBitsToFloat(c.y) < 2.0 * P.stepping.z) ++close;  // a rest distance
     }

@@ -52,7 +52,7 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
   uint particleStrand[];
 };
 layout(std430, binding = CSM_BIND_SEGMENT_PAIRS) buffer SegmentPairs { uint segmentPairs[]; };
-layout(std430, binding = CSM_BIND_PAIR_LIST) writeonly buffer PairList { uvec4 pairList[]; };
+layout(binding = CSM_IMAGE_PAIR_LIST, rgba32ui) writeonly uniform uimageBuffer pairList;
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
 
 const uint kStrandGap = 2u;  // csm::kStrandGap: neighbours along one strand are not contacts
@@ -158,8 +158,8 @@ void main() {
         }
         uint k = atomicAdd(counters[CSM_COUNTER_PAIR_LIST], 1u);
         if (k < P.grid.z) {
-          pairList[k] =
-              uvec4(low, high | (flags << uint(CSM_CANDIDATE_SHIFT)), floatBitsToUint(d0), 0u);
+          imageStore(pairList, int(k),
+                     uvec4(low, high | (flags << uint(CSM_CANDIDATE_SHIFT)), floatBitsToUint(d0), 0u));
           atomicAdd(segmentPairs[low], 1u);
           atomicAdd(segmentPairs[high], 1u);
         }

@@ -181,7 +181,7 @@ vec3 contactNormal(vec3 p0, vec3 p1, vec3 q0, vec3 q1, float s, float t, float d
   return len > 1e-15 ? n / len : vec3(0.0, 1.0, 0.0);
 }
 
-// A candidate list entry (CSM_BIND_CANDIDATES): the other segment in the low bits, the
+// A candidate list entry (CSM_IMAGE_CANDIDATES): the other segment in the low bits, the
 // pair's flags above them.
 const uint kIndex = (1u << uint(CSM_CANDIDATE_SHIFT)) - 1u;
 // A slot of PAIR_SIDES whose pair was left out (pair_scatter.comp): no candidate.
@@ -248,7 +248,7 @@ bool clipToCell(vec3 p0, vec3 p1, ivec3 c, out vec3 q0, out vec3 q1) {
   return t0 <= t1;
 }
 
-// A grid entry in one texel (CSM_BIND_ENTRIES): the cell's key, the segment, and the part of
+// A grid entry in one texel (CSM_IMAGE_ENTRIES): the cell's key, the segment, and the part of
 // the box of its piece in the cell (padded) that lies inside the cell, in 1023 steps per axis,
 // rounded outward (two boxes that overlap in the cell overlap here too).
 const float kEntrySteps = 1023.0;

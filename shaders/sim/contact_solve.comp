@@ -16,7 +16,11 @@ layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
 layout(binding = CSM_TEX_INVERSE_MASS) uniform samplerBuffer inverseMassTex;
 
-layout(std430, binding = CSM_BIND_CANDIDATES) readonly buffer Candidates { uvec2 candidates[]; };
+layout(binding = CSM_IMAGE_CANDIDATES, rg32ui) readonly uniform uimageBuffer candidates;
+#ifdef CSM_SPLIT_VIEWS
+layout(binding = CSM_IMAGE_CANDIDATES_HIGH, rg32ui) readonly uniform uimageBuffer candidatesHigh;
+uniform uint listSplit;  // the first slot of CANDIDATES_HIGH
+#endif
 layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) readonly buffer CandidateRange {
   uvec2 candidateRange[];
 };
@@ -28,6 +32,12 @@ layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
 };
 
 uniform uint substep;
+uvec2 candidateAt(uint i) {
+#ifdef CSM_SPLIT_VIEWS
+  if (i >= listSplit) return imageLoad(candidatesHigh, int(i - listSplit)).xy;
+#endif
+  return imageLoad(candidates, int(i)).xy;
+}
 
 
 vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
@@ -53,7 +63,7 @@ void main() {
     vec3 va0 = fetchVel(a), va1 = fetchVel(a + 1u);
     vec2 wa = inverseMasses(a);
     for (uint k = 0u; k < n; ++k) {
-      uvec2 c = candidates[range.x + k];
+      uvec2 c = candidateAt(range.x + k);
       uint b = c.x & kIndex;
       float d0 = uintBitsToFloat(c.y);
       vec3 b0 = fetchPos(b), b1 = fetchPos(b + 1u);

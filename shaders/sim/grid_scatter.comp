@@ -17,7 +17,7 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
 };
 layout(std430, binding = CSM_BIND_GRID_COUNT) buffer GridCount { uint gridCount[]; };
 layout(std430, binding = CSM_BIND_GRID_START) readonly buffer GridStart { uint gridStart[]; };
-layout(std430, binding = CSM_BIND_ENTRIES) writeonly buffer Entries { uvec4 entries[]; };
+layout(binding = CSM_IMAGE_ENTRIES, rgba32ui) writeonly uniform uimageBuffer entries;
 
 void main() {
   uint i = globalIndex();
@@ -36,6 +36,6 @@ void main() {
         uint key = cellKey(cell);
         uint bucket = bucketOf(key);
         uint slot = gridStart[bucket] + atomicAdd(gridCount[bucket], 0xffffffffu) - 1u;
-        if (slot < P.grid.y) entries[slot] = packEntry(key, i, low, high, cell);
+        if (slot < P.grid.y) imageStore(entries, int(slot), packEntry(key, i, low, high, cell));
       }
 }

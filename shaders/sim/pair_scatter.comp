@@ -10,21 +10,34 @@
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
-layout(std430, binding = CSM_BIND_PAIR_LIST) readonly buffer PairList { uvec4 pairList[]; };
+layout(binding = CSM_IMAGE_PAIR_LIST, rgba32ui) readonly uniform uimageBuffer pairList;
 layout(std430, binding = CSM_BIND_SEGMENT_PAIRS) buffer SegmentPairs { uint segmentPairs[]; };
 layout(std430, binding = CSM_BIND_SEGMENT_BASE) readonly buffer SegmentBase { uint segBase[]; };
-layout(std430, binding = CSM_BIND_PAIR_SIDES) writeonly buffer PairSides { uvec2 pairSides[]; };
+layout(binding = CSM_IMAGE_PAIR_SIDES, rg32ui) writeonly uniform uimageBuffer pairSides;
+#ifdef CSM_SPLIT_VIEWS
+layout(binding = CSM_IMAGE_PAIR_SIDES_HIGH, rg32ui) writeonly uniform uimageBuffer pairSidesHigh;
+uniform uint listSplit;  // the first slot of PAIR_SIDES_HIGH
+#endif
 layout(std430, binding = CSM_BIND_COUNTERS) readonly buffer Counters { uint counters[]; };
+
+void storeSide(uint i, uvec2 c) {
+#ifdef CSM_SPLIT_VIEWS
+  if (i >= listSplit)
+    imageStore(pairSidesHigh, int(i - listSplit), uvec4(c, 0u, 0u));
+  else
+#endif
+    imageStore(pairSides, int(i), uvec4(c, 0u, 0u));
+}
 
 void main() {
   uint k = globalIndex();
   if (k >= min(counters[CSM_COUNTER_PAIR_LIST], P.grid.z)) return;
-  uvec4 p = pairList[k];
+  uvec4 p = imageLoad(pairList, int(k));
   uint a = p.x, b = p.y & kIndex, flags = p.y & ~kIndex;
   bool crowded =
       crowdedSides(segBase[a + 1u] - segBase[a]) || crowdedSides(segBase[b + 1u] - segBase[b]);
-  pairSides[segBase[a] + atomicAdd(segmentPairs[a], 0xffffffffu) - 1u] =
-      crowded ? uvec2(kNoCandidate) : p.yz;
-  pairSides[segBase[b] + atomicAdd(segmentPairs[b], 0xffffffffu) - 1u] =
-      crowded ? uvec2(kNoCandidate) : uvec2(a | flags, p.z);
+  uint sideA = segBase[a] + atomicAdd(segmentPairs[a], 0xffffffffu) - 1u;
+  uint sideB = segBase[b] + atomicAdd(segmentPairs[b], 0xffffffffu) - 1u;
+  storeSide(sideA, crowded ? uvec2(kNoCandidate) : p.yz);
+  storeSide(sideB, crowded ? uvec2(kNoCandidate) : uvec2(a | flags, p.z));
 }

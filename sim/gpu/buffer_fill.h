@@ -35,4 +35,13 @@ inline void view(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format
     tex.attach(buffer, format);
 }
 
+// A view of `size` bytes of `buffer` from `offset` (see BufferTexture::attachRange).
+inline void viewRange(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format,
+                      GLintptr offset, GLsizeiptr size) {
+  if (tex.id() == 0)
+    tex = gl::BufferTexture(buffer, format, offset, size);
+  else
+    tex.attachRange(buffer, format, offset, size);
+}
+
 }  // namespace csm::gpu

@@ -40,12 +40,12 @@ uint32_t grownCapacity(uint64_t needed, uint32_t current, uint64_t limit) {
 }  // namespace
 
 bool CollisionGrid::build(std::string* error) {
-  // What one storage block and one buffer texture may hold here (llvmpipe: 128 MiB and 2^27
-  // texels; GL 4.3 guarantees 16 MiB and 2^16 texels). A buffer bound past the first is read
-  // and written as the implementation pleases (llvmpipe: not at all, or not the same way twice).
+  // What one buffer texture may hold here (llvmpipe and NVIDIA: 2^27 texels; GL 4.3 guarantees
+  // 2^16): the buffers that grow with the hair are read and written through such views (a
+  // view past it is read and written as the implementation pleases).
   const gl::Caps caps = gl::queryCaps();
-  storageBytes_ = uint64_t(std::max<GLint64>(caps.maxShaderStorageBlockSize, 0));
   textureTexels_ = uint64_t(std::max<GLint>(caps.maxTextureBufferSize, 0));
+  viewAlignment_ = uint64_t(std::max<GLint>(caps.textureBufferOffsetAlignment, 1));
   searchCounters_ = gl::Buffer();
   searchCounters_.setData(kSearchCounters * sizeof(uint32_t), nullptr, GL_STREAM_READ);
   return passes_.count.build("sim/grid_count.comp", CSM_PARTICLE_GROUP, {}, error) &&
@@ -56,9 +56,30 @@ bool CollisionGrid::build(std::string* error) {
          passes_.dispatchSize.build("sim/dispatch_size.comp", 1, {}, error) &&
          passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, {}, error) &&
          passes_.order.build("sim/segment_order.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.pairScatter.build("sim/pair_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.lists.build("sim/candidate_lists.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.solve.build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {}, error);
+         buildSplit(passes_.pairScatter, "sim/pair_scatter.comp", error) &&
+         buildSplit(passes_.lists, "sim/candidate_lists.comp", error) &&
+         buildSplit(passes_.solve, "sim/contact_solve.comp", error) && setListSplit();
+}
+
+bool CollisionGrid::buildSplit(ComputePass (&pass)[2], const char* path, std::string* error) {
+  return pass[0].build(path, CSM_PARTICLE_GROUP, {}, error) &&
+         pass[1].build(path, CSM_PARTICLE_GROUP, {{"CSM_SPLIT_VIEWS", ""}}, error);
+}
+
+bool CollisionGrid::setListSplit() {
+  // The second view of the sides and of the lists starts where the first ends: as many RG32UI
+  // texels as a view holds, down to where a view may start.
+  const uint64_t step = std::max<uint64_t>(1, viewAlignment_ / sizeof(glm::uvec2));
+  const uint64_t texels = std::min({textureTexels_, splitTexels_, uint64_t(1) << 31});
+  listSplit_ = uint32_t(texels / step * step);
+  for (ComputePass* pass : {&passes_.pairScatter[1], &passes_.lists[1], &passes_.solve[1]})
+    pass->set("listSplit", listSplit_);
+  return true;
+}
+
+void CollisionGrid::limitListSplit(uint64_t texels) {
+  splitTexels_ = texels;
+  setListSplit();
 }
 
 void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegment) {
@@ -147,19 +168,20 @@ void CollisionGrid::bind() const {
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
-  entries_.bindBase(ssbo, CSM_BIND_ENTRIES);
-  pairList_.bindBase(ssbo, CSM_BIND_PAIR_LIST);
-  pairSides_.bindBase(ssbo, CSM_BIND_PAIR_SIDES);
   counters_.bindBase(ssbo, CSM_BIND_COUNTERS);
   dispatch_.bindBase(ssbo, CSM_BIND_DISPATCH);
   segmentPairs_.bindBase(ssbo, CSM_BIND_SEGMENT_PAIRS);
   segmentBase_.bindBase(ssbo, CSM_BIND_SEGMENT_BASE);
   segmentOrder_.bindBase(ssbo, CSM_BIND_SEGMENT_ORDER);
-  candidates_[half_].bindBase(ssbo, CSM_BIND_CANDIDATES);
-  candidates_[half_ ^ 1u].bindBase(ssbo, CSM_BIND_LAST_CANDIDATES);
   candidateRange_.bindBase(ssbo, CSM_BIND_CANDIDATE_RANGE);
   entryTex_.bind(CSM_TEX_ENTRIES);
   gridStartTex_.bind(CSM_TEX_GRID_START);
+  entryTex_.bindImage(CSM_IMAGE_ENTRIES, GL_WRITE_ONLY, GL_RGBA32UI);
+  pairListTex_.bindImage(CSM_IMAGE_PAIR_LIST, GL_READ_WRITE, GL_RGBA32UI);
+  pairSidesTex_.bindImages(CSM_IMAGE_PAIR_SIDES, CSM_IMAGE_PAIR_SIDES_HIGH, GL_READ_WRITE);
+  candidatesTex_[half_].bindImages(CSM_IMAGE_CANDIDATES, CSM_IMAGE_CANDIDATES_HIGH, GL_READ_WRITE);
+  candidatesTex_[half_ ^ 1u].bindImages(CSM_IMAGE_LAST_CANDIDATES, CSM_IMAGE_LAST_CANDIDATES_HIGH,
+                                        GL_READ_ONLY);
 }
 
 void CollisionGrid::findCandidates(StageTimer* timer) {
@@ -194,9 +216,9 @@ void CollisionGrid::findCandidates(StageTimer* timer) {
   gl::memoryBarrier(kPassBarrier);
   dispatchFor(CSM_COUNTER_PAIR_LIST, pairListCapacity_, CSM_PARTICLE_GROUP,
               CSM_DISPATCH_PAIR_SCATTER);
-  passes_.pairScatter.runIndirect(dispatch_, CSM_DISPATCH_PAIR_SCATTER);
+  passes_.pairScatter[splitViews()].runIndirect(dispatch_, CSM_DISPATCH_PAIR_SCATTER);
   gl::memoryBarrier(kPassBarrier);
-  passes_.lists.run(particles);
+  passes_.lists[splitViews()].run(particles);
   gl::memoryBarrier(kPassBarrier);
   // What this search needed, for the next one's beginFrame.
   gl::memoryBarrier(gl::Barrier::BufferUpdate);
@@ -230,7 +252,7 @@ void CollisionGrid::clearFrameCounters() {
 
 void CollisionGrid::solve(unsigned substep) {
   if (segments_ == 0) return;
-  passes_.solve.runSubstep(uint32_t(particles_), substep);
+  passes_.solve[splitViews()].runSubstep(uint32_t(particles_), substep);
   gl::memoryBarrier(kPassBarrier);
 }
 
@@ -260,17 +282,33 @@ bool CollisionGrid::countersSeen(const uint32_t* c) {
 }
 
 void CollisionGrid::limitStorage(uint64_t bytes) {
-  storageBytes_ = std::min(storageBytes_, bytes);
+  bufferBytes_ = std::min(bufferBytes_, bytes);
 }
 
 uint64_t CollisionGrid::entryLimit() const {
-  // 16 bytes an entry, viewed as one RGBA32UI texel: 2 GiB at most, and what the device holds.
-  return std::min({uint64_t(1) << 27, storageBytes_ / 16, textureTexels_});
+  // 16 bytes an entry, one RGBA32UI texel: 2 GiB at most, and what the device's views hold.
+  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, textureTexels_});
 }
 
 uint64_t CollisionGrid::pairLimit() const {
-  // The pair list, the sides and each frame's lists take 16 bytes a pair.
-  return std::min(uint64_t(1) << 27, storageBytes_ / 16);
+  // The pair list takes a pair an RGBA32UI texel; the sides and each frame's lists two RG32UI
+  // texels, in two views of listSplit_ texels each (16 bytes a pair each).
+  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, textureTexels_, uint64_t(listSplit_)});
+}
+
+void CollisionGrid::SplitView::attach(const gl::Buffer& buffer, uint64_t texels, uint32_t split) {
+  // The second view, when the buffer needs none, views the first's texels (never read).
+  const uint64_t lowTexels = std::min<uint64_t>(texels, split);
+  const uint64_t highFirst = texels > split ? split : 0;
+  const uint64_t highTexels = texels > split ? texels - split : lowTexels;
+  constexpr uint64_t bytes = sizeof(glm::uvec2);
+  viewRange(low, buffer, GL_RG32UI, 0, GLsizeiptr(lowTexels * bytes));
+  viewRange(high, buffer, GL_RG32UI, GLintptr(highFirst * bytes), GLsizeiptr(highTexels * bytes));
+}
+
+void CollisionGrid::SplitView::bindImages(GLuint lowUnit, GLuint highUnit, GLenum access) const {
+  low.bindImage(lowUnit, access, GL_RG32UI);
+  high.bindImage(highUnit, access, GL_RG32UI);
 }
 
 void CollisionGrid::growEntries(uint64_t needed) {
@@ -286,9 +324,15 @@ void CollisionGrid::growPairList(uint64_t needed) {
   if (want == 0) return;
   pairListCapacity_ = want;
   zeroed<glm::uvec4>(pairList_, pairListCapacity_);
-  zeroed<glm::uvec2>(pairSides_, 2 * size_t(pairListCapacity_));
+  view(pairListTex_, pairList_, GL_RGBA32UI);
+  const uint64_t sides = 2 * uint64_t(pairListCapacity_);
+  zeroed<glm::uvec2>(pairSides_, sides);
+  pairSidesTex_.attach(pairSides_, sides, listSplit_);
   // Both frames' lists, two sides per pair each; last frame's lists are gone.
-  for (gl::Buffer& lists : candidates_) zeroed<glm::uvec2>(lists, 2 * size_t(pairListCapacity_));
+  for (int h = 0; h < 2; ++h) {
+    zeroed<glm::uvec2>(candidates_[h], sides);
+    candidatesTex_[h].attach(candidates_[h], sides, listSplit_);
+  }
   lastFrameListed_ = false;
 }
 

@@ -76,11 +76,16 @@ class CollisionGrid {
   uint32_t entryCapacity() const { return entryCapacity_; }
   uint32_t pairListCapacity() const { return pairListCapacity_; }
   // Caps the buffers that grow with the hair's density (the entries, the pair list, its sides
-  // and the lists) at `bytes` each, as a device whose storage blocks hold no more, before
+  // and the lists) at `bytes` each, as a device whose buffer textures hold no more, before
   // reset; tests use it to reach the cap with a small scene. A frame that needs more than the
   // capped buffers hold has no strand contacts and says so, as any frame over them. (The
-  // buffers sized by the particles stay under 128 MiB up to ~4 M particles.)
+  // storage buffers sized by the particles stay under 128 MiB up to ~4 M particles.)
   void limitStorage(uint64_t bytes);
+  // Caps the texels of the first view of the sides and of the lists at `texels` (as on a
+  // device whose buffer textures hold no more), before reset; tests use it to put a small
+  // scene's lists across both views.
+  void limitListSplit(uint64_t texels);
+  uint32_t listSplit() const { return listSplit_; }
   uint32_t bucketCount() const { return buckets_; }
 
   // --- Read back at once, for tests and tools. ---
@@ -101,6 +106,12 @@ class CollisionGrid {
   uint64_t pairLimit() const;
   // The last search's counters, copied when it ended: grows the buffers to what it needed.
   void growFromLastSearch();
+  // listSplit_ from the texels a view holds, and the passes' uniform; true.
+  bool setListSplit();
+  // Both builds of a pass that reads or writes the sides or the lists.
+  static bool buildSplit(ComputePass (&pass)[2], const char* path, std::string* error);
+  // Whether the sides and the lists run past their first view (the passes' second build).
+  bool splitViews() const { return 2 * uint64_t(pairListCapacity_) > listSplit_; }
   // Sizes dispatch slot `slot` (CSM_DISPATCH_*) for the items counter `counter` holds (at
   // most `capacity`), in groups of `groupSize`.
   void dispatchFor(uint32_t counter, uint32_t capacity, uint32_t groupSize, uint32_t slot);
@@ -114,20 +125,24 @@ class CollisionGrid {
   uint32_t segments_ = 0;
   double meanSegment_ = 0.0;
   uint32_t buckets_ = 0, scanBlocks_ = 0;
-  uint32_t segmentScan_ = 0;       // counts in the per-segment scan (a power of two)
-  uint32_t entryCapacity_ = 0;     // grid entries the entry buffer holds
-  uint32_t pairListCapacity_ = 0;  // candidate pairs the pair list holds
-  uint32_t half_ = 0;              // which of candidates_ (and of candidateRange_'s halves)
-                                   // holds this frame's lists
-  uint64_t storageBytes_ = 0;      // the most one storage block holds (bytes)
-  uint64_t textureTexels_ = 0;     // the most texels one buffer texture holds
-  bool lastFrameListed_ = false;   // whether the other buffer holds last frame's lists (and
-                                   // the counters its measures)
-  bool searchPending_ = false;     // searchCounters_ holds a search's, not yet read
+  uint32_t segmentScan_ = 0;           // counts in the per-segment scan (a power of two)
+  uint32_t entryCapacity_ = 0;         // grid entries the entry buffer holds
+  uint32_t pairListCapacity_ = 0;      // candidate pairs the pair list holds
+  uint32_t half_ = 0;                  // which of candidates_ (and of candidateRange_'s halves)
+                                       // holds this frame's lists
+  uint64_t bufferBytes_ = UINT64_MAX;  // the most one growing buffer may take (limitStorage)
+  uint64_t textureTexels_ = 0;         // the most texels one buffer texture holds
+  uint64_t viewAlignment_ = 1;         // bytes: where a view of a buffer's range may start
+  uint64_t splitTexels_ = UINT64_MAX;  // limitListSplit's cap
+  uint32_t listSplit_ = 0;             // texels of the first view of the sides and lists
+  bool lastFrameListed_ = false;       // whether the other buffer holds last frame's lists (and
+                                       // the counters its measures)
+  bool searchPending_ = false;         // searchCounters_ holds a search's, not yet read
 
   struct Passes {
-    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates, order,
-        pairScatter, lists, solve;
+    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates, order;
+    // Without the second view of the sides and the lists, and with it (CSM_SPLIT_VIEWS).
+    ComputePass pairScatter[2], lists[2], solve[2];
   } passes_;
   gl::Buffer correction_{gl::NoCreate}, gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
       scanBlockSums_{gl::NoCreate}, entries_{gl::NoCreate}, counters_{gl::NoCreate},
@@ -136,7 +151,18 @@ class CollisionGrid {
       dispatch_{gl::NoCreate}, searchCounters_{gl::NoCreate}, segmentOrder_{gl::NoCreate};
   gl::Fence searchEnd_;  // after the copy to searchCounters_
   gl::Buffer candidates_[2] = {gl::Buffer(gl::NoCreate), gl::Buffer(gl::NoCreate)};
-  gl::BufferTexture entryTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate};
+  // An RG32UI buffer seen as two image views, the second from texel `split` on: more texels
+  // than one view holds (CSM_IMAGE_*_HIGH).
+  struct SplitView {
+    gl::BufferTexture low{gl::NoCreate}, high{gl::NoCreate};
+    void attach(const gl::Buffer& buffer, uint64_t texels, uint32_t split);
+    void bindImages(GLuint lowUnit, GLuint highUnit, GLenum access) const;
+  };
+  // Views of the buffers that grow with the hair: texelFetch (entries) and image load / store
+  // (CSM_IMAGE_*).
+  gl::BufferTexture entryTex_{gl::NoCreate}, gridStartTex_{gl::NoCreate},
+      pairListTex_{gl::NoCreate};
+  SplitView pairSidesTex_, candidatesTex_[2];
 };
 
 }  // namespace csm::gpu

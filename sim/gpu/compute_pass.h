@@ -13,8 +13,10 @@
 
 namespace csm::gpu {
 
-// Between passes: storage writes become visible to storage reads and to texel fetches.
-constexpr gl::Barrier kPassBarrier = gl::Barrier::Storage | gl::Barrier::TextureFetch;
+// Between passes: storage and image writes become visible to storage reads, texel fetches and
+// image loads.
+constexpr gl::Barrier kPassBarrier =
+    gl::Barrier::Storage | gl::Barrier::TextureFetch | gl::Barrier::ImageAccess;
 
 class ComputePass {
  public:

@@ -77,9 +77,12 @@ class GpuSolver final : public Solver {
   // Builds the candidate list of the current state now (stepFrame does it at the start of
   // each frame with strand contacts); the next frame builds its own.
   void detectContacts();
-  // Caps the collision grid's buffers at `bytes` each, as a device whose storage blocks hold
-  // no more (CollisionGrid::limitStorage); the next reset sizes them under it.
+  // Caps the collision grid's growing buffers at `bytes` each, as a device whose buffer
+  // textures hold no more (CollisionGrid::limitStorage); the next reset sizes them under it.
   void limitGridStorage(uint64_t bytes) { grid_.limitStorage(bytes); }
+  // Where the second view of the sides and lists starts, at most (CollisionGrid::limitListSplit).
+  void limitGridListSplit(uint64_t texels) { grid_.limitListSplit(texels); }
+  uint32_t gridListSplit() const { return grid_.listSplit(); }
   // The pairs (a < b) closer than 2r of the last candidate pass, in no particular order;
   // `overflow` when the pair list did not hold them.
   std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr) {

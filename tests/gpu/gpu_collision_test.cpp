@@ -443,13 +443,13 @@ TEST_CASE("GPU lists: a segment lists all of 1500 candidates and none of 2500",
   }
 }
 
-TEST_CASE("GPU grid: its buffers stay within what the device's storage blocks hold",
+TEST_CASE("GPU grid: its buffers stay within the cap on what the device's views hold",
           "[gpu][collision]") {
-  // A buffer bound past GL_MAX_SHADER_STORAGE_BLOCK_SIZE is read and written as the driver
-  // pleases (llvmpipe's 128 MiB: 30,000 strands of Fig. 1 counted different crossings from run
-  // to run). Capped at 128 KiB (8,192 pairs or entries), the packed bundle (~4,500 entries,
-  // ~22,000 pairs) never fits its pairs: every frame says so and has no strand contacts, and
-  // nothing grows past the cap.
+  // A buffer read past what a binding holds is read and written as the driver pleases
+  // (llvmpipe's 128 MiB storage blocks, before the lists moved to buffer textures: 30,000
+  // strands of Fig. 1 counted different crossings from run to run). Capped at 128 KiB (8,192 pairs
+  // or entries), the packed bundle (~4,500 entries, ~22,000 pairs) never fits its pairs: every
+  // frame says so and has no strand contacts, and nothing grows past the cap.
   const Groom g = packedBundle(0);
   const Config c = contactConfig(true);
   const uint64_t cap = 128 * 1024;
