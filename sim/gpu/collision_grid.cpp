@@ -227,6 +227,22 @@ void CollisionGrid::findCandidates(StageTimer* timer) {
   searchPending_ = true;
 }
 
+void CollisionGrid::sizeForBoundState() {
+  if (segments_ == 0) return;
+  beginFrame(true);
+  findCandidates(nullptr);
+  searchPending_ = false;  // read here instead
+  const std::vector<uint32_t> c = readCounters();
+  // A quarter over what it needed, as after an overflow: growEntries and growPairList keep
+  // what is there when that holds it.
+  growEntries(c[CSM_COUNTER_ENTRIES]);
+  growPairList(c[CSM_COUNTER_PAIR_LIST]);
+  // Forgotten: the first frame counts no crossings against it, and no frame over capacity.
+  counters_.clearToZero();
+  candidateRange_.clearToZero();
+  lastFrameListed_ = false;
+}
+
 void CollisionGrid::growFromLastSearch() {
   if (!searchPending_) return;
   searchPending_ = false;
@@ -282,7 +298,7 @@ bool CollisionGrid::countersSeen(const uint32_t* c) {
 }
 
 void CollisionGrid::limitStorage(uint64_t bytes) {
-  bufferBytes_ = std::min(bufferBytes_, bytes);
+  bufferBytes_ = bytes;
 }
 
 uint64_t CollisionGrid::entryLimit() const {

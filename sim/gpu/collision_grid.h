@@ -6,7 +6,8 @@
 // its sorted list. The passes over entries and pairs are dispatched indirectly, sized on the
 // GPU by what the frame has (dispatch_size.comp): a generous capacity costs memory, not time. Every
 // substep, contact_solve.comp: each segment's corrections, which strain_limit.comp applies. The
-// grid's and the pair list's capacities follow what the last search needed: its counters are
+// grid's and the pair list's capacities are sized at reset for a search of the hair as it
+// stands (sizeForBoundState), then follow what the last search needed: its counters are
 // copied behind a fence as it ends and read as the next one begins (beginFrame), so the buffers
 // grow at the same search whatever the GPU's timing and whoever reads the samples (the
 // simulation stays deterministic). A search over either capacity has no strand contacts and says
@@ -49,6 +50,12 @@ class CollisionGrid {
   // no strand contacts, says so in the counters, and the next frame grows them).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
+  // After reserveFor and the first writeParams and bind: a search of the bound state, run and
+  // read back at once (not inside a step), sizes the entries and the pair list a quarter over
+  // what it needs, and is then forgotten (counters and lists as after reset). Dense hair needs
+  // more pairs per entry than reserveFor allows (Fig. 1 at 100,000 strands: its first frame
+  // overflowed); the first frame then fits.
+  void sizeForBoundState();
   // Before a frame's writeParams: the buffers grow to what the last search needed (waiting for
   // it to end on the GPU, which it has unless the CPU runs far ahead); the lists swap buffers
   // (this frame's becomes last frame's);
@@ -76,10 +83,12 @@ class CollisionGrid {
   uint32_t entryCapacity() const { return entryCapacity_; }
   uint32_t pairListCapacity() const { return pairListCapacity_; }
   // Caps the buffers that grow with the hair's density (the entries, the pair list, its sides
-  // and the lists) at `bytes` each, as a device whose buffer textures hold no more, before
-  // reset; tests use it to reach the cap with a small scene. A frame that needs more than the
-  // capped buffers hold has no strand contacts and says so, as any frame over them. (The
-  // storage buffers sized by the particles stay under 128 MiB up to ~4 M particles.)
+  // and the lists) at `bytes` each, as a device whose buffer textures hold no more; tests use
+  // it to reach the cap with a small scene. A frame that needs more than the capped buffers
+  // hold has no strand contacts and says so, as any frame over them. Set before reset, it caps
+  // what the reset sizes; raised later (UINT64_MAX: the device's own limit), the buffers grow
+  // as the next frame begins, as after any overflow. (The storage buffers sized by the
+  // particles stay under 128 MiB up to ~4 M particles.)
   void limitStorage(uint64_t bytes);
   // Caps the texels of the first view of the sides and of the lists at `texels` (as on a
   // device whose buffer textures hold no more), before reset; tests use it to put a small

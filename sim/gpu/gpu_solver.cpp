@@ -91,6 +91,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
 
+  if (listsCandidates()) sizeLists();
   sampledContacts_ = ContactStats{};
   samples_.drop();
   gpu::zeroed<glm::uvec4>(measure_,
@@ -106,11 +107,31 @@ void GpuSolver::uploadRegions() {
 void GpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
+  const bool listed = listsCandidates();
   config_ = config;
   shape_ = sceneHead(config_);
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) resetVolume();
   if (shape_.field != uploadedField_) uploadHeadField();
+  if (!listed && listsCandidates()) sizeLists();
+}
+
+void GpuSolver::setContactMeasures(bool always) {
+  const bool listed = listsCandidates();
+  measureContacts_ = always;
+  if (!listed && listsCandidates()) sizeLists();
+}
+
+bool GpuSolver::listsCandidates() const {
+  return strandContacts(config_.collision.mode) || measureContacts_;
+}
+
+void GpuSolver::sizeLists() {
+  if (hair_.particles == 0 || !failure_.empty()) return;
+  writeParams({head_}, {head_});
+  bindAll();
+  grid_.sizeForBoundState();
+  gl::memoryBarrier(gl::Barrier::All);
 }
 
 void GpuSolver::uploadHeadField() {

@@ -64,7 +64,7 @@ class GpuSolver final : public Solver {
   // Nodes the volume's node pass ran on in the last frame: the box the splat reached (reads
   // back its indirect dispatch; tests).
   size_t volumeNodesVisited() const;
-  void setContactMeasures(bool always) override { measureContacts_ = always; }
+  void setContactMeasures(bool always) override;
   void requestSample(long frame) override;
   std::optional<FrameSample> takeSample(bool wait = false) override;
   void dropSamples() override { samples_.drop(); }
@@ -78,7 +78,8 @@ class GpuSolver final : public Solver {
   // each frame with strand contacts); the next frame builds its own.
   void detectContacts();
   // Caps the collision grid's growing buffers at `bytes` each, as a device whose buffer
-  // textures hold no more (CollisionGrid::limitStorage); the next reset sizes them under it.
+  // textures hold no more (CollisionGrid::limitStorage): the next reset sizes them under it,
+  // and a frame after the cap is raised may grow them past it.
   void limitGridStorage(uint64_t bytes) { grid_.limitStorage(bytes); }
   // Where the second view of the sides and lists starts, at most (CollisionGrid::limitListSplit).
   void limitGridListSplit(uint64_t texels) { grid_.limitListSplit(texels); }
@@ -109,6 +110,10 @@ class GpuSolver final : public Solver {
   bool build(int maxStrandSize, std::string* error);
   void uploadRegions();
   void resetVolume();
+  // Whether frames or samples list candidates (a strand mode, or contact measures).
+  bool listsCandidates() const;
+  // The grid's buffers sized for the hair as it stands (CollisionGrid::sizeForBoundState).
+  void sizeLists();
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
   // The candidate lists of the current state, built now (detectContacts, the measures).

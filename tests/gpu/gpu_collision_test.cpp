@@ -353,16 +353,20 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
 
 TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, says so, grows",
           "[gpu][collision]") {
-  // A bundle of parallel strands packed closer than the candidate distance: ~40 pairs per
-  // segment against ~4 grid entries, so the pair list sized from the entries overflows. That
-  // frame lists no candidates (the counters say how many pairs it needed, and count the frame
-  // as one over capacity); the next one, after a sample reads the counters, fits and lists
+  // A bundle of parallel strands packed closer than the candidate distance (~22,000 pairs),
+  // its lists capped at reset at 8,192 pairs (the reset sizes them for the bundle otherwise),
+  // as hair that packs tighter than it was at reset: the frame lists no candidates (the
+  // counters say how many pairs it needed, and count the frame as one over capacity). With
+  // the cap lifted, the next frame grows the list to what that one needed, fits and lists
   // them.
   auto gpu = test::gpuSolver();
   const Groom g = packedBundle(0);
   const Config c = contactConfig(true);
+  gpu->limitGridStorage(128 * 1024);
   gpu->reset(g, c, Pose{});
+  gpu->limitGridStorage(UINT64_MAX);
   const uint32_t capacity = gpu->gridStats().pairCapacity;
+  CHECK(capacity == 128 * 1024 / 16);
   gpu->stepFrame(Pose{}, Pose{});
   const GpuSolver::GridStats over = gpu->gridStats();
   INFO("pairs " << over.pairs << " capacity " << over.pairCapacity);
@@ -370,7 +374,7 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
   CHECK(over.entries <= over.capacity);
   const auto empty = gpu->readCandidates();
   CHECK(std::all_of(empty.begin(), empty.end(), [](const auto& l) { return l.empty(); }));
-  // The sample grows the list; the next frame fits.
+  // The next frame grows the list and fits.
   const ContactStats overStats = gpu->readContactStats();
   CHECK(overStats.candidates == over.pairs);
   CHECK(overStats.overflows == 1);
@@ -466,28 +470,60 @@ TEST_CASE("GPU grid: its buffers stay within the cap on what the device's views 
   CHECK(gpu->readContactStats().overflows == 3);
   const auto lists = gpu->readCandidates();
   CHECK(std::all_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); }));
-  // Uncapped, the same scene fits from the second frame on.
+  // Uncapped, the reset sizes the lists for the bundle: every frame fits.
   auto free = test::gpuSolver();
   free->reset(g, c, Pose{});
   for (int f = 0; f < 3; ++f) free->stepFrame(Pose{}, Pose{});
-  CHECK(free->readContactStats().overflows == 1);
+  CHECK(free->readContactStats().overflows == 0);
   CHECK(free->gridStats().pairCapacity > cap / 16);
+}
+
+TEST_CASE("GPU grid: a reset or a switch to a strand mode sizes the lists for the hair as it is",
+          "[gpu][collision]") {
+  // The packed bundle needs ~40 pairs a segment against ~4 grid entries: more than the
+  // reserve from the entries holds (its first frame overflowed when that was all). The reset
+  // in a strand mode, and a switch to one from head only, search the hair as it stands and
+  // size the lists for it: the first frame fits, and the sizing search counts as no frame.
+  const Groom g = packedBundle(0);
+  Config c = contactConfig(true);
+  auto reset = test::gpuSolver(), switched = test::gpuSolver();
+  reset->reset(g, c, Pose{});
+  c.collision.mode = CollisionMode::Head;
+  switched->reset(g, c, Pose{});
+  const uint32_t reserved = switched->gridStats().pairCapacity;
+  c.collision.mode = CollisionMode::Strands;
+  switched->setConfig(c);
+  for (GpuSolver* s : {reset.get(), switched.get()}) {
+    s->stepFrame(Pose{}, Pose{});
+    const GpuSolver::GridStats grid = s->gridStats();
+    INFO("pairs " << grid.pairs << " capacity " << grid.pairCapacity << " reserved " << reserved);
+    CHECK(grid.pairs > reserved);
+    CHECK(grid.pairs <= grid.pairCapacity);
+    CHECK(s->readContactStats().overflows == 0);
+    CHECK(s->readContactStats().crossings == 0);
+    size_t listed = 0;
+    for (const auto& l : s->readCandidates()) listed += l.size();
+    CHECK(listed == 2 * size_t(grid.pairs));
+  }
 }
 
 TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counters",
           "[gpu][collision]") {
-  // The packed bundle overflows its pair list on the first frame. One solver reads every
-  // frame's sample at once (as a headless run writing frames does), the other reads nothing
-  // (as a viewer whose samples arrive late): both grow as the second frame begins and end
-  // bit-identical. Growing when a sample's read-back arrived made the frame of growth, and so
-  // the motion, depend on who read and when.
+  // The packed bundle, its lists capped at reset, overflows its pair list on the first frame.
+  // One solver reads every frame's sample at once (as a headless run writing frames does),
+  // the other reads nothing (as a viewer whose samples arrive late): both grow as the second
+  // frame begins and end bit-identical. Growing when a sample's read-back arrived made the
+  // frame of growth, and so the motion, depend on who read and when.
   const Groom g = packedBundle(3);
   Config c = contactConfig(false);
   c.sim.gravity = glm::vec3(0.0f, -9.81f, 0.0f);
   c.sim.rootLength = 0.004f;  // the head holds the first segment; the rest sags
   auto eager = test::gpuSolver(), never = test::gpuSolver();
-  eager->reset(g, c, Pose{});
-  never->reset(g, c, Pose{});
+  for (GpuSolver* s : {eager.get(), never.get()}) {
+    s->limitGridStorage(128 * 1024);
+    s->reset(g, c, Pose{});
+    s->limitGridStorage(UINT64_MAX);
+  }
   const uint32_t capacity = eager->gridStats().pairCapacity;
   for (long f = 0; f < 4; ++f) {
     eager->stepFrame(Pose{}, Pose{});
