@@ -227,10 +227,8 @@ void CollisionGrid::findCandidates(StageTimer* timer) {
   searchPending_ = true;
 }
 
-void CollisionGrid::sizeForBoundState() {
+void CollisionGrid::sizeForLastSearch() {
   if (segments_ == 0) return;
-  beginFrame(true);
-  findCandidates(nullptr);
   searchPending_ = false;  // read here instead
   const std::vector<uint32_t> c = readCounters();
   // A quarter over what it needed, as after an overflow: growEntries and growPairList keep
@@ -307,9 +305,10 @@ uint64_t CollisionGrid::entryLimit() const {
 }
 
 uint64_t CollisionGrid::pairLimit() const {
-  // The pair list takes a pair an RGBA32UI texel; the sides and each frame's lists two RG32UI
-  // texels, in two views of listSplit_ texels each (16 bytes a pair each).
-  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, textureTexels_, uint64_t(listSplit_)});
+  // The sides and each frame's lists take two RG32UI texels a pair, in two views of
+  // listSplit_ texels each; the pair list one RGBA32UI texel a pair, within one view as
+  // listSplit_ is (16 bytes a pair each).
+  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, uint64_t(listSplit_)});
 }
 
 void CollisionGrid::SplitView::attach(const gl::Buffer& buffer, uint64_t texels, uint32_t split) {

@@ -7,7 +7,7 @@
 // GPU by what the frame has (dispatch_size.comp): a generous capacity costs memory, not time. Every
 // substep, contact_solve.comp: each segment's corrections, which strain_limit.comp applies. The
 // grid's and the pair list's capacities are sized at reset for a search of the hair as it
-// stands (sizeForBoundState), then follow what the last search needed: its counters are
+// stands (sizeForLastSearch), then follow what the last search needed: its counters are
 // copied behind a fence as it ends and read as the next one begins (beginFrame), so the buffers
 // grow at the same search whatever the GPU's timing and whoever reads the samples (the
 // simulation stays deterministic). A search over either capacity has no strand contacts and says
@@ -50,12 +50,12 @@ class CollisionGrid {
   // no strand contacts, says so in the counters, and the next frame grows them).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
-  // After reserveFor and the first writeParams and bind: a search of the bound state, run and
-  // read back at once (not inside a step), sizes the entries and the pair list a quarter over
-  // what it needs, and is then forgotten (counters and lists as after reset). Dense hair needs
-  // more pairs per entry than reserveFor allows (Fig. 1 at 100,000 strands: its first frame
-  // overflowed); the first frame then fits.
-  void sizeForBoundState();
+  // After a search of the hair as it stands (a reset's, not inside a step): reads it back at
+  // once, sizes the entries and the pair list a quarter over what it needed, and forgets it
+  // (counters and lists as after reset). Dense hair needs more pairs per entry than
+  // reserveFor allows (Fig. 1 at 100,000 strands: its first frame overflowed); the first frame
+  // then fits.
+  void sizeForLastSearch();
   // Before a frame's writeParams: the buffers grow to what the last search needed (waiting for
   // it to end on the GPU, which it has unless the CPU runs far ahead); the lists swap buffers
   // (this frame's becomes last frame's);

@@ -128,9 +128,8 @@ bool GpuSolver::listsCandidates() const {
 
 void GpuSolver::sizeLists() {
   if (hair_.particles == 0 || !failure_.empty()) return;
-  writeParams({head_}, {head_});
-  bindAll();
-  grid_.sizeForBoundState();
+  listCandidatesNow(nullptr);
+  grid_.sizeForLastSearch();
   gl::memoryBarrier(gl::Barrier::All);
 }
 

@@ -112,7 +112,7 @@ class GpuSolver final : public Solver {
   void resetVolume();
   // Whether frames or samples list candidates (a strand mode, or contact measures).
   bool listsCandidates() const;
-  // The grid's buffers sized for the hair as it stands (CollisionGrid::sizeForBoundState).
+  // The grid's buffers sized for the hair as it stands (CollisionGrid::sizeForLastSearch).
   void sizeLists();
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
