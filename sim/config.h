@@ -128,6 +128,7 @@ struct CollisionConfig {
   // in on each other in one frame.
   float margin = 0.0005f;     // m
   float compliance = 0.0f;    // m/N: 0 = hard contacts
+  int iterations = 1;         // Jacobi iterations of the strand contacts per substep
   float friction = 0.3f;      // Coulomb coefficient between strands
   float headFriction = 0.3f;  // Coulomb friction coefficient against the head
   // The volume mode (sim/volume.h).

@@ -162,6 +162,19 @@ std::vector<double> contactInverseMass(const HairState& state, const Regions& re
   return w;
 }
 
+void applyCorrections(std::span<const glm::dvec4> correction, std::span<const uint32_t> first,
+                      double h, std::span<glm::dvec3> x, std::span<glm::dvec3> v) {
+  const size_t strands = first.size() - 1;
+  parallelFor(strands, 64, [&](size_t from, size_t to) {
+    for (size_t s = from; s < to; ++s)
+      for (uint32_t i = first[s] + 1; i < first[s + 1]; ++i) {
+        const glm::dvec3 moved = particleCorrection(correction, i, first[s], first[s + 1]);
+        x[i] += moved;
+        v[i] += moved / h;
+      }
+  });
+}
+
 void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
                    std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
                    const ContactSettings& settings, std::vector<glm::dvec4>& correction) {

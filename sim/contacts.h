@@ -119,6 +119,12 @@ ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const 
 // holds (each strand's first regions.pinned), which follow the head whatever pushes them.
 std::vector<double> contactInverseMass(const HairState& state, const Regions& regions);
 
+// Moves each particle of the strands [first[s], first[s+1]) but the root by what its segments
+// sent (particleCorrection), its velocity by that over h: one contact iteration before the
+// next. The held particles were sent nothing (their inverse mass is 0).
+void applyCorrections(std::span<const glm::dvec4> correction, std::span<const uint32_t> first,
+                      double h, std::span<glm::dvec3> x, std::span<glm::dvec3> v);
+
 // The corrections of one substep of length h: for each segment i, correction[2i] goes to
 // particle i and correction[2i+1] to particle i+1 (w: how many contacts sent it). x and v after
 // shape matching; invMass per particle, 0 for the held ones (they follow the head).

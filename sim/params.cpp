@@ -19,6 +19,10 @@ bool volumeMode(const Config& c) {
   return volumeForces(c.collision.mode);
 }
 
+bool strandMode(const Config& c) {
+  return strandContacts(c.collision.mode);
+}
+
 std::vector<Param<Config>> build() {
   return {
       param("hairstyle.file", "Groom file", "Hairstyle", &Config::hairstyle, &HairstyleConfig::file,
@@ -263,6 +267,12 @@ std::vector<Param<Config>> build() {
             &Config::collision, &CollisionConfig::compliance, 0.0, 100.0,
             "Strand contacts: give of a contact, metres per newton (XPBD); 0 = hard.",
             Effect::Live),
+      param("collision.iterations", "Contact iterations", "Simulation|Collision",
+            &Config::collision, &CollisionConfig::iterations, 1, 16,
+            "Strand contacts: Jacobi iterations per substep. More hold dense hair apart better "
+            "(fewer crossings) and cost one more contact solve each.",
+            Effect::Live)
+          .onlyWhen(strandMode),
       param("collision.friction", "Hair friction", "Simulation|Collision", &Config::collision,
             &CollisionConfig::friction, 0.0, 2.0,
             "Coulomb friction coefficient between strands: sliding is held back by at most this "

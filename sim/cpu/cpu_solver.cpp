@@ -368,6 +368,12 @@ void CpuSolver::step(double h, const Pose& head) {
   stages_[0].ms += msSince(t0);
   t0 = Clock::now();
   if (strandContacts(config_.collision.mode) && !candidates_.start.empty()) {
+    // All but the last iteration move the particles here; the last one's corrections are
+    // applied by the strain-limit sweep.
+    for (int k = 1; k < config_.collision.iterations; ++k) {
+      solveContacts(candidates_, x_, v_, invMass_, h, contactSettings(), correction_);
+      applyCorrections(correction_, first_, h, x_, v_);
+    }
     solveContacts(candidates_, x_, v_, invMass_, h, contactSettings(), correction_);
     stages_[3].ms += msSince(t0);
     t0 = Clock::now();

@@ -56,6 +56,7 @@ bool CollisionGrid::build(std::string* error) {
          passes_.dispatchSize.build("sim/dispatch_size.comp", 1, {}, error) &&
          passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, {}, error) &&
          passes_.order.build("sim/segment_order.comp", CSM_PARTICLE_GROUP, {}, error) &&
+         passes_.apply.build("sim/contact_apply.comp", CSM_STRAND_GROUP, {}, error) &&
          buildSplit(passes_.pairScatter, "sim/pair_scatter.comp", error) &&
          buildSplit(passes_.lists, "sim/candidate_lists.comp", error) &&
          buildSplit(passes_.solve, "sim/contact_solve.comp", error) && setListSplit();
@@ -264,9 +265,16 @@ void CollisionGrid::clearFrameCounters() {
   counters_.clearToZero(0, CSM_COUNTERS_PER_FRAME * sizeof(uint32_t));
 }
 
-void CollisionGrid::solve(unsigned substep) {
+void CollisionGrid::solve(unsigned substep, int iterations, uint32_t strands) {
   if (segments_ == 0) return;
-  passes_.solve[splitViews()].runSubstep(uint32_t(particles_), substep);
+  ComputePass& solve = passes_.solve[splitViews()];
+  for (int k = 1; k < iterations; ++k) {
+    solve.runSubstep(uint32_t(particles_), substep);
+    gl::memoryBarrier(kPassBarrier);
+    passes_.apply.runSubstep(strands, substep);
+    gl::memoryBarrier(kPassBarrier);
+  }
+  solve.runSubstep(uint32_t(particles_), substep);
   gl::memoryBarrier(kPassBarrier);
 }
 

@@ -69,8 +69,10 @@ class CollisionGrid {
   // The frame's candidates from the bound state, timed as the grid stage (timer null:
   // untimed).
   void findCandidates(StageTimer* timer);
-  // One substep's corrections (the timer's stage is the caller's).
-  void solve(unsigned substep);
+  // One substep's corrections (the timer's stage is the caller's): `iterations` contact solves,
+  // each but the last applied to the positions and velocities of the `strands` here, the
+  // last one left for the strain-limit sweep.
+  void solve(unsigned substep, int iterations, uint32_t strands);
   // Grows the entry buffer or the pair list when `counters` (read back) say they did not fit;
   // true if either grew. beginFrame calls it with the last search's counters; a tool that reads
   // them at once may too (GpuSolver::detectContacts).
@@ -149,7 +151,8 @@ class CollisionGrid {
   bool searchPending_ = false;         // searchCounters_ holds a search's, not yet read
 
   struct Passes {
-    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates, order;
+    ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates, order,
+        apply;
     // Without the second view of the sides and the lists, and with it (CSM_SPLIT_VIEWS).
     ComputePass pairScatter[2], lists[2], solve[2];
   } passes_;

@@ -314,7 +314,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     gl::memoryBarrier(gpu::kPassBarrier);
     if (contacts) {
       timer_.stage(gpu::kContacts);
-      grid_.solve(unsigned(k));
+      grid_.solve(unsigned(k), config_.collision.iterations, strands);
     }
     timer_.stage(gpu::kStrainLimiting);
     passes_.strainLimit.runSubstep(strands, unsigned(k));
