@@ -4,7 +4,9 @@
 # writes OUT/modes.csv for scripts/charts.py (chart "modes") and prints it as a table.
 #   scripts/bench_modes.sh OUT [PRESET] [FRAMES] [STRANDS...]
 # Defaults: paper_fig1_straight, 4 frames, 1000 3000 10000 30000 100000 strands.
-# MODES (default "off head strands") and SOLVERS (default "gpu") pick a subset.
+# MODES (default "off head strands") and SOLVERS (default "gpu") pick a subset; a mode
+# written MODE:N runs with N contact iterations a substep (collision.iterations), as its own
+# row and line ("strands:4").
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$1
@@ -22,9 +24,10 @@ echo "Load before: $(uptime | sed 's/.*load average: //'); $(nproc) cores, $(lsc
 for solver in ${SOLVERS:-gpu}; do
   for n in $counts; do
     for mode in ${MODES:-off head strands}; do
+      sets=(--set "collision.mode=${mode%%:*}" --set "hairstyle.strands=$n")
+      [[ $mode == *:* ]] && sets+=(--set "collision.iterations=${mode#*:}")
       if ! "$bin" "$root/presets/$preset.json" --headless --frames "$frames" --no-render --quiet \
-        --solver "$solver" --set "collision.mode=$mode" --set "hairstyle.strands=$n" \
-        --metrics "$tmp/m.json" >"$tmp/log" 2>&1; then
+        --solver "$solver" "${sets[@]}" --metrics "$tmp/m.json" >"$tmp/log" 2>&1; then
         echo "bench_modes.sh: $solver $mode $n strands failed:" >&2
         cat "$tmp/log" >&2
         exit 1

@@ -363,7 +363,15 @@ def window_chart(coefficients, sags, out):
 
 
 MODE_STYLE = {"off": ("#7f7f7f", "v"), "head": ("#1f77b4", "o"), "strands": ("#9467bd", "P"),
-              "volume": ("#2ca02c", "s"), "volume+strands": ("#d62728", "D")}
+              "volume": ("#2ca02c", "s"), "volume+strands": ("#d62728", "D"),
+              "strands:4": ("#e377c2", "X")}
+
+
+def mode_label(mode):
+    """A bench_modes.sh mode as the legend says it: MODE:N is MODE with N contact
+    iterations a substep."""
+    name, _, iterations = mode.partition(":")
+    return f"{name}, {iterations} iterations" if iterations else name
 
 
 def modes_chart(rows, out):
@@ -390,14 +398,14 @@ def modes_chart(rows, out):
                       num(r, "crossings_per_s"), apart(r)) for r in rows if r["mode"] == m)
         split = any(r.get("crossings_close_per_s") for r in rows if r["mode"] == m)
         xs = [p[0] for p in pts]
-        axes[0].plot(xs, [p[1] for p in pts], marker=marker, color=color, label=m)
+        axes[0].plot(xs, [p[1] for p in pts], marker=marker, color=color, label=mode_label(m))
         axes[1].plot([p[2] / p[0] for p in pts], [p[1] for p in pts], marker=marker,
-                     color=color, label=m)
+                     color=color, label=mode_label(m))
         if split:
             axes[2].plot([max(p[3], 1.0) for p in pts], [p[1] for p in pts], marker=marker,
                          color=color, linestyle=":", alpha=0.5, markerfacecolor="none")
         axes[2].plot([max(p[4], 1.0) for p in pts], [p[1] for p in pts], marker=marker,
-                     color=color, label=m)
+                     color=color, label=mode_label(m))
         for p in pts:
             axes[1].annotate(f"{p[0] / 1000:g}k", (p[2] / p[0], p[1]), fontsize=6,
                              xytext=(3, 0), textcoords="offset points")
