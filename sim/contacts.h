@@ -4,9 +4,10 @@
 //    both of its segments, with its contact distance (2r, or the pair's rest distance when the
 //    groom put it closer) and what the contact measures need;
 //  - every substep, after shape matching, each segment's correction from its candidates as
-//    compliant position constraints (XPBD, one Jacobi iteration) with Coulomb friction; the
-//    strain-limit sweep then moves each particle by the mean of the corrections its two
-//    segments sent it, before limiting it.
+//    compliant position constraints (XPBD, collision.iterations Jacobi iterations) with
+//    Coulomb friction; each iteration but the last moves the particles (applyCorrections),
+//    and the strain-limit sweep moves each particle by the mean of the corrections of the
+//    last iteration that its two segments sent it, before limiting it.
 // Every sum runs in a fixed order (a segment's candidates by their index), so the result does
 // not depend on the schedule.
 #pragma once

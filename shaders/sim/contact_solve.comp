@@ -1,7 +1,8 @@
 // Strand contacts, one substep (DESIGN.md section 1.7; the CPU reference is csm::solveContacts
 // in sim/contacts.cpp), one invocation per segment, after shape matching: each of the
 // segment's candidates closer than its contact distance is a compliant position constraint
-// (XPBD, one Jacobi iteration: lambda = -C / (W + compliance / h^2)), held to the side it was
+// (XPBD, one Jacobi iteration of collision.iterations: lambda = -C / (W + compliance / h^2);
+// contact_apply.comp moves the particles between two), held to the side it was
 // listed on when skew (contactNormal), with Coulomb friction on
 // the contact points' relative sliding this step, removed up to mu times the normal
 // correction. The segment writes what its two particles move by (and how many contacts sent
