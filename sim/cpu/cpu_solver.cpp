@@ -661,6 +661,8 @@ bool CpuSolver::restoreState(const SolverState& in, std::string* error) {
   for (size_t i = 0; i < q_.size(); ++i) q_[i] = Eigen::Quaterniond(q[i].w, q[i].x, q[i].y, q[i].z);
   time_ = time;
   head_ = head;
+  // The last list is of another state: nothing to count crossings against (as after a reset).
+  candidates_ = ContactCandidates{};
   return true;
 }
 

@@ -406,6 +406,10 @@ bool GpuSolver::restoreState(const SolverState& in, std::string* error) {
   }
   time_ = time;
   head_ = head;
+  // Lists sized for the hair restored (a denser state than the reset's overflowed its first
+  // frame), and no last list: the one kept is of another state, nothing to count crossings
+  // against (as after a reset).
+  if (listsCandidates()) sizeLists();
   return true;
 }
 

@@ -507,6 +507,39 @@ TEST_CASE("GPU grid: a reset or a switch to a strand mode sizes the lists for th
   }
 }
 
+TEST_CASE("GPU grid: a restored state sizes the lists for the hair it restores",
+          "[gpu][collision]") {
+  // A solver reset on the bundle's strands 5 cm apart (no pairs: the lists hold the least
+  // they reserve) restores the packed bundle's state: the lists are sized for it there, so
+  // its first frame fits (it overflowed when a restore left them as they were).
+  const Groom packed = packedBundle(0);
+  Groom spread;
+  for (int i = 0; i < 15; ++i)
+    for (int j = 0; j < 15; ++j) {
+      std::vector<glm::vec3> points;
+      for (int k = 0; k < 6; ++k)
+        points.push_back(glm::vec3(0.05f * float(i), 0.05f * float(j), 0.004f * float(k)));
+      spread.addStrand(points);
+    }
+  const Config c = contactConfig(true);
+  auto source = test::gpuSolver(), restored = test::gpuSolver();
+  source->reset(packed, c, Pose{});
+  SolverState state;
+  source->saveState(state);
+  restored->reset(spread, c, Pose{});
+  const uint32_t reserved = restored->gridStats().pairCapacity;
+  std::string error;
+  REQUIRE(restored->restoreState(state, &error));
+  restored->stepFrame(Pose{}, Pose{});
+  source->stepFrame(Pose{}, Pose{});
+  const GpuSolver::GridStats grid = restored->gridStats();
+  INFO("pairs " << grid.pairs << " capacity " << grid.pairCapacity << " reserved " << reserved);
+  CHECK(grid.pairs > reserved);
+  CHECK(grid.pairs <= grid.pairCapacity);
+  CHECK(restored->readContactStats().overflows == 0);
+  CHECK(grid.pairs == source->gridStats().pairs);
+}
+
 TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counters",
           "[gpu][collision]") {
   // The packed bundle, its lists capped at reset, overflows its pair list on the first frame.
