@@ -18,14 +18,13 @@ layout(binding = CSM_TEX_GRID_START) uniform usamplerBuffer gridStartTex;
 
 layout(std430, binding = CSM_BIND_SEGMENT_BASE) readonly buffer SegmentBase { uint segBase[]; };
 layout(binding = CSM_IMAGE_PAIR_SIDES, rg32ui) readonly uniform uimageBuffer pairSides;
-layout(binding = CSM_IMAGE_CANDIDATES, rg32ui) uniform uimageBuffer candidates;
+#define CSM_CANDIDATES_ACCESS  // written here
+#include "sim/candidate_views.glsl"
 layout(binding = CSM_IMAGE_LAST_CANDIDATES, rg32ui) readonly uniform uimageBuffer lastCandidates;
 #ifdef CSM_SPLIT_VIEWS
 layout(binding = CSM_IMAGE_PAIR_SIDES_HIGH, rg32ui) readonly uniform uimageBuffer pairSidesHigh;
-layout(binding = CSM_IMAGE_CANDIDATES_HIGH, rg32ui) uniform uimageBuffer candidatesHigh;
 layout(binding = CSM_IMAGE_LAST_CANDIDATES_HIGH, rg32ui) readonly uniform uimageBuffer
     lastCandidatesHigh;
-uniform uint listSplit;  // the first slot of each *_HIGH view
 #endif
 layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) buffer CandidateRange {
   uvec2 candidateRange[];
@@ -38,18 +37,13 @@ layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
 };
 
 uint keyOf(uvec2 c) { return c.x & kIndex; }
-// Slot i of the sides, this frame's lists and last frame's, wherever its view is.
+// Slot i of the sides, this frame's lists and last frame's, wherever its view is
+// (candidateAt: candidate_views.glsl).
 uvec2 sideAt(uint i) {
 #ifdef CSM_SPLIT_VIEWS
   if (i >= listSplit) return imageLoad(pairSidesHigh, int(i - listSplit)).xy;
 #endif
   return imageLoad(pairSides, int(i)).xy;
-}
-uvec2 candidateAt(uint i) {
-#ifdef CSM_SPLIT_VIEWS
-  if (i >= listSplit) return imageLoad(candidatesHigh, int(i - listSplit)).xy;
-#endif
-  return imageLoad(candidates, int(i)).xy;
 }
 void setCandidate(uint i, uvec2 c) {
 #ifdef CSM_SPLIT_VIEWS

@@ -17,11 +17,7 @@ layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
 layout(binding = CSM_TEX_INVERSE_MASS) uniform samplerBuffer inverseMassTex;
 
-layout(binding = CSM_IMAGE_CANDIDATES, rg32ui) readonly uniform uimageBuffer candidates;
-#ifdef CSM_SPLIT_VIEWS
-layout(binding = CSM_IMAGE_CANDIDATES_HIGH, rg32ui) readonly uniform uimageBuffer candidatesHigh;
-uniform uint listSplit;  // the first slot of CANDIDATES_HIGH
-#endif
+#include "sim/candidate_views.glsl"
 layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) readonly buffer CandidateRange {
   uvec2 candidateRange[];
 };
@@ -33,12 +29,6 @@ layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
 };
 
 uniform uint substep;
-uvec2 candidateAt(uint i) {
-#ifdef CSM_SPLIT_VIEWS
-  if (i >= listSplit) return imageLoad(candidatesHigh, int(i - listSplit)).xy;
-#endif
-  return imageLoad(candidates, int(i)).xy;
-}
 
 
 vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
