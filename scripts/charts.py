@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""Charts for docs/BENCHMARKS.md ("Speed against accuracy") from the CSV csmhair-bench writes.
+"""Charts for docs/BENCHMARKS.md ("Speed against accuracy") from the CSV csmhair-bench and the
+bench scripts write.
 
 usage: /usr/bin/python3 scripts/charts.py DIR [SECTION...]
 
 Reads DIR/{methods,stability,resolution,region_sums,scaling,scene_choices,window_coefficient,
-window_sag,modes,torture,soak_rss}.csv (whichever are there; with SECTIONs, only those
-sections': methods, stability, ..., window, modes, torture, soak) and writes PNG and SVG charts
-next to them. Needs only Debian's python3-matplotlib.
+window_sag,modes,contact_settings,torture,soak_rss}.csv (whichever are there; with SECTIONs,
+only those sections': methods, stability, ..., window, modes, contact_settings, torture, soak)
+and writes PNG and SVG charts next to them. Needs only Debian's python3-matplotlib.
 """
 import csv
 import json
@@ -15,6 +16,7 @@ import os
 import sys
 
 import matplotlib
+import matplotlib.ticker
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -425,6 +427,69 @@ def modes_chart(rows, out):
     save(fig, out, "modes")
 
 
+def contact_settings_chart(rows, out):
+    """scripts/bench_contact_settings.sh: `strands` mode's contact settings (iterations,
+    substeps, margin, lists a frame) at one strand count, their cost a frame against the
+    penetration depth's median and 99th percentile and the crossings of pairs apart at rest;
+    head only and twice it as lines (the issue's cost target). A row whose lists did not fit
+    (crossings empty) is left out. Runs that list more than once a frame count crossings
+    between lists that much closer in time, so they see more of them: their crossings are
+    not comparable with the others' (the legend says so)."""
+    from matplotlib.lines import Line2D
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4.5))
+    head = [num(r, "sim_ms") for r in rows if r["mode"] == "head"]
+    runs = [r for r in rows if r["mode"] != "head" and (r.get("crossings_per_s") or "") != ""]
+    colours = {"1": "#1f77b4", "2": "#2ca02c", "4": "#d62728", "8": "#9467bd"}
+    markers = {"4": "o", "8": "s", "16": "^", "2": "v", "1": "D"}
+    for r in runs:
+        close = r.get("crossings_close_per_s") or ""
+        apart = num(r, "crossings_per_s") - (float(close) if close else 0.0)
+        colour = colours.get(r["lists"], "#7f7f7f")
+        marker = markers.get(r["substeps"], "o")
+        face = "none" if r.get("margin_mm") else colour
+        for ax, x in ((axes[0], num(r, "depth_p50")), (axes[1], num(r, "depth_p99")),
+                      (axes[2], max(apart, 1.0))):
+            ax.plot([x], [num(r, "sim_ms")], marker=marker, color=colour, markerfacecolor=face,
+                    linestyle="none")
+            ax.annotate(r["setting"], (x, num(r, "sim_ms")), fontsize=6, xytext=(3, 2),
+                        textcoords="offset points")
+    for ax in axes:
+        if head:
+            ax.axhline(head[0], color="#555555", linewidth=0.8)
+            ax.axhline(2 * head[0], color="#555555", linewidth=0.8, linestyle="--")
+            ax.annotate("head only", (0.01, head[0]), xycoords=("axes fraction", "data"),
+                        fontsize=7, xytext=(0, 2), textcoords="offset points")
+            ax.annotate("2x head only", (0.01, 2 * head[0]), xycoords=("axes fraction", "data"),
+                        fontsize=7, xytext=(0, 2), textcoords="offset points")
+        ax.set_yscale("log")
+        ax.yaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
+        ax.yaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
+        ax.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        ax.set_ylabel("simulation ms per frame")
+    axes[1].axvline(0.25, color="#2ca02c", linewidth=0.8, linestyle=":")
+    axes[0].set_xlabel("penetration depth p50 (r)")
+    axes[1].set_xlabel("penetration depth p99 (r); dotted: the target, 0.25 r")
+    axes[2].set_xscale("log")
+    axes[2].set_xlabel("crossings per second of pairs apart at rest")
+    n = runs[0]["strands"] if runs else "?"
+    axes[0].set_title(f"Cost against median depth ({n} strands)", fontsize=9)
+    axes[1].set_title("Cost against p99 depth", fontsize=9)
+    axes[2].set_title("Cost against crossings", fontsize=9)
+    legend = []
+    for k, c in colours.items():
+        if any(r["lists"] == k for r in runs):
+            label = "1 list a frame" if k == "1" else (
+                f"{k} lists a frame (crossings counted {k}x as often)")
+            legend.append(Line2D([], [], color=c, marker="o", linestyle="none", label=label))
+    legend += [Line2D([], [], color="#555555", marker=m, linestyle="none", label=f"{k} substeps")
+               for k, m in markers.items() if any(r["substeps"] == k for r in runs)]
+    if any(r.get("margin_mm") for r in runs):
+        legend.append(Line2D([], [], color="#555555", marker="o", markerfacecolor="none",
+                             linestyle="none", label="margin changed (hollow)"))
+    axes[2].legend(handles=legend, fontsize=7, loc="lower right")
+    save(fig, out, "contact_settings")
+
+
 
 # ---- reliability: the torture map and the soak (docs/RELIABILITY.md) --------------------------
 
@@ -534,6 +599,7 @@ def main():
                               ("resolution", "resolution", resolution_chart),
                               ("scene_choices", "scene_choices", scene_chart),
                               ("modes", "modes", modes_chart),
+                              ("contact_settings", "contact_settings", contact_settings_chart),
                               ("torture", "torture", torture_chart),
                               ("soak_rss", "soak", soak_chart)):
         rows = read(os.path.join(out, f"{name}.csv")) if wanted(section) else None
