@@ -123,12 +123,15 @@ struct CollisionConfig {
   CollisionMode mode = CollisionMode::Strands;
   HeadShape headShape = HeadShape::Spheres;  // shipped presets choose sdf
   float radius = 0.001f;                     // hair radius, metres: two strands touch at 2r
-  // Strand contacts (sim/contacts.h): the pairs within 2r + margin at the start of a frame are
-  // the candidates its substeps resolve, so the margin must cover how far two strands close
-  // in on each other in one frame.
-  float margin = 0.0005f;     // m
-  float compliance = 0.0f;    // m/N: 0 = hard contacts
-  int iterations = 1;         // Jacobi iterations of the strand contacts per substep
+  // Strand contacts (sim/contacts.h): the pairs within 2r + margin at the start of a frame
+  // (and at each list within it) are the candidates its substeps resolve, so the margin must
+  // cover how far two strands close in on each other until the next list.
+  float margin = 0.0005f;   // m
+  float compliance = 0.0f;  // m/N: 0 = hard contacts
+  int iterations = 1;       // Jacobi iterations of the strand contacts per substep
+  // Candidate lists a frame (at most its substeps): the first where the frame starts, the
+  // others spread over its substeps (listsBefore in sim/contacts.h), each a search's cost.
+  int lists = 1;
   float friction = 0.3f;      // Coulomb coefficient between strands
   float headFriction = 0.3f;  // Coulomb friction coefficient against the head
   // The volume mode (sim/volume.h).

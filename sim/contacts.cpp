@@ -152,6 +152,13 @@ ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const 
   return out;
 }
 
+bool listsBefore(int substep, int substeps, int lists) {
+  const int n = std::clamp(lists, 1, std::max(substeps, 1));
+  for (int j = 1; j < n; ++j)
+    if (j * substeps / n == substep) return true;
+  return false;
+}
+
 std::vector<double> contactInverseMass(const HairState& state, const Regions& regions) {
   std::vector<double> w(state.particleCount(), 0.0);
   for (size_t s = 0; s < state.strandCount(); ++s) {

@@ -1,8 +1,8 @@
 // Strand contacts as constraints (DESIGN.md section 1.7), the CPU reference of the GPU passes
 // (shaders/sim/candidates*.comp, contact_solve.comp):
-//  - once per frame, the candidate pairs: segments closer than 2r + margin, each listed on
-//    both of its segments, with its contact distance (2r, or the pair's rest distance when the
-//    groom put it closer) and what the contact measures need;
+//  - once per frame (or collision.lists times), the candidate pairs: segments closer than
+//    2r + margin, each listed on both of its segments, with its contact distance (2r, or the
+//    pair's rest distance when the groom put it closer) and what the contact measures need;
 //  - every substep, after shape matching, each segment's correction from its candidates as
 //    compliant position constraints (XPBD, collision.iterations Jacobi iterations) with
 //    Coulomb friction; each iteration but the last moves the particles (applyCorrections),
@@ -30,7 +30,9 @@ namespace csm {
 inline constexpr int kDepthBinsPerR = 32;
 inline constexpr int kDepthBins = 64;
 
-// What one candidate list measured of the state it was built from.
+// What a frame's candidate list measured of the state it was built from, where the frame
+// starts. With more lists a frame (collision.lists), the crossings, the oversize and the
+// crowded segments are summed over its lists; the rest are the first list's.
 struct ContactStats {
   uint64_t candidates = 0;    // pairs within 2r + margin
   uint64_t contacts = 0;      // pairs closer than 2r
@@ -39,11 +41,11 @@ struct ContactStats {
   // Of those, the pairs the groom put closer than 2r (their contact distance is the rest
   // distance: they may cross where they crossed at rest).
   uint64_t crossingsClose = 0;
-  // Frames since the solver's reset whose candidates did not fit its buffers (a running
-  // count: those frames had no strand contacts; the GPU solver grows the buffers to what they
-  // needed as the next frame begins; always 0 on the CPU reference, which has no fixed buffers),
-  // and segments of this list too long for the grid's cells or with a non-finite end (in no
-  // cell: no contacts for them).
+  // Lists since the solver's reset whose candidates did not fit its buffers (a running
+  // count: the substeps of those lists had no strand contacts; the GPU solver grows the
+  // buffers to what the frame's last list needed as the next frame begins; always 0 on the
+  // CPU reference, which has no fixed buffers), and segments of this list too long for the
+  // grid's cells or with a non-finite end (in no cell: no contacts for them).
   uint64_t overflows = 0;
   uint64_t oversize = 0;
   // Segments of this list left without some or all of their candidates in a crowd: more than
@@ -105,12 +107,17 @@ struct ContactCandidates {
   std::vector<std::pair<uint64_t, uint32_t>> flags;
 };
 
+// Whether a frame of `substeps` substeps with collision.lists = `lists` lists its candidates
+// again before substep `substep`: list j (0 < j < n, n = min(lists, substeps)) comes before
+// substep floor(j substeps / n). Substep 0 has the frame's own list.
+bool listsBefore(int substep, int substeps, int lists);
+
 struct ContactSettings {
   double radius = 0.001, margin = 0.001, compliance = 0.0, friction = 0.3;
 };
 
 // The candidates of positions x (rest: the same particles in the head frame, for rest
-// distances), measured; `previous` is the last frame's list (crossings), or empty.
+// distances), measured; `previous` is the last list (crossings), or empty.
 ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,
                                  std::span<const uint32_t> particleStrand,
                                  const ContactSettings& settings, const ContactCandidates& previous,

@@ -273,6 +273,14 @@ std::vector<Param<Config>> build() {
             "(fewer crossings) and cost one more contact solve each.",
             Effect::Live)
           .onlyWhen(strandMode),
+      param("collision.lists", "Contact lists a frame", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::lists, 1, 16,
+            "Strand contacts: candidate searches a frame (at most its substeps), the first as "
+            "it starts and the others spread over its substeps. More catch strands that close "
+            "in on each other within a frame faster than the margin covers; each costs a "
+            "search.",
+            Effect::Live)
+          .onlyWhen(strandMode),
       param("collision.friction", "Hair friction", "Simulation|Collision", &Config::collision,
             &CollisionConfig::friction, 0.0, 2.0,
             "Coulomb friction coefficient between strands: sliding is held back by at most this "

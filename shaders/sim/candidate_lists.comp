@@ -2,8 +2,9 @@
 // segment's candidates (pair_scatter.comp left them, with their flags and contact distances,
 // in its range in no order) into its list, the same range of this frame's lists (CANDIDATES),
 // in ascending order of the other segment; and counts crossings: pairs, from the lower
-// segment's side, whose orientation flipped against last frame's list (LAST_CANDIDATES;
-// csm::findCandidates does the same on the CPU). Every candidate has its place: no list is
+// segment's side, whose orientation flipped against the last list (LAST_CANDIDATES: last
+// frame's, or the one before it within the frame with collision.lists; csm::findCandidates
+// does the same on the CPU). Every candidate has its place: no list is
 // cut short. The sort is a heapsort: its loops take at most n (1 + 2 log2 n) iterations
 // whatever the order the scatter left (an insertion sort takes up to n^2 / 2, past the 65,535
 // that llvmpipe allows an invocation at ~360 candidates: the lists of 30,000 strands of Fig. 1

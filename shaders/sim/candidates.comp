@@ -55,6 +55,10 @@ layout(std430, binding = CSM_BIND_SEGMENT_PAIRS) buffer SegmentPairs { uint segm
 layout(binding = CSM_IMAGE_PAIR_LIST, rgba32ui) writeonly uniform uimageBuffer pairList;
 layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; };
 
+// 1: the frame's first list, whose pairs measure the state; 0: a list within the frame
+// (collision.lists), listed but not measured.
+uniform uint measured;
+
 const uint kStrandGap = 2u;  // csm::kStrandGap: neighbours along one strand are not contacts
 const uint kChunk = 128u;    // candidates per phase-1 bit mask (a uvec4)
 
@@ -172,8 +176,10 @@ void main() {
   if (pairsHere > 0u) atomicAdd(groupContacts, pairsHere);
   if (penetrationsHere > 0u) atomicAdd(groupPenetrations, penetrationsHere);
   if (candidatesHere > 0u) atomicAdd(groupCandidates, candidatesHere);
-  if (deepest > 0.0) atomicMax(counters[CSM_COUNTER_MAX_DEPTH], floatBitsToUint(deepest));
+  if (deepest > 0.0 && measured != 0u)
+    atomicMax(counters[CSM_COUNTER_MAX_DEPTH], floatBitsToUint(deepest));
   barrier();
+  if (measured == 0u) return;
   if (lid == 0u) {
     if (groupContacts > 0u) atomicAdd(counters[CSM_COUNTER_CONTACTS], groupContacts);
     if (groupPenetrations > 0u) atomicAdd(counters[CSM_COUNTER_PENETRATIONS], groupPenetrations);

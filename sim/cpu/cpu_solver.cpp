@@ -344,8 +344,24 @@ void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   if (volumeForces(config_.collision.mode))
     volume_.splat(x_, v_, head_, config_.collision.volumeFraction);
   stages_[4].ms += msSince(t0);
-  for (int k = 0; k < plan.substeps; ++k)
+  for (int k = 0; k < plan.substeps; ++k) {
+    if (strandContacts(config_.collision.mode) &&
+        listsBefore(k, plan.substeps, config_.collision.lists))
+      listAgain();
     step(plan.h, interpolate(from, to, double(k + 1) / plan.substeps));
+  }
+}
+
+void CpuSolver::listAgain() {
+  // The state where this list is made is not measured (the frame's measures are of where it
+  // started); the crossings since the last list count, and the segments out of the grid.
+  const auto t0 = Clock::now();
+  ContactStats within;
+  candidates_ = findCandidates(x_, rest_, strandOf_, contactSettings(), candidates_, within);
+  contacts_.crossings += within.crossings;
+  contacts_.crossingsClose += within.crossingsClose;
+  contacts_.oversize += within.oversize;
+  stages_[3].ms += msSince(t0);
 }
 
 ContactSettings CpuSolver::contactSettings() const {

@@ -95,6 +95,8 @@ class CpuSolver final : public Solver {
   void limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
                    const Pose& headBefore);
   ContactSettings contactSettings() const;
+  // A candidate list within the frame (collision.lists), from where the hair is now.
+  void listAgain();
   VolumeSettings volumeSettings() const;
   void resetVolume();
 

@@ -185,11 +185,18 @@ void CollisionGrid::bind() const {
                                         GL_READ_ONLY);
 }
 
-void CollisionGrid::findCandidates(StageTimer* timer) {
+void CollisionGrid::findCandidates(StageTimer* timer, bool measured) {
   if (segments_ == 0) return;
   const uint32_t particles = uint32_t(particles_);
   if (timer) timer->stage(kGrid);
-  clearFrameCounters();
+  if (measured) {
+    clearFrameCounters();
+  } else {
+    // Only what the search allocates from: the entries and the pair list.
+    counters_.clearToZero(CSM_COUNTER_ENTRIES * sizeof(uint32_t), sizeof(uint32_t));
+    counters_.clearToZero(CSM_COUNTER_PAIR_LIST * sizeof(uint32_t), sizeof(uint32_t));
+  }
+  passes_.candidates.set("measured", measured ? 1u : 0u);
   passes_.count.run(particles);
   gl::memoryBarrier(kPassBarrier);
   // Counting sort of the entries by bucket: exclusive scan of the counts, scatter.

@@ -67,8 +67,14 @@ class CollisionGrid {
   void writeParams(SimParams& p, float reach) const;
   void bind() const;
   // The frame's candidates from the bound state, timed as the grid stage (timer null:
-  // untimed).
-  void findCandidates(StageTimer* timer);
+  // untimed). `measured`: the frame's first list, whose counters measure the state; a list
+  // within the frame (collision.lists) counts only its crossings against the list before
+  // it, its oversize and crowded segments, and its overflow.
+  void findCandidates(StageTimer* timer, bool measured = true);
+  // Before a list within the frame: this frame's list becomes the last one (crossings are
+  // counted against it), as at beginFrame but with nothing grown or cleared. The caller
+  // writes the parameters again (their grid half) and binds the grid.
+  void swapLists() { half_ ^= 1u; }
   // One substep's corrections (the timer's stage is the caller's): `iterations` contact solves,
   // each but the last applied to the positions and velocities of the `strands` here, the
   // last one left for the strain-limit sweep.

@@ -306,6 +306,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     gl::memoryBarrier(gpu::kPassBarrier);
   }
   for (int k = 0; k < substeps; ++k) {
+    if (contacts && listsBefore(k, substeps, config_.collision.lists)) listAgain();
     timer_.stage(gpu::kIntegrate);
     passes_.predict.runSubstep(particles, unsigned(k));
     gl::memoryBarrier(gpu::kPassBarrier);
@@ -326,6 +327,16 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   timer_.endFrame();
   // The renderer reads the positions as vertex data or storage; read-backs and clears follow.
   gl::memoryBarrier(gl::Barrier::All);
+}
+
+void GpuSolver::listAgain() {
+  // The lists swap, so the parameters' grid half changes: only the frame's own parameters
+  // are written again (the substeps' stay).
+  grid_.swapLists();
+  grid_.writeParams(params_, params_.contact.x);
+  paramsBuffer_.setSubData(0, sizeof(gpu::SimParams), &params_);
+  grid_.bind();
+  grid_.findCandidates(&timer_, false);
 }
 
 void GpuSolver::listCandidatesNow(gpu::StageTimer* timer) {

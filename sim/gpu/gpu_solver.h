@@ -118,6 +118,8 @@ class GpuSolver final : public Solver {
   void bindAll();
   // The candidate lists of the current state, built now (detectContacts, the measures).
   void listCandidatesNow(gpu::StageTimer* timer);
+  // A candidate list within the frame (collision.lists), from where the hair is now.
+  void listAgain();
   unsigned lastSubstepSpheres() const;  // the first sphere of the last step's
   void uploadHeadField();               // the head's distance field, when it is one
 

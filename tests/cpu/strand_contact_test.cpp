@@ -222,3 +222,94 @@ TEST_CASE("more contact iterations hold dense hair in the wind apart better") {
   CHECK(double(four.crossings) < 0.7 * double(one.crossings));
   CHECK(four.penetrations < one.penetrations);
 }
+
+TEST_CASE("lists within the frame catch a strand that closes in faster than the margin") {
+  // The drape's bar, and its strand 5 mm along the bar and with its particles 5 mm along
+  // itself (so the two cross inside a segment of each: a skew pair keeps its side), thrown
+  // down at the bar at 0.3 m/s with gravity off. It swings down 2.4 mm in the first frame
+  // from 3 mm above, further than the margin (the pair is not listed where the frame starts:
+  // 2r + margin is 1.5 mm), back up, and down again. One list a frame catches it only once it
+  // is inside 2r (measured: 0.52 mm, then 0.02 mm apart, both deeper than r); four (one a
+  // substep) list it within the frame and hold it at 2r.
+  Groom g;
+  g.addStrand({glm::vec3(-0.025f, 0.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.025f, 0.0f, 0.0f)});
+  std::vector<glm::vec3> p;
+  for (int i = 0; i <= 20; ++i) p.emplace_back(0.005f, 0.003f, -0.075f + 0.01f * float(i));
+  g.addStrand(p);
+  Config c = test::drapeConfig();
+  c.collision.radius = 0.0005f;
+  c.sim.gravity = glm::vec3(0.0f);
+  c.sim.damping = 0.0f;
+  c.sim.substeps = 4;
+  struct Thrown {
+    double lowest = 1e30;   // the strand's lowest height over the bar where it crosses it
+    double closest = 1e30;  // the closest the two came at a frame's end
+  };
+  auto thrown = [&](int lists) {
+    Config cl = c;
+    cl.collision.lists = lists;
+    CpuSolver solver;
+    solver.reset(g, cl, Pose{});
+    REQUIRE(solver.stiffness().plan.substeps == 4);
+    std::vector<glm::vec4> x = positions(solver), v(x.size(), glm::vec4(0.0f));
+    for (size_t i = 3; i < x.size(); ++i) v[i].y = -0.3f;
+    solver.writeState(x, v);
+    Thrown out;
+    for (int f = 0; f < 6; ++f) {
+      solver.stepFrame(Pose{}, Pose{});
+      const test::Drape d = test::measureDrape(positions(solver));
+      out.lowest = std::min(out.lowest, d.height);
+      out.closest = std::min(out.closest, d.distance);
+    }
+    return out;
+  };
+  const double twoR = 2.0 * double(c.collision.radius);
+  const Thrown one = thrown(1), four = thrown(4), sixteen = thrown(16);
+  INFO("closest: " << one.closest << " m with 1 list a frame, " << four.closest << " m with 4, "
+                   << sixteen.closest
+                   << " m asking for 16; lowest over the bar with 4: " << four.lowest << " m");
+  CHECK(one.closest < 0.5 * twoR);
+  CHECK(four.closest > 0.95 * twoR);
+  CHECK(four.lowest > 0.0);
+  // More lists than substeps: one a substep.
+  CHECK(sixteen.closest == four.closest);
+}
+
+TEST_CASE("lists within the frame: where they come, and what they measure") {
+  // Spread over the substeps, the frame's own list before substep 0.
+  auto before = [](int substeps, int lists) {
+    std::vector<int> at;
+    for (int k = 0; k < substeps; ++k)
+      if (listsBefore(k, substeps, lists)) at.push_back(k);
+    return at;
+  };
+  CHECK(before(4, 1).empty());
+  CHECK(before(4, 2) == std::vector<int>{2});
+  CHECK(before(4, 3) == std::vector<int>{1, 2});
+  CHECK(before(4, 4) == std::vector<int>{1, 2, 3});
+  CHECK(before(4, 16) == std::vector<int>{1, 2, 3});
+  CHECK(before(1, 4).empty());
+  CHECK(before(8, 3) == std::vector<int>{2, 5});
+  // The frame's measures are of where it starts, whatever the lists within it: the same
+  // candidates, contacts and depths as one list a frame after the first frame (which starts
+  // from the same state), and crossings of the lists within the frame added.
+  Config c = test::smallScene(300);
+  c.collision.mode = CollisionMode::Strands;
+  c.wind.strength = 3.0f;
+  const Groom g = growHairstyle(c);
+  auto first = [&](int lists) {
+    Config cl = c;
+    cl.collision.lists = lists;
+    CpuSolver solver;
+    solver.reset(g, cl, Pose{});
+    solver.stepFrame(Pose{}, Pose{});
+    return solver.contactStats();
+  };
+  const ContactStats one = first(1), four = first(4);
+  CHECK(four.candidates == one.candidates);
+  CHECK(four.contacts == one.contacts);
+  CHECK(four.penetrations == one.penetrations);
+  CHECK(four.depth == one.depth);
+  CHECK(one.crossings == 0);  // no list before the first
+  CHECK(four.crossings >= one.crossings);
+}

@@ -91,6 +91,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   c.sim.maxSubsteps = std::min(c.sim.maxSubsteps, 4);
   c.sim.rotationIterations = std::min(c.sim.rotationIterations, 4);
   c.collision.iterations = std::min(c.collision.iterations, 4);
+  c.collision.lists = std::min(c.collision.lists, 2);
   // The volume grid spans the roots grown by the longest strand; 4 cm cells keep it to
   // ~30 nodes an axis (the product allows 256, ~1 GB).
   c.collision.volumeCell = std::max(c.collision.volumeCell, 0.04f);

@@ -279,14 +279,17 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
   // in the third frame). So: every particle within the tolerance over the first two frames,
   // and the same measures.
   // With more than one contact iteration a substep, all but the last move the particles in
-  // a pass of their own (contact_apply.comp, csm::applyCorrections).
+  // a pass of their own (contact_apply.comp, csm::applyCorrections). With more than one list
+  // a frame (collision.lists), the lists within it swap the GPU's buffers and count their
+  // crossings, but measure nothing else.
   Config c = smallScene(300);
   c.collision.mode = CollisionMode::Strands;
   c.wind.strength = 3.0f;
   const Groom g = grow(c);
-  for (int iterations : {1, 3}) {
-    INFO(iterations << " contact iterations");
+  for (auto [iterations, lists] : {std::pair(1, 1), std::pair(3, 1), std::pair(1, 3)}) {
+    INFO(iterations << " contact iterations, " << lists << " lists a frame");
     c.collision.iterations = iterations;
+    c.collision.lists = lists;
     auto gpu = test::gpuSolver();
     CpuSolver cpu;
     cpu.reset(g, c, Pose{});
@@ -411,10 +414,12 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
   const std::vector<glm::vec4> a = run(), b = run();
   REQUIRE(a.size() == b.size());
   CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)) == 0);
-  // The volume mode's integer sums too, with three contact iterations a substep.
+  // The volume mode's integer sums too, with three contact iterations a substep and two
+  // lists a frame.
   c.collision.mode = CollisionMode::VolumeStrands;
   c.collision.volumeFraction = 0.02f;
   c.collision.iterations = 3;
+  c.collision.lists = 2;
   const std::vector<glm::vec4> e = run(), f = run();
   REQUIRE(e.size() == f.size());
   CHECK(std::memcmp(e.data(), f.data(), e.size() * sizeof(glm::vec4)) == 0);
