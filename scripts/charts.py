@@ -439,8 +439,9 @@ def contact_settings_chart(rows, out):
     fig, axes = plt.subplots(1, 3, figsize=(14, 4.5))
     head = [num(r, "sim_ms") for r in rows if r["mode"] == "head"]
     runs = [r for r in rows if r["mode"] != "head" and (r.get("crossings_per_s") or "") != ""]
-    colours = {"1": "#1f77b4", "2": "#2ca02c", "4": "#d62728", "8": "#9467bd"}
-    markers = {"4": "o", "8": "s", "16": "^", "2": "v", "1": "D"}
+    colours = {"1": "#1f77b4", "2": "#2ca02c", "4": "#d62728", "8": "#9467bd",
+               "16": "#ff7f0e"}
+    markers = {"1": "D", "2": "v", "4": "p", "5": "o", "8": "s", "16": "^"}
     for r in runs:
         close = r.get("crossings_close_per_s") or ""
         apart = num(r, "crossings_per_s") - (float(close) if close else 0.0)
