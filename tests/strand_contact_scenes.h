@@ -63,4 +63,33 @@ inline Drape measureDrape(const std::vector<glm::vec4>& x) {
   return out;
 }
 
+// The drape's bar, and its strand 5 mm along the bar and with its particles 5 mm along itself
+// (so the two cross inside a segment of each: a skew pair keeps its side), to be thrown down
+// at the bar (thrownConfig, throwDown) with gravity off.
+inline Groom thrownGroom() {
+  Groom g;
+  g.addStrand({glm::vec3(-0.025f, 0.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.025f, 0.0f, 0.0f)});
+  std::vector<glm::vec3> p;
+  for (int i = 0; i <= 20; ++i) p.emplace_back(0.005f, 0.003f, -0.075f + 0.01f * float(i));
+  g.addStrand(p);
+  return g;
+}
+
+inline Config thrownConfig(int lists) {
+  Config c = drapeConfig();
+  c.collision.radius = 0.0005f;
+  c.collision.lists = lists;
+  c.sim.gravity = glm::vec3(0.0f);
+  c.sim.damping = 0.0f;
+  c.sim.substeps = 4;
+  return c;
+}
+
+// The velocities that throw the strand of `x` (thrownGroom's layout) down at 0.3 m/s.
+inline std::vector<glm::vec4> throwDown(const std::vector<glm::vec4>& x) {
+  std::vector<glm::vec4> v(x.size(), glm::vec4(0.0f));
+  for (size_t i = 3; i < x.size(); ++i) v[i].y = -0.3f;
+  return v;
+}
+
 }  // namespace csm::test

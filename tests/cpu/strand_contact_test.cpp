@@ -224,36 +224,21 @@ TEST_CASE("more contact iterations hold dense hair in the wind apart better") {
 }
 
 TEST_CASE("lists within the frame catch a strand that closes in faster than the margin") {
-  // The drape's bar, and its strand 5 mm along the bar and with its particles 5 mm along
-  // itself (so the two cross inside a segment of each: a skew pair keeps its side), thrown
-  // down at the bar at 0.3 m/s with gravity off. It swings down 2.4 mm in the first frame
-  // from 3 mm above, further than the margin (the pair is not listed where the frame starts:
-  // 2r + margin is 1.5 mm), back up, and down again. One list a frame catches it only once it
-  // is inside 2r (measured: 0.52 mm, then 0.02 mm apart, both deeper than r); four (one a
-  // substep) list it within the frame and hold it at 2r.
-  Groom g;
-  g.addStrand({glm::vec3(-0.025f, 0.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.025f, 0.0f, 0.0f)});
-  std::vector<glm::vec3> p;
-  for (int i = 0; i <= 20; ++i) p.emplace_back(0.005f, 0.003f, -0.075f + 0.01f * float(i));
-  g.addStrand(p);
-  Config c = test::drapeConfig();
-  c.collision.radius = 0.0005f;
-  c.sim.gravity = glm::vec3(0.0f);
-  c.sim.damping = 0.0f;
-  c.sim.substeps = 4;
+  // The thrown scene (tests/strand_contact_scenes.h): the strand swings down 2.4 mm in the
+  // first frame from 3 mm above the bar, further than the margin (the pair is not listed
+  // where the frame starts: 2r + margin is 1.5 mm), back up, and down again. One list a frame
+  // catches it only once it is inside 2r (measured: 0.52 mm, then 0.02 mm apart, both deeper
+  // than r); four (one a substep) list it within the frame and hold it at 2r.
   struct Thrown {
     double lowest = 1e30;   // the strand's lowest height over the bar where it crosses it
     double closest = 1e30;  // the closest the two came at a frame's end
   };
   auto thrown = [&](int lists) {
-    Config cl = c;
-    cl.collision.lists = lists;
     CpuSolver solver;
-    solver.reset(g, cl, Pose{});
+    solver.reset(test::thrownGroom(), test::thrownConfig(lists), Pose{});
     REQUIRE(solver.stiffness().plan.substeps == 4);
-    std::vector<glm::vec4> x = positions(solver), v(x.size(), glm::vec4(0.0f));
-    for (size_t i = 3; i < x.size(); ++i) v[i].y = -0.3f;
-    solver.writeState(x, v);
+    const std::vector<glm::vec4> x = positions(solver);
+    solver.writeState(x, test::throwDown(x));
     Thrown out;
     for (int f = 0; f < 6; ++f) {
       solver.stepFrame(Pose{}, Pose{});
@@ -263,7 +248,7 @@ TEST_CASE("lists within the frame catch a strand that closes in faster than the 
     }
     return out;
   };
-  const double twoR = 2.0 * double(c.collision.radius);
+  const double twoR = 2.0 * double(test::thrownConfig(1).collision.radius);
   const Thrown one = thrown(1), four = thrown(4), sixteen = thrown(16);
   INFO("closest: " << one.closest << " m with 1 list a frame, " << four.closest << " m with 4, "
                    << sixteen.closest

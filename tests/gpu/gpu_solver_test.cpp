@@ -354,6 +354,31 @@ TEST_CASE("GPU: a strand dropped across another stays on top for 2 s", "[gpu][co
   }
 }
 
+TEST_CASE("GPU: lists within the frame catch a strand that closes in faster than the margin",
+          "[gpu][contacts]") {
+  // The thrown scene, as on the CPU reference (tests/cpu/strand_contact_test.cpp): one list
+  // a frame lets the strand 0.02 mm from the bar, four hold it at 2r.
+  auto closest = [](int lists) {
+    auto gpu = test::gpuSolver();
+    gpu->reset(test::thrownGroom(), test::thrownConfig(lists), Pose{});
+    std::vector<glm::vec4> x;
+    gpu->readPositions(x);
+    gpu->writeState(x, test::throwDown(x));
+    double out = 1e30;
+    for (int f = 0; f < 6; ++f) {
+      gpu->stepFrame(Pose{}, Pose{});
+      gpu->readPositions(x);
+      out = std::min(out, test::measureDrape(x).distance);
+    }
+    return out;
+  };
+  const double twoR = 2.0 * double(test::thrownConfig(1).collision.radius);
+  const double one = closest(1), four = closest(4);
+  INFO("closest: " << one << " m with 1 list a frame, " << four << " m with 4");
+  CHECK(one < 0.5 * twoR);
+  CHECK(four > 0.95 * twoR);
+}
+
 TEST_CASE("GPU: strand contacts add no motion to a rest groom with gravity off",
           "[gpu][contacts]") {
   // The float solver itself drifts at rest (shape matching's rounding: measured 0.13 mm in
