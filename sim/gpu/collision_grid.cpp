@@ -192,8 +192,8 @@ void CollisionGrid::findCandidates(StageTimer* timer, bool measured) {
   if (measured) {
     clearFrameCounters();
   } else {
-    // Only what the search allocates from: the entries and the pair list.
-    counters_.clearToZero(CSM_COUNTER_ENTRIES * sizeof(uint32_t), sizeof(uint32_t));
+    // Only the pair list's append counter (the entries' total is written by their scan); the
+    // measures stay the frame's first list's.
     counters_.clearToZero(CSM_COUNTER_PAIR_LIST * sizeof(uint32_t), sizeof(uint32_t));
   }
   passes_.candidates.set("measured", measured ? 1u : 0u);

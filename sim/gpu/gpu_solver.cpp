@@ -330,11 +330,10 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
 }
 
 void GpuSolver::listAgain() {
-  // The lists swap, so the parameters' grid half changes: only the frame's own parameters
-  // are written again (the substeps' stay).
+  // The lists swap, so the parameters' grid half changes: only that field is written again.
   grid_.swapLists();
   grid_.writeParams(params_, params_.contact.x);
-  paramsBuffer_.setSubData(0, sizeof(gpu::SimParams), &params_);
+  paramsBuffer_.setSubData(offsetof(gpu::SimParams, grid), sizeof(params_.grid), &params_.grid);
   grid_.bind();
   grid_.findCandidates(&timer_, false);
 }
