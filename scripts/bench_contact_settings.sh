@@ -25,7 +25,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 presetFile=$root/presets/$preset.json
 csv=$out/contact_settings.csv
-echo "setting,mode,iterations,substeps,margin_mm,lists,strands,particles,frames,sim_ms,grid_ms,contacts_ms,pairs_2r,pairs_r,pairs_r_rest,crossings_per_s,crossings_close_per_s,depth_p50,depth_p99,depth_max" >"$csv"
+columns=$root/scripts/contact_columns.py
+echo "setting,mode,iterations,margin_mm,lists,$(/usr/bin/python3 "$columns" --header substeps strands particles frames)" \
+  >"$csv"
 echo "Load before: $(uptime | sed 's/.*load average: //'); $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p')"
 for setting in $settings; do
   mode=strands iterations=1 subs="" margin="" lists=1
@@ -56,24 +58,7 @@ for setting in $settings; do
     cat "$tmp/log" >&2
     exit 1
   fi
-  /usr/bin/python3 - "$tmp/m.json" "${setting//,/+}" "$mode" "$iterations" "${margin:-}" \
-    "$lists" "$frames" >>"$csv" <<'PY'
-import json, sys
-m = json.load(open(sys.argv[1]))
-setting, mode, iterations, margin, lists, frames = sys.argv[2:8]
-a, ms = m["accuracy"], m["ms"]
-st = ms["stages"]
-def get(k):
-    return f"{a[k]}" if k in a else ""
-# Crossings are counted against the last list: none when the lists did not fit (not measured).
-def crossings(k):
-    return "" if a.get("hair_list_overflows", 0) > 0 else get(k)
-print(",".join([setting, mode, iterations, str(m["substeps"]), margin, lists,
-                str(m["strands"]), str(m["particles"]), frames, f"{ms['sim_mean']:.2f}",
-                f"{st.get('grid', 0):.2f}", f"{st.get('contacts', 0):.2f}",
-                get("hair_contacts"), get("hair_penetrations"), get("hair_penetrations_rest"),
-                crossings("hair_crossings_per_s"), crossings("hair_crossings_close_at_rest_per_s"),
-                get("hair_depth_p50"), get("hair_depth_p99"), get("hair_depth_max")]))
-PY
+  echo "${setting//,/+},$mode,$iterations,${margin:-},$lists,$(/usr/bin/python3 "$columns" \
+    "$tmp/m.json" substeps strands particles frames)" >>"$csv"
   tail -n 1 "$csv"
 done

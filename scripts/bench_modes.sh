@@ -19,7 +19,8 @@ mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 csv=$out/modes.csv
-echo "solver,mode,strands,particles,frames,sim_ms,grid_ms,contacts_ms,pairs_2r,pairs_r,pairs_r_rest,crossings_per_s,crossings_close_per_s,depth_p50,depth_p99,depth_max" >"$csv"
+columns=$root/scripts/contact_columns.py
+echo "solver,mode,$(/usr/bin/python3 "$columns" --header strands particles frames)" >"$csv"
 echo "Load before: $(uptime | sed 's/.*load average: //'); $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p')"
 for solver in ${SOLVERS:-gpu}; do
   for n in $counts; do
@@ -32,23 +33,8 @@ for solver in ${SOLVERS:-gpu}; do
         cat "$tmp/log" >&2
         exit 1
       fi
-      /usr/bin/python3 - "$tmp/m.json" "$solver" "$mode" "$n" "$frames" >>"$csv" <<'PY'
-import json, sys
-m = json.load(open(sys.argv[1]))
-a, ms = m["accuracy"], m["ms"]
-st = ms["stages"]
-def get(k):
-    return f"{a[k]}" if k in a else ""
-# Crossings are counted against the last list: none when the lists did not fit (not measured).
-def crossings(k):
-    return "" if a.get("hair_list_overflows", 0) > 0 else get(k)
-print(",".join([sys.argv[2], sys.argv[3], sys.argv[4], str(m["particles"]),
-                sys.argv[5], f"{ms['sim_mean']:.2f}", f"{st.get('grid', 0):.2f}",
-                f"{st.get('contacts', 0):.2f}", get("hair_contacts"), get("hair_penetrations"),
-                get("hair_penetrations_rest"), crossings("hair_crossings_per_s"),
-                crossings("hair_crossings_close_at_rest_per_s"),
-                get("hair_depth_p50"), get("hair_depth_p99"), get("hair_depth_max")]))
-PY
+      echo "$solver,$mode,$(/usr/bin/python3 "$columns" "$tmp/m.json" strands particles frames)" \
+        >>"$csv"
       tail -n 1 "$csv"
     done
   done
