@@ -17,12 +17,13 @@ namespace csm::test {
 // A short bar, held whole by its root (every particle within the root length), and a soft
 // strand 3 mm above it, held for its first 5-6 cm, that crosses over the bar's middle 2-3 cm
 // past the held piece: gravity lays the free part over the bar. The bar is strand 0 (particles
-// 0-2), the strand strand 1.
-inline Groom drapeGroom() {
+// 0-2), the strand strand 1. `offset` moves the strand along the bar and its particles along
+// itself (0: the two cross where a particle of each lies).
+inline Groom drapeGroom(float offset = 0.0f) {
   Groom g;
   g.addStrand({glm::vec3(-0.025f, 0.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.025f, 0.0f, 0.0f)});
   std::vector<glm::vec3> p;
-  for (int i = 0; i <= 20; ++i) p.emplace_back(0.0f, 0.003f, -0.08f + 0.01f * float(i));
+  for (int i = 0; i <= 20; ++i) p.emplace_back(offset, 0.003f, -0.08f + offset + 0.01f * float(i));
   g.addStrand(p);
   return g;
 }
@@ -67,12 +68,7 @@ inline Drape measureDrape(const std::vector<glm::vec4>& x) {
 // (so the two cross inside a segment of each: a skew pair keeps its side), to be thrown down
 // at the bar (thrownConfig, throwDown) with gravity off.
 inline Groom thrownGroom() {
-  Groom g;
-  g.addStrand({glm::vec3(-0.025f, 0.0f, 0.0f), glm::vec3(0.0f), glm::vec3(0.025f, 0.0f, 0.0f)});
-  std::vector<glm::vec3> p;
-  for (int i = 0; i <= 20; ++i) p.emplace_back(0.005f, 0.003f, -0.075f + 0.01f * float(i));
-  g.addStrand(p);
-  return g;
+  return drapeGroom(0.005f);
 }
 
 inline Config thrownConfig(int lists) {

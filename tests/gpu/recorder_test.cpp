@@ -183,9 +183,8 @@ TEST_CASE("Solvers: the first frame after a restore counts no crossings against 
   const Groom g = test::growFor(c);
   std::unique_ptr<Solver> solver = solverNamed(name);
   auto contacts = [&] {
-    const ContactStats stats = name == "gpu" ? static_cast<GpuSolver&>(*solver).readContactStats()
-                                             : static_cast<CpuSolver&>(*solver).contactStats();
-    return stats;
+    return name == "gpu" ? static_cast<GpuSolver&>(*solver).readContactStats()
+                         : static_cast<CpuSolver&>(*solver).contactStats();
   };
   solver->reset(g, c, Pose{});
   for (int f = 0; f < 10; ++f) solver->stepFrame(Pose{}, Pose{});
