@@ -12,13 +12,15 @@
 #   mX      collision.margin=X millimetres
 #   listN   collision.lists=N (candidate lists a frame; crossings are counted between
 #           consecutive lists, so more lists see more of them)
+#   jacobi  collision.solve=jacobi (each segment moved by the mean of what its pairs ask,
+#           instead of the preset's sweep of its list)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$1
 preset=${2:-paper_fig1_straight}
 strands=${3:-10000}
 frames=${4:-8}
-settings=${SETTINGS:-head it1 it2 it4 it8 it16 it1,sub8 it4,sub8 it1,sub16 it4,sub16 it4,m2 it1,list2 it1,list4 it4,list4 it16,list4 it4,sub16,list16}
+settings=${SETTINGS:-head it1 it1,jacobi it2 it4 it4,jacobi it8 it16 it1,sub8 it4,sub8 it1,sub16 it4,sub16 it4,m2 it1,list2 it1,list4 it4,list4 it16,list4 it4,sub16,list16 it4,sub16,list16,jacobi}
 bin=${CSMHAIR:-$root/build/app/csmhair}
 mkdir -p "$out"
 tmp=$(mktemp -d)
@@ -26,13 +28,13 @@ trap 'rm -rf "$tmp"' EXIT
 presetFile=$root/presets/$preset.json
 csv=$out/contact_settings.csv
 columns=$root/scripts/contact_columns.py
-echo "setting,mode,iterations,margin_mm,lists,$(/usr/bin/python3 "$columns" --header substeps strands particles frames)" \
+echo "setting,mode,iterations,margin_mm,lists,solve,$(/usr/bin/python3 "$columns" --header substeps strands particles frames)" \
   >"$csv"
 echo "Load before: $(uptime | sed 's/.*load average: //'); $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p')"
 for setting in $settings; do
-  mode=strands iterations=1 subs="" margin="" lists=1
+  mode=strands iterations=1 subs="" margin="" lists=1 solve=sweep
   if [[ $setting == head ]]; then
-    mode=head
+    mode=head solve=""
   else
     IFS=, read -ra parts <<<"$setting"
     for part in "${parts[@]}"; do
@@ -41,8 +43,9 @@ for setting in $settings; do
         sub*) subs=${part#sub} ;;
         m*) margin=${part#m} ;;
         list*) lists=${part#list} ;;
+        jacobi) solve=jacobi ;;
         *)
-          echo "bench_contact_settings.sh: '$part' of '$setting' is none of itN, subN, mX, listN" >&2
+          echo "bench_contact_settings.sh: '$part' of '$setting' is none of itN, subN, mX, listN, jacobi" >&2
           exit 2
           ;;
       esac
@@ -50,6 +53,7 @@ for setting in $settings; do
   fi
   sets=(--set "collision.mode=$mode" --set "hairstyle.strands=$strands"
     --set "collision.iterations=$iterations" --set "collision.lists=$lists")
+  [[ -n $solve ]] && sets+=(--set "collision.solve=$solve")
   [[ -n $subs ]] && sets+=(--set "sim.substeps=$subs")
   [[ -n $margin ]] && sets+=(--set "collision.margin=$(/usr/bin/python3 -c "print($margin / 1000)")")
   if ! "$bin" "$presetFile" --headless --frames "$frames" --no-render --quiet \
@@ -58,7 +62,7 @@ for setting in $settings; do
     cat "$tmp/log" >&2
     exit 1
   fi
-  echo "${setting//,/+},$mode,$iterations,${margin:-},$lists,$(/usr/bin/python3 "$columns" \
+  echo "${setting//,/+},$mode,$iterations,${margin:-},$lists,$solve,$(/usr/bin/python3 "$columns" \
     "$tmp/m.json" substeps strands particles frames)" >>"$csv"
   tail -n 1 "$csv"
 done

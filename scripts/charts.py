@@ -429,7 +429,7 @@ def modes_chart(rows, out):
 
 def contact_settings_chart(rows, out):
     """scripts/bench_contact_settings.sh: `strands` mode's contact settings (iterations,
-    substeps, margin, lists a frame) at one strand count, their cost a frame against the
+    substeps, margin, lists a frame, the solve) at one strand count, their cost a frame against the
     penetration depth's median and 99th percentile and the crossings of pairs apart at rest;
     head only and twice it as lines (the issue's cost target). A row whose lists did not fit
     (crossings empty) is left out. Runs that list more than once a frame count crossings
@@ -448,10 +448,11 @@ def contact_settings_chart(rows, out):
         colour = colours.get(r["lists"], "#7f7f7f")
         marker = markers.get(r["substeps"], "o")
         face = "none" if r.get("margin_mm") else colour
+        alpha = 0.4 if r.get("solve") == "jacobi" else 1.0
         for ax, x in ((axes[0], num(r, "depth_p50")), (axes[1], num(r, "depth_p99")),
                       (axes[2], max(apart, 1.0))):
             ax.plot([x], [num(r, "sim_ms")], marker=marker, color=colour, markerfacecolor=face,
-                    linestyle="none")
+                    linestyle="none", alpha=alpha)
             ax.annotate(r["setting"], (x, num(r, "sim_ms")), fontsize=6, xytext=(3, 2),
                         textcoords="offset points")
     for ax in axes:
@@ -487,6 +488,9 @@ def contact_settings_chart(rows, out):
     if any(r.get("margin_mm") for r in runs):
         legend.append(Line2D([], [], color="#555555", marker="o", markerfacecolor="none",
                              linestyle="none", label="margin changed (hollow)"))
+    if any(r.get("solve") == "jacobi" for r in runs):
+        legend.append(Line2D([], [], color="#555555", marker="o", alpha=0.4, linestyle="none",
+                             label="collision.solve = jacobi (faded)"))
     axes[2].legend(handles=legend, fontsize=7, loc="lower right")
     save(fig, out, "contact_settings")
 

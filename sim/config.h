@@ -39,6 +39,10 @@ enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
 // What the head is, for collision and drawing: the built-in mannequin's signed distance field
 // (sim/head_shape.h), or the spheres of head.spheres, as the paper does.
 enum class HeadShape : int { Sdf = 0, Spheres = 1 };
+// How a strand-contact iteration moves a segment (sim/contacts.h): sweep takes its pairs in
+// order, each from where the ones before it left the segment; jacobi moves it by the mean of
+// what its pairs ask from where the iteration began.
+enum class ContactSolve : int { Sweep = 0, Jacobi = 1 };
 // Where the generator parts the hair: none (it falls from the crown all round), down the middle,
 // or on the head's left (+x) or right (-x).
 enum class Parting : int { None = 0, Centre = 1, Left = 2, Right = 3 };
@@ -128,7 +132,8 @@ struct CollisionConfig {
   // cover how far two strands close in on each other until the next list.
   float margin = 0.0005f;   // m
   float compliance = 0.0f;  // m/N: 0 = hard contacts
-  int iterations = 1;       // Jacobi iterations of the strand contacts per substep
+  int iterations = 1;       // iterations of the strand contacts per substep
+  ContactSolve solve = ContactSolve::Sweep;
   // Candidate lists a frame (at most its substeps): the first where the frame starts, the
   // others spread over its substeps (listsBefore in sim/contacts.h), each a search's cost.
   int lists = 1;

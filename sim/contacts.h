@@ -4,12 +4,13 @@
 //    2r + margin, each listed on both of its segments, with its contact distance (2r, or the
 //    pair's rest distance when the groom put it closer) and what the contact measures need;
 //  - every substep, after shape matching, each segment's correction from its candidates as
-//    compliant position constraints (XPBD, collision.iterations Jacobi iterations) with
+//    compliant position constraints (XPBD, collision.iterations iterations, each a sweep of
+//    every segment's list that moves only the segment's own ends, in list order) with
 //    Coulomb friction; each iteration but the last moves the particles (applyCorrections),
 //    and the strain-limit sweep moves each particle by the mean of the corrections of the
 //    last iteration that its two segments sent it, before limiting it.
-// Every sum runs in a fixed order (a segment's candidates by their index), so the result does
-// not depend on the schedule.
+// Every sweep and sum runs in a fixed order (a segment's candidates by their index), so the
+// result does not depend on the schedule.
 #pragma once
 
 #include <array>
@@ -114,6 +115,7 @@ bool listsBefore(int substep, int substeps, int lists);
 
 struct ContactSettings {
   double radius = 0.001, margin = 0.001, compliance = 0.0, friction = 0.3;
+  bool sweep = true;  // collision.solve: sweep (true) or jacobi
 };
 
 // The candidates of positions x (rest: the same particles in the head frame, for rest
@@ -133,9 +135,12 @@ std::vector<double> contactInverseMass(const HairState& state, const Regions& re
 void applyCorrections(std::span<const glm::dvec4> correction, std::span<const uint32_t> first,
                       double h, std::span<glm::dvec3> x, std::span<glm::dvec3> v);
 
-// The corrections of one substep of length h: for each segment i, correction[2i] goes to
-// particle i and correction[2i+1] to particle i+1 (w: how many contacts sent it). x and v after
-// shape matching; invMass per particle, 0 for the held ones (they follow the head).
+// The corrections of one substep of length h: segment i takes its candidates in order, moving
+// its own ends by each pair's share before the next pair (the other segments stay at x);
+// correction[2i] is what that moved particle i by and correction[2i+1] particle i+1, as one
+// segment (w up to 1). collision.solve = jacobi instead evaluates every pair from x and sends
+// the sum, as that many pairs (w). x and v after shape matching; invMass per particle, 0 for
+// the held ones (they follow the head).
 void solveContacts(const ContactCandidates& candidates, std::span<const glm::dvec3> x,
                    std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
                    const ContactSettings& settings, std::vector<glm::dvec4>& correction);

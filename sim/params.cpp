@@ -269,9 +269,17 @@ std::vector<Param<Config>> build() {
             Effect::Live),
       param("collision.iterations", "Contact iterations", "Simulation|Collision",
             &Config::collision, &CollisionConfig::iterations, 1, 16,
-            "Strand contacts: Jacobi iterations per substep. More hold dense hair apart better "
+            "Strand contacts: iterations per substep. More hold dense hair apart better "
             "(fewer crossings) and cost one more contact solve each.",
             Effect::Live)
+          .onlyWhen(strandMode),
+      param("collision.solve", "Contact solve", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::solve, 0, 0,
+            "Strand contacts: how an iteration moves a segment. sweep: its pairs in order, each "
+            "from where the ones before it left the segment (a deep pair among shallow ones is "
+            "resolved at once); jacobi: by the mean of what its pairs ask. The same cost.",
+            Effect::Live)
+          .choices({"sweep", "jacobi"})
           .onlyWhen(strandMode),
       param("collision.lists", "Contact lists a frame", "Simulation|Collision", &Config::collision,
             &CollisionConfig::lists, 1, 16,

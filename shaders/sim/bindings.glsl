@@ -33,7 +33,8 @@
 // Hair-hair collision.
 #define CSM_BIND_CORRECTION \
   10  // vec4 x2 per segment: this substep's strand-contact corrections of
-      // its two particles (w: how many contacts sent each)
+      // its two particles (w: how many contacts sent each, or for
+      // collision.solve = sweep up to 1, as one segment)
 #define CSM_BIND_SEGMENT_PAIRS \
   11  // uint per particle: candidate pairs its segment is in (counted by
       // candidates.comp, back to 0 after pair_scatter.comp)

@@ -9,7 +9,8 @@ struct SimParams {
   vec4 windDir;    // xyz unit direction, w strength (m/s)
   vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
   vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
-  vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction, w unused
+  vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction,
+                   // w 1 when collision.solve is sweep, 0 for jacobi
   vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
   ivec4 ints;      // x unused (pinned particles are per strand), y stiffness model (0 paper,
                    // 1 calibrated), z rotation iterations, w head spheres

@@ -1,14 +1,17 @@
 // Strand contacts, one substep (DESIGN.md section 1.7; the CPU reference is csm::solveContacts
 // in sim/contacts.cpp), one invocation per segment, after shape matching: each of the
 // segment's candidates closer than its contact distance is a compliant position constraint
-// (XPBD, one Jacobi iteration of collision.iterations: lambda = -C / (W + compliance / h^2);
+// (XPBD, one iteration of collision.iterations: lambda = -C / (W + compliance / h^2);
 // contact_apply.comp moves the particles between two), held to the side it was
 // listed on when skew (contactNormal), with Coulomb friction on
 // the contact points' relative sliding this step, removed up to mu times the normal
-// correction. The segment writes what its two particles move by (and how many contacts sent
-// it); strain_limit.comp moves each particle by the mean of what its segments sent. Both
-// sides of a pair evaluate it with the lower index first, so their corrections are exact
-// opposites; the list's order fixes the order of the sums.
+// correction. With collision.solve = sweep the segment takes its list in order, moving its own
+// two ends by each pair's share before the next pair (Gauss-Seidel within the list, Jacobi
+// between segments: the other segments stay where the iteration found them), and writes what
+// the sweep moved its ends by; with jacobi, the sum of what its pairs ask from where the
+// iteration began, and how many asked. strain_limit.comp moves each particle by the mean of
+// what its segments sent. Both sides of a pair evaluate it with the lower index first; the
+// list's order fixes the sweep's and the sums'.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -30,6 +33,13 @@ layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
 
 uniform uint substep;
 
+// The most a pair moves one end of a segment in a sweep, in units of the pair's depth: near a
+// held end a pair asks the free end for depth / s (csm::kLever in sim/contacts.cpp says why).
+const float kLever = 2.5;
+// How far (m) a sweep must move an end to count as one of the particle's segments (csm::
+// kFullWeight).
+const float kFullWeight = 1e-6;
+
 
 vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
 vec3 fetchVel(uint i) { return texelFetch(velTex, int(i)).xyz; }
@@ -44,13 +54,18 @@ void main() {
   uint here = P.grid.w * P.counts.x + a;
   uvec2 range = candidateRange[here];
   uint n = range.y;
-  vec3 c0 = vec3(0.0), c1 = vec3(0.0);
-  float count = 0.0;
+  // The segment's own ends, and their velocities, as its sweep has moved them so far (a move
+  // of dx changes the velocity by dx / h): each pair's friction takes what sliding the pairs
+  // before it left, not the same sliding again. The other segments stay where the iteration found them; jacobi
+  // (collision.solve) evaluates every pair from there too.
+  bool sweep = P.contact.w > 0.5;
+  vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
+  vec3 moved0 = vec3(0.0), moved1 = vec3(0.0);  // what the pairs moved the ends by, in order
+  float count = 0.0;                            // how many did
   if (n > 0u) {
     float h = S[substep].time.y;
     float tilde = P.contact.y / (h * h);
     float mu = P.contact.z;
-    vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
     vec3 va0 = fetchVel(a), va1 = fetchVel(a + 1u);
     vec2 wa = inverseMasses(a);
     for (uint k = 0u; k < n; ++k) {
@@ -86,11 +101,25 @@ void main() {
       vec3 push = lambda * nrm - tangent;
       if (!lower) push = -push;
       float g0 = lower ? 1.0 - s : 1.0 - t, g1 = lower ? s : t;
-      c0 += push * (g0 * wa.x);
-      c1 += push * (g1 * wa.y);
+      // The sweep moves neither end further than kLever times the pair's depth.
+      float most = lambda * max(g0 * wa.x, g1 * wa.y);
+      if (sweep && most > kLever * -C) push *= kLever * -C / most;
+      vec3 move0 = push * (g0 * wa.x), move1 = push * (g1 * wa.y);
+      moved0 += move0;
+      moved1 += move1;
       count += 1.0;
+      if (sweep) {
+        a0 += move0;
+        a1 += move1;
+        va0 += move0 / h;
+        va1 += move1 / h;
+      }
     }
   }
-  correction[2u * a] = vec4(c0, count);
-  correction[2u * a + 1u] = vec4(c1, count);
+  // The sweep sends where it left each end, as one segment (kFullWeight); jacobi the sum over
+  // its pairs, as that many. strain_limit.comp divides by the weights.
+  float l0 = sweep ? min(length(moved0) / kFullWeight, 1.0) : count;
+  float l1 = sweep ? min(length(moved1) / kFullWeight, 1.0) : count;
+  correction[2u * a] = vec4(sweep ? moved0 * l0 : moved0, l0);
+  correction[2u * a + 1u] = vec4(sweep ? moved1 * l1 : moved1, l1);
 }

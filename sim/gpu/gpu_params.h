@@ -17,7 +17,7 @@ struct SimParams {
   glm::vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
   glm::vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
   glm::vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction,
-                        // w unused
+                        // w 1 when collision.solve is sweep, 0 for jacobi
   glm::vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
   glm::ivec4 ints;      // x unused, y stiffness model, z rotation iterations, w head spheres
   glm::uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame

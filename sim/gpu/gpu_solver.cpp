@@ -193,7 +193,8 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.windShape = glm::vec4(wind.gusts, wind.gustFrequency, wind.turbulence, wind.turbulenceScale);
   p.stepping = glm::vec4(sim.stiffness, sim.strainLimit, col.radius, col.headFriction);
   const float reach = 2.0f * col.radius + col.margin;
-  p.contact = glm::vec4(reach, col.compliance, col.friction, 0.0f);
+  p.contact = glm::vec4(reach, col.compliance, col.friction,
+                        col.solve == ContactSolve::Sweep ? 1.0f : 0.0f);
   p.misc = glm::vec4(sim.dftl, wind.drag, 0.0f, 0.0f);
   p.ints =
       glm::ivec4(0, int(sim.stiffnessModel), sim.rotationIterations, int(shape_.spheres.size()));

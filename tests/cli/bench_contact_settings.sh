@@ -8,7 +8,7 @@ bin=$1
 src=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-CSMHAIR=$bin SETTINGS="head it2 it1,sub8 it1,list2" \
+CSMHAIR=$bin SETTINGS="head it2 it1,sub8 it1,list2 it2,jacobi" \
   bash "$src/scripts/bench_contact_settings.sh" "$tmp/out" paper_fig1_straight 300 2 >"$tmp/log"
 cat "$tmp/log"
 # The run `it1,list2` stands for.
@@ -18,12 +18,13 @@ cat "$tmp/log"
 python3 - "$tmp/out/contact_settings.csv" "$tmp/list2.json" <<'PY'
 import csv, json, sys
 rows = {r["setting"]: r for r in csv.DictReader(open(sys.argv[1]))}
-assert list(rows) == ["head", "it2", "it1+sub8", "it1+list2"], list(rows)
-head, it2, sub8, list2 = (rows[k] for k in rows)
+assert list(rows) == ["head", "it2", "it1+sub8", "it1+list2", "it2+jacobi"], list(rows)
+head, it2, sub8, list2, jacobi = (rows[k] for k in rows)
 assert head["mode"] == "head" and it2["mode"] == "strands", rows
 assert (it2["iterations"], it2["substeps"], it2["lists"]) == ("2", "4", "1"), it2
 assert (sub8["iterations"], sub8["substeps"]) == ("1", "8"), sub8
 assert (list2["iterations"], list2["substeps"], list2["lists"]) == ("1", "4", "2"), list2
+assert (it2["solve"], jacobi["solve"], jacobi["iterations"]) == ("sweep", "jacobi", "2"), rows
 for r in rows.values():
     assert r["strands"] == "300" and float(r["sim_ms"]) > 0, r
 assert float(it2["grid_ms"]) > 0 and float(it2["contacts_ms"]) > 0, it2
@@ -37,6 +38,7 @@ assert abs(float(list2["depth_p99"]) - a["hair_depth_p99"]) < 1e-9, (list2, a)
 assert float(list2["crossings_per_s"]) == a["hair_crossings_per_s"], (list2, a)
 # Different settings, different hair: iterations and substeps reach the runs.
 assert (it2["pairs_2r"], it2["depth_p50"]) != (sub8["pairs_2r"], sub8["depth_p50"]), rows
+assert (it2["pairs_2r"], it2["depth_p50"]) != (jacobi["pairs_2r"], jacobi["depth_p50"]), rows
 print("rows ok")
 PY
 /usr/bin/python3 "$src/scripts/charts.py" "$tmp/out" contact_settings
@@ -55,6 +57,6 @@ check_bad() {
     exit 1
   fi
 }
-check_bad "it2,x3" "'x3' of 'it2,x3' is none of itN, subN, mX, listN"
+check_bad "it2,x3" "'x3' of 'it2,x3' is none of itN, subN, mX, listN, jacobi"
 check_bad "it1,list0" "value 0 is out of range [1, 16]"
 echo "bench_contact_settings ok"

@@ -2,6 +2,7 @@
 // that hold one strand on another.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -32,6 +33,24 @@ test::Drape drape(CollisionMode mode, double seconds) {
   solver.reset(test::drapeGroom(), c, Pose{});
   for (int f = 0; f < int(std::lround(seconds / c.sim.dt)); ++f) solver.stepFrame(Pose{}, Pose{});
   return test::measureDrape(positions(solver));
+}
+
+// The hand-built scenes below: r = 1 mm, pairs listed within 1.5 mm of 2r.
+ContactSettings millimetreContacts() {
+  ContactSettings settings;
+  settings.radius = 0.001;
+  settings.margin = 0.0015;
+  return settings;
+}
+
+// One substep's corrections (1/240 s) of particles x at rest (no velocity).
+std::vector<glm::dvec4> solveStill(const ContactCandidates& c, const std::vector<glm::dvec3>& x,
+                                   const std::vector<double>& invMass,
+                                   const ContactSettings& settings) {
+  const std::vector<glm::dvec3> v(x.size(), glm::dvec3(0.0));
+  std::vector<glm::dvec4> correction;
+  solveContacts(c, x, v, invMass, 1.0 / 240.0, settings, correction);
+  return correction;
 }
 
 }  // namespace
@@ -117,9 +136,7 @@ TEST_CASE("a skew pair keeps the side it was listed on: one passed through is pu
                                         {0.0, 0.003, -0.01},  {0.0, 0.003, 0.01},
                                         {-0.01, -0.003, 0.0}, {0.01, -0.003, 0.0}};
   const std::vector<uint32_t> strand = {0, 0, 1, 1, 2, 2};
-  ContactSettings settings;
-  settings.radius = 0.001;
-  settings.margin = 0.0015;
+  const ContactSettings settings = millimetreContacts();
   ContactStats stats;
   ContactCandidates c = findCandidates(rest, rest, strand, settings, {}, stats);
   REQUIRE(c.start[1] - c.start[0] == 2);
@@ -131,21 +148,92 @@ TEST_CASE("a skew pair keeps the side it was listed on: one passed through is pu
   CHECK(c.side[c.start[0] + 1] == 0);
 
   // Within the frame, segment 2 passes through segment 0 and ends 0.5 mm below it.
-  std::vector<glm::dvec3> x = rest, v(rest.size(), glm::dvec3(0.0));
+  std::vector<glm::dvec3> x = rest;
   x[2].y = x[3].y = -0.0005;
   const std::vector<double> invMass(rest.size(), 1.0);
-  std::vector<glm::dvec4> correction;
-  solveContacts(c, x, v, invMass, 1.0 / 240.0, settings, correction);
+  std::vector<glm::dvec4> correction = solveStill(c, x, invMass, settings);
   // Pushed back: segment 0 down, segment 2 up, the whole way back to 2r apart (a hard
   // contact, four equal masses, both at the middle: each segment's particles move half of
   // the 2.5 mm).
-  CHECK(correction[0].y == Approx(-0.5 * 2.5e-3));
   CHECK(correction[4].y == Approx(0.5 * 2.5e-3));
+  // Segment 0 sweeps its list in order: pushed 1.25 mm down, it is 1.75 mm from segment 4,
+  // the next in its list, which sends it back up by half of the 0.25 mm.
+  CHECK(correction[0].y == Approx(-0.5 * 2.5e-3 + 0.5 * 0.25e-3));
+  CHECK(correction[0].w == 1.0);
   // Along the closest points alone, the same pair would be pushed on through.
   std::fill(c.side.begin(), c.side.end(), int8_t(0));
-  solveContacts(c, x, v, invMass, 1.0 / 240.0, settings, correction);
+  correction = solveStill(c, x, invMass, settings);
   CHECK(correction[0].y > 0.0);
   CHECK(correction[4].y < 0.0);
+}
+
+TEST_CASE("a segment sweeps its list: one deep pair among shallow ones is resolved at once") {
+  // Segment 0 along x; three segments of other strands across it along z: one 1 mm inside 2r
+  // at its middle, two 0.1 mm inside at 6 mm either side. r = 1 mm, a hard contact, equal
+  // masses. Each segment moves its own ends by each pair's share in list order, so segment 0
+  // moves 0.5 mm out of the deep pair first and the shallow ones are met on the way; a mean
+  // of what its three pairs ask would move its ends 0.2 mm and leave the deep pair 0.3 mm
+  // inside after the iteration.
+  auto across = [](double x, double y) {
+    return std::array{glm::dvec3(x, y, -0.01), glm::dvec3(x, y, 0.01)};
+  };
+  std::vector<glm::dvec3> x = {{-0.01, 0.0, 0.0}, {0.01, 0.0, 0.0}};
+  for (auto [at, height] :
+       {std::pair(0.0, 0.001), std::pair(-0.006, 0.0019), std::pair(0.006, 0.0019)})
+    for (const glm::dvec3& p : across(at, height)) x.push_back(p);
+  std::vector<glm::dvec3> rest = x;  // at rest the three lay 5 mm higher: contact distance 2r
+  for (size_t i = 2; i < rest.size(); ++i) rest[i].y += 0.005;
+  const std::vector<uint32_t> strand = {0, 0, 1, 1, 2, 2, 3, 3};
+  ContactSettings settings = millimetreContacts();
+  ContactStats stats;
+  const ContactCandidates c = findCandidates(x, rest, strand, settings, {}, stats);
+  REQUIRE(c.start[1] - c.start[0] == 3);
+  const std::vector<double> invMass(x.size(), 1.0);
+  std::vector<glm::dvec4> correction = solveStill(c, x, invMass, settings);
+  // Each segment is a strand of its own here: its ends take what it sent.
+  std::vector<glm::dvec3> moved = x;
+  for (size_t a = 0; a < x.size(); a += 2) {
+    moved[a] += glm::dvec3(correction[2 * a]);
+    moved[a + 1] += glm::dvec3(correction[2 * a + 1]);
+  }
+  CHECK(correction[0].w == 1.0);
+  CHECK(correction[0].y == Approx(-0.5e-3));
+  CHECK(correction[1].y == Approx(-0.5e-3));
+  for (uint32_t b : {2u, 4u, 6u}) {
+    double s, t;
+    const double d =
+        std::sqrt(closestSegmentPoints(moved[0], moved[1], moved[b], moved[b + 1], s, t));
+    INFO("segment " << b << " is " << d * 1e3 << " mm from segment 0");
+    CHECK(d > 0.999 * 2.0 * settings.radius);
+  }
+  // collision.solve = jacobi: the sum of the three pairs' shares from where segment 0 began,
+  // sent as three (0.5 mm for the deep one, 0.0847 mm for each shallow one at its lever).
+  settings.sweep = false;
+  correction = solveStill(c, x, invMass, settings);
+  CHECK(correction[0].w == 3.0);
+  CHECK(correction[0].y / correction[0].w == Approx(-0.195e-3).epsilon(0.01));
+}
+
+TEST_CASE("a sweep moves no end further than 2.5 times the pair's depth, whatever the lever") {
+  // Segment 0's first particle is held; a held segment crosses it 2 mm from that end (s = 0.1)
+  // 0.5 mm inside 2r. To move the contact point 0.5 mm the free end would move 5 mm (W =
+  // s^2): jacobi does, the sweep moves it at most 2.5 times the depth, 1.25 mm.
+  const std::vector<glm::dvec3> x = {
+      {-0.01, 0.0, 0.0}, {0.01, 0.0, 0.0}, {-0.008, 0.0015, -0.01}, {-0.008, 0.0015, 0.01}};
+  std::vector<glm::dvec3> rest = x;
+  rest[2].y = rest[3].y = 0.006;
+  const std::vector<uint32_t> strand = {0, 0, 1, 1};
+  ContactSettings settings = millimetreContacts();
+  ContactStats stats;
+  const ContactCandidates c = findCandidates(x, rest, strand, settings, {}, stats);
+  REQUIRE(c.start[1] - c.start[0] == 1);
+  const std::vector<double> invMass = {0.0, 1.0, 0.0, 0.0};
+  std::vector<glm::dvec4> correction = solveStill(c, x, invMass, settings);
+  CHECK(correction[0].y == 0.0);
+  CHECK(correction[1].y == Approx(-1.25e-3));
+  settings.sweep = false;
+  correction = solveStill(c, x, invMass, settings);
+  CHECK(correction[1].y == Approx(-5e-3));
 }
 
 TEST_CASE("with hair-hair off, samples measure contacts only when asked, and then all of them") {
@@ -184,11 +272,11 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
 }
 
 TEST_CASE("more contact iterations hold dense hair in the wind apart better") {
-  // Fig. 1's strands (0.4 mm radius, 22-30 cm, straight) in its wind, 800 of them: each
-  // substep's one Jacobi iteration averages what a segment's contacts ask, so a crowded one
-  // moves a fraction of the way; more iterations (collision.iterations) go further. Measured
-  // on 2,000 strands of Fig. 1, 8 frames: 4 iterations cross 2.4x less than 1 and leave 40%
-  // fewer pairs closer than r.
+  // Fig. 1's strands (0.4 mm radius, 22-30 cm, straight) in its wind, 800 of them: within an
+  // iteration a segment's neighbours stay where it began, so a crowd is held apart a part of
+  // the way; more iterations (collision.iterations) go further. Measured on 2,000 strands of
+  // Fig. 1, 8 frames, with the mean of the pairs (collision.solve = jacobi): 4 iterations
+  // cross 2.4x less than 1 and leave 40% fewer pairs closer than r.
   Config c = test::smallScene(800);
   c.hairstyle.minParticles = c.hairstyle.maxParticles = 16;
   c.hairstyle.lengthMin = 0.22f;

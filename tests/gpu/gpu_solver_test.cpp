@@ -281,19 +281,28 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
   // With more than one contact iteration a substep, all but the last move the particles in
   // a pass of their own (contact_apply.comp, csm::applyCorrections). With more than one list
   // a frame (collision.lists), the lists within it swap the GPU's buffers and count their
-  // crossings, but measure nothing else.
+  // crossings, but measure nothing else. Each way of solving (collision.solve) agrees.
   Config c = smallScene(300);
   c.collision.mode = CollisionMode::Strands;
   c.wind.strength = 3.0f;
   const Groom g = grow(c);
-  for (auto [iterations, lists] : {std::pair(1, 1), std::pair(3, 1), std::pair(1, 3)}) {
-    INFO(iterations << " contact iterations, " << lists << " lists a frame");
+  struct Run {
+    int iterations, lists;
+    ContactSolve solve;
+  };
+  for (auto [iterations, lists, solve] :
+       {Run{1, 1, ContactSolve::Sweep}, Run{3, 1, ContactSolve::Sweep},
+        Run{1, 3, ContactSolve::Sweep}, Run{3, 1, ContactSolve::Jacobi}}) {
+    INFO(iterations << " contact iterations, " << lists << " lists a frame, "
+                    << (solve == ContactSolve::Sweep ? "sweep" : "jacobi"));
     c.collision.iterations = iterations;
     c.collision.lists = lists;
+    c.collision.solve = solve;
     auto gpu = test::gpuSolver();
     CpuSolver cpu;
     cpu.reset(g, c, Pose{});
     gpu->reset(g, c, Pose{});
+    double later[4] = {0.0, 0.0, 0.0, 0.0};  // CPU, GPU candidates; CPU, GPU closer than r
     for (int f = 0; f < 25; ++f) {
       cpu.stepFrame(Pose{}, Pose{});
       gpu->stepFrame(Pose{}, Pose{});
@@ -323,12 +332,18 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
         for (int k = 1; k < kDepthBins; ++k)
           CHECK(std::abs(double(onGpu.depth[k]) - double(onCpu.depth[k])) <= 2.0);
       } else {
-        CHECK(std::abs(double(onGpu.candidates) - double(onCpu.candidates)) <
-              0.05 * double(onCpu.candidates));
-        CHECK(std::abs(double(onGpu.penetrations) - double(onCpu.penetrations)) <
-              0.15 * double(onCpu.penetrations) + 5);
+        later[0] += double(onCpu.candidates);
+        later[1] += double(onGpu.candidates);
+        later[2] += double(onCpu.penetrations);
+        later[3] += double(onGpu.penetrations);
       }
     }
+    // Past that, two runs in the wind part like any two chaotic ones (a segment's sweep turns
+    // on where a pair starts to touch): the same hair in sum over the other 23 frames.
+    INFO("frames 2-24: candidates CPU " << later[0] << " GPU " << later[1] << ", closer than r CPU "
+                                        << later[2] << " GPU " << later[3]);
+    CHECK(std::abs(later[1] - later[0]) < 0.03 * later[0]);
+    CHECK(std::abs(later[3] - later[2]) < 0.08 * later[2]);
   }
 }
 
