@@ -209,6 +209,12 @@ void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
   parallelFor(n, 512, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i) {
       const uint32_t a = uint32_t(i);
+      // No candidates, or no segment (a strand's last particle: x[a + 1] is another strand's
+      // or past the end).
+      if (c.start[i] == c.start[i + 1]) {
+        correction[2 * i] = correction[2 * i + 1] = glm::dvec4(0.0);
+        continue;
+      }
       // The segment's own ends, and their velocities, as its sweep has moved them so far (a
       // move of dx changes the velocity by dx / h, as applyCorrections does): each pair's
       // friction takes what sliding the pairs before it left, not the same sliding again (on

@@ -56,16 +56,16 @@ void main() {
   uint n = range.y;
   // The segment's own ends, and their velocities, as its sweep has moved them so far (a move
   // of dx changes the velocity by dx / h): each pair's friction takes what sliding the pairs
-  // before it left, not the same sliding again. The other segments stay where the iteration found them; jacobi
-  // (collision.solve) evaluates every pair from there too.
+  // before it left, not the same sliding again. The other segments stay where the iteration
+  // found them; jacobi (collision.solve) evaluates every pair from there too.
   bool sweep = P.contact.w > 0.5;
-  vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
   vec3 moved0 = vec3(0.0), moved1 = vec3(0.0);  // what the pairs moved the ends by, in order
   float count = 0.0;                            // how many did
   if (n > 0u) {
     float h = S[substep].time.y;
     float tilde = P.contact.y / (h * h);
     float mu = P.contact.z;
+    vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
     vec3 va0 = fetchVel(a), va1 = fetchVel(a + 1u);
     vec2 wa = inverseMasses(a);
     for (uint k = 0u; k < n; ++k) {
