@@ -206,6 +206,7 @@ void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
   correction.resize(2 * n);  // every entry written below
   const double tilde = settings.compliance / (h * h);
   const double mu = settings.friction;
+  const bool sweep = settings.solve == ContactSolve::Sweep;
   parallelFor(n, 512, [&](size_t first, size_t last) {
     for (size_t i = first; i < last; ++i) {
       const uint32_t a = uint32_t(i);
@@ -261,12 +262,12 @@ void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
         const double g0 = lower ? 1 - s : 1 - t, g1 = lower ? s : t;
         // The sweep moves neither end further than kLever times the pair's depth.
         const double most = lambda * std::max(g0 * invMass[a], g1 * invMass[a + 1]);
-        if (settings.sweep && most > kLever * -C) push *= kLever * -C / most;
+        if (sweep && most > kLever * -C) push *= kLever * -C / most;
         const glm::dvec3 move0 = push * (g0 * invMass[a]), move1 = push * (g1 * invMass[a + 1]);
         moved0 += move0;
         moved1 += move1;
         count += 1.0;
-        if (settings.sweep) {
+        if (sweep) {
           a0 += move0;
           a1 += move1;
           va0 += move0 / h;
@@ -276,7 +277,7 @@ void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
       // The sweep sends where it left each end, as one segment (kFullWeight), so a particle
       // moves by the mean of its segments' sweeps; jacobi the sum over its pairs, as that
       // many, so the mean over its pairs. particleCorrection divides by the weights.
-      if (settings.sweep) {
+      if (sweep) {
         const double l0 = std::min(glm::length(moved0) / kFullWeight, 1.0);
         const double l1 = std::min(glm::length(moved1) / kFullWeight, 1.0);
         correction[2 * i] = glm::dvec4(moved0 * l0, l0);

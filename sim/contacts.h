@@ -21,6 +21,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "sim/config.h"
 #include "sim/hair_state.h"
 #include "sim/stiffness.h"
 
@@ -115,7 +116,7 @@ bool listsBefore(int substep, int substeps, int lists);
 
 struct ContactSettings {
   double radius = 0.001, margin = 0.001, compliance = 0.0, friction = 0.3;
-  bool sweep = true;  // collision.solve: sweep (true) or jacobi
+  ContactSolve solve = ContactSolve::Sweep;  // collision.solve
 };
 
 // The candidates of positions x (rest: the same particles in the head frame, for rest

@@ -366,7 +366,7 @@ void CpuSolver::listAgain() {
 
 ContactSettings CpuSolver::contactSettings() const {
   const CollisionConfig& c = config_.collision;
-  return {c.radius, c.margin, c.compliance, c.friction, c.solve == ContactSolve::Sweep};
+  return {c.radius, c.margin, c.compliance, c.friction, c.solve};
 }
 
 void CpuSolver::step(double h, const Pose& head) {

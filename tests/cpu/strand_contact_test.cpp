@@ -208,7 +208,7 @@ TEST_CASE("a segment sweeps its list: one deep pair among shallow ones is resolv
   }
   // collision.solve = jacobi: the sum of the three pairs' shares from where segment 0 began,
   // sent as three (0.5 mm for the deep one, 0.0847 mm for each shallow one at its lever).
-  settings.sweep = false;
+  settings.solve = ContactSolve::Jacobi;
   correction = solveStill(c, x, invMass, settings);
   CHECK(correction[0].w == 3.0);
   CHECK(correction[0].y / correction[0].w == Approx(-0.195e-3).epsilon(0.01));
@@ -231,7 +231,7 @@ TEST_CASE("a sweep moves no end further than 2.5 times the pair's depth, whateve
   std::vector<glm::dvec4> correction = solveStill(c, x, invMass, settings);
   CHECK(correction[0].y == 0.0);
   CHECK(correction[1].y == Approx(-1.25e-3));
-  settings.sweep = false;
+  settings.solve = ContactSolve::Jacobi;
   correction = solveStill(c, x, invMass, settings);
   CHECK(correction[1].y == Approx(-5e-3));
 }
