@@ -197,7 +197,7 @@ bool crossed(uint before, uint now) {
 }
 
 // The collision grid (DESIGN.md section 1.7): cells of edge P.cells.x, at least twice the
-// contact distance and half a mean segment. Each segment is entered in every cell that its
+// contact distance and three quarters of a mean segment. Each segment is entered in every cell that its
 // capsule of radius P.cells.z (half the candidate distance and 1% for rounding) reaches: the
 // cells of its padded box that the segment itself passes within P.cells.z of (clipToCell),
 // with the box of the part it has there. A pair is kept only in the cell holding the midpoint
@@ -206,8 +206,8 @@ bool crossed(uint before, uint now) {
 // exactly once. Every pass computes cells, clips and boxes with these functions from the same
 // positions, so they agree to the bit.
 
-// Cells are counted from the head (P.origin) and clamped to -512..511 per axis (+-4.6 m with
-// Fig. 1's 9 mm cells): a cell's 30-bit key is then exact, and a far-away segment of an
+// Cells are counted from the head (P.origin) and clamped to -512..511 per axis (+-6.7 m with
+// Fig. 1's 13 mm cells): a cell's 30-bit key is then exact, and a far-away segment of an
 // exploding simulation shares the border cells instead of overflowing (slower, still exact:
 // a border cell takes the whole segment, and the owner of a pair out there is a border cell).
 const int kCellLow = -512, kCellHigh = 511;  // the clamp; 10 bits of a key per axis

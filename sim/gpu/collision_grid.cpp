@@ -23,9 +23,11 @@ static_assert(CSM_COUNTER_ENTRIES < kSearchCounters);
 // Boxes are padded by half the candidate distance (2r + margin) and 1%, so that a pair the
 // candidate pass finds closer than that in float always has overlapping boxes.
 constexpr float kPadSlack = 1.01f;
+// Cells are at least this many mean rest segments long (cellSize says why).
+constexpr double kCellPerSegment = 0.75;
 // A segment enters at most CSM_MAX_SEGMENT_CELLS cells (4 x 4 x 4): a box of a strain-limited
-// segment spans at most 3 cells per axis (cells are at least half a mean segment), so only a
-// segment stretched to ~1.5 mean lengths or more misses it. Such a segment is in no cell this
+// segment spans at most 3 cells per axis (cells are at least 0.75 of a mean segment), so only
+// a segment stretched to ~2 mean lengths or more misses it. Such a segment is in no cell this
 // frame (counted as oversize), which keeps the pass bounded when a simulation explodes.
 constexpr uint32_t kMaxSegmentCells = CSM_MAX_SEGMENT_CELLS;
 
@@ -116,10 +118,13 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
 }
 
 double CollisionGrid::cellSize(float reach) const {
-  // Cells of at least twice the candidate distance and half a mean rest segment (the CPU
-  // reference, findContactsGrid, takes half the current median): a segment then enters ~2-12
-  // cells, and a cell holds about a sixteenth of what a cell as long as a segment holds.
-  return std::max({2.0 * double(reach), 0.5 * meanSegment_, 1e-6});
+  // Cells of at least twice the candidate distance and three quarters of a mean rest segment
+  // (the CPU reference, findContactsGrid, takes half the current median; the pairs found do
+  // not depend on it): a segment of Fig. 1 then enters 3.4 cells (5.0 at half). Smaller cells cost
+  // more entries to count and scatter than the candidate pass saves, larger ones more candidate
+  // tests (Fig. 1 on llvmpipe, search ms a frame at half / three quarters / one mean segment:
+  // 482-530 / 428-442 / 439-454; docs/BENCHMARKS.md).
+  return std::max({2.0 * double(reach), kCellPerSegment * meanSegment_, 1e-6});
 }
 
 void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uint32_t> strand,
