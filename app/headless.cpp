@@ -217,7 +217,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   if (seen.overflows > 0)
     std::fprintf(stderr,
                  "csmhair: warning: the candidate pairs of %llu frames did not fit the solver's "
-                 "buffers: those frames had no strand contacts (and counted no crossings)\n",
+                 "buffers: those frames kept the list before them (and counted no crossings)\n",
                  (unsigned long long)seen.overflows);
   if (seen.crowded > 0)
     std::fprintf(stderr,

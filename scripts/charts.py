@@ -382,8 +382,8 @@ def modes_chart(rows, out):
     the CSV splits the crossings (crossings_close_per_s: pairs the groom put closer than 2r,
     which may cross where they crossed at rest), the solid line is the crossings of pairs that
     were apart and the dotted one all of them. A row of a mode with strand contacts whose
-    crossings are empty had candidates over the buffers (no strand contacts in those frames):
-    its cost is not the mode's, and it is left out."""
+    crossings are empty had candidates over the buffers (those frames kept the list before
+    them): its cost is not the mode's, and it is left out."""
     fig, axes = plt.subplots(1, 3, figsize=(12, 4))
     rows = [r for r in rows
             if "strands" not in r["mode"] or (r.get("crossings_per_s") or "") != ""]

@@ -44,7 +44,7 @@ struct ContactStats {
   // distance: they may cross where they crossed at rest).
   uint64_t crossingsClose = 0;
   // Lists since the solver's reset whose candidates did not fit its buffers (a running
-  // count: the substeps of those lists had no strand contacts; the GPU solver grows the
+  // count: the substeps of those lists kept the list before; the GPU solver grows the
   // buffers to what the frame's last list needed as the next frame begins; always 0 on the
   // CPU reference, which has no fixed buffers), and segments of this list too long for the
   // grid's cells or with a non-finite end (in no cell: no contacts for them).

@@ -126,13 +126,13 @@
 #define CSM_COUNTER_MAX_DEPTH 8   // deepest penetration in r (float bits: positive floats
                                   // order as their bits)
 #define CSM_COUNTER_PAIR_LIST 9   // candidate pairs the pair list needed (over its capacity:
-                                  // the frame has no strand contacts)
+                                  // the last list stays)
 #define CSM_COUNTER_DEPTH 16      // csm::kDepthBins bins of penetration depth (sim/contacts.h)
 #define CSM_DEPTH_BINS 64
 #define CSM_DEPTH_BINS_PER_R 32
 #define CSM_COUNTERS_PER_FRAME 80  // the slots above, cleared by each candidate search
 #define CSM_COUNTER_OVERFLOWS 80  // searches since the grid's reset whose grid or pair list did
-                                  // not fit (those frames had no strand contacts): kept
+                                  // not fit (those kept the last list): kept
 #define CSM_COUNTERS 84
 
 // Slots of the DISPATCH buffer.

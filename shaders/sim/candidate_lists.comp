@@ -5,7 +5,7 @@
 // segment's side, whose orientation flipped against the last list (LAST_CANDIDATES: last
 // frame's, or the one before it within the frame with collision.lists; csm::findCandidates
 // does the same on the CPU). Every candidate has its place: no list is
-// cut short. The sort is a heapsort: its loops take at most n (1 + 2 log2 n) iterations
+// cut short. A search whose grid or pair list did not fit keeps the last list. The sort is a heapsort: its loops take at most n (1 + 2 log2 n) iterations
 // whatever the order the scatter left (an insertion sort takes up to n^2 / 2, past the 65,535
 // that llvmpipe allows an invocation at ~360 candidates: the lists of 30,000 strands of Fig. 1
 // came out cut short, differently from run to run). A segment over CSM_MAX_CANDIDATES lists
@@ -54,12 +54,13 @@ void setCandidate(uint i, uvec2 c) {
 #endif
     imageStore(candidates, int(i), uvec4(c, 0u, 0u));
 }
-uint lastOther(uint i) {
+uvec2 lastCandidateAt(uint i) {
 #ifdef CSM_SPLIT_VIEWS
-  if (i >= listSplit) return imageLoad(lastCandidatesHigh, int(i - listSplit)).x;
+  if (i >= listSplit) return imageLoad(lastCandidatesHigh, int(i - listSplit)).xy;
 #endif
-  return imageLoad(lastCandidates, int(i)).x;
+  return imageLoad(lastCandidates, int(i)).xy;
 }
+uint lastOther(uint i) { return lastCandidateAt(i).x; }
 
 // Max-heap on candidates[base, base + end): moves the candidate at `root` down to its place.
 void siftDown(uint base, uint root, uint end) {
@@ -87,14 +88,24 @@ void main() {
   uint here = P.grid.w * P.counts.x + a, before = (1u - P.grid.w) * P.counts.x + a;
   uint base = segBase[a];
   uint n = 0u;
-  // No candidates when the grid or the pair list did not fit this frame; the counters say so
-  // (and keep the count of such frames).
+  // When the grid or the pair list did not fit this search, the last list stays; the counters
+  // say so (and keep the count of such searches).
   uint total = texelFetch(gridStartTex, int(P.grid.x + 1u)).x;
   bool fits = total <= P.grid.y && counters[CSM_COUNTER_PAIR_LIST] <= P.grid.z;
   if (a == 0u && !fits) ++counters[CSM_COUNTER_OVERFLOWS];
+  uvec2 last = candidateRange[before];
+  if (!fits) {
+    // The last list stays (copied to the same slots of this one's storage, which is as
+    // large): its pairs keep their sides and contact distances, and their constraints are
+    // evaluated where the hair is now. Empty when there is none (the first list after a
+    // reset or a growth). No crossings are counted against it.
+    for (uint k = 0u; k < last.y; ++k) setCandidate(last.x + k, lastCandidateAt(last.x + k));
+    candidateRange[here] = last;
+    return;
+  }
   uint sides = segBase[a + 1u] - segBase[a];
-  bool crowded = fits && crowdedSides(sides);
-  if (fits && !crowded) {
+  bool crowded = crowdedSides(sides);
+  if (!crowded) {
     for (uint k = 0u; k < sides; ++k) {
       uvec2 c = sideAt(base + k);
       if (c.x != kNoCandidate) setCandidate(base + n++, c);
@@ -109,7 +120,6 @@ void main() {
   }
   // Crossings: both lists are in ascending order.
   uint crossings = 0u, close = 0u;
-  uvec2 last = candidateRange[before];
   uint j = 0u, k = 0u, previous = 0u;
   bool sorted = true;
   for (; k < n; ++k) {

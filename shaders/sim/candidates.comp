@@ -12,8 +12,9 @@
 // appended to the pair list, lower segment first, with its flags and contact distance, and
 // each of its segments counts it; pair_scatter.comp then gives every segment its pairs and
 // candidate_lists.comp sorts them into its list. The list's order depends on the schedule,
-// its content does not; a frame whose pairs do not fit the list has no strand contacts and
-// says so in the counters (CSM_COUNTER_PAIR_LIST over the capacity). Closest points: Ericson,
+// its content does not; a search whose pairs do not fit the list keeps the last list
+// (candidate_lists.comp) and says so in the counters (CSM_COUNTER_PAIR_LIST over the
+// capacity). Closest points: Ericson,
 // Real-Time Collision Detection, 5.1.9; a pair is always evaluated lower segment first, as on
 // the CPU, so that both agree on the candidate distance's boundary.
 //
@@ -34,7 +35,7 @@
 // with the whole segment's box (owner: the lowest corner of the two boxes' overlap) had twice
 // the candidates per entry and a fifth more overlaps than the boxes of the pieces in a cell.
 // When the grid did not fit its buffers this frame (see grid_scatter.comp), no entry runs and
-// every segment's list is empty: the frame has no strand contacts, and the counters say so.
+// every segment keeps its last list; the counters say so.
 // An entry whose loops ended early (a cell so full that the driver's loop limit, 65,535
 // iterations an invocation on llvmpipe, cut them short) is counted as crowded: it may have
 // missed pairs.

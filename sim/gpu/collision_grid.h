@@ -10,8 +10,8 @@
 // stands (sizeForLastSearch), then follow what the last search needed: its counters are
 // copied behind a fence as it ends and read as the next one begins (beginFrame), so the buffers
 // grow at the same search whatever the GPU's timing and whoever reads the samples (the
-// simulation stays deterministic). A search over either capacity has no strand contacts and says
-// so in the counters (entries or pairs needed > capacity), and the running count of such
+// simulation stays deterministic). A search over either capacity keeps the last list (its pairs, where
+// the hair is now; none after a reset or a growth) and says so in the counters (entries or pairs needed > capacity), and the running count of such
 // searches (CSM_COUNTER_OVERFLOWS, ContactStats::overflows) reaches the metrics and the panel.
 #pragma once
 
@@ -46,8 +46,8 @@ class CollisionGrid {
   // Sizes the entry buffer for the boxes of `position` (a state the coming frames start near,
   // the head at `origin`) with candidate distance `reach`, and half again, and the pair list
   // as large. Every cell of a box counts, so this bounds the clipped entries the grid makes
-  // (Fig. 1: ~1.5x them): they then rarely need to grow while the hair moves (a frame over them has
-  // no strand contacts, says so in the counters, and the next frame grows them).
+  // (Fig. 1: ~1.5x them): they then rarely need to grow while the hair moves (a frame over them keeps
+  // the last list, says so in the counters, and the next frame grows them).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
   // After a search of the hair as it stands (a reset's, not inside a step): reads it back at
@@ -93,7 +93,7 @@ class CollisionGrid {
   // Caps the buffers that grow with the hair's density (the entries, the pair list, its sides
   // and the lists) at `bytes` each, as a device whose buffer textures hold no more; tests use
   // it to reach the cap with a small scene. A frame that needs more than the capped buffers
-  // hold has no strand contacts and says so, as any frame over them. Set before reset, it caps
+  // hold keeps the last list and says so, as any frame over them. Set before reset, it caps
   // what the reset sizes; raised later (UINT64_MAX: the device's own limit), the buffers grow
   // as the next frame begins, as after any overflow. (The storage buffers sized by the
   // particles stay under 128 MiB up to ~4 M particles.)

@@ -96,7 +96,7 @@ class GpuSolver final : public Solver {
   // The order the list pass and the contact solve take the segments in (segment_order.comp).
   std::vector<uint32_t> readSegmentOrder() const { return grid_.readSegmentOrder(); }
   // The grid of the last candidate pass (reads back): entries it needed, entries the buffers
-  // hold (over it, the frame had no strand contacts), segments in no cell (not finite, or a
+  // hold (over it, the frame kept the last list), segments in no cell (not finite, or a
   // box over the cell cap), and the cell edge in metres.
   struct GridStats {
     uint32_t entries = 0, capacity = 0, oversize = 0, buckets = 0;

@@ -351,12 +351,14 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   CHECK(gpu->gridStats().capacity == capacity);
 }
 
-TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, says so, grows",
-          "[gpu][collision]") {
+TEST_CASE(
+    "GPU grid: a pair list over its capacity at the first frame lists nothing, says so, grows",
+    "[gpu][collision]") {
   // A bundle of parallel strands packed closer than the candidate distance (~22,000 pairs),
   // its lists capped at reset at 8,192 pairs (the reset sizes them for the bundle otherwise),
-  // as hair that packs tighter than it was at reset: the frame lists no candidates (the
-  // counters say how many pairs it needed, and count the frame as one over capacity). With
+  // as hair that packs tighter than it was at reset: the frame has no list before it to keep
+  // (the reset's), so it lists no candidates (the counters say how many pairs it needed, and
+  // count the frame as one over capacity). With
   // the cap lifted, the next frame grows the list to what that one needed, fits and lists
   // them.
   auto gpu = test::gpuSolver();
@@ -394,6 +396,62 @@ TEST_CASE("GPU grid: a pair list over its capacity drops the frame's contacts, s
   CHECK(gpu->gridStats().pairCapacity == fits.pairCapacity);
   gpu->reset(g, c, Pose{});
   CHECK(gpu->readContactStats().overflows == 0);
+}
+
+// Two rows of strands held horizontally along +z at rest, 1.6 mm apart in each row: row A at
+// y = 0, 5 cm long; row B 0.8 mm to the side and 6 mm above, 10 cm long. Under gravity B
+// droops further, down between A's strands.
+Groom hangingRows(int perRow) {
+  Groom g;
+  for (int row = 0; row < 2; ++row)
+    for (int i = 0; i < perRow; ++i) {
+      const glm::vec3 root(0.0016f * float(i) + 0.0008f * float(row), 0.006f * float(row), 0.0f);
+      std::vector<glm::vec3> points;
+      for (int k = 0; k < (row == 0 ? 6 : 11); ++k)
+        points.push_back(root + glm::vec3(0, 0, 0.01f * float(k)));
+      g.addStrand(points);
+    }
+  return g;
+}
+
+TEST_CASE("GPU grid: a search over the pair list's capacity keeps the list before it",
+          "[gpu][collision]") {
+  // Row B droops between row A's strands: with a 6 mm margin the candidate pairs go from
+  // 12,734 at rest to ~14,700 (llvmpipe). With the buffers capped at 13,500 pairs, a frame
+  // whose search needs more keeps each segment's list from the frame before (not an empty
+  // one: the hair would pass through itself for a frame), says so, and counts no crossings.
+  auto gpu = test::gpuSolver();
+  Config c = contactConfig(false);
+  c.sim.gravity = glm::vec3(0.0f, -9.81f, 0.0f);
+  c.collision.margin = 0.006f;
+  const uint32_t cap = 13500;
+  gpu->limitGridStorage(uint64_t(cap) * 16);
+  gpu->reset(hangingRows(60), c, Pose{});
+  REQUIRE(gpu->gridStats().pairCapacity == cap);
+  std::vector<std::vector<std::pair<uint32_t, float>>> before;
+  int fitted = 0;
+  for (int f = 0; f < 10 && gpu->readContactStats().overflows == 0; ++f) {
+    before = gpu->readCandidates();
+    gpu->stepFrame(Pose{}, Pose{});
+    if (gpu->readContactStats().overflows == 0) ++fitted;
+  }
+  const GpuSolver::GridStats over = gpu->gridStats();
+  const ContactStats stats = gpu->readContactStats();
+  INFO("frames that fit " << fitted << ", pairs " << over.pairs << " entries " << over.entries
+                          << " of " << over.capacity);
+  REQUIRE(stats.overflows == 1);
+  CHECK(fitted >= 1);  // a list before it
+  CHECK(over.pairs > cap);
+  CHECK(over.entries <= over.capacity);
+  CHECK(stats.crossings == 0);
+  const auto kept = gpu->readCandidates();
+  size_t listed = 0;
+  for (const auto& l : kept) listed += l.size();
+  CHECK(listed > 20000);
+  CHECK(kept == before);
+  // The next frame over the cap too keeps the same lists.
+  gpu->stepFrame(Pose{}, Pose{});
+  if (gpu->gridStats().pairs > cap) CHECK(gpu->readCandidates() == before);
 }
 
 // One segment 6 cm along x (particles 0 and 1) and `crossing` segments 1 cm along z, each a
@@ -453,7 +511,8 @@ TEST_CASE("GPU grid: its buffers stay within the cap on what the device's views 
   // (llvmpipe's 128 MiB storage blocks, before the lists moved to buffer textures: 30,000
   // strands of Fig. 1 counted different crossings from run to run). Capped at 128 KiB (8,192 pairs
   // or entries), the packed bundle (~4,500 entries, ~22,000 pairs) never fits its pairs: every
-  // frame says so and has no strand contacts, and nothing grows past the cap.
+  // frame says so and keeps the list before it (none: no search ever fit), and nothing grows
+  // past the cap.
   const Groom g = packedBundle(0);
   const Config c = contactConfig(true);
   const uint64_t cap = 128 * 1024;
