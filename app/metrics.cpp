@@ -119,8 +119,8 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
     a["hair_depth_p99"] = contactSum_.depthQuantile(0.99);
     a["hair_depth_max"] = contactSum_.maxDepth;
     a["hair_candidates_mean"] = double(contactSum_.candidates) / double(contactSamples_);
-    // Never silent: frames whose candidates did not fit the solver's buffers (no strand
-    // contacts in them), and the most segments a sampled list left out as too long for the
+    // Never silent: frames whose candidates did not fit the solver's buffers (they kept the
+    // lists before them), and the most segments a sampled list left out as too long for the
     // grid's cells.
     a["hair_list_overflows"] = contactSum_.overflows;
     a["hair_oversize_segments_max"] = contactSum_.oversize;

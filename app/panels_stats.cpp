@@ -130,9 +130,9 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
       warning("hair-hair lists full in %llu frames (the list before kept there)",
               contacts.overflows,
               "A frame whose candidate pairs do not fit the GPU's buffers keeps the list before\n"
-              "it (its pairs, evaluated where the hair is now; none after a reset) and counts\n"
-              "no crossings; the buffers grow to what it needed as the\n"
-              "next frame begins (up to what the device's buffer textures hold: 134 M pairs\n"
+              "it (its pairs, evaluated where the hair is now; none after a reset or a growth)\n"
+              "and counts no crossings; the buffers grow to what it needed as the next frame\n"
+              "begins (up to what the device's buffer textures hold: 134 M pairs\n"
               "on llvmpipe and NVIDIA), so the frames after it fit. Counted since the\n"
               "simulation was last reset.");
     if (contacts.oversize > 0)

@@ -239,7 +239,7 @@ void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
         double separation;
         const glm::dvec3 nrm = contactNormal(p0, p1, q0, q1, s, t, d, c.side[k], separation);
         const double C = separation - c.distance[k];
-        if (C >= 0.0) continue;
+        if (!(C < 0.0) || std::isinf(C)) continue;  // a segment gone non-finite moves no other
         const double wp0 = invMass[p], wp1 = invMass[p + 1];
         const double wq0 = invMass[q], wq1 = invMass[q + 1];
         const double W =

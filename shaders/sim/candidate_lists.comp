@@ -4,9 +4,9 @@
 // in ascending order of the other segment; and counts crossings: pairs, from the lower
 // segment's side, whose orientation flipped against the last list (LAST_CANDIDATES: last
 // frame's, or the one before it within the frame with collision.lists; csm::findCandidates
-// does the same on the CPU). Every candidate has its place: no list is
-// cut short. A search whose grid or pair list did not fit keeps the last list. The sort is a heapsort: its loops take at most n (1 + 2 log2 n) iterations
-// whatever the order the scatter left (an insertion sort takes up to n^2 / 2, past the 65,535
+// does the same on the CPU). Every candidate has its place: no list is cut short. A search
+// whose grid or pair list did not fit keeps the lists before it. The sort is a heapsort: its
+// loops take at most n (1 + 2 log2 n) iterations whatever the order the scatter left (an insertion sort takes up to n^2 / 2, past the 65,535
 // that llvmpipe allows an invocation at ~360 candidates: the lists of 30,000 strands of Fig. 1
 // came out cut short, differently from run to run). A segment over CSM_MAX_CANDIDATES lists
 // nothing (pair_scatter.comp left its pairs out on both sides) and is counted as crowded, as
@@ -98,7 +98,7 @@ void main() {
     // The last list stays (copied to the same slots of this one's storage, which is as
     // large): its pairs keep their sides and contact distances, and their constraints are
     // evaluated where the hair is now. Empty when there is none (the first list after a
-    // reset or a growth). No crossings are counted against it.
+    // reset or a growth of the pair list). No crossings are counted against it.
     for (uint k = 0u; k < last.y; ++k) setCandidate(last.x + k, lastCandidateAt(last.x + k));
     candidateRange[here] = last;
     return;

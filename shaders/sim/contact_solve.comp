@@ -83,7 +83,10 @@ void main() {
       vec3 nrm = contactNormal(p0, p1, q0, q1, s, t, d, keptSide(c.x >> uint(CSM_CANDIDATE_SHIFT)),
                                separation);
       float C = separation - d0;
-      if (C >= 0.0) continue;
+      // isnan and isinf as well: a compiler may assume that comparisons see no NaN, and a
+      // pair kept from the list before (a search over the buffers) may have a segment that is
+      // no longer finite, which must not spread to this one.
+      if (isnan(C) || isinf(C) || C >= 0.0) continue;
       vec2 wb = inverseMasses(b);
       vec2 wp = lower ? wa : wb, wq = lower ? wb : wa;
       float W = (1.0 - s) * (1.0 - s) * wp.x + s * s * wp.y + (1.0 - t) * (1.0 - t) * wq.x +

@@ -143,9 +143,13 @@ void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uin
   growEntries(std::max<uint64_t>(1, entries + entries / 2));
   // Dense hair has about as many candidate pairs as entries at rest, but hair that settles
   // onto itself and that the wind gathers has more: Fig. 1 on the mannequin goes from 1.0 to
-  // 4.0 pairs per estimated entry in its first 12 frames, and with twice the entries reserved
-  // two of its frames had no strand contacts before the list grew. Four times as many, and a
-  // quarter more (growPairList); the growth after an overflow stays for what this misses.
+  // 4.0 pairs per estimated entry in its first 12 frames (cells of half a segment), and with
+  // twice the entries reserved two of its frames had no strand contacts before the list grew.
+  // Four times as many, and a quarter more (growPairList); the growth after an overflow stays
+  // for what this misses (such a frame keeps the lists before it). With cells of three
+  // quarters of a segment there are fewer entries per segment, so fewer are reserved; and
+  // the reset's own search sizes the list too (sizeForLastSearch): Fig. 1 over 60 frames and
+  // Fig. 3 over 20 had no frame over it.
   growPairList(std::max<uint64_t>(1024, 4 * entries));
 }
 
@@ -250,7 +254,7 @@ void CollisionGrid::sizeForLastSearch() {
   growPairList(c[CSM_COUNTER_PAIR_LIST]);
   // Forgotten: the first frame counts no crossings against it, and no frame over capacity.
   counters_.clearToZero();
-  candidateRange_.clearToZero();
+  if (particles_ > 0) candidateRange_.clearToZero();
   lastFrameListed_ = false;
 }
 
@@ -301,8 +305,8 @@ void CollisionGrid::scan(uint32_t blocks, uint32_t totalSlot) {
 }
 
 bool CollisionGrid::countersSeen(const uint32_t* c) {
-  // The grid or the pair list did not fit that frame (it applied no hair-hair forces): room
-  // for the next.
+  // The grid or the pair list did not fit that frame (it kept the lists before it): room for
+  // the next.
   bool grew = false;
   if (c[CSM_COUNTER_ENTRIES] > entryCapacity_) {
     growEntries(c[CSM_COUNTER_ENTRIES]);
@@ -363,11 +367,13 @@ void CollisionGrid::growPairList(uint64_t needed) {
   const uint64_t sides = 2 * uint64_t(pairListCapacity_);
   zeroed<glm::uvec2>(pairSides_, sides);
   pairSidesTex_.attach(pairSides_, sides, listSplit_);
-  // Both frames' lists, two sides per pair each; last frame's lists are gone.
+  // Both frames' lists, two sides per pair each; last frame's lists are gone, and their
+  // ranges with them (a search over the grown list that still does not fit keeps none).
   for (int h = 0; h < 2; ++h) {
     zeroed<glm::uvec2>(candidates_[h], sides);
     candidatesTex_[h].attach(candidates_[h], sides, listSplit_);
   }
+  candidateRange_.clearToZero();
   lastFrameListed_ = false;
 }
 

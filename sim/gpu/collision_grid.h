@@ -10,9 +10,11 @@
 // stands (sizeForLastSearch), then follow what the last search needed: its counters are
 // copied behind a fence as it ends and read as the next one begins (beginFrame), so the buffers
 // grow at the same search whatever the GPU's timing and whoever reads the samples (the
-// simulation stays deterministic). A search over either capacity keeps the last list (its pairs, where
-// the hair is now; none after a reset or a growth) and says so in the counters (entries or pairs needed > capacity), and the running count of such
-// searches (CSM_COUNTER_OVERFLOWS, ContactStats::overflows) reaches the metrics and the panel.
+// simulation stays deterministic). A search over either capacity keeps each segment's list from
+// the search before (its pairs, evaluated where the hair is now; none after a reset or a growth
+// of the pair list) and says so in the counters (entries or pairs needed > capacity), and the
+// running count of such searches (CSM_COUNTER_OVERFLOWS, ContactStats::overflows) reaches the
+// metrics and the panel.
 #pragma once
 
 #include <cstdint>
@@ -46,8 +48,8 @@ class CollisionGrid {
   // Sizes the entry buffer for the boxes of `position` (a state the coming frames start near,
   // the head at `origin`) with candidate distance `reach`, and half again, and the pair list
   // as large. Every cell of a box counts, so this bounds the clipped entries the grid makes
-  // (Fig. 1: ~1.5x them): they then rarely need to grow while the hair moves (a frame over them keeps
-  // the last list, says so in the counters, and the next frame grows them).
+  // (Fig. 1: ~1.5x them): they then rarely need to grow while the hair moves (a frame over them
+  // keeps the lists before it, says so in the counters, and the next frame grows them).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
   // After a search of the hair as it stands (a reset's, not inside a step): reads it back at

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -234,6 +235,36 @@ TEST_CASE("a sweep moves no end further than 2.5 times the pair's depth, whateve
   settings.solve = ContactSolve::Jacobi;
   correction = solveStill(c, x, invMass, settings);
   CHECK(correction[1].y == Approx(-5e-3));
+}
+
+TEST_CASE("a listed pair whose other segment is no longer finite moves nothing") {
+  // Segment 0 along x, segment 2 across it 1 mm inside 2r; then segment 2 goes NaN (or to
+  // infinity) after the list was made, as a segment of an exploding strand kept in a list.
+  // The pair asks nothing of segment 0 and the NaN stays where it is.
+  std::vector<glm::dvec3> x = {
+      {-0.01, 0.0, 0.0}, {0.01, 0.0, 0.0}, {0.0, 0.001, -0.01}, {0.0, 0.001, 0.01}};
+  std::vector<glm::dvec3> rest = x;
+  rest[2].y = rest[3].y = 0.006;
+  const std::vector<uint32_t> strand = {0, 0, 1, 1};
+  const ContactSettings settings = millimetreContacts();
+  ContactStats stats;
+  const ContactCandidates c = findCandidates(x, rest, strand, settings, {}, stats);
+  REQUIRE(c.start[1] - c.start[0] == 1);
+  const std::vector<double> invMass(x.size(), 1.0);
+  REQUIRE(solveStill(c, x, invMass, settings)[0].y < 0.0);  // listed and pushed while finite
+  for (double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    std::vector<glm::dvec3> broken = x;
+    broken[2].y = broken[3].y = bad;
+    for (ContactSolve solve : {ContactSolve::Sweep, ContactSolve::Jacobi}) {
+      ContactSettings s = settings;
+      s.solve = solve;
+      const std::vector<glm::dvec4> correction = solveStill(c, broken, invMass, s);
+      INFO("other segment at y = " << bad << ", solve " << int(solve));
+      CHECK(glm::dvec3(correction[0]) == glm::dvec3(0.0));
+      CHECK(glm::dvec3(correction[1]) == glm::dvec3(0.0));
+      CHECK(correction[0].w == 0.0);
+    }
+  }
 }
 
 TEST_CASE("with hair-hair off, samples measure contacts only when asked, and then all of them") {
