@@ -23,11 +23,14 @@ static_assert(CSM_COUNTER_ENTRIES < kSearchCounters);
 // Boxes are padded by half the candidate distance (2r + margin) and 1%, so that a pair the
 // candidate pass finds closer than that in float always has overlapping boxes.
 constexpr float kPadSlack = 1.01f;
-// Cells are at least this many mean rest segments long (cellSize says why).
-constexpr double kCellPerSegment = 0.75;
+// Cells are at least this many mean rest segments long: half in dense hair, three quarters
+// where a sizing search found at most kSparsePairs candidate pairs a segment (cellSize says
+// why).
+constexpr double kDenseCellPerSegment = 0.5, kSparseCellPerSegment = 0.75;
+constexpr uint64_t kSparsePairs = 20;
 // A segment enters at most CSM_MAX_SEGMENT_CELLS cells (4 x 4 x 4): a box of a strain-limited
-// segment spans at most 3 cells per axis (cells are at least 0.75 of a mean segment), so only
-// a segment stretched to ~2 mean lengths or more misses it. Such a segment is in no cell this
+// segment spans at most 4 cells per axis (cells are at least half a mean segment), so only a
+// segment stretched to ~1.5 mean lengths or more misses it. Such a segment is in no cell this
 // frame (counted as oversize), which keeps the pass bounded when a simulation explodes.
 constexpr uint32_t kMaxSegmentCells = CSM_MAX_SEGMENT_CELLS;
 
@@ -100,6 +103,7 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   zeroed<glm::uvec2>(candidateRange_, 2 * particles);
   half_ = 0;
   lastFrameListed_ = false;
+  cellPerSegment_ = kDenseCellPerSegment;  // until a search of the hair says (sizeForLastSearch)
   zeroed<uint32_t>(gridCount_, buckets_);
   zeroed<uint32_t>(gridStart_, buckets_ + 4);  // + the total, as a uvec4
   zeroed<uint32_t>(scanBlockSums_, scanBlocks_ + 1);
@@ -118,13 +122,14 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
 }
 
 double CollisionGrid::cellSize(float reach) const {
-  // Cells of at least twice the candidate distance and three quarters of a mean rest segment
-  // (the CPU reference, findContactsGrid, takes half the current median; the pairs found do
-  // not depend on it): a segment of Fig. 1 then enters 3.4 cells (5.0 at half). Smaller cells cost
-  // more entries to count and scatter than the candidate pass saves, larger ones more candidate
-  // tests (Fig. 1 on llvmpipe, search ms a frame at half / three quarters / one mean segment:
-  // 482-530 / 428-442 / 439-454; docs/BENCHMARKS.md).
-  return std::max({2.0 * double(reach), kCellPerSegment * meanSegment_, 1e-6});
+  // Cells of at least twice the candidate distance and half or three quarters of a mean rest
+  // segment (the CPU reference, findContactsGrid, takes half the current median; the pairs
+  // found do not depend on the cell, only the search's cost does). Larger cells hold fewer
+  // entries to count and scatter (Fig. 1: 3.4 a segment instead of 5.0) and more candidates
+  // to test in each: on llvmpipe three quarters made the search 6-14 % cheaper at 3,000 to
+  // 23,000 strands of the paper's scenes (4.6-7.3 pairs a segment), the same at 30,000 of
+  // Fig. 1 (22) and 23 % dearer at 100,000 (75); docs/BENCHMARKS.md.
+  return std::max({2.0 * double(reach), cellPerSegment_ * meanSegment_, 1e-6});
 }
 
 void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uint32_t> strand,
@@ -146,10 +151,9 @@ void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uin
   // 4.0 pairs per estimated entry in its first 12 frames (cells of half a segment), and with
   // twice the entries reserved two of its frames had no strand contacts before the list grew.
   // Four times as many, and a quarter more (growPairList); the growth after an overflow stays
-  // for what this misses (such a frame keeps the lists before it). With cells of three
-  // quarters of a segment there are fewer entries per segment, so fewer are reserved; and
-  // the reset's own search sizes the list too (sizeForLastSearch): Fig. 1 over 60 frames and
-  // Fig. 3 over 20 had no frame over it.
+  // for what this misses (such a frame keeps the lists before it). The reset's cells are half
+  // a segment (dense), as when this was measured; the reset's own search sizes the list too
+  // (sizeForLastSearch).
   growPairList(std::max<uint64_t>(1024, 4 * entries));
 }
 
@@ -248,9 +252,16 @@ void CollisionGrid::sizeForLastSearch() {
   if (segments_ == 0) return;
   searchPending_ = false;  // read here instead
   const std::vector<uint32_t> c = readCounters();
+  // The cells for the hair as it stands: three quarters of a segment where it has few pairs
+  // a segment (a search whose grid did not fit counts no pairs: kept dense). Cells half as
+  // long hold ~1.5x the entries (Fig. 1): twice what this search needed, then.
+  const bool dense = cellPerSegment_ == kDenseCellPerSegment;
+  const bool sparse = c[CSM_COUNTER_ENTRIES] <= entryCapacity_ &&
+                      uint64_t(c[CSM_COUNTER_PAIR_LIST]) <= kSparsePairs * segments_;
+  cellPerSegment_ = sparse ? kSparseCellPerSegment : kDenseCellPerSegment;
   // A quarter over what it needed, as after an overflow: growEntries and growPairList keep
   // what is there when that holds it.
-  growEntries(c[CSM_COUNTER_ENTRIES]);
+  growEntries(uint64_t(c[CSM_COUNTER_ENTRIES]) * (!dense && !sparse ? 2 : 1));
   growPairList(c[CSM_COUNTER_PAIR_LIST]);
   // Forgotten: the first frame counts no crossings against it, and no frame over capacity.
   counters_.clearToZero();

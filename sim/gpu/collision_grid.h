@@ -143,6 +143,7 @@ class CollisionGrid {
   size_t particles_ = 0;
   uint32_t segments_ = 0;
   double meanSegment_ = 0.0;
+  double cellPerSegment_ = 0.5;  // cell edge in mean rest segments (cellSize)
   uint32_t buckets_ = 0, scanBlocks_ = 0;
   uint32_t segmentScan_ = 0;           // counts in the per-segment scan (a power of two)
   uint32_t entryCapacity_ = 0;         // grid entries the entry buffer holds

@@ -414,6 +414,38 @@ Groom hangingRows(int perRow) {
   return g;
 }
 
+TEST_CASE("GPU grid: cells of three quarters of a segment in sparse hair and half in dense",
+          "[gpu][collision]") {
+  // The cell size changes what the search costs, not what it finds: a reset sizes it from
+  // its search of the hair (at most 20 candidate pairs a segment: three quarters of a mean
+  // rest segment, else half). Segments 1 cm long, reach 1.5 mm here (3 mm cells at least).
+  auto gpu = test::gpuSolver();
+  const Config c = contactConfig(false);
+  gpu->reset(hangingRows(60), c, Pose{});  // two rows of strands 1.6 mm apart: few pairs
+  gpu->stepFrame(Pose{}, Pose{});
+  GpuSolver::GridStats grid = gpu->gridStats();
+  INFO("sparse: " << grid.pairs << " pairs of 900 segments, cell " << grid.cell);
+  CHECK(grid.pairs < 20 * 900);
+  CHECK(grid.cell == Approx(0.0075));
+  // 15 x 15 strands 0.3 mm apart, 5 segments each: ~100 pairs a segment.
+  Groom bundle;
+  for (int i = 0; i < 15; ++i)
+    for (int j = 0; j < 15; ++j) {
+      std::vector<glm::vec3> points;
+      for (int k = 0; k < 6; ++k)
+        points.push_back(glm::vec3(0.0003f * float(i), 0.0003f * float(j), 0.01f * float(k)));
+      bundle.addStrand(points);
+    }
+  gpu->reset(bundle, c, Pose{});
+  gpu->stepFrame(Pose{}, Pose{});
+  grid = gpu->gridStats();
+  INFO("dense: " << grid.pairs << " pairs of 1125 segments, cell " << grid.cell);
+  CHECK(grid.pairs > 20 * 1125);
+  CHECK(grid.cell == Approx(0.005));
+  CHECK(grid.entries <= grid.capacity);
+  CHECK(gpu->readContactStats().overflows == 0);
+}
+
 TEST_CASE("GPU grid: a search over the pair list's capacity keeps the list before it",
           "[gpu][collision]") {
   // Row B droops between row A's strands: with a 6 mm margin the candidate pairs go from
