@@ -197,12 +197,13 @@ bool crossed(uint before, uint now) {
 }
 
 // The collision grid (DESIGN.md section 1.7): cells of edge P.cells.x, at least twice the
-// contact distance and three quarters of a mean segment. Each segment is entered in every
-// cell that its capsule of radius P.cells.z (half the candidate distance and 1% for rounding)
-// reaches: the cells of its padded box that the segment itself passes within P.cells.z of
-// (clipToCell), with the box of the part it has there. A pair is kept only in the cell holding the midpoint
-// of its closest points (the owner): both segments lie within half the candidate distance of
-// that point, so both are entered there and their boxes there overlap, and the pair is found
+// contact distance and half or three quarters of a mean segment (CollisionGrid::cellSize:
+// half in dense hair). Each segment is entered in every cell that its capsule of radius
+// P.cells.z (half the candidate distance and 1% for rounding) reaches: the cells of its
+// padded box that the segment itself passes within P.cells.z of (clipToCell), with the box of
+// the part it has there. A pair is kept only in the cell holding the midpoint of its closest
+// points (the owner): both segments lie within half the candidate distance of that point, so
+// both are entered there and their boxes there overlap, and the pair is found
 // exactly once. Every pass computes cells, clips and boxes with these functions from the same
 // positions, so they agree to the bit.
 
