@@ -6,9 +6,10 @@
 // frame's, or the one before it within the frame with collision.lists; csm::findCandidates
 // does the same on the CPU). Every candidate has its place: no list is cut short. A search
 // whose grid or pair list did not fit keeps the lists before it. The sort is a heapsort: its
-// loops take at most n (1 + 2 log2 n) iterations whatever the order the scatter left (an insertion sort takes up to n^2 / 2, past the 65,535
-// that llvmpipe allows an invocation at ~360 candidates: the lists of 30,000 strands of Fig. 1
-// came out cut short, differently from run to run). A segment over CSM_MAX_CANDIDATES lists
+// loops take at most n (1 + 2 log2 n) iterations whatever the order the scatter left (an
+// insertion sort takes up to n^2 / 2, past the 65,535 that llvmpipe allows an invocation at
+// ~360 candidates: the lists of 30,000 strands of Fig. 1 came out cut short, differently from
+// run to run). A segment over CSM_MAX_CANDIDATES lists
 // nothing (pair_scatter.comp left its pairs out on both sides) and is counted as crowded, as
 // is one whose loops still ended early.
 #include "sim/common.glsl"

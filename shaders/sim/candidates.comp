@@ -14,8 +14,7 @@
 // candidate_lists.comp sorts them into its list. The list's order depends on the schedule,
 // its content does not; a search whose pairs do not fit the list keeps the last list
 // (candidate_lists.comp) and says so in the counters (CSM_COUNTER_PAIR_LIST over the
-// capacity). Closest points: Ericson,
-// Real-Time Collision Detection, 5.1.9; a pair is always evaluated lower segment first, as on
+// capacity). Closest points: Ericson, Real-Time Collision Detection, 5.1.9; a pair is always evaluated lower segment first, as on
 // the CPU, so that both agree on the candidate distance's boundary.
 //
 // Phases, because a SIMD lane that skips work still waits for the others (and on llvmpipe a

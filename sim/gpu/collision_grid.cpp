@@ -255,17 +255,17 @@ void CollisionGrid::sizeForLastSearch() {
   // The cells for the hair as it stands: three quarters of a segment where it has few pairs
   // a segment (a search whose grid did not fit counts no pairs: kept dense). Cells half as
   // long hold ~1.5x the entries (Fig. 1): twice what this search needed, then.
-  const bool dense = cellPerSegment_ == kDenseCellPerSegment;
+  const double searched = cellPerSegment_;
   const bool sparse = c[CSM_COUNTER_ENTRIES] <= entryCapacity_ &&
                       uint64_t(c[CSM_COUNTER_PAIR_LIST]) <= kSparsePairs * segments_;
   cellPerSegment_ = sparse ? kSparseCellPerSegment : kDenseCellPerSegment;
   // A quarter over what it needed, as after an overflow: growEntries and growPairList keep
   // what is there when that holds it.
-  growEntries(uint64_t(c[CSM_COUNTER_ENTRIES]) * (!dense && !sparse ? 2 : 1));
+  growEntries(uint64_t(c[CSM_COUNTER_ENTRIES]) * (cellPerSegment_ < searched ? 2 : 1));
   growPairList(c[CSM_COUNTER_PAIR_LIST]);
   // Forgotten: the first frame counts no crossings against it, and no frame over capacity.
   counters_.clearToZero();
-  if (particles_ > 0) candidateRange_.clearToZero();
+  candidateRange_.clearToZero();
   lastFrameListed_ = false;
 }
 

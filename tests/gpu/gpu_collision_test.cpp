@@ -84,20 +84,25 @@ Compared compare(GpuSolver& gpu, const Groom& g, double r) {
   return c;
 }
 
-// A bundle of 15 x 15 parallel strands 0.3 mm apart along z, 6 particles 4 mm apart; the
-// roots staggered along z by up to `stagger` mm (from strand to strand), so that strands side
-// by side sag differently under gravity across them.
-Groom packedBundle(int stagger) {
+// 15 x 15 parallel strands `apart` m from each other along z, 6 particles `along` m apart; the
+// roots staggered along z by up to `stagger` mm (from strand to strand).
+Groom strandBlock(float apart, float along, int stagger = 0) {
   Groom g;
   for (int i = 0; i < 15; ++i)
     for (int j = 0; j < 15; ++j) {
       const float z0 = 0.001f * float((i + 2 * j) % (stagger + 1));
       std::vector<glm::vec3> points;
       for (int k = 0; k < 6; ++k)
-        points.push_back(glm::vec3(0.0003f * float(i), 0.0003f * float(j), z0 + 0.004f * float(k)));
+        points.push_back(glm::vec3(apart * float(i), apart * float(j), z0 + along * float(k)));
       g.addStrand(points);
     }
   return g;
+}
+
+// A bundle of strands 0.3 mm apart, 6 particles 4 mm apart; staggered so that strands side by
+// side sag differently under gravity across them.
+Groom packedBundle(int stagger) {
+  return strandBlock(0.0003f, 0.004f, stagger);
 }
 
 // Strand contacts of radius 0.5 mm and no gravity (the bundle's strands 0.3 mm apart are then
@@ -428,15 +433,7 @@ TEST_CASE("GPU grid: cells of three quarters of a segment in sparse hair and hal
   CHECK(grid.pairs < 20 * 900);
   CHECK(grid.cell == Approx(0.0075));
   // 15 x 15 strands 0.3 mm apart, 5 segments each: ~100 pairs a segment.
-  Groom bundle;
-  for (int i = 0; i < 15; ++i)
-    for (int j = 0; j < 15; ++j) {
-      std::vector<glm::vec3> points;
-      for (int k = 0; k < 6; ++k)
-        points.push_back(glm::vec3(0.0003f * float(i), 0.0003f * float(j), 0.01f * float(k)));
-      bundle.addStrand(points);
-    }
-  gpu->reset(bundle, c, Pose{});
+  gpu->reset(strandBlock(0.0003f, 0.01f), c, Pose{});
   gpu->stepFrame(Pose{}, Pose{});
   grid = gpu->gridStats();
   INFO("dense: " << grid.pairs << " pairs of 1125 segments, cell " << grid.cell);
@@ -607,14 +604,7 @@ TEST_CASE("GPU grid: a restored state sizes the lists for the hair it restores",
   // they reserve) restores the packed bundle's state: the lists are sized for it there, so
   // its first frame fits (it overflowed when a restore left them as they were).
   const Groom packed = packedBundle(0);
-  Groom spread;
-  for (int i = 0; i < 15; ++i)
-    for (int j = 0; j < 15; ++j) {
-      std::vector<glm::vec3> points;
-      for (int k = 0; k < 6; ++k)
-        points.push_back(glm::vec3(0.05f * float(i), 0.05f * float(j), 0.004f * float(k)));
-      spread.addStrand(points);
-    }
+  const Groom spread = strandBlock(0.05f, 0.004f);
   const Config c = contactConfig(true);
   auto source = test::gpuSolver(), restored = test::gpuSolver();
   source->reset(packed, c, Pose{});
