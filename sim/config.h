@@ -72,6 +72,11 @@ struct HairstyleConfig {
   Parting parting = Parting::None;
   bool fringe = false;    // hair from the front of the scalp falls forward, cut at the brow
   float volume = 0.006f;  // thickness of the hair's layer over the scalp (m)
+  // Passes that push the grown strands apart where they lie closer than 2.2 r (r: the
+  // collision radius), no particle further than separateLimit from where it grew and the
+  // roots where they are (sim/hairstyle.h); 0 keeps the groom as grown.
+  int separatePasses = 0;
+  float separateLimit = 0.005f;  // m
   int seed = 1;
   // Imported grooms.
   float importScale = 0.0f;  // 0 = fit to the head automatically

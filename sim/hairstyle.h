@@ -1,5 +1,6 @@
 // Grows strands from the scalp (the first head sphere), deterministically from a seed.
-// Strand s depends only on the seed and s: a smaller strand count is a prefix of a larger one.
+// Strand s depends only on the seed and s: a smaller strand count is a prefix of a larger one
+// (as grown: hairstyle.separate_passes then moves the strands against each other).
 #pragma once
 
 #include <string>

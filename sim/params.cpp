@@ -8,6 +8,9 @@ namespace {
 bool paperModel(const Config& c) {
   return c.sim.stiffnessModel == StiffnessModel::Paper;
 }
+bool separates(const Config& c) {
+  return c.hairstyle.separatePasses > 0;
+}
 bool hasFollowHairs(const Config& c) {
   return c.hairstyle.followCount > 0;
 }
@@ -100,6 +103,18 @@ std::vector<Param<Config>> build() {
             "much further out, over the hair from lower roots.",
             Effect::Rebuild)
           .display(1000.0, "mm"),
+      param("hairstyle.separate_passes", "Separation passes", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::separatePasses, 0, 100,
+            "Passes that push the grown strands apart to 2.2 hair radii where they lie closer, "
+            "so that the groom starts without strands through each other; 0 keeps it as grown. "
+            "Each pass costs a search of the groom's segment pairs.",
+            Effect::Rebuild),
+      param("hairstyle.separate_limit", "Separation limit", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::separateLimit, 0.0, 0.05,
+            "Farthest (m) the separation passes move a particle from where it grew.",
+            Effect::Rebuild)
+          .display(1000.0, "mm")
+          .onlyWhen(separates),
       param("hairstyle.seed", "Seed", "Hairstyle", &Config::hairstyle, &HairstyleConfig::seed, 0,
             2147483647, "Random seed of the groom. The same seed gives the same hair.",
             Effect::Rebuild),
