@@ -11,6 +11,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "sim/collision.h"
+#include "sim/contacts.h"
 #include "sim/head_shape.h"
 #include "sim/io/fit.h"
 #include "sim/io/groom_file.h"
@@ -274,38 +275,38 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
 // 2,000). Each pass finds the pairs closer than kSeparation r and pushes each apart to that
 // distance, pair by pair in their sorted order (Gauss-Seidel: each pair sees where the pairs
 // before it left the particles; the same groom every time), kSweeps times; then each strand,
-// root to tip, keeps no particle further than the limit from where it grew, takes back its
-// grown segment lengths and leaves the head. A strand's root stays; its second particle may
+// root to tip, takes back its grown segment lengths, leaves the head, and keeps no particle
+// further than the limit from where it grew. A strand's root stays; its second particle may
 // move (the solver holds the first segment as the separated groom has it): held in place, the
 // roots of strands that others lie across stood through them (docs/BENCHMARKS.md, "Strands
 // pushed apart at rest").
 constexpr double kSeparation = 2.2;
 constexpr int kSweeps = 3;
+// As in the contact solve (sim/contacts.cpp): near a root, a pair asks the free end for its
+// depth over the lever arm; no end moves further than this many times the pair's depth.
+constexpr double kSeparationLever = 2.5;
 
 void pushApart(std::vector<glm::dvec3>& x, const std::vector<double>& w, uint32_t a, uint32_t b,
                double target) {
   double s, t;
   const double d = std::sqrt(closestSegmentPoints(x[a], x[a + 1], x[b], x[b + 1], s, t));
   if (d >= target) return;
-  const double W =
-      w[a] * (1 - s) * (1 - s) + w[a + 1] * s * s + w[b] * (1 - t) * (1 - t) + w[b + 1] * t * t;
-  if (W <= 0.0) return;
-  glm::dvec3 n = glm::mix(x[a], x[a + 1], s) - glm::mix(x[b], x[b + 1], t);
-  if (d > 1e-12) {
-    n /= d;
-  } else {  // through each other: apart across both
-    n = glm::cross(x[a + 1] - x[a], x[b + 1] - x[b]);
-    const double len = glm::length(n);
-    n = len > 1e-15 ? n / len : glm::dvec3(0.0, 1.0, 0.0);
-  }
-  const double lambda = (target - d) / W;
-  x[a] += lambda * w[a] * (1 - s) * n;
-  x[a + 1] += lambda * w[a + 1] * s * n;
-  x[b] -= lambda * w[b] * (1 - t) * n;
-  x[b + 1] -= lambda * w[b + 1] * t * n;
+  const double ga0 = w[a] * (1 - s), ga1 = w[a + 1] * s, gb0 = w[b] * (1 - t), gb1 = w[b + 1] * t;
+  const double W = ga0 * (1 - s) + ga1 * s + gb0 * (1 - t) + gb1 * t;
+  if (W < 1e-12) return;  // both ends held, or the contact at a held root
+  double separation;
+  const glm::dvec3 n = contactNormal(x[a], x[a + 1], x[b], x[b + 1], s, t, d, 0, separation);
+  const double depth = target - d;
+  const double most = std::max({ga0, ga1, gb0, gb1}) / W;  // the furthest end's move a depth
+  const double lambda = depth / W * std::min(1.0, kSeparationLever / most);
+  x[a] += lambda * ga0 * n;
+  x[a + 1] += lambda * ga1 * n;
+  x[b] -= lambda * gb0 * n;
+  x[b + 1] -= lambda * gb1 * n;
 }
 
 void separateStrands(Groom& g, const GrowthHead& head, double radius, int passes, double limit) {
+  if (limit <= 0.0) return;
   const double target = kSeparation * radius, margin = 2.0 * radius;
   const size_t n = g.pointCount();
   std::vector<glm::dvec3> x(n);
@@ -327,13 +328,14 @@ void separateStrands(Groom& g, const GrowthHead& head, double radius, int passes
       for (const SegmentPair& p : pairs) pushApart(x, w, p.a, p.b, target);
     for (size_t s = 0; s < g.strandCount(); ++s)
       for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
-        const glm::dvec3 moved = x[i] - grown[i];
-        const double far = glm::length(moved);
-        if (far > limit) x[i] = grown[i] + moved * (limit / far);
         const glm::dvec3 d = x[i] - x[i - 1];
         const double len = glm::length(d);
         if (len > 1e-12) x[i] = x[i - 1] + d * (length[i - 1] / len);
         head.pushOut(x[i], margin);
+        // Last, so that it holds: the lengths give way by what it takes back.
+        const glm::dvec3 moved = x[i] - grown[i];
+        const double far = glm::length(moved);
+        if (far > limit) x[i] = grown[i] + moved * (limit / far);
       }
   }
   for (size_t i = 0; i < n; ++i) g.points[i] = glm::vec3(x[i]);

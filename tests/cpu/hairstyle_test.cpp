@@ -151,26 +151,30 @@ TEST_CASE("separation passes leave a grown groom with no pair closer than r, lit
   std::vector<float> moved;
   const DistanceGrid* field = headField(c);
   REQUIRE(field);
+  size_t rootsMoved = 0, inside = 0;
   for (size_t s = 0; s < apart.strandCount(); ++s) {
-    CHECK(apart.points[apart.first[s]] == grown.points[grown.first[s]]);  // roots stay
+    rootsMoved += apart.points[apart.first[s]] != grown.points[grown.first[s]];
     for (uint32_t i = apart.first[s] + 1; i < apart.first[s + 1]; ++i) {
       moved.push_back(glm::length(apart.points[i] - grown.points[i]));
-      CHECK(field->sample(glm::dvec3(apart.points[i])) > r);  // outside the head
+      inside += field->sample(glm::dvec3(apart.points[i])) <= r;
     }
   }
+  CHECK(rootsMoved == 0);
+  CHECK(inside == 0);  // every particle but the root at least r outside the head
   std::sort(moved.begin(), moved.end());
   const float p99 = moved[moved.size() * 99 / 100];
   INFO("moved: median " << moved[moved.size() / 2] << " m, p99 " << p99 << " m, max "
                         << moved.back() << " m");
   CHECK(moved[moved.size() / 2] < 0.0002f);
   CHECK(p99 < 0.003f);
-  CHECK(moved.back() <= h.separateLimit * 1.5f);
-  // The limit holds a particle near where it grew.
+  CHECK(moved.back() <= h.separateLimit * 1.001f);
+  // The limit holds every particle within it of where it grew (4.1 mm at most without).
   h.separateLimit = 0.0005f;
   const Groom held = growHairstyle(c);
   float heldMost = 0.0f;
   for (size_t i = 0; i < held.pointCount(); ++i)
     heldMost = std::max(heldMost, glm::length(held.points[i] - grown.points[i]));
   INFO("moved at most " << heldMost << " m with a limit of 0.5 mm");
-  CHECK(heldMost < 0.001f);
+  CHECK(heldMost > 0.0004f);
+  CHECK(heldMost <= 0.0005f * 1.001f);
 }
