@@ -264,6 +264,8 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   q_.assign(n, toEigen(head.rotation));
   contacts_ = {};
   measured_ = {};
+  framesSinceMeasure_ = 2;
+  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
   resetVolume();
   stages_.clear();
   samples_.clear();
@@ -303,6 +305,7 @@ void CpuSolver::setConfig(const Config& config) {
   shape_ = sceneHead(config_);
   if (rebuild) rebuildRegions();
   if (regrid) resetVolume();
+  framesSinceMeasure_ = 2;  // a search under the old settings measures nothing of the new
 }
 
 VolumeSettings CpuSolver::volumeSettings() const {
@@ -329,6 +332,7 @@ void CpuSolver::clearStages() {
 void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   clearStages();
   const FramePlan plan = planFrame(config_.sim, regions_.maxRate);
+  ++framesSinceMeasure_;
   // The frame's contact candidates, from where it starts (DESIGN.md section 1.7).
   auto t0 = Clock::now();
   if (strandContacts(config_.collision.mode)) {
@@ -679,6 +683,9 @@ bool CpuSolver::restoreState(const SolverState& in, std::string* error) {
   head_ = head;
   // The last list is of another state: nothing to count crossings against (as after a reset).
   candidates_ = ContactCandidates{};
+  measured_ = ContactCandidates{};
+  framesSinceMeasure_ = 2;
+  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
   return true;
 }
 
@@ -700,10 +707,27 @@ void CpuSolver::requestSample(long frame) {
     sample.contacts = contacts_;
     sample.contactsMeasured = true;
   } else if (measureContacts_) {
-    measured_ = findCandidates(x_, rest_, strandOf_, contactSettings(), measured_, sample.contacts);
+    // Where this frame started, as a strand mode's list measures it: the search the sample
+    // before it made of its end state. With no such search (the first frame after the
+    // measures were asked for, or frames without samples between), where it ends.
+    if (framesSinceMeasure_ != 1) measureNow();
+    sample.contacts = measuredStats_;
     sample.contactsMeasured = true;
+    // The next frame's start, searched here, outside its timing.
+    if (framesSinceMeasure_ != 0) measureNow();
   }
   samples_.push_back(sample);
+}
+
+void CpuSolver::setContactMeasures(bool always) {
+  const bool was = measureContacts_;
+  measureContacts_ = always;
+  if (always && !was && !strandContacts(config_.collision.mode)) measureNow();
+}
+
+void CpuSolver::measureNow() {
+  measured_ = findCandidates(x_, rest_, strandOf_, contactSettings(), measured_, measuredStats_);
+  framesSinceMeasure_ = 0;
 }
 
 std::optional<FrameSample> CpuSolver::takeSample(bool) {

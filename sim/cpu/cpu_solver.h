@@ -73,7 +73,7 @@ class CpuSolver final : public Solver {
   ContactStats contactStats() override { return contacts_; }
   // Nodes of the volume mode's grid: none unless collision.mode is a volume mode (tests).
   size_t volumeNodes() const { return volume_.nodes(); }
-  void setContactMeasures(bool always) override { measureContacts_ = always; }
+  void setContactMeasures(bool always) override;
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
   // One step of length h ending at head pose `head` (exposed for tests).
@@ -120,8 +120,13 @@ class CpuSolver final : public Solver {
   std::vector<Eigen::Quaterniond> q_;   // rotation of each region, warm start
   ContactStats contacts_;
   bool measureContacts_ = false;
-  VolumeGrid volume_;           // the volume mode's grid, splatted at the start of each frame
-  ContactCandidates measured_;  // the last sample's list, with hair-hair off (crossings)
+  VolumeGrid volume_;  // the volume mode's grid, splatted at the start of each frame
+  // With hair-hair off and the measures on: the list of the last measure search (crossings),
+  // its measures, and the frames stepped since it (1: it is of where this frame started).
+  ContactCandidates measured_;
+  ContactStats measuredStats_;
+  int framesSinceMeasure_ = 2;
+  void measureNow();
   std::vector<StageTime> stages_;
   std::deque<FrameSample> samples_;
 

@@ -97,6 +97,8 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   gpu::zeroed<glm::uvec4>(measure_,
                           2 * ((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP));
   timer_.clear();
+  framesSinceMeasure_ = 2;
+  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
 }
 
 void GpuSolver::uploadRegions() {
@@ -114,12 +116,21 @@ void GpuSolver::setConfig(const Config& config) {
   if (regrid) resetVolume();
   if (shape_.field != uploadedField_) uploadHeadField();
   if (!listed && listsCandidates()) sizeLists();
+  framesSinceMeasure_ = 2;  // a search under the old settings measures nothing of the new
 }
 
 void GpuSolver::setContactMeasures(bool always) {
-  const bool listed = listsCandidates();
+  const bool listed = listsCandidates(), was = measureContacts_;
   measureContacts_ = always;
   if (!listed && listsCandidates()) sizeLists();
+  if (always && !was && !strandContacts(config_.collision.mode)) measureNow();
+}
+
+void GpuSolver::measureNow() {
+  if (hair_.particles == 0 || !failure_.empty()) return;
+  listCandidatesNow(nullptr);
+  gl::memoryBarrier(gl::Barrier::All);
+  framesSinceMeasure_ = 0;
 }
 
 bool GpuSolver::listsCandidates() const {
@@ -273,6 +284,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   const int substeps = plan.substeps;
   const double h = plan.h;
   std::vector<Pose> poses(substeps), before(substeps);
+  ++framesSinceMeasure_;
   for (int k = 0; k < substeps; ++k) {
     poses[k] = interpolate(from, to, double(k + 1) / substeps);
     before[k] = k == 0 ? head_ : poses[k - 1];
@@ -421,6 +433,8 @@ bool GpuSolver::restoreState(const SolverState& in, std::string* error) {
   // frame), and no last list: the one kept is of another state, nothing to count crossings
   // against (as after a reset).
   if (listsCandidates()) sizeLists();
+  framesSinceMeasure_ = 2;
+  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
   return true;
 }
 
@@ -452,11 +466,12 @@ unsigned GpuSolver::lastSubstepSpheres() const {
 
 void GpuSolver::requestSample(long frame) {
   const bool listed = strandContacts(config_.collision.mode);
-  if (!listed && measureContacts_ && hair_.particles > 0) {
-    // The end state's candidates, for the measures alone (outside the frame's timing).
-    listCandidatesNow(nullptr);
-    gl::memoryBarrier(gl::Barrier::All);
-  }
+  // With hair-hair off, the contact measures are of where this frame started, as a strand
+  // mode's list measures it: the search the sample before it made of its end state. With no
+  // such search (the first frame after the measures were asked for, or frames without samples
+  // between), of where it ends.
+  const bool measuring = !listed && measureContacts_ && hair_.particles > 0;
+  if (measuring && framesSinceMeasure_ != 1) measureNow();
   const uint32_t groups = uint32_t((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);
   samples_.request(
       frame, groups,
@@ -467,6 +482,8 @@ void GpuSolver::requestSample(long frame) {
             .run(uint32_t(hair_.particles));
       },
       measure_, grid_.counters(), listed || measureContacts_);
+  // The next frame's start, searched here, outside its timing (the sample has its copy).
+  if (measuring && framesSinceMeasure_ != 0) measureNow();
 }
 
 std::optional<FrameSample> GpuSolver::takeSample(bool wait) {

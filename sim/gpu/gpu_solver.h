@@ -154,6 +154,10 @@ class GpuSolver final : public Solver {
   int substepsWritten_ = 0;  // steps of the last writeParams
   gpu::StageTimer timer_;
   bool measureContacts_ = false;
+  // With hair-hair off and the measures on: frames stepped since the last measure search (1:
+  // the grid's counters measure where this frame started).
+  int framesSinceMeasure_ = 2;
+  void measureNow();
   gpu::SampleRing samples_;
   ContactStats sampledContacts_;
 };

@@ -280,17 +280,22 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   CHECK_FALSE(off.contactsMeasured);
   CHECK(off.contacts.contacts == 0);
 
+  // Measured where the frame starts, as a strand mode's list is: every mode the same state.
   solver.setContactMeasures(true);
+  const std::vector<glm::dvec3> start(solver.positions().begin(), solver.positions().end());
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(2);
   const FrameSample on = solver.takeSample().value();
   const std::vector<uint32_t> strand = test::strandOf(g);
   const double r = c.collision.radius;
-  const size_t within2r = findContactsGrid(solver.positions(), strand, 2.0 * r).size();
-  const size_t withinR = findContactsGrid(solver.positions(), strand, r).size();
-  INFO("pairs closer than 2r " << within2r << ", than r " << withinR);
+  const size_t within2r = findContactsGrid(start, strand, 2.0 * r).size();
+  const size_t withinR = findContactsGrid(start, strand, r).size();
+  const size_t endWithinR = findContactsGrid(solver.positions(), strand, r).size();
+  INFO("pairs closer than 2r " << within2r << ", than r " << withinR << " where the frame "
+                               << "starts; closer than r where it ends " << endWithinR);
   CHECK(on.contactsMeasured);
   CHECK(withinR > 0);
+  CHECK(endWithinR != withinR);  // the two states tell apart
   CHECK(on.contacts.contacts == within2r);
   CHECK(on.contacts.penetrations == withinR);
   // The simulation is the same with the measures on: they change no state.

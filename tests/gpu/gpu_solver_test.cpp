@@ -719,22 +719,28 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   REQUIRE(off);
   CHECK_FALSE(off->contactsMeasured);
 
+  // Measured where the frame starts, as a strand mode's list is: every mode the same state.
   gpu->setContactMeasures(true);
+  std::vector<glm::vec4> x0;
+  gpu->readPositions(x0);
   gpu->stepFrame(Pose{}, Pose{});
   gpu->requestSample(2);
   const std::optional<FrameSample> on = gpu->takeSample(true);
   REQUIRE(on);
   std::vector<glm::vec4> x;
   gpu->readPositions(x);
-  const std::vector<glm::dvec3> xd = test::toDouble(x);
+  const std::vector<glm::dvec3> xd = test::toDouble(x0);
   const std::vector<uint32_t> strand = test::strandOf(g);
   const double r = c.collision.radius;
   const double within2r = double(findContactsGrid(xd, strand, 2.0 * r).size());
   const double withinR = double(findContactsGrid(xd, strand, r).size());
+  const double endWithinR = double(findContactsGrid(test::toDouble(x), strand, r).size());
   INFO("GPU measured " << on->contacts.contacts << " / " << on->contacts.penetrations
-                       << ", read back " << within2r << " / " << withinR);
+                       << ", read back where the frame starts " << within2r << " / " << withinR
+                       << ", closer than r where it ends " << endWithinR);
   CHECK(on->contactsMeasured);
   CHECK(withinR > 0);
+  CHECK(std::abs(endWithinR - withinR) > 0.02 * withinR);  // the two states tell apart
   // Float against double distances: a pair at the boundary may land on either side.
   CHECK(double(on->contacts.contacts) == Approx(within2r).epsilon(0.01));
   CHECK(double(on->contacts.penetrations) == Approx(withinR).epsilon(0.01));
