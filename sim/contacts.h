@@ -114,6 +114,12 @@ struct ContactCandidates {
 // substep floor(j substeps / n). Substep 0 has the frame's own list.
 bool listsBefore(int substep, int substeps, int lists);
 
+// Whether a change of settings makes the last candidate search measure something else: the
+// mode, the radius or the margin.
+inline bool contactMeasuresChanged(const CollisionConfig& a, const CollisionConfig& b) {
+  return a.mode != b.mode || a.radius != b.radius || a.margin != b.margin;
+}
+
 struct ContactSettings {
   double radius = 0.001, margin = 0.001, compliance = 0.0, friction = 0.3;
   ContactSolve solve = ContactSolve::Sweep;  // collision.solve

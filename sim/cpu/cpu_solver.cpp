@@ -299,13 +299,19 @@ void CpuSolver::rebuildRegions() {
 }
 
 void CpuSolver::setConfig(const Config& config) {
+  const bool remeasure = contactMeasuresChanged(config_.collision, config.collision);
   const bool rebuild = regionsChanged(config_.sim, config.sim);
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   config_ = config;
   shape_ = sceneHead(config_);
   if (rebuild) rebuildRegions();
   if (regrid) resetVolume();
-  framesSinceMeasure_ = 2;  // a search under the old settings measures nothing of the new
+  if (remeasure) {
+    // The last search measured other pairs: nothing to count crossings against.
+    measured_ = {};
+    framesSinceMeasure_ = 2;
+    if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
+  }
 }
 
 VolumeSettings CpuSolver::volumeSettings() const {
@@ -707,10 +713,11 @@ void CpuSolver::requestSample(long frame) {
     sample.contacts = contacts_;
     sample.contactsMeasured = true;
   } else if (measureContacts_) {
-    // Where this frame started, as a strand mode's list measures it: the search the sample
-    // before it made of its end state. With no such search (the first frame after the
-    // measures were asked for, or frames without samples between), where it ends.
-    if (framesSinceMeasure_ != 1) measureNow();
+    // Where this frame started, as a strand mode's list measures it: the search made when
+    // the last frame ended (after its sample, or when the measures or the settings changed).
+    // With frames stepped since and no sample between, where this one ends (the crossings of
+    // the frames before it that no sample reported are lost).
+    if (framesSinceMeasure_ > 1) measureNow();
     sample.contacts = measuredStats_;
     sample.contactsMeasured = true;
     // The next frame's start, searched here, outside its timing.

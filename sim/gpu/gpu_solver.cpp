@@ -107,6 +107,7 @@ void GpuSolver::uploadRegions() {
 }
 
 void GpuSolver::setConfig(const Config& config) {
+  const bool remeasure = contactMeasuresChanged(config_.collision, config.collision);
   const bool rebuild = regionsChanged(config_.sim, config.sim);
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   const bool listed = listsCandidates();
@@ -116,7 +117,14 @@ void GpuSolver::setConfig(const Config& config) {
   if (regrid) resetVolume();
   if (shape_.field != uploadedField_) uploadHeadField();
   if (!listed && listsCandidates()) sizeLists();
-  framesSinceMeasure_ = 2;  // a search under the old settings measures nothing of the new
+  if (remeasure) {
+    framesSinceMeasure_ = 2;
+    if (measureContacts_ && !strandContacts(config_.collision.mode)) {
+      // The last list measured other pairs: nothing to count crossings against.
+      sizeLists();
+      measureNow();
+    }
+  }
 }
 
 void GpuSolver::setContactMeasures(bool always) {
@@ -373,6 +381,7 @@ void GpuSolver::detectContacts() {
   }
   timer_.endFrame();
   gl::memoryBarrier(gl::Barrier::All);
+  framesSinceMeasure_ = 0;  // the counters measure the hair as it stands
 }
 
 void GpuSolver::finish() {
@@ -467,11 +476,12 @@ unsigned GpuSolver::lastSubstepSpheres() const {
 void GpuSolver::requestSample(long frame) {
   const bool listed = strandContacts(config_.collision.mode);
   // With hair-hair off, the contact measures are of where this frame started, as a strand
-  // mode's list measures it: the search the sample before it made of its end state. With no
-  // such search (the first frame after the measures were asked for, or frames without samples
-  // between), of where it ends.
+  // mode's list measures it: the search made when the last frame ended (after its sample, or
+  // when the measures or the settings changed). With frames stepped since and no sample
+  // between, of where this one ends (the crossings of the frames before it that no sample
+  // reported are lost).
   const bool measuring = !listed && measureContacts_ && hair_.particles > 0;
-  if (measuring && framesSinceMeasure_ != 1) measureNow();
+  if (measuring && framesSinceMeasure_ > 1) measureNow();
   const uint32_t groups = uint32_t((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);
   samples_.request(
       frame, groups,

@@ -305,6 +305,29 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   plain.stepFrame(Pose{}, Pose{});
   const std::vector<glm::vec4> a = positions(solver), b = positions(plain);
   CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)) == 0);
+
+  // The next frame: measured by the search its sample before made of where it starts.
+  const std::vector<glm::dvec3> start3 = solver.positions();
+  solver.stepFrame(Pose{}, Pose{});
+  solver.requestSample(3);
+  const FrameSample third = solver.takeSample().value();
+  CHECK(third.contacts.penetrations == findContactsGrid(start3, strand, r).size());
+  CHECK(third.contacts.contacts == findContactsGrid(start3, strand, 2.0 * r).size());
+  // Frames stepped with no sample between: the sample measures where its frame ends.
+  solver.stepFrame(Pose{}, Pose{});
+  solver.stepFrame(Pose{}, Pose{});
+  solver.requestSample(5);
+  const FrameSample fifth = solver.takeSample().value();
+  CHECK(fifth.contacts.penetrations == findContactsGrid(solver.positions(), strand, r).size());
+  // A new radius measures other pairs: the next sample, of where its frame starts, with them.
+  c.collision.radius *= 1.5f;
+  solver.setConfig(c);
+  const std::vector<glm::dvec3> start6 = solver.positions();
+  solver.stepFrame(Pose{}, Pose{});
+  solver.requestSample(6);
+  const FrameSample sixth = solver.takeSample().value();
+  CHECK(sixth.contacts.penetrations == findContactsGrid(start6, strand, c.collision.radius).size());
+  CHECK(sixth.contacts.crossings == 0);  // nothing measured before it with this radius
 }
 
 TEST_CASE("more contact iterations hold dense hair in the wind apart better") {

@@ -751,4 +751,19 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   plain->readPositions(y);
   REQUIRE(x.size() == y.size());
   CHECK(std::memcmp(x.data(), y.data(), x.size() * sizeof(glm::vec4)) == 0);
+
+  // The next frame: measured by the search its sample before made of where it starts (the
+  // positions read above), not of where it ends.
+  gpu->stepFrame(Pose{}, Pose{});
+  gpu->requestSample(3);
+  const std::optional<FrameSample> third = gpu->takeSample(true);
+  REQUIRE(third);
+  std::vector<glm::vec4> x3;
+  gpu->readPositions(x3);
+  const double start3 = double(findContactsGrid(test::toDouble(x), strand, r).size());
+  const double end3 = double(findContactsGrid(test::toDouble(x3), strand, r).size());
+  INFO("third frame: measured " << third->contacts.penetrations << ", read back where it "
+                                << "starts " << start3 << ", where it ends " << end3);
+  CHECK(std::abs(end3 - start3) > 0.02 * start3);
+  CHECK(double(third->contacts.penetrations) == Approx(start3).epsilon(0.01));
 }
