@@ -263,9 +263,7 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   correction_.clear();
   q_.assign(n, toEigen(head.rotation));
   contacts_ = {};
-  measured_ = {};
-  framesSinceMeasure_ = 2;
-  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
+  measureAnew();
   resetVolume();
   stages_.clear();
   samples_.clear();
@@ -306,12 +304,7 @@ void CpuSolver::setConfig(const Config& config) {
   shape_ = sceneHead(config_);
   if (rebuild) rebuildRegions();
   if (regrid) resetVolume();
-  if (remeasure) {
-    // The last search measured other pairs: nothing to count crossings against.
-    measured_ = {};
-    framesSinceMeasure_ = 2;
-    if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
-  }
+  if (remeasure) measureAnew();
 }
 
 VolumeSettings CpuSolver::volumeSettings() const {
@@ -689,9 +682,7 @@ bool CpuSolver::restoreState(const SolverState& in, std::string* error) {
   head_ = head;
   // The last list is of another state: nothing to count crossings against (as after a reset).
   candidates_ = ContactCandidates{};
-  measured_ = ContactCandidates{};
-  framesSinceMeasure_ = 2;
-  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
+  measureAnew();
   return true;
 }
 
@@ -729,7 +720,15 @@ void CpuSolver::requestSample(long frame) {
 void CpuSolver::setContactMeasures(bool always) {
   const bool was = measureContacts_;
   measureContacts_ = always;
-  if (always && !was && !strandContacts(config_.collision.mode)) measureNow();
+  if (always && !was) measureAnew();
+}
+
+void CpuSolver::measureAnew() {
+  // The last search measured another state or other pairs: nothing to count crossings
+  // against, and no sample reports it.
+  measured_ = {};
+  framesSinceMeasure_ = 2;
+  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
 }
 
 void CpuSolver::measureNow() {

@@ -126,7 +126,8 @@ class CpuSolver final : public Solver {
   ContactCandidates measured_;
   ContactStats measuredStats_;
   int framesSinceMeasure_ = 2;
-  void measureNow();
+  void measureNow();   // searches where the hair stands
+  void measureAnew();  // after a reset, a restore or new settings: forgets, then measureNow
   std::vector<StageTime> stages_;
   std::deque<FrameSample> samples_;
 

@@ -97,8 +97,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   gpu::zeroed<glm::uvec4>(measure_,
                           2 * ((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP));
   timer_.clear();
-  framesSinceMeasure_ = 2;
-  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
+  measureAnew();
 }
 
 void GpuSolver::uploadRegions() {
@@ -116,14 +115,12 @@ void GpuSolver::setConfig(const Config& config) {
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) resetVolume();
   if (shape_.field != uploadedField_) uploadHeadField();
-  if (!listed && listsCandidates()) sizeLists();
+  const bool sized = !listed && listsCandidates();
+  if (sized) sizeLists();
   if (remeasure) {
-    framesSinceMeasure_ = 2;
-    if (measureContacts_ && !strandContacts(config_.collision.mode)) {
-      // The last list measured other pairs: nothing to count crossings against.
-      sizeLists();
-      measureNow();
-    }
+    // The last list measured other pairs: nothing to count crossings against.
+    if (!sized && measureContacts_ && !strandContacts(config_.collision.mode)) sizeLists();
+    measureAnew();
   }
 }
 
@@ -131,7 +128,12 @@ void GpuSolver::setContactMeasures(bool always) {
   const bool listed = listsCandidates(), was = measureContacts_;
   measureContacts_ = always;
   if (!listed && listsCandidates()) sizeLists();
-  if (always && !was && !strandContacts(config_.collision.mode)) measureNow();
+  if (always && !was) measureAnew();
+}
+
+void GpuSolver::measureAnew() {
+  framesSinceMeasure_ = 2;
+  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
 }
 
 void GpuSolver::measureNow() {
@@ -442,8 +444,7 @@ bool GpuSolver::restoreState(const SolverState& in, std::string* error) {
   // frame), and no last list: the one kept is of another state, nothing to count crossings
   // against (as after a reset).
   if (listsCandidates()) sizeLists();
-  framesSinceMeasure_ = 2;
-  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
+  measureAnew();
   return true;
 }
 

@@ -157,7 +157,8 @@ class GpuSolver final : public Solver {
   // With hair-hair off and the measures on: frames stepped since the last measure search (1:
   // the grid's counters measure where this frame started).
   int framesSinceMeasure_ = 2;
-  void measureNow();
+  void measureNow();   // searches where the hair stands
+  void measureAnew();  // after a reset, a restore or new settings (the lists already forgotten)
   gpu::SampleRing samples_;
   ContactStats sampledContacts_;
 };

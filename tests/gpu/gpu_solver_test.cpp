@@ -729,12 +729,13 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   REQUIRE(on);
   std::vector<glm::vec4> x;
   gpu->readPositions(x);
-  const std::vector<glm::dvec3> xd = test::toDouble(x0);
   const std::vector<uint32_t> strand = test::strandOf(g);
   const double r = c.collision.radius;
-  const double within2r = double(findContactsGrid(xd, strand, 2.0 * r).size());
-  const double withinR = double(findContactsGrid(xd, strand, r).size());
-  const double endWithinR = double(findContactsGrid(test::toDouble(x), strand, r).size());
+  // Pairs of segments closer than `within` at positions p, read back.
+  auto closer = [&](const std::vector<glm::vec4>& p, double within) {
+    return double(findContactsGrid(test::toDouble(p), strand, within).size());
+  };
+  const double within2r = closer(x0, 2.0 * r), withinR = closer(x0, r), endWithinR = closer(x, r);
   INFO("GPU measured " << on->contacts.contacts << " / " << on->contacts.penetrations
                        << ", read back where the frame starts " << within2r << " / " << withinR
                        << ", closer than r where it ends " << endWithinR);
@@ -760,8 +761,7 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   REQUIRE(third);
   std::vector<glm::vec4> x3;
   gpu->readPositions(x3);
-  const double start3 = double(findContactsGrid(test::toDouble(x), strand, r).size());
-  const double end3 = double(findContactsGrid(test::toDouble(x3), strand, r).size());
+  const double start3 = closer(x, r), end3 = closer(x3, r);
   INFO("third frame: measured " << third->contacts.penetrations << ", read back where it "
                                 << "starts " << start3 << ", where it ends " << end3);
   CHECK(std::abs(end3 - start3) > 0.02 * start3);
