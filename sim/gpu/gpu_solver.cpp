@@ -46,7 +46,9 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
   }
   if (builtMaxN_ == 0) {
     if (!passes_.predict.build("sim/predict.comp", CSM_PARTICLE_GROUP, {}, error) ||
-        !passes_.strainLimit.build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
+        !passes_.strainLimit[0].build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
+        !passes_.strainLimit[1].build("sim/strain_limit.comp", CSM_STRAND_GROUP,
+                                      {{"CSM_HEAD_FIELD", ""}}, error) ||
         !passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, {}, error) ||
         !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, {}, error) ||
@@ -341,7 +343,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
       grid_.solve(unsigned(k), config_.collision.iterations, strands);
     }
     timer_.stage(gpu::kStrainLimiting);
-    passes_.strainLimit.runSubstep(strands, unsigned(k));
+    passes_.strainLimit[uploadedField_ ? 1 : 0].runSubstep(strands, unsigned(k));
     gl::memoryBarrier(gpu::kPassBarrier);
     time_ += h;
   }

@@ -134,8 +134,10 @@ class GpuSolver final : public Solver {
   gpu::SimParams params_{};
 
   struct Passes {
-    gpu::ComputePass predict, shapeMatch, strainLimit, measure, volumeSplat, volumeDispatch,
-        volumeField;
+    gpu::ComputePass predict, shapeMatch, measure, volumeSplat, volumeDispatch, volumeField;
+    // For the head's spheres and for its distance field (llvmpipe runs both sides of a
+    // branch: each build runs only its own head's push).
+    gpu::ComputePass strainLimit[2];
   } passes_;
   gpu::StrandBuffers hair_;
   gpu::CollisionGrid grid_;
