@@ -1,7 +1,6 @@
 // The head's distance field (sim/head_shape.h): a vec4 per node, the gradient (xyz) and the
 // distance (w), read by trilinear interpolation in the head's frame. The float twin of
-// DistanceGrid::sample (strain_limit.comp's pushOutOfField: of pushOutOfHeadField in
-// sim/cpu/cpu_solver.cpp).
+// DistanceGrid::sample.
 layout(binding = CSM_TEX_HEAD_FIELD) uniform samplerBuffer headFieldTex;
 
 bool headIsField() {

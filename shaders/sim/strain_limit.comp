@@ -46,9 +46,10 @@ const float kUnknownClearance = -1e30;
 // llvmpipe runs both sides of every branch, and every loop body at least once, but a loop only
 // while one of its lanes still needs it. Written straight, the eight places that read the field
 // cost eight reads a particle however few it needed; here a particle clear of the head costs
-// one, a plain push three, and the bisection's 20 come only where a lane needs them (Fig. 1,
-// head only: strain limiting ~45 -> ~25 ms a frame, the same positions to the bit).
-bool pushOutOfField(inout vec3 p, vec3 prev, mat4 head, float r, float maxLength,
+// one, a plain push two or three, and the bisection's 20 come only where a lane needs them
+// (Fig. 1, head only, llvmpipe: strain limiting 49.6 -> 25.5 ms a frame, the same positions to
+// the bit).
+bool pushOutOfFieldHead(inout vec3 p, vec3 prev, mat4 head, float r, float maxLength,
                     inout vec3 normal) {
   // What the next read is of: a push's first read at p, a step of the push, how far p lies
   // outside (after a push that left it on the circle), how far prev lies outside, the
@@ -81,6 +82,7 @@ bool pushOutOfField(inout vec3 p, vec3 prev, mat4 head, float r, float maxLength
         n = up;
         steps = 0;
         state = kStep;
+        pushed = !(steps < 2 && s.w < r);  // a NaN distance takes no step, as the loop's test
       }
     } else if (state == kStep) {
       pushed = !(steps < 2 && s.w < r);  // else one more step (below)
@@ -239,7 +241,7 @@ bool pushHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxLength
 // deep, where the nearest surface is another sphere than the one prev lies over) the push again
 // from the nearest point of reach, twice; the last resort, the point where the segment from prev
 // enters the head, by bisection. "In the head": deeper than the surface and than prev. The float
-// twin of HeadCollider::pushOut in sim/cpu/cpu_solver.cpp (pushOutOfField: the same for the
+// twin of HeadCollider::pushOut in sim/cpu/cpu_solver.cpp (pushOutOfFieldHead: the same for the
 // distance field).
 bool pushOutOfHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxLength) {
   if (!pushHead(p, prev, sphereBase, r, maxLength)) return false;
@@ -325,7 +327,7 @@ void main() {
     // on the head (their fallback normal) as if nothing had happened.
     bool collide = headCollide && !any(isnan(x)) && !any(isinf(x));
 #ifdef CSM_HEAD_FIELD
-    bool touching = collide && pushOutOfField(x, xPrev, st.head, r, maxLength, fieldNormal);
+    bool touching = collide && pushOutOfFieldHead(x, xPrev, st.head, r, maxLength, fieldNormal);
 #else
     bool touching = collide && pushOutOfHead(x, xPrev, sphereBase, r, maxLength);
 #endif
