@@ -16,7 +16,7 @@ bool parseLong(const std::string& s, long& out) {
 std::string usageText() {
   return R"(csmhair: every strand of a head of hair, simulated with Chain Shape Matching.
 
-usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx] [options]
+usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx | GROOM.obj] [options]
 
   --headless             no window: simulate (and render, when a renderer is built) off-screen
   --frames N             frames to run (headless default 60)

@@ -112,7 +112,9 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                  scene.source.c_str(), sim.solver().strandCount(), sim.solver().particleCount(),
                  std::string(sim.solver().name()).c_str(), frames,
                  stiffnessText(stiffness).c_str());
-  // Said even with --quiet: the hair is softer than the preset asks.
+  // Said even with --quiet: what the import changed of the file, and hair softer than asked.
+  if (const std::string groom = groomReportText(sim.groomReport()); !groom.empty())
+    std::fprintf(stderr, "csmhair: warning: %s\n", groom.c_str());
   if (const std::string warning = stiffnessWarning(stiffness); !warning.empty())
     std::fprintf(stderr, "csmhair: warning: %s\n", warning.c_str());
 

@@ -170,7 +170,8 @@ nlohmann::json describeRun(const RunDescription& r) {
         {"substeps_capped", r.stiffness.plan.capped},
         {"alpha", {r.stiffness.alphaMin, r.stiffness.alphaMax}},
         {"particles_per_side", {r.stiffness.windowMin, r.stiffness.windowMax}},
-        {"rate", {r.stiffness.rateMin, r.stiffness.rateMax}}}},
+        {"rate", {r.stiffness.rateMin, r.stiffness.rateMax}},
+        {"strands_at_alpha_1", r.stiffness.stifferStrands}}},
       {"stiffness_window", c.sim.stiffnessWindow},
       {"collision_mode", collisionModeName(c.collision.mode)},
       {"solver", r.solver},
@@ -178,7 +179,12 @@ nlohmann::json describeRun(const RunDescription& r) {
        {{"file_strands", r.groom.fileStrands},
         {"file_points", r.groom.filePoints},
         {"simulated_particles", r.groom.simulatedPoints},
-        {"resample_saved_particles", r.groom.savedPoints()}}},
+        {"resample_saved_particles", r.groom.savedPoints()},
+        {"dropped_strands", r.groom.repair.droppedStrands},
+        {"merged_points", r.groom.repair.mergedPoints},
+        {"turned_strands", r.groom.turnedStrands},
+        {"pushed_particles", r.groom.pushedParticles},
+        {"repairs", r.groom.repair.notes}}},
       {"device", r.device},
   };
 }

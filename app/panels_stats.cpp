@@ -156,9 +156,15 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
   ImGui::Text("particles %zu", f.particles);
   ImGui::Text("strands simulated %zu, drawn %zu", f.strands, s.drawnStrands);
   const GroomReport& groom = f.groomReport;
-  if (groom.fileStrands > 0)
+  if (groom.fileStrands > 0) {
     ImGui::Text("groom file: %zu strands; resampling saved %zu of %zu points", groom.fileStrands,
                 groom.savedPoints(), groom.filePoints);
+    if (const std::string repairs = groomReportText(groom); !repairs.empty()) {
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "dropped %zu strands, merged %zu points",
+                         groom.repair.droppedStrands, groom.repair.mergedPoints);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", repairs.c_str());
+    }
+  }
   bool vsync = viewer.vsync();
   if (ImGui::Checkbox("vsync", &vsync)) viewer.setVsync(vsync);
   ImGui::End();

@@ -1,5 +1,6 @@
 #include "app/scene_setup.h"
 
+#include <cctype>
 #include <filesystem>
 
 #include "app/params.h"
@@ -9,8 +10,9 @@
 namespace csm {
 
 bool isGroomFile(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".hair" || ext == ".tfx";
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".hair" || ext == ".tfx" || ext == ".obj";
 }
 
 bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {

@@ -324,6 +324,10 @@ bool Viewer::applyConfig(const Preset& next) {
 
 void Viewer::checkStiffness() {
   if (!frame_->loaded) return;
+  if (const std::string groom = groomReportText(frame_->groomReport); groom != groomWarning_) {
+    groomWarning_ = groom;
+    if (!groom.empty()) log(MessageLevel::Warning, groom);
+  }
   const std::string warning = stiffnessWarning(frame_->stiffness);
   if (warning == stiffnessWarning_) return;
   stiffnessWarning_ = warning;

@@ -261,6 +261,7 @@ class Viewer {
   mutable std::mutex inboxMutex_;
   std::vector<ViewerMessage> inbox_;  // from other threads
   std::string stiffnessWarning_;      // the last one logged, so a slider does not repeat it
+  std::string groomWarning_;          // likewise what the groom's import repaired
 
   Pose userPose_;
   bool paused_ = false;

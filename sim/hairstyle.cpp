@@ -400,22 +400,96 @@ namespace csm {
 
 namespace {
 
-// Empty when every point of the fitted groom is finite and no strand has collapsed to a point.
+// Empty when every point of the fitted groom is finite (a strand that collapsed to a point is
+// the repair's to drop).
 std::string checkFitted(const Groom& g) {
   for (size_t s = 0; s < g.strandCount(); ++s) {
-    bool moves = false;
     for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) {
       const glm::vec3& p = g.points[i];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
         return "point " + std::to_string(i - g.first[s]) + " of strand " + std::to_string(s) +
                " is not finite";
-      moves = moves || p != g.points[g.first[s]];
     }
-    if (!moves) return "strand " + std::to_string(s) + " has zero length";
     if (s < g.thickness.size() && !std::isfinite(g.thickness[s]))
       return "the thickness of strand " + std::to_string(s) + " is not finite";
   }
   return {};
+}
+
+void reverseStrand(Groom& g, size_t s) {
+  std::reverse(g.points.begin() + g.first[s], g.points.begin() + g.first[s + 1]);
+}
+
+// The component-wise median of points: where most of them are, whatever a minority does.
+glm::dvec3 medianPoint(std::vector<glm::dvec3> points) {
+  glm::dvec3 m(0.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    auto mid = points.begin() + long(points.size() / 2);
+    std::nth_element(
+        points.begin(), mid, points.end(),
+        [axis](const glm::dvec3& p, const glm::dvec3& q) { return p[axis] < q[axis]; });
+    m[axis] = (*mid)[axis];
+  }
+  return m;
+}
+
+// The median distance of points from their median point: how tightly they gather.
+double medianSpread(const std::vector<glm::dvec3>& points) {
+  const glm::dvec3 m = medianPoint(points);
+  std::vector<double> d;
+  for (const glm::dvec3& p : points) d.push_back(glm::length(p - m));
+  std::nth_element(d.begin(), d.begin() + long(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
+// For a groom whose format does not say which end is the root: turns the strands so that each
+// starts at its end on the scalp. Roots gather on a scalp, tips spread by the hair's length:
+// first the whole groom, by which ends gather the more tightly (the median distance from their
+// median point, which a minority of strands the other way round does not move); then each
+// strand whose ends differ clearly in their distance from the roots' median point (by a third)
+// by that; the rest, once those are fitted to the head, by which end lies nearer the head (a
+// fringe's tip can be as near the crown as its root). Medians, not bounding spheres: a few
+// strands the wrong way round would set a bounding sphere, and the fit's scale with it.
+// Returns how many strands were turned from the file's order.
+size_t turnRootsFirst(Groom& g, const io::FitOptions& fit, const GrowthHead& head) {
+  std::vector<glm::dvec3> firsts, lasts;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    firsts.emplace_back(g.points[g.first[s]]);
+    lasts.emplace_back(g.points[g.first[s + 1] - 1]);
+  }
+  if (firsts.empty()) return 0;
+  const bool tipsFirst = medianSpread(lasts) < medianSpread(firsts);
+  if (tipsFirst) std::swap(firsts, lasts);
+  const glm::dvec3 crown = medianPoint(firsts);
+  std::vector<int> turn(g.strandCount(), -1);  // -1: not yet known
+  Groom sure;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    const double a = glm::length(firsts[s] - crown), b = glm::length(lasts[s] - crown);
+    if (std::abs(a - b) <= std::max(a, b) / 3.0) continue;
+    turn[s] = b < a;
+    sure.addStrand({glm::vec3(turn[s] ? lasts[s] : firsts[s]), glm::vec3(crown)});
+  }
+  if (sure.strandCount() > 0) {
+    // The fit of the strands known: where the rest's ends land on the head.
+    io::FitOptions place = fit;
+    place.snapRoots = false;
+    const io::FitReport placed = io::fitToHead(sure, place);
+    const glm::mat3 rotation = io::fitRotation(fit.rotationDeg);
+    auto onHead = [&](const glm::dvec3& p) {
+      glm::dvec3 normal;
+      return std::abs(head.distance(
+          glm::dvec3(placed.scale * (rotation * glm::vec3(p)) + placed.translation), normal));
+    };
+    for (size_t s = 0; s < g.strandCount(); ++s)
+      if (turn[s] < 0) turn[s] = onHead(lasts[s]) < onHead(firsts[s]);
+  }
+  size_t turned = 0;
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    if ((turn[s] > 0) != tipsFirst) {
+      reverseStrand(g, s);
+      ++turned;
+    }
+  return turned;
 }
 
 // Keeps `count` strands spread evenly over the file's order (all when count covers them).
@@ -457,11 +531,16 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
     if (error) *error = read.error;
     return false;
   }
-  return fitFileGroom(c, std::move(*read.groom), path, out, error, &r);
+  if (!fitFileGroom(c, std::move(*read.groom), path, out, error, &r, !read.rootsKnown))
+    return false;
+  io::GroomRepair both = read.repair;
+  both.add(r.repair);
+  r.repair = both;
+  return true;
 }
 
 bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out, std::string* error,
-                  GroomReport* report) {
+                  GroomReport* report, bool findRoots) {
   GroomReport local;
   GroomReport& r = report ? *report : local;
   r = {};
@@ -476,6 +555,8 @@ bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out,
   fit.headSpheres = headSpheres(c);
   fit.headField = headField(c);
   fit.snapRoots = true;
+  const GrowthHead head{fit.headSpheres, fit.headField};
+  if (findRoots) r.turnedStrands = turnRootsFirst(g, fit, head);
   const io::FitReport fitted = io::fitToHead(g, fit);
   // The reader checked that the file's points are finite and its strands go somewhere, but the
   // fit can undo both: points near float's limit rotated or scaled past it, a tiny spread of
@@ -483,6 +564,23 @@ bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out,
   if (const std::string problem = checkFitted(g); !problem.empty()) {
     if (error)
       *error = path + ": " + problem + " after fitting to the head (scale " +
+               std::to_string(fitted.scale) +
+               "); check hairstyle.import_scale, import_rotation and import_offset";
+    return false;
+  }
+  // Flaws that only the scene's resolution names: strands too short to simulate, points too
+  // close to tell apart.
+  io::RepairOptions repair;
+  repair.minLength = 0.5 * double(h.segmentLength);
+  repair.mergeDistance = kMergeShare * double(h.segmentLength);
+  repair.name = path;
+  const size_t fitStrands = g.strandCount();
+  r.repair = io::repairGroom(g, repair);
+  if (g.strandCount() == 0) {
+    if (error)
+      *error = path + ": no strand is left: all " + std::to_string(fitStrands) +
+               " are shorter than half of hairstyle.segment_length (" +
+               std::to_string(repair.minLength) + " m) once fitted to the head (scale " +
                std::to_string(fitted.scale) +
                "); check hairstyle.import_scale, import_rotation and import_offset";
     return false;
@@ -510,9 +608,38 @@ bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out,
                  "it to at most hairstyle.max_particles";
       return false;
     }
+  // No particle starts inside the head: the roots are on its surface, the rest go out to the
+  // collision radius as grown strands do.
+  const double margin = double(c.collision.radius);
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
+      glm::dvec3 p(g.points[i]);
+      // A particle deep in the head takes more than one push along the field's gradient.
+      bool pushed = false;
+      for (int k = 0; k < 8 && head.pushOut(p, margin); ++k) pushed = true;
+      if (pushed) {
+        g.points[i] = glm::vec3(p);
+        ++r.pushedParticles;
+      }
+    }
   r.simulatedPoints = g.pointCount();
   out = std::move(g);
   return true;
+}
+
+std::string groomReportText(const GroomReport& r) {
+  std::string parts = r.repair.summary();
+  auto add = [&](size_t n, const char* one, const char* many) {
+    if (n == 0) return;
+    if (!parts.empty()) parts += "; ";
+    parts += std::to_string(n) + (n == 1 ? one : many);
+  };
+  add(r.turnedStrands, " strand turned root first", " strands turned root first");
+  add(r.pushedParticles, " particle moved out of the head", " particles moved out of the head");
+  if (parts.empty()) return {};
+  std::string text = "the groom file: " + parts;
+  for (const std::string& n : r.repair.notes) text += "\n  " + n;
+  return text;
 }
 
 std::string resolveRelative(const std::string& baseDir, const std::string& path) {

@@ -30,8 +30,9 @@ std::vector<Param<Config>> build() {
   return {
       param("hairstyle.file", "Groom file", "Hairstyle", &Config::hairstyle, &HairstyleConfig::file,
             0, 0,
-            "A cyHair .hair or TressFX .tfx groom to load instead of growing strands; empty = the "
-            "generator. Relative paths are relative to the preset.",
+            "A groom to load instead of growing strands: cyHair .hair, TressFX .tfx (any version) "
+            "or OBJ curves .obj (Blender's hair export); empty = the generator. Relative paths "
+            "are relative to the preset.",
             Effect::Rebuild),
       param("hairstyle.strands", "Strands", "Hairstyle", &Config::hairstyle,
             &HairstyleConfig::strands, 1, 1000000,

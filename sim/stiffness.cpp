@@ -146,7 +146,19 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
       r.inertia[a + k] = J;
     }
   }
+  r.planRate = planRate(r.rate);
   return r;
+}
+
+double planRate(const std::vector<double>& rates) {
+  if (rates.empty()) return 0.0;
+  std::vector<double> sorted = rates;
+  std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+  const double limit = kOutlierRate * sorted[sorted.size() / 2];
+  double rate = 0.0;
+  for (const double k : rates)
+    if (k <= limit) rate = std::max(rate, k);
+  return rate;
 }
 
 bool regionsChanged(const SimConfig& a, const SimConfig& b) {
@@ -173,12 +185,14 @@ FramePlan planFrame(const SimConfig& sim, double maxRate) {
 StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim) {
   StiffnessInfo info;
   info.model = sim.stiffnessModel;
-  info.plan = planFrame(sim, regions.maxRate);
+  info.plan = planFrame(sim, regions.planRate);
   info.strands = regions.rate.size();
   bool first = true;
   for (size_t s = 0; s < regions.rate.size(); ++s) {
     const double k = regions.rate[s];
     const double alpha = stepAlpha(sim, k, info.plan.h);
+    if (sim.stiffnessModel == StiffnessModel::Calibrated && k * info.plan.h * info.plan.h > 1.0)
+      ++info.stifferStrands;
     const int w = regions.window[s];
     if (first) {
       info.alphaMin = info.alphaMax = alpha;
@@ -220,12 +234,19 @@ std::string stiffnessText(const StiffnessInfo& info) {
 }
 
 std::string stiffnessWarning(const StiffnessInfo& info) {
-  if (!info.plan.capped) return {};
   char buf[256];
+  if (info.plan.capped) {
+    std::snprintf(buf, sizeof buf,
+                  "the stiffness asks for %d steps per frame but sim.max_substeps is %d: the "
+                  "stiffest strands are softer than asked (alpha = 1)",
+                  info.plan.wanted, info.plan.substeps);
+    return buf;
+  }
+  if (info.stifferStrands == 0) return {};
   std::snprintf(buf, sizeof buf,
-                "the stiffness asks for %d steps per frame but sim.max_substeps is %d: the "
-                "stiffest strands are softer than asked (alpha = 1)",
-                info.plan.wanted, info.plan.substeps);
+                "%zu of %zu strands, shorter than the window, are stiffer than %d steps a frame "
+                "resolve: they run at alpha = 1 (as stiff as the steps allow)",
+                info.stifferStrands, info.strands, info.plan.substeps);
   return buf;
 }
 

@@ -63,6 +63,7 @@ struct Regions {
   std::vector<int> pinned;        // particles from the root that follow the head
   std::vector<double> ghostMass;  // per-region mass of a ghost (0: the strand has none)
   double maxRate = 0.0;
+  double planRate = 0.0;  // the rate the steps follow (planRate below)
 
   size_t size() const { return lo.size(); }
 };
@@ -86,6 +87,15 @@ inline double ghostSum1(int q) {
 inline double ghostSum2(int q) {
   return q * (q + 1.0) * (2.0 * q + 1.0) / 6.0;
 }
+
+// The rate a frame's steps follow: the largest k of the strands within kOutlierRate of the
+// median strand's. k grows as 1/length^4 once a strand is shorter than the window (a strand of
+// 7.5 um asks for a million steps a frame): such strands are nearly rigid whatever their k and
+// run at alpha = 1 when stiffer than the steps resolve (describeStiffness counts them), so a
+// few degenerate strands of a real groom cannot set the steps of the rest. 16: a strand that
+// spans half the window the median strand spans still sets them.
+inline constexpr double kOutlierRate = 16.0;
+double planRate(const std::vector<double>& rates);
 
 // True when a change from `a` to `b` changes the regions (the solvers rebuild them).
 bool regionsChanged(const SimConfig& a, const SimConfig& b);
@@ -128,12 +138,14 @@ struct StiffnessInfo {
   int windowMin = 0, windowMax = 0;  // particles per side
   double rateMin = 0.0, rateMax = 0.0;
   size_t strands = 0;
+  size_t stifferStrands = 0;  // calibrated strands with k h^2 > 1: run at alpha = 1
 };
 StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim);
 
 // "4 steps of 4.17 ms, alpha 0.71-1, 2-3 particles per side" and the like, for logs.
 std::string stiffnessText(const StiffnessInfo& info);
-// The warning when the cap binds; empty when it does not.
+// The warning when the cap binds, or else when some strands are stiffer than the steps; empty
+// when neither.
 std::string stiffnessWarning(const StiffnessInfo& info);
 
 }  // namespace csm

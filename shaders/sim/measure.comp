@@ -39,6 +39,8 @@ uint orderedKey(float f) {
   return (u & 0x80000000u) != 0u ? ~u : (u | 0x80000000u);
 }
 
+float maxAbs(vec3 v) { return max(abs(v.x), max(abs(v.y), abs(v.z))); }
+
 // isnan and isinf, not a comparison: a compiler may assume comparisons see no NaN.
 bool finite3(vec3 v) {
   return !any(isnan(v)) && !any(isinf(v));
@@ -72,7 +74,11 @@ void main() {
         float rest = length(texelFetch(restTex, int(i) + 1).xyz - texelFetch(restTex, int(i)).xyz);
         vec3 next = texelFetch(posTex, int(i) + 1).xyz;
         if (rest > 0.0 && finite3(next)) {
-          float strain = length(next - x) / rest - 1.0;
+          // Less what float positions cannot resolve: floatBlur in sim/metrics.cpp.
+          float blur = 1.1920929e-7 * (maxAbs(x) + maxAbs(next));  // 2^-23
+          float stretch = length(next - x) - rest;
+          stretch = stretch > blur ? stretch - blur : stretch < -blur ? stretch + blur : 0.0;
+          float strain = stretch / rest;
           maxStrain = orderedKey(strain);
           strainSum = abs(strain);
           segments = 1u;

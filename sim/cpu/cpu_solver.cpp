@@ -330,7 +330,7 @@ void CpuSolver::clearStages() {
 
 void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   clearStages();
-  const FramePlan plan = planFrame(config_.sim, regions_.maxRate);
+  const FramePlan plan = planFrame(config_.sim, regions_.planRate);
   ++framesSinceMeasure_;
   // The frame's contact candidates, from where it starts (DESIGN.md section 1.7).
   auto t0 = Clock::now();

@@ -292,7 +292,7 @@ void GpuSolver::bindAll() {
 }
 
 void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
-  const FramePlan plan = planFrame(config_.sim, regions_.maxRate);
+  const FramePlan plan = planFrame(config_.sim, regions_.planRate);
   const int substeps = plan.substeps;
   const double h = plan.h;
   std::vector<Pose> poses(substeps), before(substeps);

@@ -52,33 +52,27 @@ std::string floatText(float value) {
   return out.str();
 }
 
-std::string checkPoints(const Groom& groom, std::string_view name, uint64_t base, uint64_t stride) {
-  for (size_t i = 0; i < groom.points.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      const float v = groom.points[i][c];
-      if (!std::isfinite(v)) {
-        return errorAt(name, base + stride * i + 4 * c,
-                       std::string("coordinate ") + "xyz"[c] + " of point " + std::to_string(i) +
-                           " is " + floatText(v) + "; expected a finite number");
-      }
-    }
+void finishGroom(GroomReadResult& result, Groom groom, std::string_view name,
+                 std::function<std::string(size_t point, int axis)> where) {
+  const size_t strands = groom.strandCount() + result.repair.droppedStrands;
+  RepairOptions options;
+  options.name = std::string(name);
+  options.where = std::move(where);
+  result.repair.add(repairGroom(groom, options));
+  if (groom.strandCount() == 0) {
+    result.error = std::string(name) + ": no strand can be used: all " + std::to_string(strands) +
+                   " were dropped" +
+                   (result.repair.notes.empty() ? std::string()
+                                                : " (the first: " + result.repair.notes[0] + ")");
+    return;
   }
-  // A strand whose points all coincide has no direction and no rest length: the solver
-  // cannot shape-match it and resampling cannot place particles along it.
-  for (size_t s = 0; s < groom.strandCount(); ++s) {
-    const uint32_t begin = groom.first[s], end = groom.first[s + 1];
-    bool moves = false;
-    for (uint32_t i = begin + 1; i < end && !moves; ++i) {
-      moves = groom.points[i] != groom.points[begin];
-    }
-    if (!moves) {
-      return errorAt(name, base + stride * begin,
-                     "strand " + std::to_string(s) + " has zero length (all " +
-                         std::to_string(end - begin) +
-                         " points are equal); expected a strand that goes somewhere");
-    }
-  }
-  return {};
+  result.groom = std::move(groom);
+}
+
+std::function<std::string(size_t point, int axis)> byteOfPoint(uint64_t base, uint64_t stride) {
+  return [base, stride](size_t point, int axis) {
+    return "byte " + std::to_string(base + stride * point + 4 * uint64_t(axis));
+  };
 }
 
 std::optional<std::vector<std::byte>> readFileBytes(const std::string& path, uint64_t maxBytes,

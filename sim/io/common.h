@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "sim/groom.h"
+#include "sim/io/repair.h"
 
 namespace csm::io {
 
@@ -21,6 +23,10 @@ namespace csm::io {
 struct GroomReadResult {
   std::optional<Groom> groom;
   std::string error;
+  // What the reader repaired (io/repair.h's first pass): strands dropped, points merged.
+  GroomRepair repair;
+  // False when the format does not say which end of a strand is its root (OBJ curves).
+  bool rootsKnown = true;
 
   explicit operator bool() const { return groom.has_value(); }
 };
@@ -59,10 +65,14 @@ std::string errorAt(std::string_view name, uint64_t offset, std::string_view mes
 // Formats a float for messages ("nan", "-inf", "0.25").
 std::string floatText(float value);
 
-// Checks every point of `groom` is finite and no strand has zero length (all its points
-// equal), reporting the byte offset of the offending value. Point i's x coordinate is at
-// byte base + stride * i of the file, y and z follow it.
-std::string checkPoints(const Groom& groom, std::string_view name, uint64_t base, uint64_t stride);
+// The end of every reader: the first repair (io/repair.h: strands with a coordinate that is not
+// finite or with fewer than two distinct points dropped, repeated points merged), each note
+// placed in the file by `where`; sets result.groom, or result.error when no strand is left.
+void finishGroom(GroomReadResult& result, Groom groom, std::string_view name,
+                 std::function<std::string(size_t point, int axis)> where);
+
+// "byte N" of a coordinate of point i when point i's x lies at byte base + stride * i.
+std::function<std::string(size_t point, int axis)> byteOfPoint(uint64_t base, uint64_t stride);
 
 // Reads a whole file, refusing files larger than maxBytes before allocating.
 // On failure returns nullopt and sets *error to a message that starts with the path.

@@ -177,10 +177,6 @@ GroomReadResult readCyHair(std::span<const std::byte> bytes, std::string_view na
 
   groom.points.resize(pointCount);
   std::memcpy(groom.points.data(), bytes.data() + at.points, 12 * pointCount);
-  if (std::string error = detail::checkPoints(groom, name, at.points, 12); !error.empty()) {
-    result.error = std::move(error);
-    return result;
-  }
 
   if (at.thickness) {
     for (uint64_t i = 0; i < pointCount; ++i) {
@@ -236,7 +232,7 @@ GroomReadResult readCyHair(std::span<const std::byte> bytes, std::string_view na
       }
     }
   }
-  result.groom = std::move(groom);
+  detail::finishGroom(result, std::move(groom), name, detail::byteOfPoint(at.points, 12));
   return result;
 }
 

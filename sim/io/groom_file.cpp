@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "sim/io/cyhair.h"
+#include "sim/io/obj_curves.h"
 #include "sim/io/tressfx.h"
 
 namespace csm::io {
@@ -22,7 +23,8 @@ bool hasExtension(std::string_view path, std::string_view ext) {
 
 GroomFormat detectGroomFormat(std::string_view path, std::span<const std::byte> bytes) {
   if (bytes.size() >= 4 && std::memcmp(bytes.data(), "HAIR", 4) == 0) return GroomFormat::CyHair;
-  if (hasExtension(path, ".tfx")) return GroomFormat::TressFx;
+  if (hasExtension(path, ".tfx") || isTressFxText(bytes)) return GroomFormat::TressFx;
+  if (hasExtension(path, ".obj")) return GroomFormat::ObjCurves;
   if (hasExtension(path, ".hair")) return GroomFormat::CyHair;
   return GroomFormat::Unknown;
 }
@@ -36,12 +38,14 @@ GroomReadResult readGroom(const std::string& path) {
       return readCyHair(*bytes, path);
     case GroomFormat::TressFx:
       return readTressFx(*bytes, path);
+    case GroomFormat::ObjCurves:
+      return readObjCurves(*bytes, path);
     case GroomFormat::Unknown:
       break;
   }
   result.error = path +
-                 ": unknown groom format; expected a cyHair file (signature \"HAIR\", .hair) "
-                 "or a TressFX file (.tfx)";
+                 ": unknown groom format; expected a cyHair file (signature \"HAIR\", .hair), a "
+                 "TressFX file (.tfx, any version) or OBJ curves (.obj)";
   return result;
 }
 

@@ -12,11 +12,12 @@
 
 namespace csm::io {
 
-enum class GroomFormat { Unknown, CyHair, TressFx };
+enum class GroomFormat { Unknown, CyHair, TressFx, ObjCurves };
 
-// cyHair files start with "HAIR"; TressFX files have no signature, so ".tfx" (any case)
-// decides. A ".hair" file without the signature is still CyHair, so its reader reports the
-// bad signature rather than "unknown format".
+// cyHair files start with "HAIR"; TressFX text files (1.x, 2.x) with the word "version" or
+// "numStrands"; binary TressFX files have no signature, so ".tfx" (any case) decides, as ".obj"
+// does for OBJ curves. A ".hair" file without the signature is still CyHair, so its reader
+// reports the bad signature rather than "unknown format".
 GroomFormat detectGroomFormat(std::string_view path, std::span<const std::byte> bytes);
 
 // Reads the file with the reader detectGroomFormat() picks; errors start with the path.

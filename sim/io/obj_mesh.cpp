@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <map>
 #include <unordered_map>
 
@@ -11,67 +10,28 @@
 #include <tiny_obj_loader.h>
 
 #include "sim/io/common.h"
+#include "sim/io/obj_text.h"
 
 namespace csm::io {
 namespace {
 
+using detail::objLines;
+using detail::objTokens;
+using detail::parseIndex;
+using detail::parseNumber;
+
 constexpr uint64_t kMaxBytes = uint64_t(512) << 20;
 constexpr double kMaxSize = 1.0;  // m: a head and shoulders is well under this
-
-std::vector<std::string_view> tokens(std::string_view line) {
-  std::vector<std::string_view> out;
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    size_t j = i;
-    while (j < line.size() && line[j] != ' ' && line[j] != '\t') ++j;
-    if (j > i) out.push_back(line.substr(i, j - i));
-    i = j;
-  }
-  return out;
-}
-
-bool parseNumber(std::string_view s, double& v) {
-  const std::string text(s);
-  char* end = nullptr;
-  v = std::strtod(text.c_str(), &end);
-  return end != text.c_str() && end == text.c_str() + text.size();
-}
-
-bool parseIndex(std::string_view s, long& v) {
-  const std::string text(s);
-  char* end = nullptr;
-  v = std::strtol(text.c_str(), &end, 10);
-  return end != text.c_str() && end == text.c_str() + text.size();
-}
-
-// The lines of the file, comments and continuation aside (a head exporter writes neither
-// across lines), with their 1-based numbers. A line ends at "\n", "\r\n" or a lone "\r", as
-// tinyobjloader reads them: a split of our own would check other lines than the ones it reads.
-std::vector<std::pair<size_t, std::string_view>> lines(std::string_view text) {
-  std::vector<std::pair<size_t, std::string_view>> out;
-  size_t start = 0, number = 1;
-  while (start <= text.size()) {
-    size_t end = text.find_first_of("\r\n", start);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(start, end - start);
-    if (const size_t hash = line.find('#'); hash != std::string_view::npos)
-      line = line.substr(0, hash);
-    out.emplace_back(number++, line);
-    start = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
-  }
-  return out;
-}
 
 // Our pass over the lines: every number and index is checked here, with its line, so that
 // tinyobjloader (which skips or clamps some of them) only sees what it reads correctly.
 // Returns the line of each face, in the file's order.
 std::string checkLines(std::string_view text, const std::string& path,
                        std::vector<size_t>& faceLines) {
-  const auto all = lines(text);
+  const auto all = objLines(text);
   long totals[3] = {0, 0, 0};  // v, vt, vn
   for (const auto& [number, line] : all) {
-    const auto t = tokens(line);
+    const auto t = objTokens(line);
     if (t.empty()) continue;
     if (t[0] == "v") ++totals[0];
     if (t[0] == "vt") ++totals[1];
@@ -89,7 +49,7 @@ std::string checkLines(std::string_view text, const std::string& path,
   static const char* kind[3] = {"vertex", "texture coordinate", "normal"};
   static const char* kinds[3] = {"vertices", "texture coordinates", "normals"};
   for (const auto& [number, line] : all) {
-    const auto t = tokens(line);
+    const auto t = objTokens(line);
     if (t.empty()) continue;
     if (t[0] == "v" || t[0] == "vn" || t[0] == "vt") {
       const int k = t[0] == "v" ? 0 : t[0] == "vt" ? 1 : 2;

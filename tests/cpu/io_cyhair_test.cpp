@@ -235,22 +235,36 @@ TEST_CASE("cyHair: malformed files give errors that name the byte offset", "[io]
     spec.defaultSegments = 0;
     CHECK_THAT(errorOf(spec), Catch::Contains("byte 16: default segment count is 0"));
   }
-  SECTION("NaN and Inf points") {
+  SECTION("NaN and Inf points drop their strands, named by their bytes") {
     CyHairSpec spec = validSpec(true);
     spec.points[3 * 4 + 1] = std::numeric_limits<float>::quiet_NaN();  // point 4, y
     // 128 + 4 segments bytes + 4 * 12 + 4
-    CHECK_THAT(errorOf(spec), Catch::Contains("byte 184: coordinate y of point 4 is nan"));
+    auto result = readCyHair(build(spec), "t.hair");
+    REQUIRE(result.groom);
+    CHECK(result.groom->strandCount() == 1);
+    CHECK(result.repair.droppedStrands == 1);
+    REQUIRE_FALSE(result.repair.notes.empty());
+    CHECK_THAT(result.repair.notes[0],
+               Catch::Contains("byte 184: strand 1 dropped: coordinate y of point 1 is nan"));
     spec = validSpec(false);
     spec.points[0] = -std::numeric_limits<float>::infinity();
-    CHECK_THAT(errorOf(spec), Catch::Contains("byte 128: coordinate x of point 0 is -inf"));
+    result = readCyHair(build(spec), "t.hair");
+    REQUIRE(result.groom);
+    CHECK_THAT(result.repair.notes.at(0),
+               Catch::Contains("byte 128: strand 0 dropped: coordinate x of point 0 is -inf"));
+    spec.points[3 * 3 + 2] = std::numeric_limits<float>::quiet_NaN();  // strand 1 too
+    CHECK_THAT(errorOf(spec), Catch::Contains("no strand can be used: all 2 were dropped"));
   }
-  SECTION("zero-length strand") {
+  SECTION("a zero-length strand is dropped") {
     CyHairSpec spec = validSpec(true);
     for (int i = 3; i < 7; ++i) {  // strand 1: points 3..6 all equal
       spec.points[3 * i] = 1.0f, spec.points[3 * i + 1] = 2.0f, spec.points[3 * i + 2] = 3.0f;
     }
-    CHECK_THAT(errorOf(spec), Catch::Contains("byte 168: strand 1 has zero length (all 4 points "
-                                              "are equal)"));
+    const auto result = readCyHair(build(spec), "t.hair");
+    REQUIRE(result.groom);
+    CHECK(result.groom->strandCount() == 1);
+    CHECK_THAT(result.repair.notes.at(0),
+               Catch::Contains("byte 168: strand 1 dropped: all 4 points are equal"));
   }
   SECTION("negative or NaN thickness") {
     CyHairSpec spec = validSpec(true);

@@ -97,7 +97,11 @@ TEST_CASE("Groom files: format detection", "[io][groom_file]") {
   CHECK(csm::io::detectGroomFormat("x.bin", *hair) == GroomFormat::CyHair);  // by signature
   CHECK(csm::io::detectGroomFormat("x.TFX", {}) == GroomFormat::TressFx);
   CHECK(csm::io::detectGroomFormat("x.hair", {}) == GroomFormat::CyHair);
-  CHECK(csm::io::detectGroomFormat("x.obj", {}) == GroomFormat::Unknown);
+  CHECK(csm::io::detectGroomFormat("x.obj", {}) == GroomFormat::ObjCurves);
+  CHECK(csm::io::detectGroomFormat("x.stl", {}) == GroomFormat::Unknown);
+  const std::string text = "version 2.0\nnumStrands 1\n";
+  CHECK(csm::io::detectGroomFormat("x.txt", std::as_bytes(std::span(text.data(), text.size()))) ==
+        GroomFormat::TressFx);
 
   TempDir dir;
   SECTION("signature wins over the extension") {
@@ -117,8 +121,8 @@ TEST_CASE("Groom files: format detection", "[io][groom_file]") {
     CHECK_THAT(result.error, Catch::Contains("short.tfx: byte 0: expected a 160-byte TressFX"));
   }
   SECTION("unknown formats and missing files are errors") {
-    writeBytes(dir.file("mesh.obj"), std::vector<std::byte>(200));
-    CHECK_THAT(csm::io::readGroom(dir.file("mesh.obj")).error,
+    writeBytes(dir.file("mesh.stl"), std::vector<std::byte>(200));
+    CHECK_THAT(csm::io::readGroom(dir.file("mesh.stl")).error,
                Catch::Contains("unknown groom format"));
     CHECK_THAT(csm::io::readGroom(dir.file("missing.hair")).error,
                Catch::Contains("missing.hair: not a readable file"));

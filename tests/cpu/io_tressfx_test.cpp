@@ -124,7 +124,7 @@ TEST_CASE("TressFX: malformed files give errors that name the byte offset", "[io
   SECTION("shorter than the header") {
     f.bytes.resize(100);
     CHECK_THAT(errorOf(f.bytes), Catch::Contains("t.tfx: byte 0: expected a 160-byte TressFX "
-                                                 "header, the data has only 100 bytes"));
+                                                 "4.x header, the data has only 100 bytes"));
   }
   SECTION("no strands") {
     f.setU32(4, 0);
@@ -141,7 +141,7 @@ TEST_CASE("TressFX: malformed files give errors that name the byte offset", "[io
   SECTION("an array inside the header") {
     f.setU32(24, 100);
     CHECK_THAT(errorOf(f.bytes), Catch::Contains("byte 24: strand thickness array offset 100 "
-                                                 "lies inside the 160-byte header"));
+                                                 "lies inside the 160-byte TressFX 4.x header"));
   }
   SECTION("positions run past the end") {
     f.bytes.resize(f.bytes.size() - 4);
@@ -163,19 +163,34 @@ TEST_CASE("TressFX: malformed files give errors that name the byte offset", "[io
     CHECK_THAT(errorOf(f.bytes), Catch::Contains("byte 160: vertex position array of 102400000 "
                                                  "bytes runs past end of file (size 352;"));
   }
-  SECTION("NaN position") {
+  SECTION("a NaN position drops its strand, named by its byte") {
     TfxSpec spec = validSpec();
     spec.positions[4 * 5 + 2] = std::numeric_limits<float>::quiet_NaN();  // vertex 5, z
+    const auto result = readTressFx(build(spec).bytes, "t.tfx");
+    REQUIRE(result.groom);
+    CHECK(result.groom->strandCount() == 2);
+    CHECK(result.repair.droppedStrands == 1);
+    REQUIRE(result.repair.notes.size() == 1);
+    CHECK_THAT(
+        result.repair.notes[0],
+        Catch::Contains("t.tfx: byte 248: strand 1 dropped: coordinate z of point 1 is nan"));
+    // Every strand broken: nothing is left to simulate.
+    for (size_t v = 0; v < 12; v += 4)
+      spec.positions[4 * v] = std::numeric_limits<float>::infinity();
     CHECK_THAT(errorOf(build(spec).bytes),
-               Catch::Contains("byte 248: coordinate z of point 5 is nan"));
+               Catch::Contains("t.tfx: no strand can be used: all 3 were dropped"));
   }
-  SECTION("zero-length strand") {
+  SECTION("a zero-length strand is dropped, named by its byte") {
     TfxSpec spec = validSpec();
     for (int v = 8; v < 12; ++v) {
       spec.positions[4 * v] = 0, spec.positions[4 * v + 1] = 0, spec.positions[4 * v + 2] = 0;
     }
-    CHECK_THAT(errorOf(build(spec).bytes),
-               Catch::Contains("byte 288: strand 2 has zero length (all 4 points are equal)"));
+    const auto result = readTressFx(build(spec).bytes, "t.tfx");
+    REQUIRE(result.groom);
+    CHECK(result.groom->strandCount() == 2);
+    REQUIRE(result.repair.notes.size() == 1);
+    CHECK_THAT(result.repair.notes[0],
+               Catch::Contains("byte 288: strand 2 dropped: all 4 points are equal"));
   }
   SECTION("negative thickness") {
     TfxSpec spec = validSpec();

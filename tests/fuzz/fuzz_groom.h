@@ -29,7 +29,8 @@ inline void checkFinite(const Groom& g, const std::string& where) {
     if (!std::isfinite(t)) fail(where + ": a thickness is not finite");
 }
 
-inline void fitAsPreset(const Groom& read, const std::string& name, unsigned selector) {
+inline void fitAsPreset(const Groom& read, const std::string& name, unsigned selector,
+                        bool findRoots = false) {
   if (std::string problem = io::checkGroomStructure(read); !problem.empty())
     fail("the reader accepted a broken groom: " + problem);
   checkFinite(read, "the reader accepted a groom");
@@ -43,13 +44,15 @@ inline void fitAsPreset(const Groom& read, const std::string& name, unsigned sel
   c.hairstyle.resampleTolerance = (selector & 4) ? 0.0f : 0.002f;
   Groom out;
   std::string error;
-  if (!fitFileGroom(c, read, name, out, &error)) {
+  GroomReport report;
+  if (!fitFileGroom(c, read, name, out, &error, &report, findRoots)) {
     if (error.empty()) fail("fitFileGroom failed without a message");
     return;
   }
   if (std::string problem = io::checkGroomStructure(out); !problem.empty())
     fail("fitFileGroom returned a broken groom: " + problem);
   checkFinite(out, "fitFileGroom returned a groom");
+  if (report.turnedStrands > read.strandCount()) fail("more strands turned than read");
 }
 
 }  // namespace csm::fuzz

@@ -81,6 +81,60 @@ def tressfx(ss, strand_uv=False, vertex_uv=False, thickness=False, colors=False)
     return head + body
 
 
+def tressfx3(ss, thickness=False, colors=False, guides=False, both_ends=0):
+    """TressFX 3.x: a 296-byte header (TressFXFileObject), float3 positions."""
+    n, per = len(ss), len(ss[0])
+    layout = [b"".join(struct.pack("<fff", *p) for s in ss for p in s)]
+    layout.append(b"".join(struct.pack("<f", 0.02) for _ in ss) if thickness else b"")
+    layout.append(b"")  # strand texture coordinates
+    layout.append(b"".join(struct.pack("<ffff", 0.6, 0.4, 0.2, 1.0) for s in ss for _ in s)
+                  if colors else b"")
+    layout.append(b"".join(struct.pack("<I", 0) for _ in ss) if guides else b"")
+    body, offsets, at = b"", [], 296
+    for a in layout:
+        if not a:
+            offsets.append(0)
+            continue
+        pad = (-at) % 8
+        body += b"\0" * pad
+        at += pad
+        offsets.append(at)
+        body += a
+        at += len(a)
+    offsets.append(0)  # per-vertex texture coordinates
+    head = struct.pack("<fIIII", 3.0, n, per, 4, both_ends) + b"\0" * 124
+    head += struct.pack("<6I", *offsets)
+    head = head.ljust(296, b"\0")
+    return head + body
+
+
+def tressfx_text(ss, version=True):
+    """TressFX 1.x (no version line) or 2.x text."""
+    t = ("version 2.0\nscale 1.0\nrotation 0 0 0\ntranslation 0 0 0\nbothEndsImmovable 0\n"
+         "maxNumVerticesInStrand 64\nnumFollowHairsPerGuideHair 4\n"
+         "maxRadiusAroundGuideHair 0.5\n") if version else ""
+    t += "numStrands %d\nis sorted 1\n" % len(ss)
+    for i, s in enumerate(ss):
+        t += "strand %d numVerts %d texcoord 0.000000 0.500000\n" % (i, len(s))
+        t += "".join("%.6f %.6f %.6f\n" % p for p in s)
+    return t
+
+
+def curves(ss, edges=True):
+    """OBJ curves: Blender's one `l` an edge, or one `l` a strand."""
+    text = "# Blender v3.4.1 OBJ File: ''\no ParticleSystem\n"
+    text += "".join("v %.6f %.6f %.6f\n" % p for s in ss for p in s)
+    at = 1
+    for s in ss:
+        ids = list(range(at, at + len(s)))
+        at += len(s)
+        if edges:
+            text += "".join("l %d %d\n" % (a, b) for a, b in zip(ids, ids[1:]))
+        else:
+            text += "l " + " ".join(map(str, ids)) + "\n"
+    return text
+
+
 def obj(vertices, faces, extra=""):
     text = "# fuzz seed\n" + extra
     text += "".join("v %.5f %.5f %.5f\n" % v for v in vertices)
@@ -119,6 +173,18 @@ def main():
                 colors=True))
     out("tressfx", "long_strands.tfx", tressfx(strands(2, 32, curl=2.0)))
     out("tressfx", "truncated.tfx", tressfx(strands(2, 4))[:200])
+    out("tressfx", "v3_positions.tfx", tressfx3(strands(3, 4)))
+    out("tressfx", "v3_all_arrays.tfx",
+        tressfx3(strands(2, 16, curl=1.0), thickness=True, colors=True, guides=True))
+    out("tressfx", "v3_both_ends.tfx", tressfx3(strands(2, 4), both_ends=1))
+    out("tressfx", "v2_text.tfx", tressfx_text(strands(3, 5)))
+    out("tressfx", "v1_text.tfx", tressfx_text(strands(2, 4, curl=1.0), version=False))
+
+    out("curves", "edges.obj", curves(strands(3, 5)))
+    out("curves", "polylines.obj", curves(strands(3, 6, curl=1.0), edges=False))
+    out("curves", "with_head.obj",
+        curves(strands(2, 4)) + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n")
+    out("curves", "branch.obj", curves(strands(2, 4)) + "l 2 7\n")
 
     r = 0.1
     tet = [(r, r, r), (r, -r, -r), (-r, r, -r), (-r, -r, r)]

@@ -1,0 +1,191 @@
+#include "sim/io/obj_curves.h"
+
+#include <algorithm>
+#include <charconv>
+#include <unordered_set>
+#include <vector>
+
+#include "sim/io/obj_text.h"
+
+namespace csm::io {
+namespace {
+
+// A number token, fast for the millions a large groom has; strtod for what from_chars does not
+// take (a leading '+').
+bool number(std::string_view token, double& value) {
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  if (ec == std::errc() && ptr == end) return true;
+  return detail::parseNumber(token, value);
+}
+
+// One undirected edge between two vertices (0-based), with the line that gave it.
+struct Edge {
+  uint32_t a, b;
+  size_t line;
+};
+
+// Each vertex's edges: at most two in a chain (indices into the edge list; -1: none).
+struct Links {
+  int64_t edge[2] = {-1, -1};
+  int count = 0;
+};
+
+}  // namespace
+
+GroomReadResult readObjCurves(std::span<const std::byte> bytes, std::string_view name) {
+  GroomReadResult result;
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  auto fail = [&](size_t line, const std::string& message) {
+    result.error = std::string(name) + ":" + std::to_string(line) + ": " + message;
+    return result;
+  };
+  const auto lines = detail::objLines(text);
+
+  std::vector<glm::vec3> positions;
+  std::vector<size_t> vertexLine;
+  std::vector<Edge> edges;
+  std::unordered_set<uint64_t> seen;
+  GroomRepair notes;
+  std::vector<std::string_view> t;
+  for (size_t k = 0; k < lines.size(); ++k) {
+    const size_t line = lines[k].first;
+    t = detail::objTokens(lines[k].second);
+    // A trailing backslash continues the element on the next line (the OBJ specification).
+    while (!t.empty() && t.back() == "\\" && k + 1 < lines.size()) {
+      t.pop_back();
+      const auto more = detail::objTokens(lines[++k].second);
+      t.insert(t.end(), more.begin(), more.end());
+    }
+    if (t.empty()) continue;
+    if (t[0].find('\0') != std::string_view::npos) return fail(line, "a NUL byte; OBJ is text");
+    if (t[0] == "v") {
+      if (t.size() < 4)
+        return fail(line,
+                    "a vertex needs 3 coordinates, this one has " + std::to_string(t.size() - 1));
+      double v[3];
+      for (int c = 0; c < 3; ++c)
+        if (!number(t[size_t(c) + 1], v[c]))
+          return fail(
+              line, "vertex coordinate \"" + std::string(t[size_t(c) + 1]) + "\" is not a number");
+      if (positions.size() >= kMaxPoints)
+        return fail(line, "more than " + std::to_string(kMaxPoints) + " vertices");
+      positions.emplace_back(float(v[0]), float(v[1]), float(v[2]));
+      vertexLine.push_back(line);
+    } else if (t[0] == "l") {
+      if (t.size() < 3)
+        return fail(line, "a line element needs at least 2 vertices, this one has " +
+                              std::to_string(t.size() - 1));
+      long previous = -1;
+      for (size_t i = 1; i < t.size(); ++i) {
+        const std::string_view ref = t[i].substr(0, t[i].find('/'));  // v or v/vt
+        long index = 0;
+        if (!detail::parseIndex(ref, index))
+          return fail(line, "line element index \"" + std::string(ref) + "\" is not an integer");
+        // Negative indices count back from the last vertex read so far (OBJ's rule).
+        const long count = long(positions.size());
+        const long resolved = index < 0 ? count + index + 1 : index;
+        if (index == 0 || resolved < 1 || resolved > count)
+          return fail(line, "line element index " + std::to_string(index) +
+                                " is out of range: " + std::to_string(count) +
+                                (count == 1 ? " vertex" : " vertices") + " before it");
+        const long v = resolved - 1;
+        if (previous >= 0 && v != previous) {
+          const uint32_t a = uint32_t(std::min(previous, v)), b = uint32_t(std::max(previous, v));
+          if (seen.insert(uint64_t(a) << 32 | b).second) {
+            edges.push_back({uint32_t(previous), uint32_t(v), line});
+          } else if (notes.notes.size() < GroomRepair::kMaxNotes) {
+            notes.notes.push_back(std::string(name) + ":" + std::to_string(line) + ": the edge " +
+                                  std::to_string(a + 1) + "-" + std::to_string(b + 1) +
+                                  " is given again: read once");
+          }
+        }
+        previous = v;
+      }
+    } else if (t[0] == "cstype" || t[0] == "curv" || t[0] == "curv2") {
+      return fail(line, "free-form curves (\"" + std::string(t[0]) +
+                            "\") are not read; export the hair as polylines (\"l\" elements)");
+    }
+    // v* other than v, f, o, g, s, mtllib, usemtl, p and the rest: not hair curves.
+  }
+  if (edges.empty())
+    return fail(lines.empty() ? 1 : lines.back().first,
+                "no line elements (\"l\"): hair is read from a groom's curves; a head mesh "
+                "goes in head.mesh");
+
+  // Each vertex's edges; a third is a branch.
+  std::vector<Links> links(positions.size());
+  for (size_t e = 0; e < edges.size(); ++e)
+    for (const uint32_t v : {edges[e].a, edges[e].b}) {
+      Links& l = links[v];
+      if (l.count == 2)
+        return fail(edges[e].line,
+                    "vertex " + std::to_string(v + 1) + " (line " + std::to_string(vertexLine[v]) +
+                        ") has a third edge here, after lines " +
+                        std::to_string(edges[size_t(l.edge[0])].line) + " and " +
+                        std::to_string(edges[size_t(l.edge[1])].line) + ": a strand cannot branch");
+      l.edge[l.count++] = int64_t(e);
+    }
+  auto other = [&](size_t e, uint32_t v) { return edges[e].a == v ? edges[e].b : edges[e].a; };
+  // The edge of v that is not `from` (-1: v ends the chain).
+  auto next = [&](uint32_t v, int64_t from) {
+    const Links& l = links[v];
+    for (int i = 0; i < l.count; ++i)
+      if (l.edge[i] != from) return l.edge[i];
+    return int64_t(-1);
+  };
+
+  // Chains in the order of their first edge in the file, from the end met first.
+  Groom groom;
+  std::vector<uint32_t> order;  // the file's vertex of each point, for the notes
+  std::vector<bool> used(edges.size(), false);
+  std::vector<glm::vec3> strand;
+  for (size_t first = 0; first < edges.size(); ++first) {
+    if (used[first]) continue;
+    // Back from the edge's first vertex to the end of the chain.
+    uint32_t start = edges[first].a;
+    int64_t via = int64_t(first);
+    for (;;) {
+      const int64_t e = next(start, via);
+      if (e < 0) break;
+      if (e == int64_t(first))
+        return fail(edges[first].line, "the edges from this line close a loop through vertex " +
+                                           std::to_string(start + 1) +
+                                           ": a strand has a root and a tip");
+      start = other(size_t(e), start);
+      via = e;
+    }
+    // Then forward to the other end.
+    strand.clear();
+    uint32_t v = start;
+    int64_t e = next(v, -1);
+    strand.push_back(positions[v]);
+    order.push_back(v);
+    while (e >= 0) {
+      used[size_t(e)] = true;
+      v = other(size_t(e), v);
+      strand.push_back(positions[v]);
+      order.push_back(v);
+      e = next(v, e);
+    }
+    if (groom.points.size() > kMaxPoints)
+      return fail(edges[first].line,
+                  "the strands exceed the limit of " + std::to_string(kMaxPoints) + " points");
+    groom.addStrand(strand);
+  }
+  result.repair = notes;
+  result.rootsKnown = false;
+  detail::finishGroom(result, std::move(groom), name, [order, vertexLine](size_t point, int) {
+    return "line " + std::to_string(vertexLine[order[point]]);
+  });
+  return result;
+}
+
+GroomReadResult readObjCurves(const std::string& path) {
+  GroomReadResult result;
+  auto bytes = detail::readFileBytes(path, kMaxFileBytes, &result.error);
+  if (!bytes) return result;
+  return readObjCurves(*bytes, path);
+}
+
+}  // namespace csm::io

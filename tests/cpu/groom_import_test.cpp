@@ -1,0 +1,170 @@
+// Grooms from files as a scene takes them (sim/hairstyle.h's fitFileGroom): the flaws of real
+// grooms repaired and counted, steps that a few degenerate strands cannot set, roots on the
+// scalp of any head and no particle inside it, roots found for OBJ curves.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include <catch2/catch.hpp>
+
+#include "sim/cpu/cpu_solver.h"
+#include "sim/head_shape.h"
+#include "sim/stiffness.h"
+#include "tests/import_cases.h"
+
+using namespace csm;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() / ("csm_import_" + std::to_string(::getpid()));
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path / name, std::ios::binary) << text;
+    return (path / name).string();
+  }
+};
+
+// Signed distance to the scene's head: its field, or the nearest sphere.
+double headDistance(const Config& c, const glm::vec3& p) {
+  if (const DistanceGrid* field = headField(c)) return field->sample(glm::dvec3(p));
+  double d = 1e30;
+  for (const Sphere& s : headSpheres(c))
+    d = std::min(d, double(glm::length(p - s.center)) - double(s.radius));
+  return d;
+}
+
+// A closed octahedron of 12 cm about the head's centre: an OBJ head of someone's own.
+std::string octahedron() {
+  return "v 0.12 0 0\nv -0.12 0 0\nv 0 0.12 0\nv 0 -0.12 0\nv 0 0 0.12\nv 0 0 -0.12\n"
+         "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+}
+
+}  // namespace
+
+TEST_CASE(
+    "Import: a groom of normal strands and three degenerate ones runs at the normal "
+    "strands' steps",
+    "[import][stiffness]") {
+  Config c;
+  c.hairstyle.strands = 150;
+  c.collision.headShape = HeadShape::Sdf;
+  const Groom clean = test::importFor(c, test::importedGroom(c, false));
+  GroomReport report;
+  const Groom flawed = test::importFor(c, test::importedGroom(c, true), &report);
+  // The 7.5 um strand and the repeated point are dropped, the 1 um points merged; the 1.5 cm
+  // strand is kept.
+  CHECK(report.repair.droppedStrands == 2);
+  CHECK(report.repair.mergedPoints == 6 * 150);
+  REQUIRE(flawed.strandCount() == clean.strandCount() + 1);
+  CHECK_THAT(groomReportText(report), Catch::Contains("dropped 2 strands, merged 900 points"));
+
+  const Pose pose;
+  const Regions regions = buildRegions(makeHairState(flawed, c.sim, pose), c.sim);
+  // The short strand alone would ask for more steps than the rest.
+  CHECK(planFrame(c.sim, regions.maxRate).wanted > 2 * planFrame(c.sim, regions.planRate).wanted);
+
+  CpuSolver a, b;
+  a.reset(clean, c, pose);
+  b.reset(flawed, c, pose);
+  CHECK(b.stiffness().plan.substeps == a.stiffness().plan.substeps);
+  CHECK(b.stiffness().stifferStrands == 1);
+  CHECK(a.stiffness().stifferStrands == 0);
+  CHECK_THAT(stiffnessWarning(b.stiffness()),
+             Catch::Contains("1 of 151 strands") && Catch::Contains("alpha = 1"));
+}
+
+TEST_CASE("Import: roots land on the scalp of every head, and no particle starts inside it",
+          "[import]") {
+  TempDir dir;
+  Config grownOn;
+  grownOn.hairstyle.strands = 120;
+  // Every point 1.5 cm towards the head's centre: the file's strands start deep in the scalp.
+  Groom file = test::importedGroom(grownOn, false);
+  const glm::vec3 centre = test::toFile(glm::vec3(0.0f));
+  for (glm::vec3& p : file.points) p -= 1.5f * glm::normalize(p - centre);
+
+  for (const std::string head : {"spheres", "mannequin", "obj"}) {
+    DYNAMIC_SECTION(head) {
+      Config c = grownOn;
+      c.collision.headShape = head == "spheres" ? HeadShape::Spheres : HeadShape::Sdf;
+      if (head == "obj") {
+        c.head.mesh = dir.write("octahedron.obj", octahedron());
+        REQUIRE(headField(c) != &mannequinGrid());
+      }
+      GroomReport report;
+      const Groom g = test::importFor(c, file, &report);
+      if (head != "spheres") CHECK(report.pushedParticles > 0);  // spheres: the snap suffices
+      size_t inside = 0;
+      double worstRoot = 0.0;
+      for (size_t s = 0; s < g.strandCount(); ++s) {
+        worstRoot = std::max(worstRoot, std::abs(headDistance(c, g.points[g.first[s]])));
+        for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i)
+          inside += headDistance(c, g.points[i]) < 0.0;
+      }
+      INFO(head << ": roots up to " << worstRoot << " m from the surface, " << inside
+                << " particles inside, " << report.pushedParticles << " pushed out");
+      CHECK(worstRoot < 1e-3);
+      CHECK(inside == 0);
+    }
+  }
+}
+
+TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import][obj]") {
+  TempDir dir;
+  Config c;
+  c.hairstyle.strands = 80;
+  c.collision.headShape = HeadShape::Sdf;
+  const Groom file = test::importedGroom(c, false);
+  // Polylines: strands 0, 3, 6, ... tip first.
+  std::string obj;
+  for (const glm::vec3& p : file.points)
+    obj +=
+        "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+  size_t reversed = 0;
+  for (size_t s = 0; s < file.strandCount(); ++s) {
+    obj += "l";
+    const bool back = s % 3 == 0;
+    reversed += back;
+    for (uint32_t k = 0; k < file.strandSize(s); ++k)
+      obj += " " + std::to_string(back ? file.first[s + 1] - k : file.first[s] + k + 1);
+    obj += "\n";
+  }
+  c.hairstyle.file = dir.write("tips_first.obj", obj);
+  Groom g;
+  std::string error;
+  GroomReport report;
+  REQUIRE(buildGroom(c, "", g, &error, &report));
+  CHECK(report.turnedStrands == reversed);
+  // Every root is on the scalp, where the file grew it.
+  const Groom rootFirst = test::importFor(c, file);
+  REQUIRE(g.strandCount() == rootFirst.strandCount());
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    CHECK(std::abs(headDistance(c, g.points[g.first[s]])) < 1e-3);
+    CHECK(glm::length(g.points[g.first[s]] - rootFirst.points[rootFirst.first[s]]) < 1e-3f);
+  }
+  // A whole file written tip first, too.
+  std::string allBack;
+  for (const glm::vec3& p : file.points)
+    allBack +=
+        "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+  for (size_t s = 0; s < file.strandCount(); ++s)
+    for (uint32_t k = file.first[s + 1] - 1; k > file.first[s]; --k)
+      allBack += "l " + std::to_string(k + 1) + " " + std::to_string(k) + "\n";
+  c.hairstyle.file = dir.write("all_back.obj", allBack);
+  REQUIRE(buildGroom(c, "", g, &error, &report));
+  CHECK(report.turnedStrands == file.strandCount());
+}
+
+TEST_CASE("Import: the flawed groom's 30 frames on the CPU reference", "[import][cpu]") {
+  CpuSolver cpu;
+  test::checkImportedRun(cpu, 1e-9);
+}
