@@ -76,6 +76,20 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     return 1;
   }
   Simulation sim(std::move(solver));
+  // A long groom import says where it stands on stderr, twice a second at most, once it has
+  // taken a second.
+  const auto importStart = Clock::now();
+  auto lastImportLine = importStart;
+  if (!options.quiet)
+    sim.setImportProgress([&](std::string_view stage, double done) {
+      const auto now = Clock::now();
+      if (now - importStart < std::chrono::seconds(1) ||
+          now - lastImportLine < std::chrono::milliseconds(500))
+        return;
+      lastImportLine = now;
+      std::fprintf(stderr, "csmhair: importing the groom: %.*s, %.0f %%\n", int(stage.size()),
+                   stage.data(), 100.0 * done);
+    });
   if (!sim.load(scene.preset.scene, scene.baseDir, &error)) {
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
     return 2;

@@ -337,6 +337,16 @@ void drawBanners(Viewer& viewer) {
                         " particles) and is paused; strands in the picture may be broken.\n"
                         "Press R to reset the hair to rest, or change the parameters "
                         "(smaller time step, more substeps, less stiffness) or revert the preset.");
+  if (const SimThread::ImportStatus import = viewer.importStatus(); !import.stage.empty()) {
+    // A long groom import: the window stays live, the old scene on show until it is done.
+    ImGui::SetNextWindowPos(ImVec2(topCentre.x, y), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+    if (ImGui::Begin("##import", nullptr, bannerFlags)) {
+      ImGui::Text("Importing the groom: %s", import.stage.c_str());
+      ImGui::ProgressBar(float(import.done), ImVec2(320.0f, 0.0f));
+      y += ImGui::GetWindowHeight() + 6.0f;
+    }
+    ImGui::End();
+  }
   if (!viewer.hasRenderer())
     banner("##renderer", "The renderer did not start, so the hair is simulated but not drawn:\n" +
                              viewer.rendererError());

@@ -65,6 +65,13 @@ bool SimThread::makeSolver(std::string* error, Started* started) {
   }
   started->solver = std::string(solver->name());
   sim_ = std::make_unique<Simulation>(std::move(solver));
+  sim_->setImportProgress([this](std::string_view stage, double done) {
+    {
+      std::lock_guard lock(importMutex_);
+      import_ = {std::string(stage), done};
+    }
+    if (options_.wake) options_.wake();
+  });
   DriverOptions driving;
   // Every frame sampled: a few numbers per work group, fenced; the Stats panel's strain and
   // the NaN check follow each frame a few frames late.
@@ -135,8 +142,21 @@ void SimThread::run(std::string* startError, Started* started) {
   if (gl_) options_.context->releaseCurrent();
 }
 
+SimThread::ImportStatus SimThread::importStatus() const {
+  std::lock_guard lock(importMutex_);
+  return import_;
+}
+
 void SimThread::apply(Pending& p, long ticket) {
   std::string error;
+  // An import's progress shows while this command builds the groom, and no longer.
+  struct Done {
+    SimThread& t;
+    ~Done() {
+      std::lock_guard lock(t.importMutex_);
+      t.import_ = {};
+    }
+  } done{*this};
   const long generation = sim_->generation();
   bool opened = false;
   if (p.open) {

@@ -193,6 +193,13 @@ class SimThread {
   std::vector<SimEvent> takeEvents();
   // Every frame's time and sample so far (with Options::recordMetrics).
   MetricsRecorder metrics() const;
+  // Where a groom import on the thread stands (sim/hairstyle.h's ImportProgress); an empty
+  // stage when none is running.
+  struct ImportStatus {
+    std::string stage;
+    double done = 0.0;
+  };
+  ImportStatus importStatus() const;
   long ticket() const;        // the last ticket handed out
   long latestSerial() const;  // of the latest frame published (0 before the first)
 
@@ -249,6 +256,8 @@ class SimThread {
   int latestSlot_ = -1, heldSlot_ = -1;
   MetricsRecorder recorder_;
   bool running_ = true;  // false once the thread has left its loop
+  mutable std::mutex importMutex_;
+  ImportStatus import_;
 
   // The thread's own.
   bool gl_ = false;  // its context is current

@@ -181,6 +181,7 @@ class Viewer {
     shaderReloadFailed_ = false;
   }
   bool hasRenderer() const { return renderer_ != nullptr; }
+  SimThread::ImportStatus importStatus() const { return sim_->importStatus(); }
   const std::string& rendererError() const { return rendererError_; }
   bool nanStopped() const;
   long nanFrame() const { return frame_->nanFrame; }

@@ -3,7 +3,9 @@
 // (as grown: hairstyle.separate_passes then moves the strands against each other).
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -46,6 +48,11 @@ struct GroomReport {
   }
 };
 
+// Where a long import stands: the stage ("reading", "repairing", "fitting", "resampling",
+// "placing"), and the fraction of the whole import done (0..1). Called on the thread that builds
+// the groom, a few hundred times at most; what it shows and how often is the caller's choice.
+using ImportProgress = std::function<void(std::string_view stage, double done)>;
+
 // What the import did that a user should hear of (never silent): "the groom file: dropped 3
 // strands, merged 12 points; 2 strands turned root first; 40 particles moved out of the head",
 // then the first notes, one a line; "" when there is nothing to say (the generator, a clean
@@ -58,7 +65,7 @@ std::string groomReportText(const GroomReport& r);
 // tolerance needs, and pushed out of the head. Returns false with a message naming the file
 // (and byte offset or line) on failure.
 bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::string* error,
-                GroomReport* report = nullptr);
+                GroomReport* report = nullptr, const ImportProgress& progress = {});
 
 // What buildGroom does with a groom file once read (`g`, from `path`): the strands kept, the
 // fit to the head, the roots snapped, the second repair (strands shorter than half of
@@ -67,7 +74,8 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
 // does not say which end is the root: OBJ curves) each strand first starts at the end that lies
 // on the scalp the groom's first ends share (turned round where its other end does).
 bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out, std::string* error,
-                  GroomReport* report = nullptr, bool findRoots = false);
+                  GroomReport* report = nullptr, bool findRoots = false,
+                  const ImportProgress& progress = {});
 
 // Points of an imported strand closer than this share of hairstyle.segment_length are merged
 // (0.1 mm at the default 2 cm): far below any groom's sampling (a dense one has a point a

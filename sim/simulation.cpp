@@ -25,7 +25,7 @@ bool Simulation::regrow(const Config& config, const std::string& baseDir, std::s
   }
   Groom groom;
   GroomReport report;
-  if (!buildGroom(config, baseDir, groom, error, &report)) return false;
+  if (!buildGroom(config, baseDir, groom, error, &report, importProgress_)) return false;
   groomReport_ = report;
   config_ = config;
   baseDir_ = baseDir;

@@ -38,6 +38,9 @@ class Simulation {
  public:
   explicit Simulation(std::unique_ptr<Solver> solver) : solver_(std::move(solver)) {}
 
+  // Where a long groom import stands, while load or setConfig build one (sim/hairstyle.h).
+  void setImportProgress(ImportProgress progress) { importProgress_ = std::move(progress); }
+
   // Grows the groom and resets the solver. On failure keeps what it had and says why.
   bool load(const Config& config, const std::string& baseDir, std::string* error);
   // Applies a changed config: regrows when a Rebuild parameter changed, else goes live.
@@ -89,6 +92,7 @@ class Simulation {
   std::string baseDir_;
   std::shared_ptr<const Groom> groom_ = std::make_shared<const Groom>();
   GroomReport groomReport_;
+  ImportProgress importProgress_;
   Pose userPose_;
   Pose lastUserPose_;  // the user's pose the last frame ran with
   Pose lastPose_;

@@ -97,6 +97,8 @@ void runScaling(const Options& o);
 void runSceneChoices(const Options& o);
 void runWindow(const Options& o);
 void runRecording(const Options& o);
+// A 5 M point groom's import: time by stage and peak memory (tools/bench/import.cpp).
+void runImport(const Options& o);
 // The torture map and the soak (tools/bench/torture.cpp, sim/torture.h).
 void runTortureMap(const Options& o);
 void runSoakSection(const Options& o);

@@ -26,8 +26,9 @@ namespace {
 using namespace csm;
 using namespace csm::bench;
 
-const char* kSections[] = {"methods",       "stability", "resolution", "region_sums", "scaling",
-                           "scene_choices", "window",    "recording",  "torture",     "soak"};
+const char* kSections[] = {"methods", "stability",     "resolution", "region_sums",
+                           "scaling", "scene_choices", "window",     "recording",
+                           "torture", "soak",          "import"};
 
 void usage(FILE* f) {
   std::fprintf(f,
@@ -40,7 +41,7 @@ void usage(FILE* f) {
                "  --only SECTION   run only this section (repeatable): methods, stability,\n"
                "                   resolution, region_sums, scaling, scene_choices, window,\n"
                "                   recording,\n"
-               "                   torture, soak (these two run only when named)\n"
+               "                   torture, soak, import (these three run only when named)\n"
                "  --threads N      workers for accuracy runs (default 2; timings run alone)\n"
                "  --no-charts      write CSV only; do not run scripts/charts.py\n"
                "  --help           this text\n");
@@ -174,6 +175,7 @@ int main(int argc, char** argv) {
   };
   if (named("torture")) section("torture", runTortureMap);
   if (named("soak")) section("soak", runSoakSection);
+  if (named("import")) section("import", runImport);
   meta["seconds"] = seconds;
   meta["seconds_total"] = std::chrono::duration<double>(Clock::now() - start).count();
   {
