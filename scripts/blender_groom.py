@@ -3,7 +3,7 @@ edge chains (one chain a strand, root first) in metres with y up, for `csmhair G
 hair particles on the top of a head-sized sphere, let fall under gravity with hair dynamics,
 converted to a mesh of edges and exported.
   blender -b --factory-startup --python scripts/blender_groom.py -- OUT.obj
-      [--strands N] [--length M] [--seed S] [--frames F] [--legacy]
+      [--strands N] [--length M] [--seed S] [--frames F] [--comb W] [--legacy]
 Made with Debian 12's Blender 3.4; the same seed gives the same file."""
 import argparse
 import os
@@ -18,6 +18,7 @@ args.add_argument("--strands", type=int, default=1500)
 args.add_argument("--length", type=float, default=0.2, help="hair length, metres")
 args.add_argument("--seed", type=int, default=1)
 args.add_argument("--frames", type=int, default=40, help="frames of hair dynamics (24 a second)")
+args.add_argument("--comb", type=float, default=6.0, help="the wind that sweeps hair back")
 args.add_argument("--legacy", action="store_true", help="use the legacy Python OBJ exporter")
 args = args.parse_args(sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else [])
 start = time.time()
@@ -33,12 +34,14 @@ bpy.ops.mesh.primitive_ico_sphere_add(radius=0.1, subdivisions=4)
 head = bpy.context.active_object
 
 # The scalp as a vertex group that weights the root density: everything above a hairline
-# that is high at the forehead (-y), at the ears on the sides and just below the equator at
-# the back, with a soft edge of 0.15 in the normal's z.
+# that is high at the forehead (-y; the normal's z above 0.7), above the ears on the sides
+# (0.3) and just below the equator at the back (-0.1), with a soft edge of 0.15 in the
+# normal's z. The sphere has no face: hair grown lower at the front would fall through the
+# face of the head it is simulated on.
 scalp = head.vertex_groups.new(name="scalp")
 for v in head.data.vertices:
     n = v.co.normalized()
-    weight = min(1.0, max(0.0, (n.z - (0.15 - 0.25 * n.y)) / 0.15))
+    weight = min(1.0, max(0.0, (n.z - (0.3 - 0.4 * n.y)) / 0.15))
     if weight > 0.0:
         scalp.add([v.index], weight, "REPLACE")
 
@@ -72,6 +75,13 @@ head.collision.thickness_outer = 0.002
 psys.use_hair_dynamics = True
 psys.cloth.settings.pin_stiffness = 0.0
 psys.cloth.collision_settings.distance_min = 0.002
+# And a comb: a steady wind from the face to the back (Blender's front is -y; a wind field
+# blows along its own z, turned here to +y), so that the hair at the forehead is swept back
+# over the crown instead of falling over a face the sphere does not have.
+bpy.ops.object.effector_add(type="WIND", location=(0.0, -0.3, 0.1), rotation=(-1.5708, 0.0, 0.0))
+comb = bpy.context.active_object
+comb.field.strength = args.comb
+comb.field.flow = 1.0  # drags the hair towards the wind's speed, like air, not a push
 for frame in range(1, args.frames + 1):
     bpy.context.scene.frame_set(frame)
 

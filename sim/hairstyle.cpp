@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include <Eigen/Dense>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -442,16 +443,45 @@ double medianSpread(const std::vector<glm::dvec3>& points) {
   return d[d.size() / 2];
 }
 
+// The sphere through points by least squares (|p|^2 = 2 c.p + k is linear in c and k), in units
+// of their spread so that the system is well scaled whatever the file's units. A flat set has
+// no finite sphere: then the nearest of large ones is as good a surface, and a radius of 100
+// spreads stands for it.
+Sphere sphereThrough(const std::vector<glm::dvec3>& points) {
+  glm::dvec3 mean(0.0);
+  for (const glm::dvec3& p : points) mean += p;
+  mean /= double(points.size());
+  double spread = 0.0;
+  for (const glm::dvec3& p : points) spread = std::max(spread, glm::length(p - mean));
+  if (points.size() < 4 || !(spread > 0.0)) return {glm::vec3(mean), float(spread)};
+  Eigen::MatrixXd m(points.size(), 4);
+  Eigen::VectorXd rhs(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::dvec3 q = (points[i] - mean) / spread;
+    m.row(Eigen::Index(i)) << 2.0 * q.x, 2.0 * q.y, 2.0 * q.z, 1.0;
+    rhs(Eigen::Index(i)) = glm::dot(q, q);
+  }
+  const Eigen::Vector4d x = m.colPivHouseholderQr().solve(rhs);
+  glm::dvec3 c(x(0), x(1), x(2));
+  double r = std::sqrt(std::max(0.0, x(3) + glm::dot(c, c)));
+  if (!std::isfinite(r) || r > 100.0) {
+    c = glm::length(c) > 0.0 && std::isfinite(glm::length(c)) ? glm::normalize(c) * 100.0
+                                                              : glm::dvec3(0.0, -100.0, 0.0);
+    r = 100.0;
+  }
+  return {glm::vec3(mean + spread * c), float(spread * r)};
+}
+
 // For a groom whose format does not say which end is the root: turns the strands so that each
 // starts at its end on the scalp. Roots gather on a scalp, tips spread by the hair's length:
 // first the whole groom, by which ends gather the more tightly (the median distance from their
-// median point, which a minority of strands the other way round does not move); then each
-// strand whose ends differ clearly in their distance from the roots' median point (by a third)
-// by that; the rest, once those are fitted to the head, by which end lies nearer the head (a
-// fringe's tip can be as near the crown as its root). Medians, not bounding spheres: a few
-// strands the wrong way round would set a bounding sphere, and the fit's scale with it.
-// Returns how many strands were turned from the file's order.
-size_t turnRootsFirst(Groom& g, const io::FitOptions& fit, const GrowthHead& head) {
+// median point, which a minority of strands the other way round does not move; a bounding
+// sphere would be set by them). Then a strand whose other end lies nearer that median point is
+// in doubt, and is turned only when its other end lies nearer the scalp by a tenth of the
+// scalp's radius: the scalp being the sphere through the first ends of the strands not in doubt.
+// Hair swept over the crown has its tip near the roots' middle, but no nearer the scalp than
+// its root. Returns how many strands were turned from the file's order.
+size_t turnRootsFirst(Groom& g) {
   std::vector<glm::dvec3> firsts, lasts;
   for (size_t s = 0; s < g.strandCount(); ++s) {
     firsts.emplace_back(g.points[g.first[s]]);
@@ -461,34 +491,25 @@ size_t turnRootsFirst(Groom& g, const io::FitOptions& fit, const GrowthHead& hea
   const bool tipsFirst = medianSpread(lasts) < medianSpread(firsts);
   if (tipsFirst) std::swap(firsts, lasts);
   const glm::dvec3 crown = medianPoint(firsts);
-  std::vector<int> turn(g.strandCount(), -1);  // -1: not yet known
-  Groom sure;
+  std::vector<bool> doubtful(g.strandCount(), false);
+  std::vector<glm::dvec3> roots;
   for (size_t s = 0; s < g.strandCount(); ++s) {
-    const double a = glm::length(firsts[s] - crown), b = glm::length(lasts[s] - crown);
-    if (std::abs(a - b) <= std::max(a, b) / 3.0) continue;
-    turn[s] = b < a;
-    sure.addStrand({glm::vec3(turn[s] ? lasts[s] : firsts[s]), glm::vec3(crown)});
+    doubtful[s] = glm::length(lasts[s] - crown) < glm::length(firsts[s] - crown);
+    if (!doubtful[s]) roots.push_back(firsts[s]);
   }
-  if (sure.strandCount() > 0) {
-    // The fit of the strands known: where the rest's ends land on the head.
-    io::FitOptions place = fit;
-    place.snapRoots = false;
-    const io::FitReport placed = io::fitToHead(sure, place);
-    const glm::mat3 rotation = io::fitRotation(fit.rotationDeg);
-    auto onHead = [&](const glm::dvec3& p) {
-      glm::dvec3 normal;
-      return std::abs(head.distance(
-          glm::dvec3(placed.scale * (rotation * glm::vec3(p)) + placed.translation), normal));
-    };
-    for (size_t s = 0; s < g.strandCount(); ++s)
-      if (turn[s] < 0) turn[s] = onHead(lasts[s]) < onHead(firsts[s]);
-  }
+  const Sphere scalp = roots.empty() ? Sphere{glm::vec3(crown), 0.0f} : sphereThrough(roots);
+  auto gap = [&](const glm::dvec3& p) {
+    return std::abs(glm::length(p - glm::dvec3(scalp.center)) - double(scalp.radius));
+  };
+  const double on = 0.1 * double(scalp.radius);
   size_t turned = 0;
-  for (size_t s = 0; s < g.strandCount(); ++s)
-    if ((turn[s] > 0) != tipsFirst) {
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    const bool turn = doubtful[s] && gap(lasts[s]) < gap(firsts[s]) - on;
+    if (turn != tipsFirst) {
       reverseStrand(g, s);
       ++turned;
     }
+  }
   return turned;
 }
 
@@ -562,7 +583,7 @@ bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out,
   fit.headField = headField(c);
   fit.snapRoots = true;
   const GrowthHead head{fit.headSpheres, fit.headField};
-  if (findRoots) r.turnedStrands = turnRootsFirst(g, fit, head);
+  if (findRoots) r.turnedStrands = turnRootsFirst(g);
   const io::FitReport fitted = io::fitToHead(g, fit);
   // The reader checked that the file's points are finite and its strands go somewhere, but the
   // fit can undo both: points near float's limit rotated or scaled past it, a tiny spread of

@@ -13,8 +13,16 @@ namespace csm {
 
 bool Simulation::load(const Config& config, const std::string& baseDir, std::string* error) {
   if (!regrow(config, baseDir, error)) return false;
+  startingSolver();
   reset();
   return solverReady(error);
+}
+
+void Simulation::startingSolver() const {
+  // The solver's set-up for a large imported groom takes longer than the import itself (its
+  // buffers, the collision lists): the progress says so rather than stopping at 100 %.
+  if (importProgress_ && !config_.hairstyle.file.empty())
+    importProgress_("starting the solver", 1.0);
 }
 
 bool Simulation::regrow(const Config& config, const std::string& baseDir, std::string* error) {
@@ -41,6 +49,7 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     if (!regrow(config, baseDir_, error)) return false;
     lastPose_ = headPoseAt(time_);
     lastUserPose_ = userPose_;
+    startingSolver();
     solver_->reset(*groom_, config_, lastPose_);
     return solverReady(error);
   }

@@ -93,6 +93,7 @@ class Simulation {
   std::shared_ptr<const Groom> groom_ = std::make_shared<const Groom>();
   GroomReport groomReport_;
   ImportProgress importProgress_;
+  void startingSolver() const;
   Pose userPose_;
   Pose lastUserPose_;  // the user's pose the last frame ran with
   Pose lastPose_;

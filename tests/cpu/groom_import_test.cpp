@@ -124,7 +124,7 @@ TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import
   c.hairstyle.strands = 80;
   c.collision.headShape = HeadShape::Sdf;
   const Groom file = test::importedGroom(c, false);
-  // Polylines: strands 0, 3, 6, ... tip first.
+  // Polylines: strands 0, 10, 20, ... tip first (a tool that wrote some strands backwards).
   std::string obj;
   for (const glm::vec3& p : file.points)
     obj +=
@@ -132,7 +132,7 @@ TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import
   size_t reversed = 0;
   for (size_t s = 0; s < file.strandCount(); ++s) {
     obj += "l";
-    const bool back = s % 3 == 0;
+    const bool back = s % 10 == 0;
     reversed += back;
     for (uint32_t k = 0; k < file.strandSize(s); ++k)
       obj += " " + std::to_string(back ? file.first[s + 1] - k : file.first[s] + k + 1);
