@@ -555,6 +555,8 @@ bool buildGroom(const Config& c, const std::string& baseDir, Groom& out, std::st
   }
   if (!fitFileGroom(c, std::move(*read.groom), path, out, error, &r, !read.rootsKnown, progress))
     return false;
+  // The file's strands and repairs: those the reader dropped, then those the scene did.
+  r.fileStrands += read.repair.droppedStrands;
   io::GroomRepair both = read.repair;
   both.add(r.repair);
   r.repair = both;

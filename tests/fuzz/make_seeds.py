@@ -54,6 +54,23 @@ def cyhair(ss, segments_array=True, thickness=False, transparency=False, colors=
     return head + body
 
 
+def lay_out(arrays, at):
+    """The arrays after a header of `at` bytes, each 8-byte aligned as TressFX asks; an empty one
+    is absent (offset 0). Returns the body and the offsets."""
+    body, offsets = b"", []
+    for a in arrays:
+        if not a:
+            offsets.append(0)
+            continue
+        pad = (-at) % 8
+        body += b"\0" * pad
+        at += pad
+        offsets.append(at)
+        body += a
+        at += len(a)
+    return body, offsets
+
+
 def tressfx(ss, strand_uv=False, vertex_uv=False, thickness=False, colors=False):
     n, per = len(ss), len(ss[0])
     arrays = [struct.pack("<ffff", *p, 0.0 if i < 2 else 1.0) for s in ss
@@ -65,17 +82,7 @@ def tressfx(ss, strand_uv=False, vertex_uv=False, thickness=False, colors=False)
     layout.append(b"".join(struct.pack("<f", 0.02) for _ in ss) if thickness else b"")
     layout.append(b"".join(struct.pack("<ffff", 0.6, 0.4, 0.2, 1.0) for s in ss for _ in s)
                   if colors else b"")
-    body, offsets, at = b"", [], 160
-    for a in layout:
-        if not a:
-            offsets.append(0)
-            continue
-        pad = (-at) % 8
-        body += b"\0" * pad
-        at += pad
-        offsets.append(at)
-        body += a
-        at += len(a)
+    body, offsets = lay_out(layout, 160)
     head = struct.pack("<fII", 4.0, n, per) + struct.pack("<5I", *offsets)
     head = head.ljust(160, b"\0")
     return head + body
@@ -90,17 +97,7 @@ def tressfx3(ss, thickness=False, colors=False, guides=False, both_ends=0):
     layout.append(b"".join(struct.pack("<ffff", 0.6, 0.4, 0.2, 1.0) for s in ss for _ in s)
                   if colors else b"")
     layout.append(b"".join(struct.pack("<I", 0) for _ in ss) if guides else b"")
-    body, offsets, at = b"", [], 296
-    for a in layout:
-        if not a:
-            offsets.append(0)
-            continue
-        pad = (-at) % 8
-        body += b"\0" * pad
-        at += pad
-        offsets.append(at)
-        body += a
-        at += len(a)
+    body, offsets = lay_out(layout, 296)
     offsets.append(0)  # per-vertex texture coordinates
     head = struct.pack("<fIIII", 3.0, n, per, 4, both_ends) + b"\0" * 124
     head += struct.pack("<6I", *offsets)

@@ -77,7 +77,7 @@ TEST_CASE(
   csm::test::RenderScene scene(p, 2);
   const csm::GroomReport& report = scene.sim().groomReport();
   INFO(csm::groomReportText(report));
-  CHECK(report.fileStrands == 30000 + 1);  // the reader dropped the repeated and the NaN ones
+  CHECK(report.fileStrands == 30000 + 3);
   CHECK(report.repair.droppedStrands == 3);
   CHECK(scene.sim().solver().strandCount() == 30000);
   // Four points a strand, resampled to the scene's fewest particles a strand.
