@@ -35,7 +35,8 @@ struct Links {
 
 GroomReadResult readObjCurves(std::span<const std::byte> bytes, std::string_view name) {
   GroomReadResult result;
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  const std::string_view text = detail::withoutBom(
+      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   auto fail = [&](size_t line, const std::string& message) {
     result.error = std::string(name) + ":" + std::to_string(line) + ": " + message;
     return result;
@@ -118,12 +119,15 @@ GroomReadResult readObjCurves(std::span<const std::byte> bytes, std::string_view
   for (size_t e = 0; e < edges.size(); ++e)
     for (const uint32_t v : {edges[e].a, edges[e].b}) {
       Links& l = links[v];
-      if (l.count == 2)
+      if (l.count == 2) {
+        const size_t a = edges[size_t(l.edge[0])].line, b = edges[size_t(l.edge[1])].line;
+        const std::string before = a == b
+                                       ? "two on line " + std::to_string(a)
+                                       : "lines " + std::to_string(a) + " and " + std::to_string(b);
         return fail(edges[e].line,
                     "vertex " + std::to_string(v + 1) + " (line " + std::to_string(vertexLine[v]) +
-                        ") has a third edge here, after lines " +
-                        std::to_string(edges[size_t(l.edge[0])].line) + " and " +
-                        std::to_string(edges[size_t(l.edge[1])].line) + ": a strand cannot branch");
+                        ") has a third edge here, after " + before + ": a strand cannot branch");
+      }
       l.edge[l.count++] = int64_t(e);
     }
   auto other = [&](size_t e, uint32_t v) { return edges[e].a == v ? edges[e].b : edges[e].a; };

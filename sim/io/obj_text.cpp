@@ -20,6 +20,10 @@ std::vector<std::pair<size_t, std::string_view>> objLines(std::string_view text)
   return out;
 }
 
+std::string_view withoutBom(std::string_view text) {
+  return text.substr(0, 3) == "\xEF\xBB\xBF" ? text.substr(3) : text;
+}
+
 std::vector<std::string_view> objTokens(std::string_view line) {
   std::vector<std::string_view> out;
   size_t i = 0;

@@ -15,6 +15,9 @@ namespace csm::io::detail {
 // own would check other lines than the ones it reads.
 std::vector<std::pair<size_t, std::string_view>> objLines(std::string_view text);
 
+// The text without a UTF-8 byte order mark, which some Windows tools write before the first line.
+std::string_view withoutBom(std::string_view text);
+
 // The tokens of a line, split at spaces and tabs.
 std::vector<std::string_view> objTokens(std::string_view line);
 

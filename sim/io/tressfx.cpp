@@ -209,7 +209,8 @@ bool textNumber(std::string_view token, double& value) {
 
 GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name) {
   GroomReadResult result;
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  const std::string_view text = detail::withoutBom(
+      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   const auto lines = detail::objLines(text);  // '#' cut: the 1.#INF tokens are read below
   auto fail = [&](size_t line, const std::string& message) {
     result.error = std::string(name) + ":" + std::to_string(line) + ": " + message;
@@ -343,8 +344,8 @@ GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name
 }  // namespace
 
 bool isTressFxText(std::span<const std::byte> bytes) {
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data()),
-                              std::min<size_t>(bytes.size(), 256));
+  const std::string_view text = detail::withoutBom(std::string_view(
+      reinterpret_cast<const char*>(bytes.data()), std::min<size_t>(bytes.size(), 256)));
   auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
   size_t i = 0;
   while (i < text.size() && space(text[i])) ++i;

@@ -275,6 +275,12 @@ TEST_CASE("OBJ curves: Blender's edges and polylines read to the same strands", 
   const Groom g = sampleStrands();
   checkSame(csm::io::readObjCurves(bytesOf(objEdges(g)), "edges.obj"), g);
   checkSame(csm::io::readObjCurves(bytesOf(objPolylines(g)), "lines.obj"), g);
+  // Windows tools: a byte order mark, lines ending in CR LF.
+  std::string windows = "\xEF\xBB\xBF" + objPolylines(g);
+  for (size_t at = windows.find('\n'); at != std::string::npos; at = windows.find('\n', at + 2))
+    windows.insert(at, "\r");
+  checkSame(csm::io::readObjCurves(bytesOf(windows), "windows.obj"), g);
+  checkSame(csm::io::readTressFx(bytesOf("\xEF\xBB\xBF" + tressFxText(g, "")), "bom.tfx"), g);
   SECTION("edges in any order and either direction, negative and v/vt indices, faces aside") {
     // Strand 0 as polyline pieces, backwards edges, relative indices, with a face and normals
     // that are not hair.
