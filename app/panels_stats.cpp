@@ -160,8 +160,11 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
     ImGui::Text("groom file: %zu strands; resampling saved %zu of %zu points", groom.fileStrands,
                 groom.savedPoints(), groom.filePoints);
     if (const std::string repairs = groomReportText(groom); !repairs.empty()) {
-      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "dropped %zu strands, merged %zu points",
-                         groom.repair.droppedStrands, groom.repair.mergedPoints);
+      // The summary line; the notes (with their bytes or lines) as a tooltip.
+      const std::string summary = repairs.substr(0, repairs.find('\n'));
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", summary.c_str());
+      ImGui::PopTextWrapPos();
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", repairs.c_str());
     }
   }

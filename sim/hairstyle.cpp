@@ -660,6 +660,20 @@ bool fitFileGroom(const Config& c, Groom g, const std::string& path, Groom& out,
     }
   }
   at("placing", 1.0);
+  if (r.pushedParticles > 0) {
+    // Particles pushed from inside land on the surface nearest each: a run of them (a strand
+    // the file drew through the head) lands on one point. Merged again, counted again.
+    r.repair.add(io::repairGroom(g, repair));
+    if (g.strandCount() == 0) {
+      if (error)
+        *error = path +
+                 ": no strand is left: every strand lies inside the head, once fitted to "
+                 "it (scale " +
+                 std::to_string(fitted.scale) +
+                 "); check hairstyle.import_scale, import_rotation and import_offset";
+      return false;
+    }
+  }
   r.simulatedPoints = g.pointCount();
   out = std::move(g);
   return true;

@@ -227,7 +227,8 @@ std::string stiffnessText(const StiffnessInfo& info) {
   std::snprintf(buf, sizeof buf, "%d steps of %.3g ms", info.plan.substeps, 1000.0 * info.plan.h);
   std::string s = buf;
   s += ", alpha " + range(info.alphaMin, info.alphaMax, "%.3g");
-  s += ", " + range(info.windowMin, info.windowMax, "%.0f") + " particles per side";
+  s += ", " + range(info.windowMin, info.windowMax, "%.0f") +
+       (info.windowMax == 1 ? " particle per side" : " particles per side");
   if (info.model == StiffnessModel::Calibrated)
     s += ", k " + range(info.rateMin, info.rateMax, "%.3g") + " /s^2";
   return s;

@@ -53,11 +53,13 @@ std::string floatText(float value) {
 }
 
 void finishGroom(GroomReadResult& result, Groom groom, std::string_view name,
-                 std::function<std::string(size_t point, int axis)> where) {
+                 std::function<std::string(size_t point, int axis)> where,
+                 std::vector<size_t> fileStrand) {
   const size_t strands = groom.strandCount() + result.repair.droppedStrands;
   RepairOptions options;
   options.name = std::string(name);
   options.where = std::move(where);
+  options.fileStrand = std::move(fileStrand);
   result.repair.add(repairGroom(groom, options));
   if (groom.strandCount() == 0) {
     result.error = std::string(name) + ": no strand can be used: all " + std::to_string(strands) +

@@ -68,8 +68,11 @@ std::string floatText(float value);
 // The end of every reader: the first repair (io/repair.h: strands with a coordinate that is not
 // finite or with fewer than two distinct points dropped, repeated points merged), each note
 // placed in the file by `where`; sets result.groom, or result.error when no strand is left.
+// `fileStrand`, when given, is each strand's number in the file (a reader that dropped some
+// before), for the notes.
 void finishGroom(GroomReadResult& result, Groom groom, std::string_view name,
-                 std::function<std::string(size_t point, int axis)> where);
+                 std::function<std::string(size_t point, int axis)> where,
+                 std::vector<size_t> fileStrand = {});
 
 // "byte N" of a coordinate of point i when point i's x lies at byte base + stride * i.
 std::function<std::string(size_t point, int axis)> byteOfPoint(uint64_t base, uint64_t stride);

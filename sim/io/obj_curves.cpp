@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <unordered_set>
 #include <vector>
 
 #include "sim/io/obj_text.h"
@@ -27,8 +26,8 @@ struct Edge {
 
 // Each vertex's edges: at most two in a chain (indices into the edge list; -1: none).
 struct Links {
-  int64_t edge[2] = {-1, -1};
-  int count = 0;
+  int32_t edge[2] = {-1, -1};
+  int32_t count = 0;
 };
 
 }  // namespace
@@ -41,101 +40,107 @@ GroomReadResult readObjCurves(std::span<const std::byte> bytes, std::string_view
     result.error = std::string(name) + ":" + std::to_string(line) + ": " + message;
     return result;
   };
-  const auto lines = detail::objLines(text);
 
+  // Read element by element; nothing held grows faster than the vertices (each has at most two
+  // edges, checked as each edge comes), whatever the file holds.
   std::vector<glm::vec3> positions;
   std::vector<size_t> vertexLine;
+  std::vector<Links> links;
   std::vector<Edge> edges;
-  std::unordered_set<uint64_t> seen;
   GroomRepair notes;
-  std::vector<std::string_view> t;
-  for (size_t k = 0; k < lines.size(); ++k) {
-    const size_t line = lines[k].first;
-    t = detail::objTokens(lines[k].second);
-    // A trailing backslash continues the element on the next line (the OBJ specification).
-    while (!t.empty() && t.back() == "\\" && k + 1 < lines.size()) {
-      t.pop_back();
-      const auto more = detail::objTokens(lines[++k].second);
-      t.insert(t.end(), more.begin(), more.end());
-    }
-    if (t.empty()) continue;
-    if (t[0].find('\0') != std::string_view::npos) return fail(line, "a NUL byte; OBJ is text");
-    if (t[0] == "v") {
-      if (t.size() < 4)
-        return fail(line,
-                    "a vertex needs 3 coordinates, this one has " + std::to_string(t.size() - 1));
+  detail::LineCursor lines(text);
+  size_t line = 0;
+  std::string_view raw, keyword, token;
+  while (lines.next(line, raw)) {
+    detail::ElementTokens t(lines, detail::withoutComment(raw));
+    if (!t.next(keyword)) continue;
+    if (keyword.find('\0') != std::string_view::npos) return fail(line, "a NUL byte; OBJ is text");
+    if (keyword == "v") {
       double v[3];
-      for (int c = 0; c < 3; ++c)
-        if (!number(t[size_t(c) + 1], v[c]))
-          return fail(
-              line, "vertex coordinate \"" + std::string(t[size_t(c) + 1]) + "\" is not a number");
+      for (int c = 0; c < 3; ++c) {
+        if (!t.next(token))
+          return fail(line, "a vertex needs 3 coordinates, this one has " + std::to_string(c));
+        if (!number(token, v[c]))
+          return fail(line, "vertex coordinate \"" + std::string(token) + "\" is not a number");
+      }
+      t.drain();  // w, or the colours some tools write
       if (positions.size() >= kMaxPoints)
         return fail(line, "more than " + std::to_string(kMaxPoints) + " vertices");
       positions.emplace_back(float(v[0]), float(v[1]), float(v[2]));
       vertexLine.push_back(line);
-    } else if (t[0] == "l") {
-      if (t.size() < 3)
-        return fail(line, "a line element needs at least 2 vertices, this one has " +
-                              std::to_string(t.size() - 1));
+      links.emplace_back();
+    } else if (keyword == "l") {
       long previous = -1;
-      for (size_t i = 1; i < t.size(); ++i) {
-        const std::string_view ref = t[i].substr(0, t[i].find('/'));  // v or v/vt
+      size_t count = 0;
+      while (t.next(token)) {
+        ++count;
+        const std::string_view ref = token.substr(0, token.find('/'));  // v or v/vt
         long index = 0;
         if (!detail::parseIndex(ref, index))
           return fail(line, "line element index \"" + std::string(ref) + "\" is not an integer");
         // Negative indices count back from the last vertex read so far (OBJ's rule).
-        const long count = long(positions.size());
-        const long resolved = index < 0 ? count + index + 1 : index;
-        if (index == 0 || resolved < 1 || resolved > count)
+        const long vertices = long(positions.size());
+        const long resolved = index < 0 ? vertices + index + 1 : index;
+        if (index == 0 || resolved < 1 || resolved > vertices)
           return fail(line, "line element index " + std::to_string(index) +
-                                " is out of range: " + std::to_string(count) +
-                                (count == 1 ? " vertex" : " vertices") + " before it");
+                                " is out of range: " + std::to_string(vertices) +
+                                (vertices == 1 ? " vertex" : " vertices") + " before it");
         const long v = resolved - 1;
-        if (previous >= 0 && v != previous) {
-          const uint32_t a = uint32_t(std::min(previous, v)), b = uint32_t(std::max(previous, v));
-          if (seen.insert(uint64_t(a) << 32 | b).second) {
-            edges.push_back({uint32_t(previous), uint32_t(v), line});
-          } else if (notes.notes.size() < GroomRepair::kMaxNotes) {
-            notes.notes.push_back(std::string(name) + ":" + std::to_string(line) + ": the edge " +
-                                  std::to_string(a + 1) + "-" + std::to_string(b + 1) +
-                                  " is given again: read once");
-          }
-        }
+        const long from = previous;
         previous = v;
+        if (from < 0 || v == from) continue;  // the first vertex, or a point to itself
+        // The same edge again is read once; a third edge at a vertex is a branch.
+        Links &la = links[size_t(from)], &lb = links[size_t(v)];
+        bool again = false;
+        for (int i = 0; i < la.count; ++i) {
+          const Edge& e = edges[size_t(la.edge[i])];
+          again = again || e.a == uint32_t(v) || e.b == uint32_t(v);
+        }
+        if (again) {
+          if (notes.notes.size() < GroomRepair::kMaxNotes)
+            notes.notes.push_back(std::string(name) + ":" + std::to_string(line) + ": the edge " +
+                                  std::to_string(from + 1) + "-" + std::to_string(v + 1) +
+                                  " is given again: read once");
+          continue;
+        }
+        for (const long end : {from, v}) {
+          const Links& l = links[size_t(end)];
+          if (l.count < 2) continue;
+          const size_t a = edges[size_t(l.edge[0])].line, b = edges[size_t(l.edge[1])].line;
+          const std::string before =
+              a == b ? "two on line " + std::to_string(a)
+                     : "lines " + std::to_string(a) + " and " + std::to_string(b);
+          return fail(line, "vertex " + std::to_string(end + 1) + " (line " +
+                                std::to_string(vertexLine[size_t(end)]) +
+                                ") has a third edge here, after " + before +
+                                ": a strand cannot branch");
+        }
+        la.edge[la.count++] = int32_t(edges.size());
+        lb.edge[lb.count++] = int32_t(edges.size());
+        edges.push_back({uint32_t(from), uint32_t(v), line});
       }
-    } else if (t[0] == "cstype" || t[0] == "curv" || t[0] == "curv2") {
-      return fail(line, "free-form curves (\"" + std::string(t[0]) +
+      if (count < 2)
+        return fail(line, "a line element needs at least 2 vertices, this one has " +
+                              std::to_string(count));
+    } else if (keyword == "cstype" || keyword == "curv" || keyword == "curv2") {
+      return fail(line, "free-form curves (\"" + std::string(keyword) +
                             "\") are not read; export the hair as polylines (\"l\" elements)");
+    } else {
+      // f, o, g, s, vt, vn, mtllib, usemtl, p and the rest: not hair curves.
+      t.drain();
     }
-    // v* other than v, f, o, g, s, mtllib, usemtl, p and the rest: not hair curves.
   }
   if (edges.empty())
-    return fail(lines.empty() ? 1 : lines.back().first,
+    return fail(lines.lastNonBlank(),
                 "no line elements (\"l\"): hair is read from a groom's curves; a head mesh "
                 "goes in head.mesh");
 
-  // Each vertex's edges; a third is a branch.
-  std::vector<Links> links(positions.size());
-  for (size_t e = 0; e < edges.size(); ++e)
-    for (const uint32_t v : {edges[e].a, edges[e].b}) {
-      Links& l = links[v];
-      if (l.count == 2) {
-        const size_t a = edges[size_t(l.edge[0])].line, b = edges[size_t(l.edge[1])].line;
-        const std::string before = a == b
-                                       ? "two on line " + std::to_string(a)
-                                       : "lines " + std::to_string(a) + " and " + std::to_string(b);
-        return fail(edges[e].line,
-                    "vertex " + std::to_string(v + 1) + " (line " + std::to_string(vertexLine[v]) +
-                        ") has a third edge here, after " + before + ": a strand cannot branch");
-      }
-      l.edge[l.count++] = int64_t(e);
-    }
   auto other = [&](size_t e, uint32_t v) { return edges[e].a == v ? edges[e].b : edges[e].a; };
   // The edge of v that is not `from` (-1: v ends the chain).
   auto next = [&](uint32_t v, int64_t from) {
     const Links& l = links[v];
     for (int i = 0; i < l.count; ++i)
-      if (l.edge[i] != from) return l.edge[i];
+      if (l.edge[i] != from) return int64_t(l.edge[i]);
     return int64_t(-1);
   };
 

@@ -46,7 +46,8 @@ GroomRepair repairGroom(Groom& groom, const RepairOptions& options) {
     if (report.notes.size() >= GroomRepair::kMaxNotes) return;
     std::string line = options.name.empty() ? std::string() : options.name + ": ";
     if (options.where) line += options.where(point, axis) + ": ";
-    report.notes.push_back(line + "strand " + std::to_string(strand) + " " + what);
+    const size_t number = strand < options.fileStrand.size() ? options.fileStrand[strand] : strand;
+    report.notes.push_back(line + "strand " + std::to_string(number) + " " + what);
   };
 
   Groom out;

@@ -41,10 +41,13 @@ struct RepairOptions {
   std::function<std::string(size_t point, int axis)> where;
   // Prefix of every note: the file's name.
   std::string name;
+  // Strand s's number in the notes (the file's, when strands were dropped before); empty: s.
+  std::vector<size_t> fileStrand;
 };
 
 // Repairs `groom` in place (per-strand colour and thickness follow their strands) and says
-// what it did. Strands are numbered in notes as they were in `groom` before the repair.
+// what it did. Strands are numbered in notes as options.fileStrand says, else as they were in
+// `groom` before the repair.
 GroomRepair repairGroom(Groom& groom, const RepairOptions& options);
 
 }  // namespace csm::io

@@ -211,17 +211,12 @@ GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name
   GroomReadResult result;
   const std::string_view text = detail::withoutBom(
       std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-  const auto lines = detail::objLines(text);  // '#' cut: the 1.#INF tokens are read below
+  // Line by line, a few tokens a line: nothing held grows with a line's length. Comments are not
+  // part of the format (and "1.#INF" holds a '#').
+  detail::LineCursor lines(text);
   auto fail = [&](size_t line, const std::string& message) {
     result.error = std::string(name) + ":" + std::to_string(line) + ": " + message;
     return result;
-  };
-  auto raw = [&](size_t k) {
-    // The line without the comment cut: "1.#INF" holds a '#'.
-    const char* begin = lines[k].second.data();
-    size_t end = size_t(begin - text.data());
-    while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
-    return std::string_view(begin, size_t(text.data() + end - begin));
   };
   auto numbers = [&](const std::vector<std::string_view>& t, size_t from, size_t count,
                      const char* what, double* out) -> std::string {
@@ -233,20 +228,15 @@ GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name
         return std::string(what) + ": \"" + std::string(t[from + i]) + "\" is not a number";
     return {};
   };
-
-  // Where the file ends, for the messages: its last line with something on it.
-  size_t lastLine = 1;
-  for (const auto& [number, line] : lines)
-    if (!detail::objTokens(line).empty()) lastLine = number;
+  size_t line = 0;
+  std::string_view raw;
 
   float scale = 1.0f;
   glm::vec3 rotation(0.0f), translation(0.0f);
-  size_t k = 0;
   uint64_t strands = 0;
   bool haveStrands = false;
-  for (; k < lines.size() && !haveStrands; ++k) {
-    const auto t = detail::objTokens(lines[k].second);
-    const size_t line = lines[k].first;
+  while (!haveStrands && lines.next(line, raw)) {
+    const auto t = detail::objTokens(raw, 4);
     if (t.empty()) continue;
     double v[3];
     if (t[0] == "version" || t[0] == "scale") {
@@ -277,26 +267,27 @@ GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name
     // maxRadiusAroundGuideHair) say how AMD's runtime makes follow hairs: nothing to read.
   }
   if (!haveStrands)
-    return fail(lastLine,
+    return fail(lines.lastNonBlank(),
                 "no \"numStrands\" line; a TressFX text file names its strand count before the "
                 "strands");
 
   const glm::mat3 turn = rollPitchYaw(rotation);
   Groom groom;
   GroomRepair shortOnes;  // strands of fewer than two vertices: dropped here
-  std::vector<size_t> pointLine;
+  std::vector<size_t> pointLine, fileStrand;
   std::vector<glm::vec3> strand;
   for (uint64_t s = 0; s < strands; ++s) {
     // The strand line: "strand i numVerts n [texcoord u v]"; blank lines and "is sorted" before.
     std::vector<std::string_view> t;
-    for (; k < lines.size(); ++k) {
-      t = detail::objTokens(lines[k].second);
-      if (!t.empty() && t[0] != "is") break;
+    bool found = false;
+    while (!found && lines.next(line, raw)) {
+      t = detail::objTokens(raw, 4);
+      found = !t.empty() && t[0] != "is";
     }
-    if (k == lines.size())
-      return fail(lastLine, "the file ends after " + std::to_string(s) + " of the " +
-                                std::to_string(strands) + " strands numStrands names");
-    const size_t line = lines[k].first;
+    if (!found)
+      return fail(lines.lastNonBlank(), "the file ends after " + std::to_string(s) + " of the " +
+                                            std::to_string(strands) + " strands numStrands names");
+    const size_t strandLine = line;
     long n = 0;
     if (t[0] != "strand" || t.size() < 4 || t[2] != "numVerts" || !detail::parseIndex(t[3], n) ||
         n < 0)
@@ -305,39 +296,43 @@ GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name
     if (groom.points.size() + uint64_t(n) > kMaxPoints)
       return fail(
           line, "the strands so far exceed the limit of " + std::to_string(kMaxPoints) + " points");
-    ++k;
     strand.clear();
-    for (long i = 0; i < n; ++i, ++k) {
-      if (k == lines.size())
-        return fail(lastLine, "the file ends inside strand " + std::to_string(s) + " (" +
-                                  std::to_string(i) + " of its " + std::to_string(n) +
-                                  " vertices)");
-      const auto p = detail::objTokens(raw(k));
+    for (long i = 0; i < n; ++i) {
+      if (!lines.next(line, raw))
+        return fail(lines.lastNonBlank(), "the file ends inside strand " + std::to_string(s) +
+                                              " (" + std::to_string(i) + " of its " +
+                                              std::to_string(n) + " vertices)");
+      const auto p = detail::objTokens(raw, 3);
       double v[3];
-      if (auto e = numbers(p, 0, 3, "a vertex", v); !e.empty()) return fail(lines[k].first, e);
+      if (auto e = numbers(p, 0, 3, "a vertex", v); !e.empty()) return fail(line, e);
       const glm::vec3 point{float(v[0]), float(v[1]), float(v[2])};
       // A point that is not finite stays as written: the repair names its value.
       const bool finite =
           std::isfinite(point.x) && std::isfinite(point.y) && std::isfinite(point.z);
       strand.push_back(finite ? turn * (scale * point) + translation : point);
-      pointLine.push_back(lines[k].first);
+      pointLine.push_back(line);
     }
     if (strand.size() < 2) {
       ++shortOnes.droppedStrands;
       if (shortOnes.notes.size() < GroomRepair::kMaxNotes)
-        shortOnes.notes.push_back(std::string(name) + ":" + std::to_string(line) + ": strand " +
-                                  std::to_string(s) + " dropped: it has " +
+        shortOnes.notes.push_back(std::string(name) + ": line " + std::to_string(strandLine) +
+                                  ": strand " + std::to_string(s) + " dropped: it has " +
                                   std::to_string(strand.size()) + " vertices");
       pointLine.resize(pointLine.size() - strand.size());
       continue;
     }
     groom.addStrand(strand);
+    fileStrand.push_back(size_t(s));
   }
-  if (groom.strandCount() == 0) return fail(lastLine, "no strand has 2 vertices or more");
+  if (groom.strandCount() == 0)
+    return fail(lines.lastNonBlank(), "no strand has 2 vertices or more");
   result.repair = shortOnes;
-  detail::finishGroom(result, std::move(groom), name, [pointLine](size_t point, int) {
-    return "line " + std::to_string(point < pointLine.size() ? pointLine[point] : 0);
-  });
+  detail::finishGroom(
+      result, std::move(groom), name,
+      [pointLine](size_t point, int) {
+        return "line " + std::to_string(point < pointLine.size() ? pointLine[point] : 0);
+      },
+      std::move(fileStrand));
   return result;
 }
 

@@ -110,10 +110,18 @@ TEST_CASE("Import: roots land on the scalp of every head, and no particle starts
         for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i)
           inside += headDistance(c, g.points[i]) < 0.0;
       }
+      // Particles pushed from inside onto one surface point are merged: no segment is shorter
+      // than the import's merge distance.
+      double shortest = 1e30;
+      for (size_t s = 0; s < g.strandCount(); ++s)
+        for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i)
+          shortest = std::min(shortest, double(glm::length(g.points[i] - g.points[i - 1])));
       INFO(head << ": roots up to " << worstRoot << " m from the surface, " << inside
-                << " particles inside, " << report.pushedParticles << " pushed out");
+                << " particles inside, " << report.pushedParticles
+                << " pushed out, the shortest segment " << shortest << " m");
       CHECK(worstRoot < 1e-3);
       CHECK(inside == 0);
+      CHECK(shortest > kMergeShare * double(c.hairstyle.segmentLength));
     }
   }
 }

@@ -198,6 +198,18 @@ TEST_CASE("TressFX 1.x and 2.x text files read, with the 2.x transform", "[io][t
     CHECK_THAT(r.repair.notes[0], Catch::Contains("t.tfx: line 14: strand 1 dropped: coordinate "
                                                   "x of point 0 is -inf"));
   }
+  SECTION("notes name strands as the file numbers them, after a strand dropped for its size") {
+    const auto r = csm::io::readTressFx(
+        bytesOf("numStrands 3\nstrand 0 numVerts 1\n0 0 0\nstrand 1 numVerts 2\n0 0 nan\n1 1 1\n"
+                "strand 2 numVerts 2\n0 0 0\n1 1 1\n"),
+        "t.tfx");
+    INFO(r.error);
+    REQUIRE(r.groom);
+    CHECK(r.groom->strandCount() == 1);
+    REQUIRE(r.repair.notes.size() == 2);
+    CHECK_THAT(r.repair.notes[0], Catch::Contains("t.tfx: line 2: strand 0 dropped: it has 1"));
+    CHECK_THAT(r.repair.notes[1], Catch::Contains("t.tfx: line 5: strand 1 dropped: coordinate z"));
+  }
   SECTION("refused, with the line") {
     CHECK_THAT(errorOf(csm::io::readTressFx(
                    bytesOf("version 2.0\nbothEndsImmovable 1\nnumStrands 1\n"), "t.tfx")),
