@@ -34,14 +34,15 @@ bpy.ops.mesh.primitive_ico_sphere_add(radius=0.1, subdivisions=4)
 head = bpy.context.active_object
 
 # The scalp as a vertex group that weights the root density: everything above a hairline
-# that is high at the forehead (-y; the normal's z above 0.7), above the ears on the sides
-# (0.3) and just below the equator at the back (-0.1), with a soft edge of 0.15 in the
-# normal's z. The sphere has no face: hair grown lower at the front would fall through the
-# face of the head it is simulated on.
+# that is high at the forehead and the temples (-y; the normal's z above 0.68 half way to the
+# front), above the ears on the sides (0.3) and just below the equator at the back (-0.1), with
+# a soft edge of 0.15 in the normal's z. The sphere has no face: hair grown lower at the front
+# would fall through the face of the head it is simulated on.
 scalp = head.vertex_groups.new(name="scalp")
 for v in head.data.vertices:
     n = v.co.normalized()
-    weight = min(1.0, max(0.0, (n.z - (0.3 - 0.4 * n.y)) / 0.15))
+    hairline = 0.3 - 0.4 * n.y if n.y > -0.2 else 0.38 + (-0.2 - n.y)  # steeper at the temples
+    weight = min(1.0, max(0.0, (n.z - hairline) / 0.15))
     if weight > 0.0:
         scalp.add([v.index], weight, "REPLACE")
 
