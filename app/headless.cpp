@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "app/capture.h"
+#include "app/import_progress.h"
 #include "sim/contacts.h"
 #include "sim/frame_driver.h"
 #include "app/metrics.h"
@@ -76,22 +77,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     return 1;
   }
   Simulation sim(std::move(solver));
-  // A long groom import says where it stands on stderr once it has taken a second: each new
-  // stage, and twice a second at most within one.
-  const auto importStart = Clock::now();
-  auto lastImportLine = importStart;
-  std::string lastStage;
-  if (!options.quiet)
-    sim.setImportProgress([&](std::string_view stage, double done) {
-      const auto now = Clock::now();
-      if (now - importStart < std::chrono::seconds(1) ||
-          (stage == lastStage && now - lastImportLine < std::chrono::milliseconds(500)))
-        return;
-      lastImportLine = now;
-      lastStage = stage;
-      std::fprintf(stderr, "csmhair: importing the groom: %.*s, %.0f %%\n", int(stage.size()),
-                   stage.data(), 100.0 * done);
-    });
+  if (!options.quiet) sim.setImportProgress(ImportProgressPrinter());
   if (!sim.load(scene.preset.scene, scene.baseDir, &error)) {
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
     return 2;

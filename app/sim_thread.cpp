@@ -1,5 +1,6 @@
 #include "app/sim_thread.h"
 
+#include "app/import_progress.h"
 #include "sim/frame_driver.h"
 #include "sim/io/hair_sequence.h"
 #include "sim/simulation.h"
@@ -65,13 +66,15 @@ bool SimThread::makeSolver(std::string* error, Started* started) {
   }
   started->solver = std::string(solver->name());
   sim_ = std::make_unique<Simulation>(std::move(solver));
-  sim_->setImportProgress([this](std::string_view stage, double done) {
-    {
-      std::lock_guard lock(importMutex_);
-      import_ = {std::string(stage), done};
-    }
-    if (options_.wake) options_.wake();
-  });
+  sim_->setImportProgress(
+      [this, say = ImportProgressPrinter()](std::string_view stage, double done) mutable {
+        if (options_.sayImportProgress) say(stage, done);
+        {
+          std::lock_guard lock(importMutex_);
+          import_ = {std::string(stage), done};
+        }
+        if (options_.wake) options_.wake();
+      });
   DriverOptions driving;
   // Every frame sampled: a few numbers per work group, fenced; the Stats panel's strain and
   // the NaN check follow each frame a few frames late.

@@ -136,6 +136,8 @@ class SimThread {
     bool recordMetrics = false;
     // Called after each publication, from the simulation thread (glfwPostEmptyEvent).
     std::function<void()> wake;
+    // Say a long groom import's progress on stderr too (app/import_progress.h).
+    bool sayImportProgress = false;
   };
   struct Started {
     std::string solver;   // the name of the solver it runs

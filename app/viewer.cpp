@@ -84,6 +84,8 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   so.frameLimit = options.frameLimit;
   so.recordMetrics = options.recordMetrics;
   so.wake = [] { glfwPostEmptyEvent(); };
+  // The first scene opens before the window shows: its import says where it stands on stderr.
+  so.sayImportProgress = !options.quiet;
   if (options.solver == "gpu") {
     std::string why;
     so.context = v->window_->createShared(&why);

@@ -842,3 +842,49 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   CHECK(v->messages().back().text.rfind("cannot run B: A was recorded on another groom", 0) == 0);
   removeTemp(dir);
 }
+
+TEST_CASE("window: a groom file imported while the window runs shows its progress, then clears",
+          "[window][import]") {
+  const fs::path dir = tempDir();
+  // 20,000 strands x 100 points: long enough an import for the UI to draw a few frames of it.
+  Groom big;
+  std::vector<glm::vec3> strand(100);
+  for (int s = 0; s < 20000; ++s) {
+    const float a = 2.399963f * float(s), z = 1.0f - 0.9f * (float(s) + 0.5f) / 20000.0f;
+    const float r = std::sqrt(1.0f - z * z);
+    const glm::vec3 n(r * std::cos(a), z, r * std::sin(a));
+    for (int i = 0; i < 100; ++i)
+      strand[size_t(i)] =
+          0.1f * n + glm::vec3(0.0f, -0.002f * float(i), 0.0f) + 0.001f * float(i) * n;
+    big.addStrand(strand);
+  }
+  const std::string file = (dir / "big.hair").string();
+  REQUIRE(csm::io::writeCyHair(file, big, nullptr));
+
+  std::unique_ptr<Viewer> v = makeViewer();
+  Preset c = defaultPreset();
+  c.scene.hairstyle.strands = 300;
+  std::string error;
+  REQUIRE(v->open(c, "", "", &error));
+  runSimFrames(*v, 1);
+  CHECK(v->importStatus().stage.empty());
+  REQUIRE(v->setParam("hairstyle.strands", "1000000"));
+  REQUIRE(v->setParam("hairstyle.file", file));
+  // The window keeps drawing while the thread imports; the banner's stages come and go.
+  std::vector<std::string> stages;
+  const auto deadline = Clock::now() + std::chrono::minutes(2);
+  while (v->simFrame().strands != 20000 && Clock::now() < deadline) {
+    v->runFrame();
+    const std::string stage = v->importStatus().stage;
+    if (!stage.empty() && (stages.empty() || stages.back() != stage)) stages.push_back(stage);
+  }
+  INFO("stages seen:" << [&] {
+    std::string s;
+    for (const std::string& x : stages) s += " " + x;
+    return s;
+  }());
+  REQUIRE(v->simFrame().strands == 20000);
+  CHECK(!stages.empty());
+  CHECK(v->importStatus().stage.empty());
+  fs::remove_all(dir);
+}
