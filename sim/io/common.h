@@ -82,6 +82,16 @@ std::function<std::string(size_t point, int axis)> byteOfPoint(uint64_t base, ui
 std::optional<std::vector<std::byte>> readFileBytes(const std::string& path, uint64_t maxBytes,
                                                     std::string* error);
 
+// Reads the file at `path` (refusing one over kMaxFileBytes before allocating) and hands its
+// bytes to `read(bytes, path)`; a file that cannot be read is an error naming it.
+template <class Reader>
+GroomReadResult readGroomFile(const std::string& path, Reader read) {
+  GroomReadResult result;
+  const auto bytes = readFileBytes(path, kMaxFileBytes, &result.error);
+  if (!bytes) return result;
+  return read(std::span<const std::byte>(*bytes), std::string_view(path));
+}
+
 // Writes `bytes` to path + ".tmp", then renames it over `path`, so a reader never sees a
 // half-written groom and a failed write leaves the old file intact.
 bool writeFileAtomically(const std::string& path, std::span<const std::byte> bytes,

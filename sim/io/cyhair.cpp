@@ -237,10 +237,9 @@ GroomReadResult readCyHair(std::span<const std::byte> bytes, std::string_view na
 }
 
 GroomReadResult readCyHair(const std::string& path) {
-  GroomReadResult result;
-  auto bytes = detail::readFileBytes(path, kMaxFileBytes, &result.error);
-  if (!bytes) return result;
-  return readCyHair(*bytes, path);
+  return detail::readGroomFile(path, [](std::span<const std::byte> bytes, std::string_view name) {
+    return readCyHair(bytes, name);
+  });
 }
 
 std::optional<std::vector<std::byte>> encodeCyHair(const Groom& groom, std::string* error) {

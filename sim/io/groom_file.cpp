@@ -30,23 +30,23 @@ GroomFormat detectGroomFormat(std::string_view path, std::span<const std::byte> 
 }
 
 GroomReadResult readGroom(const std::string& path) {
-  GroomReadResult result;
-  auto bytes = detail::readFileBytes(path, kMaxFileBytes, &result.error);
-  if (!bytes) return result;
-  switch (detectGroomFormat(path, *bytes)) {
-    case GroomFormat::CyHair:
-      return readCyHair(*bytes, path);
-    case GroomFormat::TressFx:
-      return readTressFx(*bytes, path);
-    case GroomFormat::ObjCurves:
-      return readObjCurves(*bytes, path);
-    case GroomFormat::Unknown:
-      break;
-  }
-  result.error = path +
-                 ": unknown groom format; expected a cyHair file (signature \"HAIR\", .hair), a "
-                 "TressFX file (.tfx, any version) or OBJ curves (.obj)";
-  return result;
+  return detail::readGroomFile(path, [](std::span<const std::byte> bytes, std::string_view name) {
+    switch (detectGroomFormat(name, bytes)) {
+      case GroomFormat::CyHair:
+        return readCyHair(bytes, name);
+      case GroomFormat::TressFx:
+        return readTressFx(bytes, name);
+      case GroomFormat::ObjCurves:
+        return readObjCurves(bytes, name);
+      case GroomFormat::Unknown:
+        break;
+    }
+    GroomReadResult result;
+    result.error = std::string(name) +
+                   ": unknown groom format; expected a cyHair file (signature \"HAIR\", .hair), "
+                   "a TressFX file (.tfx, any version) or OBJ curves (.obj)";
+    return result;
+  });
 }
 
 bool writeGroom(const std::string& path, const Groom& groom, std::string* error) {

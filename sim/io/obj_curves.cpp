@@ -191,10 +191,9 @@ GroomReadResult readObjCurves(std::span<const std::byte> bytes, std::string_view
 }
 
 GroomReadResult readObjCurves(const std::string& path) {
-  GroomReadResult result;
-  auto bytes = detail::readFileBytes(path, kMaxFileBytes, &result.error);
-  if (!bytes) return result;
-  return readObjCurves(*bytes, path);
+  return detail::readGroomFile(path, [](std::span<const std::byte> bytes, std::string_view name) {
+    return readObjCurves(bytes, name);
+  });
 }
 
 }  // namespace csm::io

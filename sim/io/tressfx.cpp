@@ -367,10 +367,9 @@ GroomReadResult readTressFx(std::span<const std::byte> bytes, std::string_view n
 }
 
 GroomReadResult readTressFx(const std::string& path) {
-  GroomReadResult result;
-  auto bytes = detail::readFileBytes(path, kMaxFileBytes, &result.error);
-  if (!bytes) return result;
-  return readTressFx(*bytes, path);
+  return detail::readGroomFile(path, [](std::span<const std::byte> bytes, std::string_view name) {
+    return readTressFx(bytes, name);
+  });
 }
 
 }  // namespace csm::io
