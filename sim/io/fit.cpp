@@ -85,9 +85,7 @@ Ball ball4(const DVec& p0, const DVec& p1, const DVec& p2, const DVec& p3) {
   return best;
 }
 
-}  // namespace
-
-glm::mat3 fitRotation(const glm::vec3& degrees) {
+glm::mat3 rotationXyz(const glm::vec3& degrees) {
   const glm::vec3 r = glm::radians(degrees);
   const float cx = std::cos(r.x), sx = std::sin(r.x);
   const float cy = std::cos(r.y), sy = std::sin(r.y);
@@ -98,6 +96,8 @@ glm::mat3 fitRotation(const glm::vec3& degrees) {
   const glm::mat3 rz({cz, sz, 0}, {-sz, cz, 0}, {0, 0, 1});
   return rz * ry * rx;
 }
+
+}  // namespace
 
 Sphere boundingSphere(const std::vector<glm::vec3>& points) {
   if (points.empty()) return {glm::vec3(0.0f), 0.0f};
@@ -147,7 +147,7 @@ FitReport fitToHead(Groom& groom, const FitOptions& options) {
       *std::max_element(spheres.begin(), spheres.end(),
                         [](const Sphere& a, const Sphere& b) { return a.radius < b.radius; });
 
-  const glm::mat3 rotation = fitRotation(options.rotationDeg);
+  const glm::mat3 rotation = rotationXyz(options.rotationDeg);
   float scale = options.scale > 0.0f ? options.scale : 1.0f;
   glm::vec3 translation(0.0f);
   if (options.autoFit && groom.strandCount() > 0) {

@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <vector>
 
-#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include "sim/config.h"
@@ -55,9 +54,6 @@ struct FitReport {
 // With autoFit and fewer than two distinct roots the scale cannot be inferred: 1 is used
 // unless `scale` is given.
 FitReport fitToHead(Groom& groom, const FitOptions& options);
-
-// The rotation fitToHead applies: degrees about X, then Y, then Z (R = Rz * Ry * Rx).
-glm::mat3 fitRotation(const glm::vec3& degrees);
 
 // The smallest sphere containing all points (Welzl 1991, iterative form, in double).
 // Exposed for tests and tools; empty input gives a zero sphere at the origin.
