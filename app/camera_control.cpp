@@ -10,7 +10,7 @@
 
 #include "render/renderer.h"
 #include "app/params.h"
-#include "sim/head_shape.h"
+#include "sim/head/head_model.h"
 
 namespace csm {
 namespace {
@@ -55,7 +55,8 @@ void zoomCamera(CameraConfig& camera, float steps) {
   camera.distance = clampToParam("camera.distance", camera.distance * std::pow(0.9f, steps));
 }
 
-void frameHead(CameraConfig& camera, const Config& config, const Pose& head) {
+void frameHead(CameraConfig& camera, const Config& config, const HeadModel& model,
+               const Pose& head) {
   // A box around the head spheres, the scalp's grown by the longest strand (hair can reach
   // that far from it in any direction); the camera aims at its centre and backs off until
   // its largest half-extent fits the vertical field of view.
@@ -64,7 +65,7 @@ void frameHead(CameraConfig& camera, const Config& config, const Pose& head) {
     lo = glm::min(lo, c - r);
     hi = glm::max(hi, c + r);
   };
-  const std::vector<Sphere>& spheres = headSpheres(config);
+  const std::vector<Sphere>& spheres = model.spheres();
   for (const Sphere& s : spheres) add(glm::dvec3(s.center), s.radius);
   const double scalp = spheres.empty() ? 0.1 : spheres.front().radius;
   const double hair = config.hairstyle.file.empty() ? config.hairstyle.lengthMax : 2.0 * scalp;

@@ -4,8 +4,9 @@
 #pragma once
 
 #include "render/view_config.h"
-#include "sim/config.h"
-#include "sim/head.h"
+#include "sim/core/config.h"
+#include "sim/core/pose.h"
+#include "sim/head/head_model.h"
 
 namespace csm {
 
@@ -23,7 +24,8 @@ void panCamera(CameraConfig& camera, float dxPixels, float dyPixels, int viewpor
 void zoomCamera(CameraConfig& camera, float steps);
 // Aims at the head as it is now and backs off until the head spheres and the longest
 // strands around the scalp fit the view.
-void frameHead(CameraConfig& camera, const Config& config, const Pose& head);
+void frameHead(CameraConfig& camera, const Config& config, const HeadModel& model,
+               const Pose& head);
 
 // The user's extra head pose after a drag of (dx, dy) pixels: horizontal motion turns the
 // head about the vertical axis (shaking no), vertical motion about the camera's right axis

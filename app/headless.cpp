@@ -7,18 +7,18 @@
 
 #include "app/capture.h"
 #include "app/import_progress.h"
-#include "sim/contacts.h"
-#include "sim/frame_driver.h"
+#include "sim/solver/contacts.h"
+#include "sim/run/frame_driver.h"
 #include "app/metrics.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
-#include "sim/head.h"
-#include "sim/io/cyhair.h"
-#include "sim/io/hair_sequence.h"
-#include "sim/metrics.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/simulation.h"
+#include "sim/core/pose.h"
+#include "sim/groom/cyhair.h"
+#include "sim/groom/hair_sequence.h"
+#include "sim/solver/accuracy.h"
+#include "sim/run/make_solver.h"
+#include "sim/run/simulation.h"
 
 namespace csm {
 namespace {
@@ -96,7 +96,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   // search per sample outside the frame's timing), so modes compare on the same measures.
   sim.solver().setContactMeasures(metrics);
   FrameDriver driver(sim, driving);
-  MetricsRecorder recorder;
+  MetricsLog recorder;
   std::vector<glm::vec4> x;
   auto lastReport = Clock::now();
   const auto start = Clock::now();

@@ -24,16 +24,16 @@ double mean(const std::vector<double>& v) {
 
 }  // namespace
 
-void MetricsRecorder::addFrame(double simMs, const std::vector<StageTime>& stages) {
+void MetricsLog::addFrame(double simMs, const std::vector<StageTime>& stages) {
   simMs_.push_back(simMs);
   for (const StageTime& s : stages) stageSum_[s.name] += s.ms;
 }
 
-void MetricsRecorder::addUiFrame(double ms) {
+void MetricsLog::addUiFrame(double ms) {
   uiMs_.push_back(ms);
 }
 
-void MetricsRecorder::addSample(const FrameSample& sample) {
+void MetricsLog::addSample(const FrameSample& sample) {
   const Accuracy& a = sample.accuracy;
   const ContactStats& contacts = sample.contacts;
   const bool first = samples_ == 0;
@@ -52,20 +52,20 @@ void MetricsRecorder::addSample(const FrameSample& sample) {
   contactSum_.add(contacts);
 }
 
-void MetricsRecorder::addRender(double renderMs, const std::vector<StageTime>& stages) {
+void MetricsLog::addRender(double renderMs, const std::vector<StageTime>& stages) {
   renderMs_.push_back(renderMs);
   for (const StageTime& s : stages) renderStageSum_[s.name] += s.ms;
 }
 
-double MetricsRecorder::simMean() const {
+double MetricsLog::simMean() const {
   return mean(simMs_);
 }
 
-double MetricsRecorder::simP95() const {
+double MetricsLog::simP95() const {
   return percentile95(simMs_);
 }
 
-nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
+nlohmann::json MetricsLog::toJson(nlohmann::json meta) const {
   nlohmann::json& j = meta;
   j["frames"] = frames();
   // The fastest frame too: on a shared machine other work only ever adds time.
@@ -130,7 +130,7 @@ nlohmann::json MetricsRecorder::toJson(nlohmann::json meta) const {
   return j;
 }
 
-bool MetricsRecorder::write(const std::string& path, const nlohmann::json& meta,
+bool MetricsLog::write(const std::string& path, const nlohmann::json& meta,
                             std::string* error) const {
   const std::string text = toJson(meta).dump(2) + "\n";
   const std::string tmp = path + ".tmp";

@@ -7,15 +7,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/config.h"
-#include "sim/hairstyle.h"
-#include "sim/metrics.h"
-#include "sim/solver.h"
-#include "sim/stiffness.h"
+#include "sim/core/config.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/solver/accuracy.h"
+#include "sim/core/solver.h"
+#include "sim/solver/stiffness.h"
 
 namespace csm {
 
-class MetricsRecorder {
+class MetricsLog {
  public:
   // A simulated frame: its wall time and the solver's stage times.
   void addFrame(double simMs, const std::vector<StageTime>& stages);

@@ -1,4 +1,4 @@
-// The Timeline panel: the simulation thread's recording (sim/recorder.h) to scrub, play,
+// The Timeline panel: the simulation thread's recording (sim/run/frame_recording.h) to scrub, play,
 // loop, step through and resume from, a bake of seconds with its progress, and the cache's
 // memory against its budget.
 #include <algorithm>

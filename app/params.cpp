@@ -1,7 +1,7 @@
 #include "app/params.h"
 
 #include "render/view_params.h"
-#include "sim/params.h"
+#include "sim/param/sim_params.h"
 
 namespace csm {
 namespace {

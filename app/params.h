@@ -1,5 +1,5 @@
 // The preset's one list of parameters: its name and description, the simulation's
-// (sim/params.h) and the view's (render/view_params.h), in that order. JSON reading and
+// (sim/param/sim_params.h) and the view's (render/view_params.h), in that order. JSON reading and
 // writing, --set, --list-params and the panels walk it; no other code names a field by hand.
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/preset.h"
-#include "sim/param.h"
+#include "sim/param/param_table.h"
 
 namespace csm {
 

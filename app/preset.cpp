@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/params.h"
-#include "sim/scene_checks.h"
+#include "sim/run/scene_checks.h"
 
 namespace csm {
 namespace {

@@ -1,5 +1,5 @@
 // Presets: a JSON file holding a whole scene: what it is called, the simulated scene
-// (sim/config.h) and how it is viewed (render/view_config.h). Every key is a parameter of the
+// (sim/core/config.h) and how it is viewed (render/view_config.h). Every key is a parameter of the
 // one list (app/params.h).
 #pragma once
 
@@ -10,7 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "render/view_config.h"
-#include "sim/config.h"
+#include "sim/core/config.h"
 
 namespace csm {
 
@@ -30,7 +30,7 @@ struct PresetErrors {
 // Reads a preset over the defaults. `source` names the file in messages.
 // Returns false, with every problem found in `errors`, when the preset is not valid; `out`
 // is then left unchanged.
-// The checks between parameters (sim/scene_checks.h) and of the machine's capacity run too.
+// The checks between parameters (sim/run/scene_checks.h) and of the machine's capacity run too.
 bool parsePreset(std::string_view text, const std::string& source, Preset& out,
                  PresetErrors& errors);
 bool loadPreset(const std::string& path, Preset& out, PresetErrors& errors);

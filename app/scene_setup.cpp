@@ -5,7 +5,7 @@
 
 #include "app/params.h"
 #include "app/preset.h"
-#include "sim/scene_checks.h"
+#include "sim/run/scene_checks.h"
 
 namespace csm {
 

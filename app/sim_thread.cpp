@@ -1,9 +1,9 @@
 #include "app/sim_thread.h"
 
 #include "app/import_progress.h"
-#include "sim/frame_driver.h"
-#include "sim/io/hair_sequence.h"
-#include "sim/simulation.h"
+#include "sim/run/frame_driver.h"
+#include "sim/groom/hair_sequence.h"
+#include "sim/run/simulation.h"
 
 namespace csm {
 namespace {
@@ -229,7 +229,7 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
     }
   }
   if (p.keepA && loaded_) {
-    a_ = std::make_unique<Recorder>(timeline_);
+    a_ = std::make_unique<FrameRecording>(timeline_);
     aConfig_ = std::make_shared<const Config>(sim_->config());
     aGeneration_ = sim_->generation();
   }
@@ -246,7 +246,7 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
     long written = 0;
     bool ok = io::prepareSequenceDir(dir, &error);
     for (long f = range.first; ok && f <= range.second; ++f) {
-      const Recorder::Shown* shown = timeline_.at(f);
+      const FrameRecording::Shown* shown = timeline_.at(f);
       if (!shown) {
         error = "frame " + std::to_string(f) + " is not recorded";
         ok = false;
@@ -284,8 +284,8 @@ void SimThread::stepFrame() {
   for (const FrameSample& s : samples) maxStrain_.push(float(s.accuracy.maxStrain));
   if (options_.recordMetrics) {
     std::lock_guard lock(mutex_);
-    recorder_.addFrame(driver_->lastStepMs(), sim_->solver().stageTimes());
-    for (const FrameSample& s : samples) recorder_.addSample(s);
+    metricsLog_.addFrame(driver_->lastStepMs(), sim_->solver().stageTimes());
+    for (const FrameSample& s : samples) metricsLog_.addSample(s);
   }
   // canStep() held before this step, so a stop now is new.
   if (driver_->stopped()) {
@@ -343,8 +343,9 @@ void SimThread::publish(long ticket) {
     f->generation = sim_->generation();
     f->config = sim_->config();
     f->groom = sim_->sharedGroom();
+    f->head = sim_->sharedHead();
     f->groomReport = sim_->groomReport();
-    f->head = sim_->headPose();
+    f->headPose = sim_->headPose();
     f->strands = solver.strandCount();
     f->particles = solver.particleCount();
     f->carriedFrames = sim_->carriedFrames();
@@ -372,7 +373,7 @@ void SimThread::publish(long ticket) {
     t.aBytes = a_ ? a_->bytes() : 0;
     t.aConfig = aConfig_;
     t.aGeneration = aGeneration_;
-    const Recorder::Shown* shown = nullptr;
+    const FrameRecording::Shown* shown = nullptr;
     if (shown_ >= 0 && showingA_ && a_ && a_->at(shown_)) {
       shown = a_->at(shown_);
       t.showingA = true;
@@ -385,7 +386,7 @@ void SimThread::publish(long ticket) {
       t.shown = shown->frame;
       f->frame = shown->frame;
       f->time = shown->time;
-      f->head = shown->head;
+      f->headPose = shown->head;
       auto host = std::make_shared<std::vector<glm::vec4>>();
       host->reserve(shown->positions.size());
       for (const glm::vec3& x : shown->positions) host->emplace_back(x, 1.0f);
@@ -547,9 +548,9 @@ std::vector<SimEvent> SimThread::takeEvents() {
   return out;
 }
 
-MetricsRecorder SimThread::metrics() const {
+MetricsLog SimThread::metrics() const {
   std::lock_guard lock(mutex_);
-  return recorder_;
+  return metricsLog_;
 }
 
 }  // namespace csm

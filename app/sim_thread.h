@@ -34,20 +34,20 @@
 #include "gl/buffer.h"
 #include "gl/context.h"
 #include "gl/fence.h"
-#include "sim/config.h"
-#include "sim/groom.h"
-#include "sim/head.h"
-#include "sim/recorder.h"
-#include "sim/hairstyle.h"
-#include "sim/solver.h"
-#include "sim/stiffness.h"
+#include "sim/core/config.h"
+#include "sim/core/groom.h"
+#include "sim/core/pose.h"
+#include "sim/run/frame_recording.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/core/solver.h"
+#include "sim/run/make_solver.h"
+#include "sim/solver/stiffness.h"
 
 namespace csm {
 
 class FrameDriver;
 class Simulation;
 
-using SolverFactory = std::function<std::unique_ptr<Solver>(const std::string&, std::string*)>;
 
 // One finished frame as the simulation thread hands it over. Immutable once published.
 struct SimFrame {
@@ -60,7 +60,8 @@ struct SimFrame {
   Config config;
   std::shared_ptr<const Groom> groom;
   GroomReport groomReport;
-  Pose head;  // where the head was at the end of the frame
+  std::shared_ptr<const HeadModel> head;  // the scene's head (built with the groom)
+  Pose headPose;  // where the head was at the end of the frame
   std::size_t strands = 0, particles = 0;
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)
   StiffnessInfo stiffness;
@@ -76,8 +77,8 @@ struct SimFrame {
   long nanFrame = -1;
   uint64_t nanParticles = 0;
   bool idle = false;  // will step no further without a command (paused, stopped, limit)
-  // The timeline (sim/recorder.h): what is recorded, and the recorded frame on show instead
-  // of the live one (then `frame`, `time`, `head` and the positions are that frame's).
+  // The timeline (sim/run/frame_recording.h): what is recorded, and the recorded frame on show instead
+  // of the live one (then `frame`, `time`, `headPose` and the positions are that frame's).
   struct Timeline {
     bool recording = true;
     long first = -1, last = -1;                   // the recorded frames
@@ -122,7 +123,7 @@ struct SimEvent {
 class SimThread {
  public:
   struct Options {
-    SolverFactory makeSolver;    // by name; the thread makes its solver with its context current
+    SolverByName makeSolver;    // by name; the thread makes its solver with its context current
     std::string solver = "gpu";  // falls back to "cpu", with a warning, when it fails
     // The thread's context, sharing objects with the UI's; null for CPU solvers only. The
     // SimThread owns it and destroys it on the thread that destroys the SimThread.
@@ -169,7 +170,7 @@ class SimThread {
   long show(long frame);
   long resume(long frame);
   long bake(long frames);
-  // Writes the recorded frames first..last as DIR/frame_00001.hair, ... (sim/io/hair_sequence.h).
+  // Writes the recorded frames first..last as DIR/frame_00001.hair, ... (sim/groom/hair_sequence.h).
   long exportRecorded(const std::string& dir, long first, long last);
   // A/B: keep the recording as it is now as A (with its parameters); show A's frame instead of
   // the recording's at the frame on show (or not).
@@ -194,8 +195,8 @@ class SimThread {
   // Events since the last call, oldest first.
   std::vector<SimEvent> takeEvents();
   // Every frame's time and sample so far (with Options::recordMetrics).
-  MetricsRecorder metrics() const;
-  // Where a groom import on the thread stands (sim/hairstyle.h's ImportProgress); an empty
+  MetricsLog metrics() const;
+  // Where a groom import on the thread stands (sim/groom/hairstyle.h's ImportProgress); an empty
   // stage when none is running.
   struct ImportStatus {
     std::string stage;
@@ -256,7 +257,7 @@ class SimThread {
   std::vector<SimEvent> events_;
   std::array<Slot, 3> slots_;
   int latestSlot_ = -1, heldSlot_ = -1;
-  MetricsRecorder recorder_;
+  MetricsLog metricsLog_;
   bool running_ = true;  // false once the thread has left its loop
   mutable std::mutex importMutex_;
   ImportStatus import_;
@@ -271,12 +272,12 @@ class SimThread {
   long applied_ = 0;
   long serial_ = 0;
   History maxStrain_{120};
-  Recorder timeline_;
+  FrameRecording timeline_;
   bool recording_ = true;
   long shown_ = -1;
   long bakeLeft_ = 0, bakeTotal_ = 0;
-  size_t budget_ = RecorderOptions{}.budgetBytes;  // the timeline's, A's included
-  std::unique_ptr<Recorder> a_;                    // the kept recording (A/B)
+  size_t budget_ = FrameRecordingOptions{}.budgetBytes;  // the timeline's, A's included
+  std::unique_ptr<FrameRecording> a_;                    // the kept recording (A/B)
   std::shared_ptr<const Config> aConfig_;
   long aGeneration_ = -1;
   bool showingA_ = false;

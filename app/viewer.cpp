@@ -20,9 +20,9 @@
 #include "gl/debug.h"
 #include "gl/shader_source.h"
 #include "render/hair_renderer.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/params.h"
-#include "sim/scene_checks.h"
+#include "sim/run/make_solver.h"
+#include "sim/param/sim_params.h"
+#include "sim/run/scene_checks.h"
 
 namespace csm {
 namespace {
@@ -143,8 +143,8 @@ void Viewer::drainInbox() {
   if (messages_.size() > 200) messages_.erase(messages_.begin(), messages_.begin() + 100);
 }
 
-MetricsRecorder Viewer::metrics() const {
-  MetricsRecorder m = sim_->metrics();
+MetricsLog Viewer::metrics() const {
+  MetricsLog m = sim_->metrics();
   for (double ms : uiMs_) m.addUiFrame(ms);
   return m;
 }
@@ -531,8 +531,9 @@ void Viewer::resetView() {
 }
 
 void Viewer::frameHead() {
+  if (!frame_->head) return;  // nothing loaded yet
   Preset next = current_;
-  csm::frameHead(next.view.camera, next.scene, frame_->head);
+  csm::frameHead(next.view.camera, next.scene, *frame_->head, frame_->headPose);
   applyConfig(next);
 }
 
@@ -688,7 +689,8 @@ void Viewer::renderScene(bool capture) {
       view.look = &look;
       view.groom = frame_->groom.get();
       view.generation = frame_->generation;
-      view.head = frame_->head;
+      view.head = frame_->head.get();
+      view.headPose = frame_->headPose;
       view.positionBuffer = positionsForRender();
       view.width = size.width;
       view.height = size.height;
@@ -829,7 +831,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
   if (!scripted) return 0;
   const SimFrame& f = viewer->simFrame();
   const ViewerStats& s = viewer->stats();
-  const MetricsRecorder m = viewer->metrics();
+  const MetricsLog m = viewer->metrics();
   if (!options.quiet) {
     std::fprintf(stderr,
                  "csmhair: %ld simulated frames in %.2f s (%.1f ms a frame, the last step "

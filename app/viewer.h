@@ -35,7 +35,7 @@
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
 #include "render/renderer.h"
-#include "sim/config.h"
+#include "sim/core/config.h"
 
 namespace csm {
 
@@ -61,7 +61,7 @@ struct ViewerOptions {
   double maxFps = 60.0;
   double idleFps = 20.0;
   // Builds solvers by name; tests put their own in. Empty: csm::makeSolver.
-  SolverFactory makeSolver;
+  SolverByName makeSolver;
 };
 
 enum class MessageLevel { Info, Warning, Error };
@@ -113,7 +113,7 @@ class Viewer {
   bool paused() const { return paused_; }
   void stepOnce();   // one frame, paused
   void resetHair();  // back to rest, time 0; clears a NaN stop
-  // The timeline (the simulation thread's recording, sim/recorder.h). Showing a recorded
+  // The timeline (the simulation thread's recording, sim/run/frame_recording.h). Showing a recorded
   // frame pauses the simulation (-1: the live frame again); playing shows the recording at
   // real time from the frame shown, looping or stopping at its end; resume goes on simulating
   // from a recorded frame (paused there); bake runs seconds of simulation as fast as they go.
@@ -198,7 +198,7 @@ class Viewer {
   // From any thread; messages from other threads show from the next frame on.
   void log(MessageLevel level, std::string text);
   // Every UI frame's interval and the simulation's frames, with ViewerOptions::recordMetrics.
-  MetricsRecorder metrics() const;
+  MetricsLog metrics() const;
 
  private:
   struct PendingOpen {

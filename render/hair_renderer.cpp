@@ -16,7 +16,7 @@
 #include "render/camera.h"
 #include "render/hair_color.h"
 #include "render/scalp_map.h"
-#include "sim/head_shape.h"
+#include "sim/head/head_model.h"
 
 namespace csm {
 namespace {
@@ -249,14 +249,14 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
   // The light: orthographic, around the sphere that holds the hair this frame.
   glm::vec3 dir = look.light.direction;
   dir = glm::length(dir) > 1e-6f ? glm::normalize(dir) : glm::vec3(0.0f, -1.0f, 0.0f);
-  const glm::vec3 center = glm::vec3(frame.head.apply(glm::dvec3(geometry_->boundCenter())));
+  const glm::vec3 center = glm::vec3(frame.headPose.apply(glm::dvec3(geometry_->boundCenter())));
   const float R = geometry_->boundRadius();
   lightViewProj_ = ShadowMaps::lightViewProjection(dir, center, R);
 
   FrameUniforms u{};
   u.viewProj = proj * view;
   u.lightViewProj = lightViewProj_;
-  u.headRotation = glm::mat4(glm::mat3_cast(glm::quat(frame.head.rotation)));
+  u.headRotation = glm::mat4(glm::mat3_cast(glm::quat(frame.headPose.rotation)));
   u.eye = glm::vec4(eye, 1.0f);
   u.lightDir = glm::vec4(dir, look.light.intensity);
   u.lightColor = glm::vec4(srgbToLinear(look.light.color), look.light.ambient);
@@ -300,9 +300,9 @@ void HairRenderer::render(const FrameView& frame) {
       std::clamp(amount.shadowMapSize > 0 ? amount.shadowMapSize : look.shadowMapSize, 16, 8192);
   const int subdivision =
       std::clamp(amount.subdivision > 0 ? amount.subdivision : look.subdivision, 1, 64);
-  geometryFor(subdivision).update(*frame.groom, frame.generation, subdivision, headSpheres(c));
+  geometryFor(subdivision).update(*frame.groom, frame.generation, subdivision, frame.head->spheres());
   if (scalpKey_ != std::make_pair(frame.groom, frame.generation)) {
-    scalp_ = makeScalpMap(*frame.groom, scalpSpheres(c));
+    scalp_ = makeScalpMap(*frame.groom, scalpSpheres(*frame.head));
     scalpKey_ = {frame.groom, frame.generation};
   }
   FrameTarget& target = targetFor(frame.width, frame.height, samples);
@@ -315,7 +315,7 @@ void HairRenderer::render(const FrameView& frame) {
     return;
   }
   ShadowMaps& shadow = shadowFor(shadowSize);
-  head_.update(c, frame.head);
+  head_.update(*frame.head, frame.headPose);
 
   const Selection drawn = select(geometry_->guides(), c.hairstyle.followCount, amount.strands);
   drawnStrands_ = frame.positionBuffer != 0 ? drawn.guides * std::size_t(drawn.instances) : 0;

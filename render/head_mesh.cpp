@@ -48,9 +48,9 @@ HeadMesh::HeadMesh() {
   placementBuffer_ = gl::Buffer(GLsizeiptr(sizeof(glm::vec4)), nullptr, GL_DYNAMIC_DRAW);
 }
 
-void HeadMesh::update(const Config& scene, const Pose& head) {
+void HeadMesh::update(const HeadModel& model, const Pose& head) {
   std::vector<glm::vec4> data;
-  const SurfaceMesh* surface = headSurface(scene);
+  const SurfaceMesh* surface = model.surface();
   mannequin_ = surface != nullptr;
   if (mannequin_) {
     if (surface != uploaded_) {
@@ -64,7 +64,7 @@ void HeadMesh::update(const Config& scene, const Pose& head) {
     }
     data.emplace_back(glm::vec3(head.apply(kMannequinScalpCentre)), 1.0f);
   } else {
-    for (const Sphere& s : worldSpheres(headSpheres(scene), head))
+    for (const Sphere& s : worldSpheres(model.spheres(), head))
       data.emplace_back(s.center, s.radius);
   }
   placements_ = int(data.size());

@@ -1,14 +1,16 @@
 // The head as drawn: a mesh in the head's frame, instanced once per placement (world centre,
 // scale) of an SSBO and turned by the head's rotation (head.vert). Spheres: a unit UV sphere
-// once per head sphere. The mannequin or head.mesh: its mesh (sim/head_shape.h) once.
+// once per head sphere. The mannequin or head.mesh: its mesh (sim/head/head_shape.h) once.
 #pragma once
 
 #include <vector>
 
 #include "gl/buffer.h"
 #include "gl/vertex_array.h"
-#include "sim/head.h"
-#include "sim/head_shape.h"
+#include "sim/core/pose.h"
+#include "sim/head/surface_mesh.h"
+#include "sim/head/head_model.h"
+#include "sim/head/mannequin.h"
 
 namespace csm {
 
@@ -17,7 +19,7 @@ class HeadMesh {
   HeadMesh();
   // This frame's head: the mannequin's or head.mesh's surface where the scene's head is a field,
   // else the scene's spheres, at the head's pose.
-  void update(const Config& scene, const Pose& head);
+  void update(const HeadModel& model, const Pose& head);
   void bind() const;  // the placements' SSBO
   void draw() const;
   int sphereCount() const { return placements_; }

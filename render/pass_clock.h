@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gl/query.h"
-#include "sim/solver.h"
+#include "sim/core/solver.h"
 
 namespace csm {
 

@@ -18,7 +18,8 @@ FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned po
   v.look = &view;
   v.groom = &sim.groom();
   v.generation = sim.generation();
-  v.head = sim.headPose();
+  v.head = &sim.head();
+  v.headPose = sim.headPose();
   v.positionBuffer = positionBuffer;
   v.width = width;
   v.height = height;

@@ -9,7 +9,7 @@
 
 #include "gl/buffer.h"
 #include "render/renderer.h"
-#include "sim/simulation.h"
+#include "sim/run/simulation.h"
 
 namespace csm {
 

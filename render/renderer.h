@@ -11,10 +11,11 @@
 
 #include "render/camera.h"
 #include "render/view_config.h"
-#include "sim/config.h"
-#include "sim/groom.h"
-#include "sim/head.h"
-#include "sim/solver.h"
+#include "sim/core/config.h"
+#include "sim/core/groom.h"
+#include "sim/core/pose.h"
+#include "sim/core/solver.h"
+#include "sim/head/head_model.h"
 
 namespace csm {
 
@@ -35,7 +36,8 @@ struct FrameView {
   const ViewConfig* look = nullptr;  // render.*, camera.*, light.*
   const Groom* groom = nullptr;      // topology (strand offsets) and per-strand colours
   long generation = 0;               // changes when the groom is regrown: rebuild topology buffers
-  Pose head;                         // where the head is this frame
+  const HeadModel* head = nullptr;   // the scene's head: what is drawn, where hair grows
+  Pose headPose;                     // where the head is this frame
   unsigned positionBuffer = 0;       // SSBO: vec4 per particle, world positions
   int width = 1280, height = 720;    // target size in pixels
   unsigned targetFramebuffer = 0;    // GL framebuffer to draw into (0 = the window's)

@@ -5,7 +5,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/head_shape.h"
+#include "sim/head/mannequin.h"
+#include "sim/head/head_model.h"
 
 namespace csm {
 namespace {
@@ -94,8 +95,8 @@ ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres) 
   return out;
 }
 
-std::vector<Sphere> scalpSpheres(const Config& scene) {
-  if (!headField(scene)) return headSpheres(scene);
+std::vector<Sphere> scalpSpheres(const HeadModel& head) {
+  if (!head.field()) return head.spheres();
   return {Sphere{glm::vec3(kMannequinScalpCentre), 0.09f}};
 }
 

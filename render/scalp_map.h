@@ -10,8 +10,9 @@
 #include <glm/vec3.hpp>
 
 #include "gl/texture.h"
-#include "sim/groom.h"
-#include "sim/head.h"
+#include "sim/core/groom.h"
+#include "sim/core/pose.h"
+#include "sim/head/head_model.h"
 
 namespace csm {
 
@@ -27,7 +28,7 @@ struct ScalpTexels {
 ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres);
 // The spheres the scalp map is laid over: the scene's, or for the mannequin one about its
 // scalp centre (its roots lie 0.07-0.1 m from it, within the 2 cm that counts as on it).
-std::vector<Sphere> scalpSpheres(const Config& scene);
+std::vector<Sphere> scalpSpheres(const HeadModel& head);
 // An RGBA8 2D array, one layer per sphere.
 gl::Texture makeScalpMap(const Groom& groom, const std::vector<Sphere>& spheres);
 

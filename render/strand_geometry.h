@@ -15,8 +15,8 @@
 
 #include "gl/buffer.h"
 #include "gl/vertex_array.h"
-#include "sim/groom.h"
-#include "sim/head.h"
+#include "sim/core/groom.h"
+#include "sim/core/pose.h"
 
 namespace csm {
 

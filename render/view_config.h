@@ -1,5 +1,5 @@
 // How a scene is viewed: the look of hair and head, the camera, the light. Not the
-// simulation's business (sim/config.h): the renderer and the viewer read these.
+// simulation's business (sim/core/config.h): the renderer and the viewer read these.
 #pragma once
 
 #include <glm/vec3.hpp>

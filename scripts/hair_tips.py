@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Distances between the strand tips of two cyHair files with the same strands, in mm:
-prints "mean / median / max" (sim/io/cyhair.h has the format)."""
+prints "mean / median / max" (sim/groom/cyhair.h has the format)."""
 import math
 import struct
 import sys

@@ -10,11 +10,12 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/config.h"
-#include "sim/groom.h"
-#include "sim/hairstyle.h"
-#include "sim/head.h"
-#include "sim/solver.h"
+#include "sim/core/config.h"
+#include "sim/core/groom.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/core/pose.h"
+#include "sim/core/solver.h"
+#include "sim/head/head_model.h"
 
 namespace csm::test {
 
@@ -28,7 +29,7 @@ inline glm::vec3 toFile(const glm::vec3& metres) {
 // over 7.5 um, one point repeated, and a 1.5 cm strand of two points (long enough to keep,
 // stiffer than the rest by its length alone).
 inline Groom importedGroom(const Config& c, bool degenerate) {
-  const Groom grown = growHairstyle(c);
+  const Groom grown = growHairstyle(c, *HeadModel::require(c));
   Groom file;
   const glm::vec3 um(0.0f, 1e-4f, 0.0f);  // 1 um, in cm
   for (size_t s = 0; s < grown.strandCount(); ++s) {
@@ -61,7 +62,7 @@ inline Groom importFor(const Config& c, const Groom& file, GroomReport* report =
   scene.hairstyle.strands = 1000000;  // every strand of the file
   Groom out;
   std::string error;
-  const bool ok = fitFileGroom(scene, file, "imported.hair", out, &error, report);
+  const bool ok = fitFileGroom(scene, *HeadModel::require(scene), file, "imported.hair", out, &error, report);
   INFO(error);
   REQUIRE(ok);
   return out;

@@ -10,8 +10,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/params.h"
-#include "sim/simulation.h"
+#include "sim/param/sim_params.h"
+#include "sim/run/simulation.h"
 #include "tests/param_variants.h"
 
 namespace csm::test {

@@ -10,7 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "sim/param.h"
+#include "sim/param/param_table.h"
 
 namespace csm::test {
 

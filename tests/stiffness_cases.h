@@ -1,4 +1,4 @@
-// The calibrated stiffness model's claims (sim/stiffness.h, DESIGN.md section 4), measured
+// The calibrated stiffness model's claims (sim/solver/stiffness.h, DESIGN.md section 4), measured
 // through the Solver interface, so that the CPU reference (tests/cpu/stiffness_test.cpp) and
 // the GPU solver (tests/gpu/gpu_stiffness_test.cpp) are held to the same scenes and numbers.
 #pragma once
@@ -11,17 +11,18 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/hair_state.h"
-#include "sim/hairstyle.h"
-#include "sim/head.h"
-#include "sim/measure.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/core/hair_state.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/core/pose.h"
+#include "sim/verify/measure.h"
 #include "app/preset.h"
-#include "sim/solver.h"
+#include "sim/core/solver.h"
+#include "sim/head/head_model.h"
 
 namespace csm::test {
 
-using MakeSolver = std::function<std::unique_ptr<Solver>()>;
+
 
 // The built-in default preset (nodding, a light gusty breeze, head collisions only) with its
 // first `strands` strands. Strands touch only the head, so each moves as it does among all
@@ -30,12 +31,12 @@ inline Scene defaultScene(int strands = 300) {
   Scene s;
   s.config = defaultPreset().scene;
   s.config.hairstyle.strands = strands;
-  s.groom = growHairstyle(s.config);
+  s.groom = growHairstyle(s.config, *HeadModel::require(s.config));
   return s;
 }
 
 // Positions after `seconds` of the scene, the head following its motion.
-inline std::vector<glm::vec4> runFor(const MakeSolver& make, const Scene& scene, double seconds) {
+inline std::vector<glm::vec4> runFor(const SolverMaker& make, const Scene& scene, double seconds) {
   std::unique_ptr<Solver> solver = make();
   SceneRunner run(*solver, scene);
   run.runTo(seconds);
@@ -81,7 +82,7 @@ inline Scene clampedStrand(int particles, int substeps = 1, double frameDt = 1.0
 
 // Its sag (m): root height minus tip height, settled by strong damping (10/s for 2 s), the
 // mean over the last quarter second.
-inline double clampedSag(const MakeSolver& make, int particles, int substeps = 1,
+inline double clampedSag(const SolverMaker& make, int particles, int substeps = 1,
                          double frameDt = 1.0 / 60.0) {
   Scene s = clampedStrand(particles, substeps, frameDt);
   s.config.sim.damping = 10.0f;
@@ -102,7 +103,7 @@ inline double clampedSag(const MakeSolver& make, int particles, int substeps = 1
 
 // Its swing: released at rest, lightly damped (the default 1/s), the tip's path over 1 s, one
 // point a frame.
-inline std::vector<glm::dvec3> swingTip(const MakeSolver& make, int particles) {
+inline std::vector<glm::dvec3> swingTip(const SolverMaker& make, int particles) {
   const Scene s = clampedStrand(particles);
   std::unique_ptr<Solver> solver = make();
   SceneRunner run(*solver, s);
@@ -129,7 +130,7 @@ inline double pathRms(const std::vector<glm::dvec3>& a, const std::vector<glm::d
 // single steps, P = sum m v with the masses the goals weigh by (each particle the half
 // segments beside it, in double: HairState's float masses carry 6e-8 of rounding) and, from the
 // CPU reference, its double velocities (read back as float they carry as much).
-inline double momentumDrift(const MakeSolver& make, int steps) {
+inline double momentumDrift(const SolverMaker& make, int steps) {
   Groom g;
   std::vector<glm::vec3> pts;
   for (int i = 0; i < 24; ++i) {
@@ -192,7 +193,7 @@ inline double momentumDrift(const MakeSolver& make, int steps) {
 // ---- The claims, asserted on a solver (each a TEST_CASE in both tiers) -------------------------
 
 // Density 5e-6, 1e-4 and 1e-2 kg/m: the default scene agrees within 1 um RMS after 1 s.
-inline void checkDensityCancels(const MakeSolver& make) {
+inline void checkDensityCancels(const SolverMaker& make) {
   Scene s = defaultScene();
   const auto reference = runFor(make, s, 1.0);
   for (float density : {5e-6f, 1e-2f}) {
@@ -204,7 +205,7 @@ inline void checkDensityCancels(const MakeSolver& make) {
 }
 
 // A clamped strand's sag at 8, 16 and 32 substeps within 2% of 64.
-inline void checkSagAcrossSubsteps(const MakeSolver& make) {
+inline void checkSagAcrossSubsteps(const SolverMaker& make) {
   const double reference = clampedSag(make, 16, 64);
   CHECK(reference > 0.02);  // it does sag: 12 cm of hair, not a rod
   for (int substeps : {8, 16, 32}) {
@@ -217,7 +218,7 @@ inline void checkSagAcrossSubsteps(const MakeSolver& make) {
 // The nodding default scene: tip RMS between N and 2N substeps <= 2 mm from 16 substeps on
 // (5 mm from 8: hair lies on the mannequin's head and shoulders, and a contact with a curved
 // surface starts within a step; measured 4.9, 0.89, 0.79 mm on the CPU), shrinking with h.
-inline void checkSceneConverges(const MakeSolver& make) {
+inline void checkSceneConverges(const SolverMaker& make) {
   const Scene s = defaultScene();
   std::vector<std::vector<glm::vec4>> runs;
   for (int substeps : {8, 16, 32, 64}) {
@@ -236,7 +237,7 @@ inline void checkSceneConverges(const MakeSolver& make) {
 }
 
 // sim.dt 1/30 and 1/120 against 1/60 with automatic substeps: sag within 2%, tip RMS <= 5 mm.
-inline void checkFrameRates(const MakeSolver& make) {
+inline void checkFrameRates(const SolverMaker& make) {
   const double sag60 = clampedSag(make, 16, 1, 1.0 / 60.0);
   Scene s = defaultScene();
   s.config.sim.substeps = 1;
@@ -254,7 +255,7 @@ inline void checkFrameRates(const MakeSolver& make) {
 }
 
 // 16 and 24 particles against 32: sag within 15%, swing tip RMS <= 10 mm.
-inline void checkResolution(const MakeSolver& make) {
+inline void checkResolution(const SolverMaker& make) {
   const double sag32 = clampedSag(make, 32);
   const auto swing32 = swingTip(make, 32);
   for (int particles : {16, 24}) {
@@ -268,7 +269,7 @@ inline void checkResolution(const MakeSolver& make) {
 }
 
 // Sum m v of a free strand changes by less than `tolerance` of itself a step.
-inline void checkMomentum(const MakeSolver& make, double tolerance) {
+inline void checkMomentum(const SolverMaker& make, double tolerance) {
   const double drift = momentumDrift(make, 200);
   INFO("largest relative change of the momentum in one step: " << drift);
   CHECK(drift < tolerance);

@@ -8,9 +8,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "sim/collision.h"
-#include "sim/config.h"
-#include "sim/groom.h"
+#include "sim/core/segment_pairs.h"
+#include "sim/core/config.h"
+#include "sim/core/groom.h"
 
 namespace csm::test {
 

@@ -1,4 +1,4 @@
-// The torture map's far ends (sim/torture.h, docs/RELIABILITY.md "Torture map"), held to the
+// The torture map's far ends (sim/verify/torture.h, docs/RELIABILITY.md "Torture map"), held to the
 // same criteria on the CPU reference (tests/cpu/torture_test.cpp) and the GPU solver
 // (tests/gpu/gpu_torture_test.cpp). Each axis is one test case; a failing cell is named, with
 // its numbers, in the message. The full map is `csmhair-bench --only torture [--gpu]`.
@@ -10,7 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include "app/preset.h"
-#include "sim/torture.h"
+#include "sim/verify/torture.h"
 
 namespace csm::test {
 
@@ -33,7 +33,7 @@ inline std::vector<TortureCell> tortureCorners(const std::string& axis) {
 
 // Every cell of the axis in every collision mode, each criterion checked on its own so that
 // one run reports every cell and criterion that fails.
-inline void checkTortureAxis(const SolverFactory& make, const std::string& solver,
+inline void checkTortureAxis(const SolverMaker& make, const std::string& solver,
                              const std::string& axis) {
   const std::vector<TortureCell> cells = tortureCorners(axis);
   REQUIRE(!cells.empty());

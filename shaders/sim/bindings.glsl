@@ -7,7 +7,7 @@
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
-// The hair state, in HairState's layout (sim/hair_state.h).
+// The hair state, in HairState's layout (sim/core/hair_state.h).
 #define CSM_BIND_REST 0             // vec4: rest xyz in the head frame, w mass
 #define CSM_BIND_POSITION 1         // vec4: world position (the renderer draws from it)
 #define CSM_BIND_VELOCITY 2         // vec4
@@ -19,7 +19,7 @@
 #define CSM_BIND_STRAND_ORDER 7  // uint: strands by length, for the per-strand passes
 #define CSM_BIND_PARAMS 8        // SimParams + one Substep per substep
 #define CSM_BIND_REGION \
-  22  // vec4 per particle: its region (sim/stiffness.h): x per-region
+  22  // vec4 per particle: its region (sim/solver/stiffness.h): x per-region
       // mass, y 1 / J (0: no extent), z first (negative: that many
       // ghosts and particles from 0), w last particle of the region
       // (indices within the strand, exact in float)
@@ -65,7 +65,7 @@
       // and the contact solve
 #define CSM_BIND_VOLUME_SUMS \
   21  // int x4 per node of the volume grid: strand length (2^-24 m), length
-      // times velocity (2^-24 m^2/s), x y z (sim/volume.h); then two ivec4,
+      // times velocity (2^-24 m^2/s), x y z (sim/solver/volume.h); then two ivec4,
       // the nodes the splat reached (volumeBox in common.glsl)
 #define CSM_BIND_VOLUME_LENGTH 25  // float per particle: its share of strand length (m)
 #define CSM_BIND_VOLUME_FIELD \
@@ -107,7 +107,7 @@
 #define CSM_IMAGE_PAIR_SIDES_HIGH 3  // the same from texel listSplit on
 #define CSM_IMAGE_CANDIDATES 4  // rg32ui x 2 per slot of the pair list: this frame's lists, each
                                 // segment's candidates in ascending order, x the other segment
-                                // | flags << 28 (sim/contacts.h), y the contact distance (float
+                                // | flags << 28 (sim/solver/contacts.h), y the contact distance (float
                                 // bits)
 #define CSM_IMAGE_CANDIDATES_HIGH 5
 #define CSM_IMAGE_LAST_CANDIDATES 6  // the same, last frame's (the two buffers swap each frame)
@@ -127,7 +127,7 @@
                                   // order as their bits)
 #define CSM_COUNTER_PAIR_LIST 9   // candidate pairs the pair list needed (over its capacity:
                                   // the last list stays)
-#define CSM_COUNTER_DEPTH 16      // csm::kDepthBins bins of penetration depth (sim/contacts.h)
+#define CSM_COUNTER_DEPTH 16      // csm::kDepthBins bins of penetration depth (sim/solver/contacts.h)
 #define CSM_DEPTH_BINS 64
 #define CSM_DEPTH_BINS_PER_R 32
 #define CSM_COUNTERS_PER_FRAME 80  // the slots above, cleared by each candidate search
@@ -141,7 +141,7 @@
 #define CSM_DISPATCH_VOLUME_FIELD 2  // the volume's node pass: one per node of the hair's box
 #define CSM_DISPATCHES 3
 
-// Candidate lists (sim/contacts.h).
+// Candidate lists (sim/solver/contacts.h).
 #define CSM_MAX_SEGMENT_CELLS 64   // cells a segment may enter (see segmentCells)
 #define CSM_CANDIDATE_SHIFT 28     // the flags' place in a candidate
 // Candidates a segment's list may hold. A segment with more (in a crowd no hair has) is in no

@@ -1,5 +1,5 @@
 // Strand contacts, candidate pass (DESIGN.md section 1.7; the CPU reference is
-// csm::findCandidates in sim/contacts.cpp): the segment pairs closer than 2r + margin at the
+// csm::findCandidates in sim/solver/contacts.cpp): the segment pairs closer than 2r + margin at the
 // start of the frame, one invocation per grid entry (a segment in one of its cells), in grid
 // order, so the invocations of a SIMD group usually share a bucket and read the same
 // candidates (one cache line per gather). An entry tests only the entries after it in its

@@ -20,14 +20,14 @@ struct SimParams {
                    // w this frame's half of CANDIDATE_RANGE (0 or 1)
   vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
-  // The volume mode (sim/volume.h): its grid is fixed to the head where the frame starts.
+  // The volume mode (sim/solver/volume.h): its grid is fixed to the head where the frame starts.
   mat4 volumeToHead;  // world to that head frame
   mat4 volumeToWorld;  // and back
   vec4 volumeOrigin;  // xyz the grid's lowest node (head frame), w node spacing (m)
   uvec4 volumeDims;   // xyz nodes per axis, w volume forces this frame
   vec4 volume;        // x friction (1/s), y stiffness (m^2/s^2), z fraction allowed, w volume
                       // fraction per fixed-point unit of strand length at a node
-  // The head's distance field (sim/head_shape.h), in the head's frame.
+  // The head's distance field (sim/head/head_shape.h), in the head's frame.
   vec4 headField;      // xyz the field's lowest node, w node spacing (m)
   uvec4 headFieldDims;  // xyz nodes per axis, w 1 when the head is the field (else spheres)
 };
@@ -129,7 +129,7 @@ float closestSegmentPoints(vec3 p0, vec3 p1, vec3 q0, vec3 q1, out float s, out 
   return dot(diff, diff);
 }
 
-// Strand contacts (sim/contacts.h): the histogram bin of a penetration depth (in r), and the
+// Strand contacts (sim/solver/contacts.h): the histogram bin of a penetration depth (in r), and the
 // orientation flags of a pair (csm::pairFlags): closest points inside both segments, closer
 // than 2r, sign of the triple product, skew enough for that sign to say which side.
 int depthBin(float depthInR) {
@@ -299,7 +299,7 @@ uint bucketOf(uint key) {
   return h & P.grid.x;
 }
 
-// --- The volume grid (sim/volume.h, csm::VolumeGrid). ---
+// --- The volume grid (sim/solver/volume.h, csm::VolumeGrid). ---
 
 const float kVolumeUnit = 16777216.0;  // csm::kVolumeUnit
 

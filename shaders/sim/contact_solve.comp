@@ -1,5 +1,5 @@
 // Strand contacts, one substep (DESIGN.md section 1.7; the CPU reference is csm::solveContacts
-// in sim/contacts.cpp), one invocation per segment, after shape matching: each of the
+// in sim/solver/contacts.cpp), one invocation per segment, after shape matching: each of the
 // segment's candidates closer than its contact distance is a compliant position constraint
 // (XPBD, one iteration of collision.iterations: lambda = -C / (W + compliance / h^2);
 // contact_apply.comp moves the particles between two), held to the side it was
@@ -34,7 +34,7 @@ layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
 uniform uint substep;
 
 // The most a pair moves one end of a segment in a sweep, in units of the pair's depth: near a
-// held end a pair asks the free end for depth / s (csm::kLever in sim/contacts.cpp says why).
+// held end a pair asks the free end for depth / s (csm::kLever in sim/solver/contacts.cpp says why).
 const float kLever = 2.5;
 // How far (m) a sweep must move an end to count as one of the particle's segments (csm::
 // kFullWeight).

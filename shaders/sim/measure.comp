@@ -1,4 +1,4 @@
-// The measures of sim/metrics.cpp (measureAccuracy) on the GPU: per particle, then reduced per
+// The measures of sim/solver/accuracy.cpp (measureAccuracy) on the GPU: per particle, then reduced per
 // work group in shared memory into one record of two uvec4, so that a sample reads back a few
 // bytes per CSM_MEASURE_GROUP particles and no positions. No atomics: the reduction runs in a
 // fixed order, and GpuSolver::takeSample combines the records in order on the CPU.

@@ -14,7 +14,7 @@
 //
 // Prefix sums are root-relative (x* - x*_root, x̄ - x̄_root) exactly as in CpuSolver, so the
 // differences keep float precision (world coordinates would cancel 2 more digits in A).
-// Regions come from regionTex (sim/stiffness.h, built on the CPU): each particle's region
+// Regions come from regionTex (sim/solver/stiffness.h, built on the CPU): each particle's region
 // [lo, hi] within the strand, which is also the range of regions containing it, its per-region
 // mass (FastLSM) and 1 / J of its region.
 #include "sim/common.glsl"
@@ -57,7 +57,7 @@ void main() {
   vec3 rest0 = texelFetch(restTex, int(a)).xyz;
   Substep st = S[substep];
   vec4 stiff = strandStiffness[s];
-  // Ghosts behind the root (sim/stiffness.h): -j d at rest, -j D now, root-relative.
+  // Ghosts behind the root (sim/solver/stiffness.h): -j d at rest, -j D now, root-relative.
   float mg = stiff.y;
   vec3 d = n > 1 ? texelFetch(restTex, int(a) + 1).xyz - rest0 : vec3(0.0);
   vec3 D = mat3(st.head) * d;

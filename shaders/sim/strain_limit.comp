@@ -31,7 +31,7 @@ const float kUnknownClearance = -1e30;
 // Pushes p (where the strain limit put it, within maxLength of prev) out of the distance
 // field's surface inflated by r and keeps it within reach of prev; `normal` gets the field's
 // outward normal where it touched. The float twin of pushOutOfHeadField and
-// HeadCollider::pushOut in sim/cpu/cpu_solver.cpp (pushOutOfHead below: the same for the
+// HeadCollider::pushOut in sim/solver/cpu_solver.cpp (pushOutOfHead below: the same for the
 // spheres).
 // - The push: along the field's normal by what is left, twice at most (the field is close to a
 //   distance, not exactly one); out of reach, the nearest point of the circle where the
@@ -241,7 +241,7 @@ bool pushHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxLength
 // deep, where the nearest surface is another sphere than the one prev lies over) the push again
 // from the nearest point of reach, twice; the last resort, the point where the segment from prev
 // enters the head, by bisection. "In the head": deeper than the surface and than prev. The float
-// twin of HeadCollider::pushOut in sim/cpu/cpu_solver.cpp (pushOutOfFieldHead: the same for the
+// twin of HeadCollider::pushOut in sim/solver/cpu_solver.cpp (pushOutOfFieldHead: the same for the
 // distance field).
 bool pushOutOfHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxLength) {
   if (!pushHead(p, prev, sphereBase, r, maxLength)) return false;

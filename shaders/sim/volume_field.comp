@@ -1,5 +1,5 @@
 // The volume mode, once per frame after volume_splat.comp (the CPU reference is the end of
-// csm::VolumeGrid::splat in sim/volume.cpp), one invocation per node of the box the splat
+// csm::VolumeGrid::splat in sim/solver/volume.cpp), one invocation per node of the box the splat
 // reached (volumeBox; an indirect dispatch sized by volume_dispatch.comp: small hair in a
 // large grid pays for its own nodes, not the grid's): what predict.comp
 // interpolates at each particle, so that it reads 8 nodes' fields and no more:

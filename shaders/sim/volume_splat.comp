@@ -1,5 +1,5 @@
 // The volume mode, once per frame (the CPU reference is csm::VolumeGrid::splat in
-// sim/volume.cpp), one invocation per particle: its share of strand length, and that length
+// sim/solver/volume.cpp), one invocation per particle: its share of strand length, and that length
 // times its velocity, onto the 8 nodes around it (trilinear weights) of the grid fixed to the
 // head where the frame starts. Fixed-point integer atomics: the sums do not depend on the
 // order (the grid is cleared before). It also keeps the box of the nodes reached, for the

@@ -1,5 +1,5 @@
 // The wind field u(x, t): direction x strength x (1 + gusts(t)) + spatial turbulence.
-// The same formula as csm::windVelocity (sim/wind.cpp), in float; keep the two in step.
+// The same formula as csm::windVelocity (sim/solver/wind.cpp), in float; keep the two in step.
 // Needs common.glsl (P).
 const float kPi = 3.14159265358979;
 

@@ -9,7 +9,7 @@
 
 #include "gl/caps.h"
 #include "gl/draw.h"
-#include "sim/contacts.h"
+#include "sim/solver/contacts.h"
 #include "sim/gpu/buffer_fill.h"
 #include "shaders/sim/bindings.glsl"
 

@@ -1,4 +1,4 @@
-// Strand contacts on the GPU (DESIGN.md section 1.7; sim/contacts.h is the CPU reference).
+// Strand contacts on the GPU (DESIGN.md section 1.7; sim/solver/contacts.h is the CPU reference).
 // Once per frame, the candidates: a hash grid of segment boxes built by counting sort
 // (grid_count, a three-level parallel scan of the buckets, grid_scatter); candidates.comp per
 // grid entry lists the pairs, each once; a counting sort by segment (the same scan over each
@@ -32,7 +32,7 @@
 #include "sim/gpu/compute_pass.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/stage_timer.h"
-#include "sim/solver.h"
+#include "sim/core/solver.h"
 
 namespace csm::gpu {
 

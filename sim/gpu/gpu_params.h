@@ -26,14 +26,14 @@ struct SimParams {
                         // half of CANDIDATE_RANGE
   glm::vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
   glm::vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
-  // The volume mode (sim/volume.h): its grid is fixed to the head where the frame starts.
+  // The volume mode (sim/solver/volume.h): its grid is fixed to the head where the frame starts.
   glm::mat4 volumeToHead;   // world to that head frame
   glm::mat4 volumeToWorld;  // and back
   glm::vec4 volumeOrigin;   // xyz the grid's lowest node (head frame), w node spacing (m)
   glm::uvec4 volumeDims;    // xyz nodes per axis, w volume forces this frame
   glm::vec4 volume;         // x friction (1/s), y stiffness (m^2/s^2), z fraction allowed, w volume
                             // fraction per fixed-point unit of strand length at a node
-  // The head's distance field (sim/head_shape.h), in the head's frame.
+  // The head's distance field (sim/head/head_shape.h), in the head's frame.
   glm::vec4 headField;       // xyz the field's lowest node, w node spacing (m)
   glm::uvec4 headFieldDims;  // xyz nodes per axis, w 1 when the head is the field (else spheres)
 };

@@ -11,9 +11,11 @@
 #include "gl/debug.h"
 #include "gl/draw.h"
 #include "sim/gpu/buffer_fill.h"
-#include "sim/head_shape.h"
-#include "sim/state_bytes.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/head_model.h"
+#include "sim/base/state_bytes.h"
 #include "shaders/sim/bindings.glsl"
+#include "sim/solver/contacts.h"
 
 namespace csm {
 namespace {
@@ -68,7 +70,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
 
 void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   config_ = config;
-  shape_ = sceneHead(config_);
+  shape_ = headModel_.update(config_).collider();
   time_ = 0.0;
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
@@ -113,7 +115,7 @@ void GpuSolver::setConfig(const Config& config) {
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   const bool listed = listsCandidates();
   config_ = config;
-  shape_ = sceneHead(config_);
+  shape_ = headModel_.update(config_).collider();
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) resetVolume();
   if (shape_.field != uploadedField_) uploadHeadField();
@@ -162,6 +164,7 @@ void GpuSolver::uploadHeadField() {
   gpu::fill(headField_, field ? field->nodes : std::vector<glm::vec4>(1));
   gpu::view(headFieldTex_, headField_, GL_RGBA32F);
   uploadedField_ = field;
+  uploadedHead_ = headModel_.shared();  // keeps the field uploaded alive, so its address names it
 }
 
 void GpuSolver::resetVolume() {
@@ -317,7 +320,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
 
   const uint32_t particles = uint32_t(hair_.particles), strands = uint32_t(hair_.strands);
 
-  // The volume mode's grid, from where the frame starts (sim/volume.h).
+  // The volume mode's grid, from where the frame starts (sim/solver/volume.h).
   if (params_.volumeDims.w != 0u) {
     timer_.stage(gpu::kVolume);
     volumeSums_.clearToZero();

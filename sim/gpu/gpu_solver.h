@@ -7,7 +7,7 @@
 // integration; strain_limit.comp per strand), CollisionGrid (hair-hair contacts once per frame
 // when collision.mode is full, acting during the next frame), SampleRing (the measures,
 // fenced and read a few frames late) and StageTimer. The regions and the number of steps come
-// from sim/stiffness.h, as for CpuSolver. 3 dispatches per step + 11 per frame.
+// from sim/solver/stiffness.h, as for CpuSolver. 3 dispatches per step + 11 per frame.
 #pragma once
 
 #include <memory>
@@ -21,12 +21,13 @@
 #include "sim/gpu/compute_pass.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/sample_ring.h"
-#include "sim/volume.h"
+#include "sim/solver/volume.h"
 #include "sim/gpu/stage_timer.h"
 #include "sim/gpu/strand_buffers.h"
-#include "sim/hair_state.h"
-#include "sim/head_shape.h"
-#include "sim/solver.h"
+#include "sim/core/hair_state.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/head_model.h"
+#include "sim/core/solver.h"
 
 namespace csm {
 
@@ -40,6 +41,7 @@ class GpuSolver final : public Solver {
   std::string_view name() const override { return "gpu"; }
   std::string failure() const override { return failure_; }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
+  void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
   void setConfig(const Config& config) override;
   void stepFrame(const Pose& from, const Pose& to) override;
 
@@ -124,7 +126,8 @@ class GpuSolver final : public Solver {
   void uploadHeadField();               // the head's distance field, when it is one
 
   Config config_;
-  SceneHead shape_;  // config_'s head, resolved once
+  SolverHead headModel_;  // the scene's head (handed, or built from config_)
+  SceneHead shape_;       // what it collides with, read every step
   double time_ = 0.0;
   Pose head_;
   HairState state_;  // the layout the regions are built from
@@ -149,10 +152,11 @@ class GpuSolver final : public Solver {
       volumeField_{gl::NoCreate};
   gl::BufferTexture volumeSumsTex_{gl::NoCreate}, volumeRestTex_{gl::NoCreate},
       volumeFieldTex_{gl::NoCreate};
-  // The head's distance field (sim/head_shape.h), read by texel fetches; one node when unused.
+  // The head's distance field (sim/head/head_shape.h), read by texel fetches; one node when unused.
   gl::Buffer headField_{gl::NoCreate};
   gl::BufferTexture headFieldTex_{gl::NoCreate};
   const DistanceGrid* uploadedField_ = nullptr;
+  std::shared_ptr<const HeadModel> uploadedHead_;  // the model uploadedField_ belongs to
   int substepsWritten_ = 0;  // steps of the last writeParams
   gpu::StageTimer timer_;
   bool measureContacts_ = false;

@@ -11,7 +11,7 @@
 
 #include "gl/buffer.h"
 #include "gl/fence.h"
-#include "sim/solver.h"
+#include "sim/core/solver.h"
 
 namespace csm::gpu {
 

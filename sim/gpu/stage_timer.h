@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gl/query.h"
-#include "sim/solver.h"
+#include "sim/core/solver.h"
 
 namespace csm::gpu {
 

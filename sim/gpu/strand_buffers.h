@@ -10,8 +10,8 @@
 
 #include "gl/buffer.h"
 #include "gl/buffer_texture.h"
-#include "sim/hair_state.h"
-#include "sim/stiffness.h"
+#include "sim/core/hair_state.h"
+#include "sim/solver/stiffness.h"
 
 namespace csm::gpu {
 

@@ -6,11 +6,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/baselines/baseline_solver.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/head.h"
-#include "sim/measure.h"
-#include "sim/metrics.h"
+#include "sim/solver/baselines/baseline_solver.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/core/pose.h"
+#include "sim/verify/measure.h"
+#include "sim/solver/accuracy.h"
 
 using namespace csm;
 

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/collision.h"
+#include "sim/core/segment_pairs.h"
 
 using namespace csm;
 

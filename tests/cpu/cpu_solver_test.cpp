@@ -6,9 +6,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/collision.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/head.h"
+#include "sim/core/segment_pairs.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/core/pose.h"
 #include "test_scenes.h"
 
 using namespace csm;

@@ -1,4 +1,4 @@
-// Grooms from files as a scene takes them (sim/hairstyle.h's fitFileGroom): the flaws of real
+// Grooms from files as a scene takes them (sim/groom/hairstyle.h's fitFileGroom): the flaws of real
 // grooms repaired and counted, steps that a few degenerate strands cannot set, roots on the
 // scalp of any head and no particle inside it, roots found for OBJ curves.
 #include <cmath>
@@ -10,9 +10,11 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/head_shape.h"
-#include "sim/stiffness.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/mannequin.h"
+#include "sim/head/head_model.h"
+#include "sim/solver/stiffness.h"
 #include "tests/import_cases.h"
 
 using namespace csm;
@@ -34,10 +36,10 @@ struct TempDir {
 };
 
 // Signed distance to the scene's head: its field, or the nearest sphere.
-double headDistance(const Config& c, const glm::vec3& p) {
-  if (const DistanceGrid* field = headField(c)) return field->sample(glm::dvec3(p));
+double headDistance(const HeadModel& head, const glm::vec3& p) {
+  if (const DistanceGrid* field = head.field()) return field->sample(glm::dvec3(p));
   double d = 1e30;
-  for (const Sphere& s : headSpheres(c))
+  for (const Sphere& s : head.spheres())
     d = std::min(d, double(glm::length(p - s.center)) - double(s.radius));
   return d;
 }
@@ -98,17 +100,18 @@ TEST_CASE("Import: roots land on the scalp of every head, and no particle starts
       c.collision.headShape = head == "spheres" ? HeadShape::Spheres : HeadShape::Sdf;
       if (head == "obj") {
         c.head.mesh = dir.write("octahedron.obj", octahedron());
-        REQUIRE(headField(c) != &mannequinGrid());
+        REQUIRE(HeadModel::require(c)->field() != &mannequinGrid());
       }
       GroomReport report;
       const Groom g = test::importFor(c, file, &report);
       if (head != "spheres") CHECK(report.pushedParticles > 0);  // spheres: the snap suffices
       size_t inside = 0;
       double worstRoot = 0.0;
+      const std::shared_ptr<const HeadModel> model = HeadModel::require(c);
       for (size_t s = 0; s < g.strandCount(); ++s) {
-        worstRoot = std::max(worstRoot, std::abs(headDistance(c, g.points[g.first[s]])));
+        worstRoot = std::max(worstRoot, std::abs(headDistance(*model, g.points[g.first[s]])));
         for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i)
-          inside += headDistance(c, g.points[i]) < 0.0;
+          inside += headDistance(*model, g.points[i]) < 0.0;
       }
       // Particles pushed from inside onto one surface point are merged: no segment is shorter
       // than the import's merge distance.
@@ -150,13 +153,14 @@ TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import
   Groom g;
   std::string error;
   GroomReport report;
-  REQUIRE(buildGroom(c, "", g, &error, &report));
+  const std::shared_ptr<const HeadModel> model = HeadModel::require(c);
+  REQUIRE(buildGroom(c, *model, "", g, &error, &report));
   CHECK(report.turnedStrands == reversed);
   // Every root is on the scalp, where the file grew it.
   const Groom rootFirst = test::importFor(c, file);
   REQUIRE(g.strandCount() == rootFirst.strandCount());
   for (size_t s = 0; s < g.strandCount(); ++s) {
-    CHECK(std::abs(headDistance(c, g.points[g.first[s]])) < 1e-3);
+    CHECK(std::abs(headDistance(*model, g.points[g.first[s]])) < 1e-3);
     CHECK(glm::length(g.points[g.first[s]] - rootFirst.points[rootFirst.first[s]]) < 1e-3f);
   }
   // A whole file written tip first, too.
@@ -168,7 +172,7 @@ TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import
     for (uint32_t k = file.first[s + 1] - 1; k > file.first[s]; --k)
       allBack += "l " + std::to_string(k + 1) + " " + std::to_string(k) + "\n";
   c.hairstyle.file = dir.write("all_back.obj", allBack);
-  REQUIRE(buildGroom(c, "", g, &error, &report));
+  REQUIRE(buildGroom(c, *HeadModel::require(c), "", g, &error, &report));
   CHECK(report.turnedStrands == file.strandCount());
 }
 

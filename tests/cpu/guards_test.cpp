@@ -12,10 +12,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/collision.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/io/groom_file.h"
-#include "sim/simulation.h"
+#include "sim/core/segment_pairs.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/groom/groom_file.h"
+#include "sim/run/simulation.h"
 #include "tests/cpu/test_scenes.h"
 
 using namespace csm;

@@ -1,14 +1,14 @@
-// The hair sequence export (sim/io/hair_sequence.h): each frame written reopens with the
+// The hair sequence export (sim/groom/hair_sequence.h): each frame written reopens with the
 // points the solver had then, the same strands in every frame.
 #include <filesystem>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/io/cyhair.h"
-#include "sim/io/hair_sequence.h"
-#include "sim/simulation.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/groom/cyhair.h"
+#include "sim/groom/hair_sequence.h"
+#include "sim/run/simulation.h"
 #include "tests/cpu/test_scenes.h"
 
 using namespace csm;

@@ -4,9 +4,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/collision.h"
-#include "sim/hairstyle.h"
-#include "sim/head_shape.h"
+#include "sim/core/segment_pairs.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/mannequin.h"
+#include "sim/head/head_model.h"
 #include "test_scenes.h"
 
 using namespace csm;
@@ -88,7 +90,7 @@ TEST_CASE("a groom the fit carries out of float's range, or collapses, is refuse
     c.collision.headShape = shape;
     Groom out;
     std::string error;
-    CHECK_FALSE(fitFileGroom(c, far, "far.hair", out, &error));
+    CHECK_FALSE(fitFileGroom(c, *HeadModel::require(c), far, "far.hair", out, &error));
     CHECK_THAT(error, Catch::Contains("far.hair: point 1 of strand 0 is not finite after fitting "
                                       "to the head"));
     CHECK_THAT(error, Catch::Contains("hairstyle.import_scale"));
@@ -100,7 +102,7 @@ TEST_CASE("a groom the fit carries out of float's range, or collapses, is refuse
   c.hairstyle.importScale = 1e-30f;
   Groom out;
   std::string error;
-  CHECK_FALSE(fitFileGroom(c, tiny, "tiny.hair", out, &error));
+  CHECK_FALSE(fitFileGroom(c, *HeadModel::require(c), tiny, "tiny.hair", out, &error));
   CHECK_THAT(error, Catch::Contains("tiny.hair: no strand is left: all 1 are shorter than half "
                                     "of hairstyle.segment_length") &&
                         Catch::Contains("hairstyle.import_scale"));
@@ -109,7 +111,7 @@ TEST_CASE("a groom the fit carries out of float's range, or collapses, is refuse
   Groom fine;
   fine.addStrand({{0, 10, 0}, {0, 5, 1}, {0, 0, 2}});
   fine.addStrand({{3, 9, 0}, {4, 5, 1}, {5, 0, 2}});
-  CHECK(fitFileGroom(c, fine, "fine.hair", out, &error));
+  CHECK(fitFileGroom(c, *HeadModel::require(c), fine, "fine.hair", out, &error));
   CHECK(out.strandCount() == 2);
 }
 
@@ -138,9 +140,10 @@ TEST_CASE("separation passes leave a grown groom with no pair closer than r, lit
       for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) strand[i] = uint32_t(s);
     return findContactsGrid(x, strand, within).size();
   };
-  const Groom grown = growHairstyle(c);
+  const Groom grown = growHairstyle(c, *HeadModel::require(c));
   h.separatePasses = 30;
-  const Groom apart = growHairstyle(c), again = growHairstyle(c);
+  const Groom apart = growHairstyle(c, *HeadModel::require(c));
+  const Groom again = growHairstyle(c, *HeadModel::require(c));
   const size_t grownClose = pairs(grown, r), grownNear = pairs(grown, 2 * r);
   const size_t apartClose = pairs(apart, r), apartNear = pairs(apart, 2 * r);
   INFO("pairs closer than r: " << grownClose << " grown, " << apartClose
@@ -151,7 +154,8 @@ TEST_CASE("separation passes leave a grown groom with no pair closer than r, lit
   CHECK(apart.points == again.points);  // the same groom every time
   REQUIRE(apart.first == grown.first);
   std::vector<float> moved;
-  const DistanceGrid* field = headField(c);
+  const std::shared_ptr<const HeadModel> model = HeadModel::require(c);
+  const DistanceGrid* field = model->field();
   REQUIRE(field);
   size_t rootsMoved = 0, inside = 0;
   for (size_t s = 0; s < apart.strandCount(); ++s) {
@@ -172,7 +176,7 @@ TEST_CASE("separation passes leave a grown groom with no pair closer than r, lit
   CHECK(moved.back() <= h.separateLimit * 1.001f);
   // The limit holds every particle within it of where it grew (4.1 mm at most without).
   h.separateLimit = 0.0005f;
-  const Groom held = growHairstyle(c);
+  const Groom held = growHairstyle(c, *HeadModel::require(c));
   float heldMost = 0.0f;
   for (size_t i = 0; i < held.pointCount(); ++i)
     heldMost = std::max(heldMost, glm::length(held.points[i] - grown.points[i]));

@@ -13,10 +13,17 @@
 #include <glm/geometric.hpp>
 
 #include "app/preset.h"
-#include "sim/hairstyle.h"
-#include "sim/head_shape.h"
-#include "sim/io/obj_mesh.h"
-#include "sim/scene_checks.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/surface_mesh.h"
+#include "sim/head/mannequin.h"
+#include "sim/head/sphere_fit.h"
+#include "sim/head/mesh_field.h"
+#include "sim/head/head_model.h"
+#include "sim/head/obj_mesh.h"
+#include "sim/run/scene_checks.h"
+#include "sim/run/simulation.h"
+#include "sim/solver/cpu_solver.h"
 
 using namespace csm;
 namespace fs = std::filesystem;
@@ -130,7 +137,7 @@ TEST_CASE("an OBJ sphere's field: the sign right and the distance the mesh's nea
   const SurfaceMesh sphere = icosphere(3);
   const std::string path = dir.write("sphere.obj", objText(sphere));
   std::string error;
-  const LoadedHead* head = loadHeadMesh(path, &error);
+  const std::shared_ptr<const LoadedHead> head = loadHeadMesh(path, &error);
   REQUIRE(head);
   CHECK(error.empty());
   CHECK(openEdges(head->mesh) == 0);
@@ -159,8 +166,8 @@ TEST_CASE("an OBJ sphere's field: the sign right and the distance the mesh's nea
   g.sample({0.0, 0.0, 0.102}, &grad);
   CHECK(glm::dot(glm::normalize(grad), glm::dvec3(0, 0, 1)) > 0.99);
   CHECK(glm::length(grad) == Approx(1.0).margin(0.05));
-  // Shared: the same file again is the same field.
-  CHECK(loadHeadMesh(path, nullptr) == head);
+  // The same file again is the same field.
+  CHECK(loadHeadMesh(path, nullptr)->grid.nodes == g.nodes);
   // Roots snapped onto it (as a groom file's are) land on the surface.
   const glm::dvec3 snapped = projectToSurface(g, {0.03, 0.09, 0.02});
   CHECK(std::abs(glm::length(snapped) - kRadius) < 0.001);
@@ -175,7 +182,7 @@ TEST_CASE("an OBJ cube of quads, its faces turned inwards, gives the cube's fiel
       "v -0.05 0.05 0.05\nv 0.05 0.05 0.05\n"
       "f 2 4 3 1\nf 7 8 6 5\nf 5 6 2 1\nf 4 8 7 3\nf 3 7 5 1\nf 6 8 4 2\n";
   const std::string path = dir.write("cube.obj", text);
-  const LoadedHead* head = loadHeadMesh(path, nullptr);
+  const std::shared_ptr<const LoadedHead> head = loadHeadMesh(path, nullptr);
   REQUIRE(head);
   CHECK(head->mesh.indices.size() == 36);
   for (const glm::dvec3& p : spread(glm::dvec3(-0.08), glm::dvec3(0.08), 3000)) {
@@ -249,23 +256,29 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   dir.write("bad.obj", cubeText("f 2 4 9 6"));
   Config c;
   c.collision.headShape = HeadShape::Sdf;
-  CHECK(headField(c) == &mannequinGrid());
-  CHECK(headSurface(c) == &mannequinMesh());
+  CHECK(HeadModel::require(c)->field() == &mannequinGrid());
+  CHECK(HeadModel::require(c)->surface() == &mannequinMesh());
   c.head.mesh = "sphere.obj";
   c.head.meshDir = dir.path.string();
   CHECK(crossCheck(c).empty());
-  const LoadedHead* head = loadHeadMesh((dir.path / "sphere.obj").string(), nullptr);
+  const std::shared_ptr<const LoadedHead> head =
+      loadHeadMesh((dir.path / "sphere.obj").string(), nullptr);
   REQUIRE(head);
-  CHECK(headField(c) == &head->grid);
-  CHECK(headSurface(c) == &head->mesh);
+  const std::shared_ptr<const HeadModel> model = HeadModel::require(c);
+  REQUIRE(model->field());
+  CHECK(model->field()->nodes == head->grid.nodes);
+  CHECK(model->surface()->indices == head->mesh.indices);
+  CHECK_FALSE(model->mannequin());
+  // A model built after it for the same file shares its mesh and field (read once a scene).
+  CHECK(HeadModel::build(c, nullptr, model.get())->field() == model->field());
   c.collision.headShape = HeadShape::Spheres;
-  CHECK(headField(c) == nullptr);
-  CHECK(headSurface(c) == nullptr);
+  CHECK(HeadModel::require(c)->field() == nullptr);
+  CHECK(HeadModel::require(c)->surface() == nullptr);
   c.collision.headShape = HeadShape::Sdf;
 
   // Hair grown on it has its roots on the sphere (seen from the mannequin's scalp centre).
   c.hairstyle.strands = 200;
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   REQUIRE(g.strandCount() == 200);
   for (size_t s = 0; s < g.strandCount(); ++s)
     CHECK(std::abs(glm::length(glm::dvec3(g.points[g.first[s]])) - kRadius) < 0.002);
@@ -274,7 +287,7 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   c.collision.headShape = HeadShape::Spheres;
   c.head.fitSpheres = true;
   c.head.spheres = {{{0.0f, 0.5f, 0.0f}, 0.01f}, {{0.0f, 0.6f, 0.0f}, 0.01f}};  // only counted
-  const std::vector<Sphere>& fitted = headSpheres(c);
+  const std::vector<Sphere> fitted = HeadModel::require(c)->spheres();
   REQUIRE(fitted.size() == c.head.spheres.size());
   const double cell = head->grid.cell;
   CHECK(glm::length(glm::dvec3(fitted[0].center)) < cell);
@@ -296,11 +309,33 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   PresetErrors errors;
   CHECK(loadPreset((dir.path / "good.json").string(), p, errors));
   CHECK(p.scene.head.mesh == "sphere.obj");
-  CHECK(headField(p.scene) == &head->grid);
+  CHECK(HeadModel::require(p.scene)->field()->nodes == head->grid.nodes);
   Preset q = defaultPreset();
   CHECK_FALSE(loadPreset((dir.path / "bad.json").string(), q, errors));
   CHECK_THAT(errors.text(),
              Catch::Contains("bad.json: head.mesh: " + (dir.path / "bad.obj").string() + ":15: "));
+}
+
+TEST_CASE("head.mesh gone when the scene loads: an error naming the file, not the mannequin",
+          "[head_mesh]") {
+  TempDir dir;
+  dir.write("sphere.obj", objText(icosphere(2)));
+  Config c = Config{};
+  c.hairstyle.strands = 20;
+  c.head.mesh = "sphere.obj";
+  c.head.meshDir = dir.path.string();
+  REQUIRE(crossCheck(c).empty());
+  std::filesystem::remove(dir.path / "sphere.obj");  // checked, then gone before it loads
+  std::string error;
+  CHECK(HeadModel::build(c, &error) == nullptr);
+  CHECK_THAT(error, Catch::Contains((dir.path / "sphere.obj").string()));
+  Simulation sim(std::make_unique<CpuSolver>());
+  error.clear();
+  CHECK_FALSE(sim.load(c, dir.path.string(), &error));
+  CHECK_THAT(error, Catch::StartsWith("head.mesh: " + (dir.path / "sphere.obj").string()));
+  // A solver run on its own with that scene says so too, rather than colliding with another head.
+  CpuSolver solver;
+  CHECK_THROWS_WITH(solver.setConfig(c), Catch::Contains("sphere.obj"));
 }
 
 // Found by fuzz_obj (tests/fuzz/regressions/obj/): a NUL byte ended tinyobjloader's line

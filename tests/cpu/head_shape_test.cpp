@@ -8,9 +8,13 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/hairstyle.h"
-#include "sim/head_shape.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/surface_mesh.h"
+#include "sim/head/mannequin.h"
+#include "sim/head/sphere_fit.h"
+#include "sim/head/head_model.h"
 #include "tests/cpu/test_scenes.h"
 
 using namespace csm;
@@ -363,11 +367,13 @@ TEST_CASE("head.fit_spheres: the scene collides with and grows hair from the fit
           "[head]") {
   Config c = test::smallScene(300);
   c.collision.headShape = HeadShape::Spheres;
-  CHECK(headSpheres(c) == c.head.spheres);
+  CHECK(HeadModel::require(c)->spheres() == c.head.spheres);
   c.head.fitSpheres = true;
-  const std::vector<Sphere>& spheres = headSpheres(c);
+  const std::shared_ptr<const HeadModel> model = HeadModel::require(c);
+  const std::vector<Sphere>& spheres = model->spheres();
   CHECK(spheres == fitSpheres(mannequinGrid(), 3));
-  CHECK(&headSpheres(c) == &spheres);  // made once
+  // A model built after it for the same head takes them over (fitted once a scene).
+  CHECK(HeadModel::build(c, nullptr, model.get())->spheres() == spheres);
   CHECK(spheres != c.head.spheres);
   const Sphere scalp = fitSpheres(mannequinGrid(), 3).front();
   const Groom g = test::growFor(c);

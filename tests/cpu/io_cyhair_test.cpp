@@ -9,7 +9,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/io/cyhair.h"
+#include "sim/groom/cyhair.h"
 
 using csm::Groom;
 using csm::io::readCyHair;

@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/io/fit.h"
+#include "sim/groom/fit.h"
 
 using csm::Groom;
 using csm::io::FitOptions;

@@ -9,8 +9,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/io/cyhair.h"
-#include "sim/io/groom_file.h"
+#include "sim/groom/cyhair.h"
+#include "sim/groom/groom_file.h"
 
 namespace fs = std::filesystem;
 using csm::Groom;

@@ -1,7 +1,7 @@
 // Grooms as the field's tools write them: TressFX 1.x/2.x text, 3.x and 4.x binary, OBJ
 // curves in Blender's edge-per-line form and in polyline form; the files are written here from
-// the same strands, by test-only writers that follow each format's layout (sim/io/tressfx.h,
-// sim/io/obj_curves.h), and must read back to the same points.
+// the same strands, by test-only writers that follow each format's layout (sim/groom/tressfx.h,
+// sim/groom/obj_curves.h), and must read back to the same points.
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -10,9 +10,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/io/obj_curves.h"
-#include "sim/io/repair.h"
-#include "sim/io/tressfx.h"
+#include "sim/groom/obj_curves.h"
+#include "sim/groom/repair.h"
+#include "sim/groom/tressfx.h"
 
 using csm::Groom;
 

@@ -8,7 +8,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/io/resample.h"
+#include "sim/groom/resample.h"
 
 using csm::Groom;
 using csm::io::ResampleOptions;

@@ -7,7 +7,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/io/tressfx.h"
+#include "sim/groom/tressfx.h"
 
 using csm::Groom;
 using csm::io::readTressFx;

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "sim/cpu/cpu_solver.h"
+#include "sim/solver/cpu_solver.h"
 #include "tests/live_params_check.h"
 
 using namespace csm;

@@ -1,14 +1,14 @@
-// The accuracy measures on cases with a known answer (sim/metrics.h, sim/measure.h).
+// The accuracy measures on cases with a known answer (sim/solver/accuracy.h, sim/verify/measure.h).
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
-#include "sim/baselines/baseline_solver.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/measure.h"
-#include "sim/metrics.h"
+#include "sim/solver/baselines/baseline_solver.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/verify/measure.h"
+#include "sim/solver/accuracy.h"
 
 using namespace csm;
 
@@ -82,10 +82,10 @@ TEST_CASE("position error of a state against itself and against a 1 mm shift") {
 TEST_CASE("a strand at rest has zero time-step error, for every solver") {
   const Scene scene = restScene();
   const double times[] = {0.25, 0.5};
-  std::vector<SolverFactory> makers = {[] { return std::make_unique<CpuSolver>(); }};
+  std::vector<SolverMaker> makers = {[] { return std::make_unique<CpuSolver>(); }};
   for (const std::string& name : baselineNames())
     makers.push_back([name] { return makeBaseline(name, BaselineParams{}); });
-  for (const SolverFactory& make : makers) {
+  for (const SolverMaker& make : makers) {
     const PositionError e = timeStepError(make, scene, times, 16);
     INFO(make()->name());
     CHECK(e.rmsMm < 1e-6);

@@ -2,9 +2,9 @@
 // the period of a uniform rod, 2 pi sqrt(2L / 3g).
 #include <catch2/catch.hpp>
 
-#include "sim/baselines/baseline_solver.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/measure.h"
+#include "sim/solver/baselines/baseline_solver.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/verify/measure.h"
 
 using namespace csm;
 

@@ -5,7 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/parallel.h"
+#include "sim/base/parallel.h"
 
 using namespace csm;
 

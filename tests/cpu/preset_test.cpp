@@ -12,8 +12,8 @@
 #include "app/preset.h"
 #include "render/hair_color.h"
 #include "render/view_params.h"
-#include "sim/params.h"
-#include "sim/scene_checks.h"
+#include "sim/param/sim_params.h"
+#include "sim/run/scene_checks.h"
 
 using namespace csm;
 namespace fs = std::filesystem;

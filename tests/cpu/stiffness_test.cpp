@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/stiffness.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/solver/stiffness.h"
 #include "tests/stiffness_cases.h"
 
 using namespace csm;

@@ -1,4 +1,4 @@
-// Strand contacts on the CPU reference (sim/contacts.h): candidates, measures, and contacts
+// Strand contacts on the CPU reference (sim/solver/contacts.h): candidates, measures, and contacts
 // that hold one strand on another.
 #include <catch2/catch.hpp>
 
@@ -10,10 +10,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/collision.h"
-#include "sim/contacts.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/hairstyle.h"
+#include "sim/core/segment_pairs.h"
+#include "sim/solver/contacts.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/head/head_model.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/strand_contact_scenes.h"
 
@@ -74,7 +75,7 @@ TEST_CASE("with gravity off the rest groom stays still for 1 s with strand conta
   c.hairstyle.strands = 300;
   c.sim.gravity = glm::vec3(0.0f);
   c.collision.mode = CollisionMode::Strands;
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver solver;
   solver.reset(g, c, Pose{});
   const std::vector<glm::vec4> rest = positions(solver);
@@ -271,7 +272,7 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   Config c;
   c.hairstyle.strands = 400;
   c.collision.mode = CollisionMode::Head;
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver solver;
   solver.reset(g, c, Pose{});
   solver.stepFrame(Pose{}, Pose{});
@@ -344,7 +345,7 @@ TEST_CASE("more contact iterations hold dense hair in the wind apart better") {
   c.collision.radius = 0.0004f;
   c.wind.strength = 3.0f;
   c.wind.direction = glm::vec3(1.0f, 0.0f, -0.4f);
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   struct Run {
     uint64_t crossings = 0, penetrations = 0;
   };
@@ -428,7 +429,7 @@ TEST_CASE("lists within the frame: where they come, and what they measure") {
   Config c = test::smallScene(300);
   c.collision.mode = CollisionMode::Strands;
   c.wind.strength = 3.0f;
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   auto first = [&](int lists) {
     Config cl = c;
     cl.collision.lists = lists;

@@ -5,10 +5,11 @@
 
 #include <glm/vec4.hpp>
 
-#include "sim/config.h"
-#include "sim/groom.h"
-#include "sim/hairstyle.h"
-#include "sim/head_shape.h"
+#include "sim/core/config.h"
+#include "sim/core/groom.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/head/head_model.h"
+
 
 namespace csm::test {
 
@@ -27,7 +28,7 @@ inline Config smallScene(int strands = 60) {
 }
 
 inline Groom growFor(const Config& c) {
-  return growHairstyle(c);
+  return growHairstyle(c, *HeadModel::require(c));
 }
 
 // The strand of each of the groom's points (the layout every solver keeps).

@@ -1,12 +1,12 @@
-// The torture map's far ends and a shortened soak on the CPU reference (sim/torture.h,
+// The torture map's far ends and a shortened soak on the CPU reference (sim/verify/torture.h,
 // docs/RELIABILITY.md). Tags name the axis; [jump] is the head turned 90 deg between two
 // frames, which flings the hair until the solvers move it with the head.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/params.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/param/sim_params.h"
 #include "tests/torture_cases.h"
 
 using namespace csm;
@@ -14,7 +14,7 @@ using namespace csm::test;
 
 namespace {
 
-SolverFactory cpu() {
+SolverMaker cpu() {
   return [] { return std::unique_ptr<Solver>(std::make_unique<CpuSolver>()); };
 }
 

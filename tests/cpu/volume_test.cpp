@@ -1,4 +1,4 @@
-// The volume mode (sim/volume.h): the grid's sums, the model's two terms, and what it does to
+// The volume mode (sim/solver/volume.h): the grid's sums, the model's two terms, and what it does to
 // a groom.
 #include <catch2/catch.hpp>
 
@@ -8,9 +8,10 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/hairstyle.h"
-#include "sim/volume.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/solver/volume.h"
+#include "sim/head/head_model.h"
 
 using namespace csm;
 
@@ -116,7 +117,7 @@ TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is 
   c.hairstyle.strands = 200;
   c.collision.mode = CollisionMode::Head;
   c.collision.volumeFraction = 0.02f;  // pushes where hair gathers
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver headOnly, switched;
   headOnly.reset(g, c, Pose{});
   switched.reset(g, c, Pose{});
@@ -149,7 +150,7 @@ TEST_CASE("volume mode: with gravity off the rest groom stays still") {
   c.sim.gravity = glm::vec3(0.0f);
   c.collision.mode = CollisionMode::Volume;
   c.collision.volumeFraction = 0.01f;  // everything the groom packed is allowed, not more
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver solver;
   solver.reset(g, c, Pose{});
   const std::vector<glm::dvec3> rest = solver.positions();
@@ -168,7 +169,7 @@ TEST_CASE("volume mode: hair falling onto itself ends less dense than without it
   c.hairstyle.fall = 0.0f;
   c.collision.volumeFraction = 0.05f;
   c.collision.volumeStiffness = 5.0f;
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   auto densest = [&](CollisionMode mode) {
     Config m = c;
     m.collision.mode = mode;

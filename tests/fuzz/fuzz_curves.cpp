@@ -1,10 +1,10 @@
-// libFuzzer target: text as OBJ hair curves (sim/io/obj_curves.h, what a groom .obj reads as),
+// libFuzzer target: text as OBJ hair curves (sim/groom/obj_curves.h, what a groom .obj reads as),
 // and what a preset does with a groom it accepts (fuzz_groom.h), roots found as for OBJ.
 #include <cstddef>
 #include <cstdint>
 #include <span>
 
-#include "sim/io/obj_curves.h"
+#include "sim/groom/obj_curves.h"
 #include "tests/fuzz/fuzz_groom.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

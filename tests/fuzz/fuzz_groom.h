@@ -1,5 +1,5 @@
 // What the groom targets do with a groom their reader accepted: the reader's promise (a sound
-// structure, finite points), then the steps a preset naming the file takes (sim/hairstyle.h's
+// structure, finite points), then the steps a preset naming the file takes (sim/groom/hairstyle.h's
 // fitFileGroom: strands kept, the fit to the head, roots snapped, resampling), on the spheres
 // or on the mannequin's field as `selector` says, and their promise: a groom the solver can run.
 #pragma once
@@ -7,10 +7,11 @@
 #include <cmath>
 #include <string>
 
-#include "sim/config.h"
-#include "sim/groom.h"
-#include "sim/hairstyle.h"
-#include "sim/io/common.h"
+#include "sim/core/config.h"
+#include "sim/core/groom.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/groom/read_common.h"
+#include "sim/head/head_model.h"
 #include "tests/fuzz/fuzz_common.h"
 
 namespace csm::fuzz {
@@ -45,7 +46,7 @@ inline void fitAsPreset(const Groom& read, const std::string& name, unsigned sel
   Groom out;
   std::string error;
   GroomReport report;
-  if (!fitFileGroom(c, read, name, out, &error, &report, findRoots)) {
+  if (!fitFileGroom(c, *HeadModel::require(c), read, name, out, &error, &report, findRoots)) {
     if (error.empty()) fail("fitFileGroom failed without a message");
     return;
   }

@@ -1,5 +1,5 @@
-// libFuzzer target: text as an OBJ head (sim/io/obj_mesh.h's parseObjMesh, what head.mesh
-// reads), and a mesh it accepts through what the scene makes of it (sim/head_shape.h): its
+// libFuzzer target: text as an OBJ head (sim/head/obj_mesh.h's parseObjMesh, what head.mesh
+// reads), and a mesh it accepts through what the scene makes of it (sim/head/head_shape.h): its
 // distance field, spheres fitted to it, the field's zero level.
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,12 @@
 
 #include <glm/common.hpp>
 
-#include "sim/head_shape.h"
-#include "sim/io/obj_mesh.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/surface_mesh.h"
+#include "sim/head/sphere_fit.h"
+#include "sim/head/mesh_field.h"
+#include "sim/head/head_model.h"
+#include "sim/head/obj_mesh.h"
 #include "tests/fuzz/fuzz_common.h"
 
 using csm::fuzz::fail;

@@ -1,6 +1,6 @@
 // libFuzzer target: text as a preset (app/preset.h's parsePreset: the JSON, every value's
 // range, the checks between parameters and of capacity), then the scene it describes built on
-// the CPU (sim/simulation.h: the groom grown on the head, the hair state and the solver's
+// the CPU (sim/run/simulation.h: the groom grown on the head, the hair state and the solver's
 // regions, the volume grid) and one frame stepped.
 //
 // Files the preset names (head.mesh, hairstyle.file) are pointed at a path that does not
@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/preset.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/simulation.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/run/simulation.h"
 #include "tests/fuzz/fuzz_common.h"
 
 namespace {

@@ -1,10 +1,10 @@
-// libFuzzer target: bytes as a TressFX file (sim/io/tressfx.h), and what a preset does with a
+// libFuzzer target: bytes as a TressFX file (sim/groom/tressfx.h), and what a preset does with a
 // groom it accepts (fuzz_groom.h).
 #include <cstddef>
 #include <cstdint>
 #include <span>
 
-#include "sim/io/tressfx.h"
+#include "sim/groom/tressfx.h"
 #include "tests/fuzz/fuzz_groom.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

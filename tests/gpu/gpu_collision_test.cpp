@@ -14,9 +14,10 @@
 #include <glm/geometric.hpp>
 
 #include "shaders/sim/bindings.glsl"
-#include "sim/collision.h"
+#include "sim/core/segment_pairs.h"
 #include "sim/gpu/gpu_solver.h"
-#include "sim/hairstyle.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/head/head_model.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
 #include "tests/gpu/gpu_solver_fixture.h"
@@ -233,7 +234,7 @@ TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu
   c.hairstyle.particlesPerStrand = 12;
   c.wind.strength = 3.0f;
   c.collision.mode = CollisionMode::Strands;
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   gpu->reset(g, c, Pose{});
   for (int f = 0; f < 10; ++f) gpu->stepFrame(Pose{}, Pose{});
   gpu->detectContacts();
@@ -261,7 +262,7 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
   c.head.amplitude = 40.0f;
   c.collision.radius = 0.002f;
   c.hairstyle.volume = 0.03f;  // as the CPU test: a layer that holds hair this thick
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   const std::vector<uint32_t> strand = strandOf(g);
   auto penetrations = [&](CollisionMode mode, ContactStats* stats) {
     Config m = c;

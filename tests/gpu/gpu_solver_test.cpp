@@ -9,16 +9,18 @@
 #include <glm/geometric.hpp>
 
 #include "gl/shader_source.h"
-#include "sim/collision.h"
-#include "sim/cpu/cpu_solver.h"
+#include "sim/core/segment_pairs.h"
+#include "sim/solver/cpu_solver.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/gpu_solver.h"
-#include "sim/hairstyle.h"
+#include "sim/groom/hairstyle.h"
 #include "app/preset.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
 #include "tests/gpu/gpu_solver_fixture.h"
 #include "tests/strand_contact_scenes.h"
+#include "sim/solver/accuracy.h"
+#include "sim/head/head_model.h"
 
 using namespace csm;
 
@@ -472,7 +474,7 @@ TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is c
   c.hairstyle.strands = 200;
   c.collision.mode = CollisionMode::Head;
   c.collision.volumeFraction = 0.02f;  // pushes where hair gathers
-  const Groom g = growHairstyle(c);
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
   auto headOnly = test::gpuSolver(), switched = test::gpuSolver();
   headOnly->reset(g, c, Pose{});
   switched->reset(g, c, Pose{});

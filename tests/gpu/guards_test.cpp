@@ -8,8 +8,9 @@
 #include <glm/geometric.hpp>
 
 #include "sim/gpu/gpu_solver.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/simulation.h"
+#include "sim/head/head_model.h"
+#include "sim/run/make_solver.h"
+#include "sim/run/simulation.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
 
@@ -213,7 +214,8 @@ TEST_CASE("Guard: hair driven through the head comes out within reach of its par
   // the head. The head's push alone takes a deep particle to the nearest surface, often
   // another side of the head than its parent's, out of the strain limit's reach; or, in a
   // concave place, to a tangent plane that cuts back into the head.
-  const std::vector<Sphere>& spheres = headSpheres(c);
+  const std::shared_ptr<const HeadModel> model = HeadModel::require(c);
+  const std::vector<Sphere>& spheres = model->spheres();
   glm::dvec3 centre(0.0);
   for (const Sphere& sp : spheres) centre += glm::dvec3(sp.center) / double(spheres.size());
   std::vector<glm::vec4> x, v;
@@ -224,7 +226,7 @@ TEST_CASE("Guard: hair driven through the head comes out within reach of its par
   solver->writeState(x, v);
 
   const auto depth = [&](const glm::dvec3& p) {
-    if (shape == HeadShape::Sdf) return -headShapeField(c).sample(p);
+    if (shape == HeadShape::Sdf) return -model->shapeField().sample(p);
     double d = -INFINITY;
     for (const Sphere& sp : spheres)
       d = std::max(d, double(sp.radius) - glm::length(p - glm::dvec3(sp.center)));

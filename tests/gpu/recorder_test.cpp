@@ -1,4 +1,4 @@
-// The timeline's recording (sim/recorder.h) on both solvers (the GPU one on the real GL
+// The timeline's recording (sim/run/frame_recording.h) on both solvers (the GPU one on the real GL
 // driver, llvmpipe where there is no GPU): resuming from a recorded frame gives the frames
 // that were recorded after it, bit for bit; the cache keeps within its memory budget.
 #include <memory>
@@ -7,9 +7,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/recorder.h"
-#include "sim/simulation.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/run/frame_recording.h"
+#include "sim/run/simulation.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gpu_solver_fixture.h"
 
@@ -43,14 +43,14 @@ std::vector<glm::vec3> positionsOf(Simulation& sim) {
 
 }  // namespace
 
-TEST_CASE("Recorder: record 120 frames, resume from 60: the frames after it as recorded",
+TEST_CASE("FrameRecording: record 120 frames, resume from 60: the frames after it as recorded",
           "[recorder][gpu]") {
   const std::string name = GENERATE(std::string("cpu"), std::string("gpu"));
   INFO("solver " << name);
   Simulation sim(solverNamed(name));
   std::string error;
   REQUIRE(sim.load(busyScene(), ".", &error));
-  Recorder recorder;  // keyframes every 30 frames
+  FrameRecording recorder;  // keyframes every 30 frames
   recorder.record(sim);
   std::vector<std::vector<glm::vec3>> recorded{positionsOf(sim)};
   for (int f = 1; f <= 120; ++f) {
@@ -96,7 +96,7 @@ TEST_CASE("Recorder: record 120 frames, resume from 60: the frames after it as r
   CHECK(error == "frame 121 is not recorded (frames 0-45 are)");
 }
 
-TEST_CASE("Recorder: the cache never exceeds its memory budget, and every frame kept resumes",
+TEST_CASE("FrameRecording: the cache never exceeds its memory budget, and every frame kept resumes",
           "[recorder][gpu]") {
   const std::string name = GENERATE(std::string("cpu"), std::string("gpu"));
   INFO("solver " << name);
@@ -104,14 +104,14 @@ TEST_CASE("Recorder: the cache never exceeds its memory budget, and every frame 
   std::string error;
   REQUIRE(sim.load(busyScene(), ".", &error));
   // The size of a span of 10 frames, measured on a first recording.
-  Recorder probe({size_t(1) << 30, 10});
+  FrameRecording probe({size_t(1) << 30, 10});
   for (int f = 0; f < 10; ++f) {
     sim.stepFrame();
     probe.record(sim);
   }
   const size_t span = probe.bytes();
   // Room for three and a half spans.
-  Recorder recorder({span * 7 / 2, 10});
+  FrameRecording recorder({span * 7 / 2, 10});
   size_t most = 0;
   for (int f = 0; f < 200; ++f) {
     sim.stepFrame();
@@ -139,7 +139,7 @@ TEST_CASE("Recorder: the cache never exceeds its memory budget, and every frame 
   CHECK(recorder.bytes() <= span * 3 / 2);
   CHECK(!recorder.empty());
   // A budget smaller than one keyframe keeps nothing and counts what it refused.
-  Recorder tiny({1024, 10});
+  FrameRecording tiny({1024, 10});
   sim.stepFrame();
   tiny.record(sim);
   CHECK(tiny.empty());
@@ -147,13 +147,13 @@ TEST_CASE("Recorder: the cache never exceeds its memory budget, and every frame 
   CHECK(tiny.refused() == 1);
 }
 
-TEST_CASE("Recorder: a regrown groom starts the recording again; its states are refused",
+TEST_CASE("FrameRecording: a regrown groom starts the recording again; its states are refused",
           "[recorder]") {
   Simulation sim(std::make_unique<CpuSolver>());
   std::string error;
   Config c = test::smallScene(30);
   REQUIRE(sim.load(c, ".", &error));
-  Recorder recorder;
+  FrameRecording recorder;
   for (int f = 0; f < 5; ++f) {
     sim.stepFrame();
     recorder.record(sim);

@@ -14,8 +14,8 @@
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
 #include "app/preset.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/simulation.h"
+#include "sim/run/make_solver.h"
+#include "sim/run/simulation.h"
 #include "tests/gpu/gl_fixture.h"
 
 namespace csm::test {

@@ -29,9 +29,9 @@
 #include "app/viewer.h"
 #include "app/viewer_presets.h"
 #include "gl/shader_source.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/io/cyhair.h"
-#include "sim/params.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/groom/cyhair.h"
+#include "sim/param/sim_params.h"
 #include "app/preset.h"
 
 using namespace csm;
@@ -57,7 +57,7 @@ void removeTemp(const fs::path& dir) {
 }
 
 // frameLimit: the simulation stops at that frame (and again after a resume before it).
-std::unique_ptr<Viewer> makeViewer(SolverFactory factory = {}, long frameLimit = -1) {
+std::unique_ptr<Viewer> makeViewer(SolverByName factory = {}, long frameLimit = -1) {
   ViewerOptions o;
   o.width = 1280;
   o.height = 720;
@@ -552,7 +552,8 @@ TEST_CASE("camera control: orbit, zoom and head drag stay in range and keep the 
   CHECK(cam.distance == Approx(findParam("camera.distance")->min));
 
   Config c = defaultPreset().scene;
-  frameHead(cam, c, Pose{});
+  const std::shared_ptr<const HeadModel> head = HeadModel::require(c);
+  frameHead(cam, c, *head, Pose{});
   // The scalp grown by the longest strand is centred and fits the vertical field of view.
   const float reach = c.head.spheres[0].radius + c.hairstyle.lengthMax;
   CHECK(glm::length(cam.target - c.head.spheres[0].center) < 0.05f);
@@ -562,7 +563,7 @@ TEST_CASE("camera control: orbit, zoom and head drag stay in range and keep the 
   Pose up;
   up.translation = glm::dvec3(0.0, 1.0, 0.0);
   CameraConfig moved = cam;
-  frameHead(moved, c, up);
+  frameHead(moved, c, *head, up);
   CHECK(moved.target.y == Approx(cam.target.y + 1.0f));
 
   const Pose turned = dragHead(Pose{}, cam, c.head, 80.0f, -40.0f);

@@ -7,11 +7,12 @@
 #include <cstdio>
 #include <thread>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/hairstyle.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/groom/hairstyle.h"
 #include "app/preset.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/simulation.h"
+#include "sim/run/make_solver.h"
+#include "sim/run/simulation.h"
+#include "sim/head/head_model.h"
 
 namespace csm::bench {
 
@@ -164,7 +165,7 @@ Scene mainScene(const Options& o) {
   c.head.frequency = 0.6f;
   c.wind.strength = 0.0f;
   c.collision.mode = CollisionMode::Head;
-  s.groom = growHairstyle(c);
+  s.groom = growHairstyle(c, *HeadModel::require(c));
   return s;
 }
 
@@ -180,7 +181,7 @@ Config presetConfig(const Options& o, const std::string& preset, int strands) {
 Scene presetScene(const Options& o, const std::string& preset, int strands) {
   Scene s;
   s.config = presetConfig(o, preset, strands);
-  s.groom = growHairstyle(s.config);
+  s.groom = growHairstyle(s.config, *HeadModel::require(s.config));
   return s;
 }
 

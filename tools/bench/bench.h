@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "sim/baselines/baseline_solver.h"
-#include "sim/config.h"
-#include "sim/frame_driver.h"
-#include "sim/measure.h"
-#include "sim/solver.h"
+#include "sim/solver/baselines/baseline_solver.h"
+#include "sim/core/config.h"
+#include "sim/run/frame_driver.h"
+#include "sim/verify/measure.h"
+#include "sim/core/solver.h"
 
 namespace csm::bench {
 
@@ -99,7 +99,7 @@ void runWindow(const Options& o);
 void runRecording(const Options& o);
 // A 5 M point groom's import: time by stage and peak memory (tools/bench/import.cpp).
 void runImport(const Options& o);
-// The torture map and the soak (tools/bench/torture.cpp, sim/torture.h).
+// The torture map and the soak (tools/bench/torture.cpp, sim/verify/torture.h).
 void runTortureMap(const Options& o);
 void runSoakSection(const Options& o);
 

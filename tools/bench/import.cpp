@@ -1,6 +1,6 @@
 // What a large groom costs to import: a cyHair file of 50,000 strands x 100 points (5 M points,
 // written here, in centimetres as a DCC tool writes them) read, repaired, fitted, resampled and
-// placed on the head (sim/hairstyle.h's buildGroom, each stage timed through its progress), then
+// placed on the head (sim/groom/hairstyle.h's buildGroom, each stage timed through its progress), then
 // a scene loaded with it and its first frame simulated; the process's peak resident memory
 // after each (VmHWM, reset before the import starts).
 #include <chrono>
@@ -12,11 +12,12 @@
 #include <memory>
 #include <string>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/hairstyle.h"
-#include "sim/io/groom_file.h"
-#include "sim/simulation.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/run/make_solver.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/groom/groom_file.h"
+#include "sim/run/simulation.h"
+#include "sim/head/head_model.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
 
@@ -117,7 +118,7 @@ void runImport(const Options& o) {
     Groom g;
     GroomReport report;
     std::string error;
-    if (!buildGroom(c, "", g, &error, &report, progress)) {
+    if (!buildGroom(c, *HeadModel::require(c), "", g, &error, &report, progress)) {
       std::fprintf(stderr, "import: %s\n", error.c_str());
       return;
     }

@@ -14,8 +14,8 @@
 
 #include "tools/bench/bench.h"
 #include "gl/context.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/simulation.h"
+#include "sim/run/make_solver.h"
+#include "sim/run/simulation.h"
 
 #ifndef CSM_SOURCE_DIR
 #define CSM_SOURCE_DIR "."

@@ -7,8 +7,8 @@
 
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
-#include "sim/head.h"
-#include "sim/metrics.h"
+#include "sim/core/pose.h"
+#include "sim/solver/accuracy.h"
 
 namespace csm::bench {
 namespace {

@@ -1,4 +1,4 @@
-// The timeline's price (sim/recorder.h, the viewer's Timeline panel): per frame, what recording
+// The timeline's price (sim/run/frame_recording.h, the viewer's Timeline panel): per frame, what recording
 // costs beside the step it records (the positions read back, a keyframe's whole state every 30
 // frames), the memory a frame and a keyframe take, and how long a resume takes from the frame
 // farthest from its keyframe (29 frames stepped again).
@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/recorder.h"
-#include "sim/simulation.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/run/make_solver.h"
+#include "sim/run/frame_recording.h"
+#include "sim/run/simulation.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
 
@@ -43,7 +43,7 @@ void runRecording(const Options& o) {
         std::fprintf(stderr, "recording: %s\n", error.c_str());
         continue;
       }
-      Recorder recorder;
+      FrameRecording recorder;
       double stepMs = 0.0, recordMs = 0.0, keyMs = 0.0;
       int keys = 0;
       for (int f = 0; f < frames; ++f) {

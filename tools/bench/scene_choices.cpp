@@ -9,9 +9,10 @@
 #include "tools/bench/csv.h"
 #include <glm/geometric.hpp>
 
-#include "sim/hairstyle.h"
-#include "sim/head.h"
-#include "sim/metrics.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/core/pose.h"
+#include "sim/solver/accuracy.h"
+#include "sim/head/head_model.h"
 
 namespace csm::bench {
 namespace {
@@ -107,7 +108,7 @@ void runSceneChoices(const Options& o) {
   std::fprintf(stderr, "scene choices: presets/default.json with %d strands, %.2f s\n", strands,
                duration);
   auto regrow = [](Scene s) {
-    s.groom = growHairstyle(s.config);
+    s.groom = growHairstyle(s.config, *HeadModel::require(s.config));
     return s;
   };
 

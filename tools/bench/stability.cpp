@@ -1,7 +1,7 @@
 // Stability maps: each method over time step x its own stiffness knob, on four cantilever
 // strands released under gravity (no head, no wind, nothing driving): a blow-up is a
 // non-finite state, a segment stretched beyond 100%, or the energy growing past 1.5 x its
-// start (sim/measure.h, checkStability).
+// start (sim/verify/measure.h, checkStability).
 #include <cstdio>
 #include <mutex>
 

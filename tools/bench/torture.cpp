@@ -1,12 +1,13 @@
-// The torture map and the soak (docs/RELIABILITY.md): sim/torture.h's cells on the CPU
+// The torture map and the soak (docs/RELIABILITY.md): sim/verify/torture.h's cells on the CPU
 // solver (and the GPU one with --gpu), and a long run of a small scene.
 #include <algorithm>
 #include <cstdio>
 
-#include "sim/cpu/cpu_solver.h"
-#include "sim/gpu/make_solver.h"
-#include "sim/hairstyle.h"
-#include "sim/torture.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/run/make_solver.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/verify/torture.h"
+#include "sim/head/head_model.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
 
@@ -14,7 +15,7 @@ namespace csm::bench {
 
 namespace {
 
-SolverFactory factory(const std::string& solver) {
+SolverMaker factory(const std::string& solver) {
   if (solver == "gpu") return [] { return makeSolver("gpu", nullptr); };
   return [] { return std::unique_ptr<Solver>(std::make_unique<CpuSolver>()); };
 }
@@ -150,7 +151,7 @@ void runSoakSection(const Options& o) {
         });
     for (const auto& [frame, kb] : r.rss) samples.add(p.solver).add(frame).add(kb).endRow();
     summary.add(p.solver).add(collisionModeName(scene.collision.mode)).add(strands);
-    summary.add(long(growHairstyle(scene).pointCount()));
+    summary.add(long(growHairstyle(scene, *HeadModel::require(scene)).pointCount()));
     summary.add(r.frames).add(p.options.movingFrames).add(r.finite).add(r.nonFiniteFrame);
     summary.add(r.maxStrain).add(r.maxStrainFrame).add(r.strainedFrames);
     summary.add(r.wallSeconds).add(r.framesPerSecond);

@@ -1,12 +1,12 @@
-// The stiffness window of the calibrated model (sim/stiffness.h): the coefficient c_w it is
+// The stiffness window of the calibrated model (sim/solver/stiffness.h): the coefficient c_w it is
 // calibrated with, measured on the CPU solver for w = 1..32 beside the table, and what the
 // window length still does to a strand at a fixed bending stiffness.
 #include <cstdio>
 
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
-#include "sim/cpu/cpu_solver.h"
-#include "sim/stiffness.h"
+#include "sim/solver/cpu_solver.h"
+#include "sim/solver/stiffness.h"
 
 namespace csm::bench {
 namespace {

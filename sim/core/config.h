@@ -1,0 +1,174 @@
+// The simulated scene: the values behind the simulation's parameters. The parameter table
+// (sim/param/sim_params.h) names each field once, with its key, range and description; JSON, --set,
+// --list-params and the ImGui panels all walk it (with the view's, render/view_params.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace csm {
+
+struct Sphere {
+  glm::vec3 center{0.0f};
+  float radius = 0.1f;
+  bool operator==(const Sphere&) const = default;
+};
+
+// What the hair collides with. Strands: the head and segment contacts between strands, as
+// constraints in every substep (sim/solver/contacts.h).
+enum class CollisionMode : int { Off = 0, Head = 1, Strands = 2, Volume = 3, VolumeStrands = 4 };
+inline bool collidesWithHead(CollisionMode m) {
+  return m != CollisionMode::Off;
+}
+inline bool strandContacts(CollisionMode m) {
+  return m == CollisionMode::Strands || m == CollisionMode::VolumeStrands;
+}
+inline bool volumeForces(CollisionMode m) {
+  return m == CollisionMode::Volume || m == CollisionMode::VolumeStrands;
+}
+// The names presets and metrics use, in enum order (collision.mode's choices).
+inline constexpr const char* kCollisionModeNames[] = {"off", "head", "strands", "volume",
+                                                      "volume+strands"};
+inline const char* collisionModeName(CollisionMode m) {
+  return kCollisionModeNames[int(m)];
+}
+enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
+// What the head is, for collision and drawing: the built-in mannequin's signed distance field
+// (sim/head/head_shape.h), or the spheres of head.spheres, as the paper does.
+enum class HeadShape : int { Sdf = 0, Spheres = 1 };
+// How a strand-contact iteration moves a segment (sim/solver/contacts.h): sweep takes its pairs in
+// order, each from where the ones before it left the segment; jacobi moves it by the mean of
+// what its pairs ask from where the iteration began.
+enum class ContactSolve : int { Sweep = 0, Jacobi = 1 };
+// Where the generator parts the hair: none (it falls from the crown all round), down the middle,
+// or on the head's left (+x) or right (-x).
+enum class Parting : int { None = 0, Centre = 1, Left = 2, Right = 3 };
+// How stiffness is given (sim/solver/stiffness.h). Paper: a window in particles and alpha = the pull
+// toward the goals per step, as the paper does; the hair gets stiffer with more substeps and
+// softer with more particles. Calibrated: a window in metres and a bending stiffness per unit
+// mass; each step pulls by alpha = min(1, k h^2), so the hair is the same at any step size,
+// resolution and density.
+enum class StiffnessModel : int { Paper = 0, Calibrated = 1 };
+
+struct HairstyleConfig {
+  std::string file;  // a groom file (.hair, .tfx); empty = the generator below
+  int strands = 2000;
+  int particlesPerStrand = 0;  // 0 = chosen per strand from its length and curl
+  int minParticles = 8;
+  int maxParticles = 25;
+  float segmentLength = 0.02f;  // target arc length between particles when chosen by length
+  float lengthMin = 0.20f;
+  float lengthMax = 0.30f;
+  float curlRadius = 0.0f;      // helix radius at the tip, metres
+  float curlPitch = 0.05f;      // helix pitch, metres per turn
+  float curlStart = 0.5f;       // fraction of the length where curl begins
+  float scalpAngle = 105.0f;    // degrees from the crown that the scalp covers
+  float hairlineFront = 50.0f;  // degrees from the crown where the forehead begins
+  float fall = 0.6f;            // 0 = strands stick out along the normal, 1 = fall straight down
+  float sweep = 0.7f;           // how far hair from the front is swept back from the face
+  Parting parting = Parting::None;
+  bool fringe = false;    // hair from the front of the scalp falls forward, cut at the brow
+  float volume = 0.006f;  // thickness of the hair's layer over the scalp (m)
+  // Passes that push the grown strands apart where they lie closer than 2.2 r (r: the
+  // collision radius), no particle further than separateLimit from where it grew and the
+  // roots where they are (sim/groom/hairstyle.h); 0 keeps the groom as grown.
+  int separatePasses = 0;
+  float separateLimit = 0.005f;  // m
+  int seed = 1;
+  // Imported grooms.
+  float importScale = 0.0f;  // 0 = fit to the head automatically
+  glm::vec3 importRotation{0.0f};
+  glm::vec3 importOffset{0.0f};
+  float resampleTolerance = 0.002f;  // metres; 0 keeps the file's points
+  // Render-only strands that follow each simulated one.
+  int followCount = 0;
+  float followSpread = 0.004f;
+};
+
+struct HeadConfig {
+  std::string mesh;     // an OBJ head (head frame, metres); empty = the built-in mannequin
+  std::string meshDir;  // where a relative `mesh` is found: the preset's folder (not a parameter)
+  std::vector<Sphere> spheres{
+      {{0.0f, 0.0f, 0.0f}, 0.1f}, {{0.0f, -0.065f, 0.03f}, 0.07f}, {{0.0f, -0.16f, -0.01f}, 0.05f}};
+  bool fitSpheres = false;  // as many spheres as `spheres`, fitted to the head's field
+  HeadMotion motion = HeadMotion::None;
+  float amplitude = 20.0f;              // degrees (nod, shake, sway) or centimetres (bounce)
+  float frequency = 0.5f;               // Hz
+  glm::vec3 pivot{0.0f, -0.15f, 0.0f};  // the neck: head rotations turn about it
+};
+
+struct SimConfig {
+  float dt = 1.0f / 60.0f;  // simulated seconds per frame
+  int substeps = 4;         // paper: steps per frame; calibrated: the fewest steps per frame
+  int maxSubsteps = 64;     // calibrated: the most steps per frame the stiffness may ask for
+  StiffnessModel stiffnessModel = StiffnessModel::Calibrated;
+  // Calibrated: the region of particle k holds the particles within windowLength of rest arc
+  // length of it (at least its neighbours), and bendingStiffness is EI over the linear density
+  // (m^4/s^2). The default needs 4 steps of 1/240 s on 2 cm segments, and gives the default
+  // hairstyle the look that the paper model's w = 2, alpha = 1 gave it there
+  // (docs/BENCHMARKS.md, "Stiffness").
+  float windowLength = 0.04f;        // m
+  float bendingStiffness = 3.8e-3f;  // m^4/s^2
+  // Calibrated: the scalp holds the particles within rootLength of rest arc length of the root
+  // (at least `pinned` of them), so the held piece does not shrink with more particles.
+  float rootLength = 0.02f;  // m
+  // Paper: region of particle k is [k-w, k+w]; alpha the pull towards the goals per step.
+  int stiffnessWindow = 2;
+  float stiffness = 1.0f;
+  float damping = 1.0f;       // 1/s, linear velocity damping: v *= exp(-damping h) per step
+  float strainLimit = 0.05f;  // epsilon: longest allowed stretch of a segment
+  bool strainLimiting = true;
+  int pinned = 2;  // particles from the root that follow the head (calibrated: at least)
+  glm::vec3 gravity{0.0f, -9.81f, 0.0f};
+  float density = 1.0e-4f;     // kg per metre of strand
+  float dftl = 0.0f;           // dynamic follow-the-leader velocity correction, 0..1
+  int rotationIterations = 3;  // quaternion iterations per region per step, warm-started
+};
+
+struct CollisionConfig {
+  CollisionMode mode = CollisionMode::Strands;
+  HeadShape headShape = HeadShape::Spheres;  // shipped presets choose sdf
+  float radius = 0.001f;                     // hair radius, metres: two strands touch at 2r
+  // Strand contacts (sim/solver/contacts.h): the pairs within 2r + margin at the start of a frame
+  // (and at each list within it) are the candidates its substeps resolve, so the margin must
+  // cover how far two strands close in on each other until the next list.
+  float margin = 0.0005f;   // m
+  float compliance = 0.0f;  // m/N: 0 = hard contacts
+  int iterations = 1;       // iterations of the strand contacts per substep
+  ContactSolve solve = ContactSolve::Sweep;
+  // Candidate lists a frame (at most its substeps): the first where the frame starts, the
+  // others spread over its substeps (listsBefore in sim/solver/contacts.h), each a search's cost.
+  int lists = 1;
+  float friction = 0.3f;      // Coulomb coefficient between strands
+  float headFriction = 0.3f;  // Coulomb friction coefficient against the head
+  // The volume mode (sim/solver/volume.h).
+  float volumeCell = 0.01f;      // m
+  float volumeFriction = 5.0f;   // 1/s
+  float volumeStiffness = 2.0f;  // m^2/s^2
+  float volumeFraction = 0.2f;   // volume fraction hair may fill before it is pushed
+};
+
+struct WindConfig {
+  float strength = 0.0f;  // m/s
+  glm::vec3 direction{1.0f, 0.0f, 0.0f};
+  float gusts = 0.3f;            // relative amplitude of gusts
+  float gustFrequency = 0.4f;    // Hz
+  float turbulence = 0.3f;       // relative amplitude of spatial turbulence
+  float turbulenceScale = 0.1f;  // metres
+  float drag = 2.0f;  // 1/s: acceleration per m/s of perpendicular relative wind (implicit)
+};
+
+// The scene the simulation runs: everything of a preset but how it is viewed
+// (render/view_config.h) and what it is called (app/preset.h).
+struct Config {
+  HairstyleConfig hairstyle;
+  HeadConfig head;
+  SimConfig sim;
+  CollisionConfig collision;
+  WindConfig wind;
+};
+
+}  // namespace csm

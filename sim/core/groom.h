@@ -1,0 +1,36 @@
+// A groom: the rest shape of every strand in the head's local frame, before simulation.
+// Built by the hairstyle generator (sim/groom/hairstyle.h) or read from a file (sim/io/).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace csm {
+
+// The most particles a strand may have: the GPU solver keeps a strand's prefix sums in a
+// shader's private arrays of this size at most. Grooms with longer strands are refused.
+inline constexpr uint32_t kMaxStrandParticles = 256;
+
+struct Groom {
+  // Strand s owns points [first[s], first[s + 1]); first.size() == strandCount() + 1.
+  std::vector<uint32_t> first{0};
+  // Rest positions in the head's local frame, metres, y up. Point first[s] is the root.
+  std::vector<glm::vec3> points;
+  // Optional per-strand data from a groom file; empty when the file has none.
+  std::vector<glm::vec3> color;  // linear RGB, 0..1
+  std::vector<float> thickness;  // metres
+
+  size_t strandCount() const { return first.size() - 1; }
+  size_t pointCount() const { return points.size(); }
+  uint32_t strandSize(size_t s) const { return first[s + 1] - first[s]; }
+
+  void addStrand(const std::vector<glm::vec3>& strandPoints) {
+    points.insert(points.end(), strandPoints.begin(), strandPoints.end());
+    first.push_back(static_cast<uint32_t>(points.size()));
+  }
+};
+
+}  // namespace csm

@@ -1,0 +1,38 @@
+// The head: a rigid pose over time and the spheres the hair collides with.
+#pragma once
+
+#include <vector>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "sim/core/config.h"
+
+namespace csm {
+
+// A rigid transform: x_world = rotation * x_local + translation.
+struct Pose {
+  glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+  glm::dvec3 translation{0.0};
+
+  glm::dvec3 apply(const glm::dvec3& p) const { return rotation * p + translation; }
+  glm::mat4 matrix() const;
+};
+
+// a after b: first b, then a.
+Pose compose(const Pose& a, const Pose& b);
+// The pose that undoes p.
+Pose inverse(const Pose& p);
+// Slerp of the rotation, lerp of the translation.
+Pose interpolate(const Pose& a, const Pose& b, double s);
+// A rotation of `degrees` about `axis` through `pivot`.
+Pose rotationAbout(const glm::dvec3& pivot, const glm::dvec3& axis, double degrees);
+
+// The preset's head motion at time t (seconds).
+Pose headPose(const HeadConfig& head, double t);
+
+// Head spheres in world space for a pose.
+std::vector<Sphere> worldSpheres(const std::vector<Sphere>& local, const Pose& pose);
+
+}  // namespace csm

@@ -1,0 +1,699 @@
+#include "sim/groom/hairstyle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+
+#include <Eigen/Dense>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include "sim/core/segment_pairs.h"
+#include "sim/solver/contacts.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/mannequin.h"
+#include "sim/head/head_model.h"
+#include "sim/groom/fit.h"
+#include "sim/groom/groom_file.h"
+#include "sim/groom/resample.h"
+
+namespace csm {
+namespace {
+
+// Landmarks of the head frame the groom is laid out by (DESIGN.md section 3: y up, the face
+// towards +z): the crown's depth, a side parting's offset from the middle, the brow's height.
+constexpr double kCrownZ = -0.02, kSideParting = 0.035, kBrowY = 0.012;
+
+// SplitMix64: a small, well-mixed hash; strand s's random numbers come from hash(seed, s, k).
+uint64_t mix(uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+double random01(uint64_t seed, uint64_t strand, uint64_t k) {
+  uint64_t h = mix(mix(mix(seed) ^ strand) ^ (k * 0x632be59bd9b4e019ull));
+  return double(h >> 11) * (1.0 / 9007199254740992.0);
+}
+
+// Roots follow the R2 low-discrepancy sequence (Roberts 2018) over the scalp cap: evenly spread
+// for any prefix, so 10,000 strands are the first 10,000 of 20,000 and still cover the scalp.
+struct RootSampler {
+  const HairstyleConfig& h;
+  bool mannequin;
+  uint64_t index = 0;
+  double offsetU, offsetV;
+
+  RootSampler(const HairstyleConfig& cfg, bool onMannequin)
+      : h(cfg),
+        mannequin(onMannequin),
+        offsetU(random01(cfg.seed, ~0ull, 1)),
+        offsetV(random01(cfg.seed, ~0ull, 2)) {}
+
+  glm::dvec3 next() {
+    const double g = 1.32471795724474602596;  // the plastic number
+    const double maxTheta = glm::radians(double(h.scalpAngle));
+    for (;;) {
+      ++index;
+      const double u = std::fmod(offsetU + index / g, 1.0);
+      const double v = std::fmod(offsetV + index / (g * g), 1.0);
+      const double cosTheta = 1.0 - u * (1.0 - std::cos(maxTheta));  // uniform over the cap
+      const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+      const double phi = 2.0 * glm::pi<double>() * v;
+      glm::dvec3 d(sinTheta * std::sin(phi), cosTheta, sinTheta * std::cos(phi));
+      if (onScalp(h, d, mannequin)) return d;
+    }
+  }
+};
+
+// Moves p outside every sphere (inflated by margin). Returns true when it moved.
+bool pushOutOfSpheres(glm::dvec3& p, const std::vector<Sphere>& head, double margin) {
+  bool moved = false;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const Sphere& s : head) {
+      const glm::dvec3 c(s.center);
+      const glm::dvec3 d = p - c;
+      const double r = s.radius + margin;
+      const double len = glm::length(d);
+      if (len < r) {
+        p = c + (len > 1e-12 ? d / len : glm::dvec3(0, 1, 0)) * r;
+        moved = true;
+      }
+    }
+  return moved;
+}
+
+// The head the hair grows on: the spheres (the first is the scalp), or a distance field.
+struct GrowthHead {
+  const std::vector<Sphere>& spheres;
+  const DistanceGrid* field;
+
+  // The scalp point in direction dir (a unit vector from the scalp's centre).
+  glm::dvec3 root(const glm::dvec3& dir) const {
+    if (field) return surfaceAlong(*field, kMannequinScalpCentre, dir);
+    const Sphere& scalp = spheres.front();
+    return glm::dvec3(scalp.center) + dir * double(scalp.radius);
+  }
+  // Distance from p to the head's surface (negative inside), and the outward direction of
+  // the surface nearest p.
+  double distance(const glm::dvec3& p, glm::dvec3& normal) const {
+    double nearest = 1e30;
+    glm::dvec3 n(0.0);
+    if (field) {
+      nearest = field->sample(p, &n);
+    } else {
+      for (const Sphere& s : spheres) {
+        const double d = glm::length(p - glm::dvec3(s.center)) - s.radius;
+        if (d < nearest) nearest = d, n = p - glm::dvec3(s.center);
+      }
+    }
+    normal = glm::length(n) > 1e-12 ? glm::normalize(n) : glm::dvec3(0.0, 1.0, 0.0);
+    return nearest;
+  }
+  glm::dvec3 normal(const glm::dvec3& p) const {
+    glm::dvec3 n;
+    distance(p, n);
+    return n;
+  }
+  bool pushOut(glm::dvec3& p, double margin) const {
+    return field ? pushOutOfField(*field, p, margin) : pushOutOfSpheres(p, spheres, margin);
+  }
+  // The face is left open: on the mannequin, hair that comes down beside the face (below the
+  // hairline's height, within the head's width, in front of the ears) turns back behind the
+  // ears. A turn of the growing direction, not a move of the point, so that strands keep
+  // their own paths instead of being pressed onto one surface.
+  glm::dvec3 steer(const glm::dvec3& p, const glm::dvec3& want) const {
+    if (!field || p.y > 0.03 || std::abs(p.x) > 0.11 || p.z < -0.03) return want;
+    const double depth = std::min(1.0, (p.z + 0.03) / 0.03 + (0.03 - p.y) / 0.03);
+    return glm::normalize(want + glm::dvec3(0.0, 0.0, -3.0 * depth));
+  }
+};
+
+// Resamples a dense polyline to n points evenly spaced in arc length.
+std::vector<glm::dvec3> resample(const std::vector<glm::dvec3>& q, int n) {
+  std::vector<double> s(q.size(), 0.0);
+  for (size_t i = 1; i < q.size(); ++i) s[i] = s[i - 1] + glm::length(q[i] - q[i - 1]);
+  std::vector<glm::dvec3> out(n);
+  size_t j = 0;
+  for (int i = 0; i < n; ++i) {
+    const double target = s.back() * i / (n - 1);
+    while (j + 2 < q.size() && s[j + 1] < target) ++j;
+    const double span = s[j + 1] - s[j];
+    const double f = span > 0.0 ? std::clamp((target - s[j]) / span, 0.0, 1.0) : 0.0;
+    out[i] = glm::mix(q[j], q[j + 1], f);
+  }
+  return out;
+}
+
+// The direction hair lies in at p (head frame) before it hangs free: down, away from the
+// parting (or from the crown's axis) on top of the head, and back from the face; a fringe
+// forward over the forehead.
+glm::dvec3 combDirection(const HairstyleConfig& h, const glm::dvec3& p, bool fringe) {
+  const glm::dvec3 down(0.0, -1.0, 0.0);
+  if (fringe) return glm::normalize(down + glm::dvec3(p.x / 0.1, 0.0, 0.3));
+  const glm::dvec3 radial(p.x, 0.0, p.z - kCrownZ);
+  glm::dvec3 away = glm::length(radial) > 1e-9 ? glm::normalize(radial) : glm::dvec3(0, 0, -1);
+  if (h.parting != Parting::None) {
+    const double line = h.parting == Parting::Left    ? kSideParting
+                        : h.parting == Parting::Right ? -kSideParting
+                                                      : 0.0;
+    const glm::dvec3 side(p.x >= line ? 1.0 : -1.0, 0.0, 0.0);
+    // The parting runs from the forehead back to the crown; behind it hair falls from the crown.
+    away = glm::normalize(glm::mix(away, side, glm::smoothstep(kCrownZ - 0.04, kCrownZ, p.z)));
+  }
+  const double top = std::clamp((p.y + 0.02) / 0.08, 0.0, 1.0);
+  const double front = std::clamp(p.z / 0.06, 0.0, 1.0);
+  return glm::normalize(down + 2.0 * top * away + h.sweep * front * glm::dvec3(0.0, 0.3, -5.0));
+}
+
+// Strands from the front patch of the scalp make the fringe, when the style has one.
+bool inFringe(const HairstyleConfig& h, const glm::dvec3& dir) {
+  return h.fringe && dir.z > 0.4 && std::abs(dir.x) < 0.6 * dir.z;
+}
+
+std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& head, double margin,
+                                   uint64_t s, const glm::dvec3& dir) {
+  const glm::dvec3 root = head.root(dir);
+  const bool fringe = inFringe(h, dir);
+  // A fringe hanging straight from its root ends at the brow.
+  const double length =
+      fringe ? std::max(0.02, root.y - kBrowY)
+             : glm::mix(double(h.lengthMin), double(h.lengthMax), random01(h.seed, s, 3));
+  // Hair from higher roots lies further out, over the hair from lower roots: layers by root
+  // height, so that strands draped over the head pass over each other instead of through.
+  // Toward the face hair lies close (standing off the forehead, it would fall over the face).
+  const double layer = margin + double(h.volume) * std::clamp((root.y + 0.03) / 0.13, 0.0, 1.0) *
+                                    (1.0 - std::clamp(2.0 * dir.z, 0.0, 1.0));
+
+  // Centreline: leaves along the scalp normal, turns at a rate set by `fall` toward the comb
+  // direction (which hangs down once off the top of the head), drapes over the head where it
+  // meets it.
+  const double ds = std::min(0.002, length / 64.0);
+  const int steps = std::max(2, int(std::ceil(length / ds)));
+  const double turn = 4.0 + 60.0 * h.fall * h.fall;  // 1/m
+  const glm::dvec3 down(0.0, -1.0, 0.0);
+  // A little per-strand disorder so the hair does not look combed by a machine.
+  const glm::dvec3 jitter(random01(h.seed, s, 4) - 0.5, 0.0, random01(h.seed, s, 5) - 0.5);
+  // The comb lies along the head: its part away from the surface is dropped, so hair on the
+  // sides lies on them instead of standing out.
+  auto combAt = [&](const glm::dvec3& at) {
+    glm::dvec3 comb = combDirection(h, at, fringe) + 0.3 * jitter;
+    const glm::dvec3 n = head.normal(at);
+    comb -= std::max(0.0, glm::dot(comb, n)) * n;
+    return glm::normalize(comb + 1e-9 * down);
+  };
+  // The root leaves between the normal and the comb: a strand that left along the normal could
+  // swing about it freely (its pinned first segment holds no twist) and fall over the face.
+  const glm::dvec3 leave =
+      glm::normalize(glm::mix(head.normal(root), combAt(root), double(h.fall)));
+  std::vector<glm::dvec3> centre{root};
+  glm::dvec3 p = root, t = leave;
+  for (int i = 1; i <= steps; ++i) {
+    const double along = i * ds;
+    const double blend = 1.0 - std::exp(-turn * along);
+    glm::dvec3 want = glm::normalize(glm::mix(leave, combAt(p), blend));
+    if (!fringe) want = head.steer(p, want);
+    t = glm::normalize(glm::mix(t, want, 0.5));
+    glm::dvec3 next = p + t * (length / steps);
+    glm::dvec3 before = next;
+    if (i > 1 && head.pushOut(next, layer)) {
+      // Follow the surface: keep the tangential part of the direction.
+      glm::dvec3 n = glm::normalize(next - before + 1e-12 * t);
+      t = glm::normalize(t - glm::dot(t, n) * n + 1e-9 * down);
+      next = p + t * (length / steps);
+      head.pushOut(next, layer);
+    }
+    // On top of the head hair lies on it: a strand above its layer is drawn back down to it,
+    // so hair from the crown does not stand off as a dome (down the sides it drapes).
+    glm::dvec3 n;
+    const double above = head.distance(next, n) - layer;
+    if (i > 1 && above > 0.0 && n.y > 0.5) {
+      next -= n * std::min(above, 0.25 * length / steps);
+      t = glm::normalize(next - p);
+    }
+    p = next;
+    centre.push_back(p);
+  }
+
+  // Curl: a helix about the centreline whose radius ramps up from curl_start toward the tip,
+  // in a frame carried along the curve by parallel transport.
+  if (h.curlRadius <= 0.0f) return centre;
+  const double phase = 2.0 * glm::pi<double>() * random01(h.seed, s, 6);
+  const double start = h.curlStart * length;
+  const double ramp = std::max(1e-6, std::min(2.0 * h.curlPitch, length - start));
+  glm::dvec3 tangent = glm::normalize(centre[1] - centre[0]);
+  glm::dvec3 normal = glm::normalize(glm::cross(tangent, glm::dvec3(0.31, 0.87, 0.38)));
+  std::vector<glm::dvec3> curled{centre[0]};
+  double along = 0.0;
+  for (size_t i = 1; i < centre.size(); ++i) {
+    glm::dvec3 tNew = glm::normalize(centre[i] - centre[i - 1]);
+    along += glm::length(centre[i] - centre[i - 1]);
+    glm::dvec3 axis = glm::cross(tangent, tNew);
+    double sinA = glm::length(axis);
+    if (sinA > 1e-12) {
+      axis /= sinA;
+      double angle = std::atan2(sinA, glm::dot(tangent, tNew));
+      normal = normal * std::cos(angle) + glm::cross(axis, normal) * std::sin(angle) +
+               axis * glm::dot(axis, normal) * (1.0 - std::cos(angle));
+    }
+    tangent = tNew;
+    normal = glm::normalize(normal - glm::dot(normal, tangent) * tangent);
+    const glm::dvec3 binormal = glm::cross(tangent, normal);
+    const double x = std::clamp((along - start) / ramp, 0.0, 1.0);
+    const double radius = h.curlRadius * x * x * (3.0 - 2.0 * x);
+    const double a = phase + 2.0 * glm::pi<double>() * along / h.curlPitch;
+    glm::dvec3 q = centre[i] + radius * (std::cos(a) * normal + std::sin(a) * binormal);
+    head.pushOut(q, margin);
+    curled.push_back(q);
+  }
+  return curled;
+}
+
+// Separation (hairstyle.separate_passes): grown strands lie through each other, more the
+// denser the hair (Fig. 1: 1,814 pairs of segments closer than r at 1,000 strands, 7,319 at
+// 2,000). Each pass finds the pairs closer than kSeparation r and pushes each apart to that
+// distance, pair by pair in their sorted order (Gauss-Seidel: each pair sees where the pairs
+// before it left the particles; the same groom every time), kSweeps times; then each strand,
+// root to tip, takes back its grown segment lengths, leaves the head, and keeps no particle
+// further than the limit from where it grew. A strand's root stays; its second particle may
+// move (the solver holds the first segment as the separated groom has it): held in place, the
+// roots of strands that others lie across stood through them (docs/BENCHMARKS.md, "Strands
+// pushed apart at rest").
+constexpr double kSeparation = 2.2;
+constexpr int kSweeps = 3;
+// As in the contact solve (sim/solver/contacts.cpp): near a root, a pair asks the free end for its
+// depth over the lever arm; no end moves further than this many times the pair's depth.
+constexpr double kSeparationLever = 2.5;
+
+void pushApart(std::vector<glm::dvec3>& x, const std::vector<double>& w, uint32_t a, uint32_t b,
+               double target) {
+  double s, t;
+  const double d = std::sqrt(closestSegmentPoints(x[a], x[a + 1], x[b], x[b + 1], s, t));
+  if (d >= target) return;
+  const double ga0 = w[a] * (1 - s), ga1 = w[a + 1] * s, gb0 = w[b] * (1 - t), gb1 = w[b + 1] * t;
+  const double W = ga0 * (1 - s) + ga1 * s + gb0 * (1 - t) + gb1 * t;
+  if (W < 1e-12) return;  // both ends held, or the contact at a held root
+  double separation;
+  const glm::dvec3 n = contactNormal(x[a], x[a + 1], x[b], x[b + 1], s, t, d, 0, separation);
+  const double depth = target - d;
+  const double most = std::max({ga0, ga1, gb0, gb1}) / W;  // the furthest end's move a depth
+  const double lambda = depth / W * std::min(1.0, kSeparationLever / most);
+  x[a] += lambda * ga0 * n;
+  x[a + 1] += lambda * ga1 * n;
+  x[b] -= lambda * gb0 * n;
+  x[b + 1] -= lambda * gb1 * n;
+}
+
+void separateStrands(Groom& g, const GrowthHead& head, double radius, int passes, double limit) {
+  if (limit <= 0.0) return;
+  const double target = kSeparation * radius, margin = 2.0 * radius;
+  const size_t n = g.pointCount();
+  std::vector<glm::dvec3> x(n);
+  std::vector<uint32_t> strandOf(n);
+  std::vector<double> w(n, 1.0), length(n, 0.0);
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    w[g.first[s]] = 0.0;
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) {
+      x[i] = glm::dvec3(g.points[i]);
+      strandOf[i] = uint32_t(s);
+      if (i > g.first[s]) length[i - 1] = glm::length(x[i] - x[i - 1]);
+    }
+  }
+  const std::vector<glm::dvec3> grown = x;
+  for (int pass = 0; pass < passes; ++pass) {
+    const std::vector<SegmentPair> pairs = findContactsGrid(x, strandOf, target);
+    if (pairs.empty()) break;
+    for (int sweep = 0; sweep < kSweeps; ++sweep)
+      for (const SegmentPair& p : pairs) pushApart(x, w, p.a, p.b, target);
+    for (size_t s = 0; s < g.strandCount(); ++s)
+      for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
+        const glm::dvec3 d = x[i] - x[i - 1];
+        const double len = glm::length(d);
+        if (len > 1e-12) x[i] = x[i - 1] + d * (length[i - 1] / len);
+        head.pushOut(x[i], margin);
+        // Last, so that it holds: the lengths give way by what it takes back.
+        const glm::dvec3 moved = x[i] - grown[i];
+        const double far = glm::length(moved);
+        if (far > limit) x[i] = grown[i] + moved * (limit / far);
+      }
+  }
+  for (size_t i = 0; i < n; ++i) g.points[i] = glm::vec3(x[i]);
+}
+
+}  // namespace
+
+Groom growHairstyle(const Config& c, const HeadModel& head) {
+  return growHairstyle(c.hairstyle, head.spheres(), c.collision.radius, head.field());
+}
+
+bool onScalp(const HairstyleConfig& h, const glm::dvec3& d, bool mannequin) {
+  const double theta = std::acos(std::clamp(d.y, -1.0, 1.0));
+  const double horizontal = std::hypot(d.x, d.z);
+  const double front = horizontal > 1e-9 ? std::max(0.0, d.z / horizontal) : 0.0;
+  // The hairline comes lower at the back and sides than at the forehead (+z is the face).
+  const double limit = glm::radians(glm::mix(
+      double(h.scalpAngle), double(std::min(h.scalpAngle, h.hairlineFront)), std::pow(front, 1.5)));
+  if (theta > limit) return false;
+  if (!mannequin) return true;
+  // Above and behind the ears: no roots within 30 degrees of either ear's direction, so the
+  // hairline runs over them and the hair can fall behind them.
+  const glm::dvec3 ear = glm::normalize(glm::dvec3(0.074, -0.025, -0.002));
+  return glm::dot(glm::dvec3(std::abs(d.x), d.y, d.z), ear) < std::cos(glm::radians(30.0));
+}
+
+int particlesForLength(const HairstyleConfig& h, double arcLength) {
+  if (h.particlesPerStrand > 0) return h.particlesPerStrand;
+  const int n = int(std::lround(arcLength / h.segmentLength)) + 1;
+  return std::clamp(n, h.minParticles, h.maxParticles);
+}
+
+Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& spheres,
+                    float collisionRadius, const DistanceGrid* field) {
+  Groom g;
+  if ((spheres.empty() && !field) || h.strands <= 0) return g;
+  const double margin = 2.0 * collisionRadius;
+  const GrowthHead head{spheres, field};
+  RootSampler roots(h, field != nullptr);
+  std::vector<glm::vec3> strand;
+  for (int s = 0; s < h.strands; ++s) {
+    const glm::dvec3 dir = roots.next();
+    std::vector<glm::dvec3> dense = growStrand(h, head, margin, uint64_t(s), dir);
+    double arc = 0.0;
+    for (size_t i = 1; i < dense.size(); ++i) arc += glm::length(dense[i] - dense[i - 1]);
+    std::vector<glm::dvec3> pts = resample(dense, particlesForLength(h, arc));
+    strand.clear();
+    for (size_t i = 0; i < pts.size(); ++i) {
+      if (i > 0) head.pushOut(pts[i], margin);
+      strand.emplace_back(pts[i]);
+    }
+    g.addStrand(strand);
+  }
+  if (h.separatePasses > 0)
+    separateStrands(g, head, collisionRadius, h.separatePasses, h.separateLimit);
+  return g;
+}
+
+}  // namespace csm
+
+namespace csm {
+
+namespace {
+
+// Empty when every point of the fitted groom is finite (a strand that collapsed to a point is
+// the repair's to drop).
+std::string checkFitted(const Groom& g) {
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) {
+      const glm::vec3& p = g.points[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        return "point " + std::to_string(i - g.first[s]) + " of strand " + std::to_string(s) +
+               " is not finite";
+    }
+    if (s < g.thickness.size() && !std::isfinite(g.thickness[s]))
+      return "the thickness of strand " + std::to_string(s) + " is not finite";
+  }
+  return {};
+}
+
+void reverseStrand(Groom& g, size_t s) {
+  std::reverse(g.points.begin() + g.first[s], g.points.begin() + g.first[s + 1]);
+}
+
+// The component-wise median of points: where most of them are, whatever a minority does.
+glm::dvec3 medianPoint(std::vector<glm::dvec3> points) {
+  glm::dvec3 m(0.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    auto mid = points.begin() + long(points.size() / 2);
+    std::nth_element(
+        points.begin(), mid, points.end(),
+        [axis](const glm::dvec3& p, const glm::dvec3& q) { return p[axis] < q[axis]; });
+    m[axis] = (*mid)[axis];
+  }
+  return m;
+}
+
+// The median distance of points from their median point: how tightly they gather.
+double medianSpread(const std::vector<glm::dvec3>& points) {
+  const glm::dvec3 m = medianPoint(points);
+  std::vector<double> d;
+  for (const glm::dvec3& p : points) d.push_back(glm::length(p - m));
+  std::nth_element(d.begin(), d.begin() + long(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
+// The sphere through points by least squares (|p|^2 = 2 c.p + k is linear in c and k), in units
+// of their spread so that the system is well scaled whatever the file's units. A flat set has
+// no finite sphere: then the nearest of large ones is as good a surface, and a radius of 100
+// spreads stands for it.
+Sphere sphereThrough(const std::vector<glm::dvec3>& points) {
+  glm::dvec3 mean(0.0);
+  for (const glm::dvec3& p : points) mean += p;
+  mean /= double(points.size());
+  double spread = 0.0;
+  for (const glm::dvec3& p : points) spread = std::max(spread, glm::length(p - mean));
+  if (points.size() < 4 || !(spread > 0.0)) return {glm::vec3(mean), float(spread)};
+  Eigen::MatrixXd m(points.size(), 4);
+  Eigen::VectorXd rhs(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::dvec3 q = (points[i] - mean) / spread;
+    m.row(Eigen::Index(i)) << 2.0 * q.x, 2.0 * q.y, 2.0 * q.z, 1.0;
+    rhs(Eigen::Index(i)) = glm::dot(q, q);
+  }
+  const Eigen::Vector4d x = m.colPivHouseholderQr().solve(rhs);
+  glm::dvec3 c(x(0), x(1), x(2));
+  double r = std::sqrt(std::max(0.0, x(3) + glm::dot(c, c)));
+  if (!std::isfinite(r) || r > 100.0) {
+    c = glm::length(c) > 0.0 && std::isfinite(glm::length(c)) ? glm::normalize(c) * 100.0
+                                                              : glm::dvec3(0.0, -100.0, 0.0);
+    r = 100.0;
+  }
+  return {glm::vec3(mean + spread * c), float(spread * r)};
+}
+
+// For a groom whose format does not say which end is the root: turns the strands so that each
+// starts at its end on the scalp. Roots gather on a scalp, tips spread by the hair's length:
+// first the whole groom, by which ends gather the more tightly (the median distance from their
+// median point, which a minority of strands the other way round does not move; a bounding
+// sphere would be set by them). Then a strand whose other end lies nearer that median point is
+// in doubt, and is turned only when its other end lies nearer the scalp by a tenth of the
+// scalp's radius: the scalp being the sphere through the first ends of the strands not in doubt.
+// Hair swept over the crown has its tip near the roots' middle, but no nearer the scalp than
+// its root. Returns how many strands were turned from the file's order.
+size_t turnRootsFirst(Groom& g) {
+  std::vector<glm::dvec3> firsts, lasts;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    firsts.emplace_back(g.points[g.first[s]]);
+    lasts.emplace_back(g.points[g.first[s + 1] - 1]);
+  }
+  if (firsts.empty()) return 0;
+  const bool tipsFirst = medianSpread(lasts) < medianSpread(firsts);
+  if (tipsFirst) std::swap(firsts, lasts);
+  const glm::dvec3 crown = medianPoint(firsts);
+  std::vector<bool> doubtful(g.strandCount(), false);
+  std::vector<glm::dvec3> roots;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    doubtful[s] = glm::length(lasts[s] - crown) < glm::length(firsts[s] - crown);
+    if (!doubtful[s]) roots.push_back(firsts[s]);
+  }
+  const Sphere scalp = roots.empty() ? Sphere{glm::vec3(crown), 0.0f} : sphereThrough(roots);
+  auto gap = [&](const glm::dvec3& p) {
+    return std::abs(glm::length(p - glm::dvec3(scalp.center)) - double(scalp.radius));
+  };
+  const double on = 0.1 * double(scalp.radius);
+  size_t turned = 0;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    const bool turn = doubtful[s] && gap(lasts[s]) < gap(firsts[s]) - on;
+    if (turn != tipsFirst) {
+      reverseStrand(g, s);
+      ++turned;
+    }
+  }
+  return turned;
+}
+
+// Keeps `count` strands spread evenly over the file's order (all when count covers them).
+void keepStrands(Groom& g, size_t count) {
+  const size_t total = g.strandCount();
+  if (count >= total) return;
+  Groom out;
+  std::vector<glm::vec3> pts;
+  for (size_t k = 0; k < count; ++k) {
+    const size_t s = k * total / count;
+    pts.assign(g.points.begin() + g.first[s], g.points.begin() + g.first[s + 1]);
+    out.addStrand(pts);
+    if (!g.color.empty()) out.color.push_back(g.color[s]);
+    if (!g.thickness.empty()) out.thickness.push_back(g.thickness[s]);
+  }
+  g = std::move(out);
+}
+
+}  // namespace
+
+bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseDir, Groom& out, std::string* error,
+                GroomReport* report, const ImportProgress& progress) {
+  GroomReport local;
+  GroomReport& r = report ? *report : local;
+  r = {};
+  if (head.spheres().empty()) {
+    if (error) *error = "head.spheres: at least one sphere is needed to grow hair from";
+    return false;
+  }
+  const HairstyleConfig& h = c.hairstyle;
+  if (h.file.empty()) {
+    out = growHairstyle(c, head);
+    r.filePoints = r.simulatedPoints = out.pointCount();
+    return true;
+  }
+  const std::string path = resolveRelative(baseDir, h.file);
+  if (progress) progress("reading", 0.0);
+  io::GroomReadResult read = io::readGroom(path);
+  if (!read.groom) {
+    if (error) *error = read.error;
+    return false;
+  }
+  if (!fitFileGroom(c, head, std::move(*read.groom), path, out, error, &r, !read.rootsKnown, progress))
+    return false;
+  // The file's strands and repairs: those the reader dropped, then those the scene did.
+  r.fileStrands += read.repair.droppedStrands;
+  io::GroomRepair both = read.repair;
+  both.add(r.repair);
+  r.repair = both;
+  return true;
+}
+
+bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::string& path, Groom& out, std::string* error,
+                  GroomReport* report, bool findRoots, const ImportProgress& progress) {
+  // The stages' shares of a large import's time (5 M points: csmhair-bench --only import).
+  auto at = [&](const char* stage, double done) {
+    if (progress) progress(stage, done);
+  };
+  GroomReport local;
+  GroomReport& r = report ? *report : local;
+  r = {};
+  const HairstyleConfig& h = c.hairstyle;
+  r.fileStrands = g.strandCount();
+  keepStrands(g, size_t(h.strands));
+  at("fitting", 0.2);
+  io::FitOptions fit;
+  fit.scale = h.importScale;
+  fit.autoFit = h.importScale <= 0.0f;
+  fit.rotationDeg = h.importRotation;
+  fit.offset = h.importOffset;
+  fit.headSpheres = model.spheres();
+  fit.headField = model.field();
+  fit.snapRoots = true;
+  const GrowthHead head{fit.headSpheres, fit.headField};
+  if (findRoots) r.turnedStrands = turnRootsFirst(g);
+  const io::FitReport fitted = io::fitToHead(g, fit);
+  // The reader checked that the file's points are finite and its strands go somewhere, but the
+  // fit can undo both: points near float's limit rotated or scaled past it, a tiny spread of
+  // roots scaled up to the head's size, or a tiny import scale that collapses a strand.
+  if (const std::string problem = checkFitted(g); !problem.empty()) {
+    if (error)
+      *error = path + ": " + problem + " after fitting to the head (scale " +
+               std::to_string(fitted.scale) +
+               "); check hairstyle.import_scale, import_rotation and import_offset";
+    return false;
+  }
+  // Flaws that only the scene's resolution names: strands too short to simulate, points too
+  // close to tell apart.
+  at("repairing", 0.35);
+  io::RepairOptions repair;
+  repair.minLength = 0.5 * double(h.segmentLength);
+  repair.mergeDistance = kMergeShare * double(h.segmentLength);
+  repair.name = path;
+  const size_t fitStrands = g.strandCount();
+  r.repair = io::repairGroom(g, repair);
+  if (g.strandCount() == 0) {
+    if (error)
+      *error = path + ": no strand is left: all " + std::to_string(fitStrands) +
+               " are shorter than half of hairstyle.segment_length (" +
+               std::to_string(repair.minLength) + " m) once fitted to the head (scale " +
+               std::to_string(fitted.scale) +
+               "); check hairstyle.import_scale, import_rotation and import_offset";
+    return false;
+  }
+  r.filePoints = g.pointCount();
+  at("resampling", 0.45);
+  if (h.resampleTolerance > 0.0f) {
+    io::ResampleOptions opt;
+    opt.minParticles = uint32_t(h.minParticles);
+    opt.maxParticles = uint32_t(h.maxParticles);
+    opt.tolerance = h.resampleTolerance;
+    io::resampleGroom(g, opt);
+  }
+  const std::string problem = io::checkGroomStructure(g);
+  if (!problem.empty()) {
+    if (error) *error = path + ": " + problem;
+    return false;
+  }
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    if (g.strandSize(s) > kMaxStrandParticles) {
+      if (error)
+        *error = path + ": strand " + std::to_string(s) + " has " +
+                 std::to_string(g.strandSize(s)) + " points, more than the " +
+                 std::to_string(kMaxStrandParticles) +
+                 " a strand the solvers take: set hairstyle.resample_tolerance above 0 to thin "
+                 "it to at most hairstyle.max_particles";
+      return false;
+    }
+  // No particle starts inside the head: the roots are on its surface, the rest inside go out
+  // to the collision radius.
+  const double margin = double(c.collision.radius);
+  const size_t every = std::max<size_t>(1, g.strandCount() / 100);
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    if (s % every == 0) at("placing", 0.7 + 0.3 * double(s) / double(g.strandCount()));
+    for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
+      glm::dvec3 p(g.points[i]), normal;
+      // Only a particle inside: one the hair radius from the surface is where a simulation
+      // holds it, and a groom exported from one comes back as it went out. A particle deep in
+      // the head takes more than one push along the field's gradient.
+      if (!(head.distance(p, normal) < 0.0)) continue;
+      bool pushed = false;
+      for (int k = 0; k < 8 && head.pushOut(p, margin); ++k) pushed = true;
+      if (pushed) {
+        g.points[i] = glm::vec3(p);
+        ++r.pushedParticles;
+      }
+    }
+  }
+  at("placing", 1.0);
+  if (r.pushedParticles > 0) {
+    // Particles pushed from inside land on the surface nearest each: a run of them (a strand
+    // the file drew through the head) lands on one point. Merged again, counted again.
+    r.repair.add(io::repairGroom(g, repair));
+    if (g.strandCount() == 0) {
+      if (error)
+        *error = path +
+                 ": no strand is left: every strand lies inside the head, once fitted to "
+                 "it (scale " +
+                 std::to_string(fitted.scale) +
+                 "); check hairstyle.import_scale, import_rotation and import_offset";
+      return false;
+    }
+  }
+  r.simulatedPoints = g.pointCount();
+  out = std::move(g);
+  return true;
+}
+
+std::string groomReportText(const GroomReport& r) {
+  std::string parts = r.repair.summary();
+  auto add = [&](size_t n, const char* one, const char* many) {
+    if (n == 0) return;
+    if (!parts.empty()) parts += "; ";
+    parts += std::to_string(n) + (n == 1 ? one : many);
+  };
+  add(r.turnedStrands, " strand turned root first", " strands turned root first");
+  add(r.pushedParticles, " particle moved out of the head", " particles moved out of the head");
+  if (parts.empty()) return {};
+  std::string text = "the groom file: " + parts;
+  for (const std::string& n : r.repair.notes) text += "\n  " + n;
+  return text;
+}
+
+}  // namespace csm

@@ -1,0 +1,96 @@
+// The head of one scene: what the hair collides with, grows from and what is drawn, built once
+// when the scene loads (Simulation) and handed to the solvers, the hair generator and the
+// renderer. Nothing about the head is looked up by config anywhere else: a scene's head is
+// this object, and a head mesh that cannot be read is an error when the scene loads.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sim/core/config.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/surface_mesh.h"
+
+namespace csm {
+
+// What a solver collides with, read every step: the field when collision.head_shape is sdf,
+// else the spheres (head frame).
+struct SceneHead {
+  const DistanceGrid* field = nullptr;  // null: the spheres
+  std::vector<Sphere> spheres;
+};
+
+// A head read from an OBJ (head.mesh) and its field (4 mm, a 2 cm margin).
+struct LoadedHead {
+  SurfaceMesh mesh;
+  DistanceGrid grid;
+};
+// Reads, checks and samples the OBJ at `path`. Null with a message naming the file and line.
+std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::string* error);
+// head.mesh resolved against the folder of the preset it came from (empty: the mannequin).
+std::string headMeshPath(const Config& c);
+
+class HeadModel {
+ public:
+  // The head `c` asks for: head.mesh read and sampled, or the mannequin; head.spheres, or as many
+  // fitted inside the shape when head.fit_spheres is set. Parts that `previous` already holds
+  // for the same inputs (the mesh of the same path, spheres fitted to the same field and count)
+  // are shared, not made again. Null with a message naming the file (and line) when head.mesh
+  // cannot be read.
+  static std::shared_ptr<const HeadModel> build(const Config& c, std::string* error,
+                                                const HeadModel* previous = nullptr);
+  // The same, for code that has checked the scene already (tests, tools): throws
+  // std::runtime_error with the message where build fails.
+  static std::shared_ptr<const HeadModel> require(const Config& c);
+
+  // The field the hair collides with: the shape's when collision.head_shape is sdf, else null
+  // (the spheres).
+  const DistanceGrid* field() const { return sdf_ ? &shapeField() : nullptr; }
+  // The field of the head's shape whatever collision.head_shape says: head.mesh's, or the
+  // mannequin's.
+  const DistanceGrid& shapeField() const;
+  // The spheres the scene collides with, grows hair from and draws when collision.head_shape
+  // is spheres (head frame).
+  const std::vector<Sphere>& spheres() const { return spheres_; }
+  // The surface drawn: head.mesh's or the mannequin's when collision.head_shape is sdf; null
+  // (spheres) otherwise.
+  const SurfaceMesh* surface() const;
+  // True when the shape is the built-in mannequin (no head.mesh).
+  bool mannequin() const { return !mesh_; }
+  // What a solver reads every step.
+  SceneHead collider() const { return {field(), spheres_}; }
+
+ private:
+  bool sdf_ = true;
+  std::string meshPath_;                    // empty: the mannequin
+  std::shared_ptr<const LoadedHead> mesh_;  // null: the mannequin
+  bool fitted_ = false;
+  int fittedCount_ = 0;
+  std::vector<Sphere> spheres_;
+};
+
+// A solver's head: the one its owner handed it (Simulation, which built it when the scene
+// loaded), or else one built from the config of each reset and config change, sharing what the
+// last one had (tests and tools that run a solver on its own, on a scene checked before).
+class SolverHead {
+ public:
+  void hand(std::shared_ptr<const HeadModel> model);
+  // The head for `c`: the handed one, or one built for `c` when none is yet or the last was
+  // built for other head settings. Throws std::runtime_error naming the file when head.mesh
+  // cannot be read (a scene that loads through Simulation has had it read already).
+  const HeadModel& update(const Config& c);
+  const HeadModel* model() const { return model_.get(); }
+  const std::shared_ptr<const HeadModel>& shared() const { return model_; }
+
+ private:
+  std::shared_ptr<const HeadModel> model_;
+  bool handed_ = false;
+  std::string meshPath_;  // what model_ was built for, when not handed
+  bool fitSpheres_ = false;
+  std::vector<Sphere> spheres_;
+  HeadShape shape_ = HeadShape::Sdf;
+};
+
+}  // namespace csm

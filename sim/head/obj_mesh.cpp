@@ -1,0 +1,259 @@
+#include "sim/head/obj_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+#include <tiny_obj_loader.h>
+
+#include "sim/base/file_io.h"
+#include "sim/base/obj_text.h"
+
+namespace csm::io {
+namespace {
+
+using detail::objLines;
+using detail::objTokens;
+using detail::parseIndex;
+using detail::parseNumber;
+
+constexpr uint64_t kMaxBytes = uint64_t(512) << 20;
+constexpr double kMaxSize = 1.0;  // m: a head and shoulders is well under this
+
+// Our pass over the lines: every number and index is checked here, with its line, so that
+// tinyobjloader (which skips or clamps some of them) only sees what it reads correctly.
+// Returns the line of each face, in the file's order.
+std::string checkLines(std::string_view text, const std::string& path,
+                       std::vector<size_t>& faceLines) {
+  const auto all = objLines(text);
+  long totals[3] = {0, 0, 0};  // v, vt, vn
+  for (const auto& [number, line] : all) {
+    const auto t = objTokens(line);
+    if (t.empty()) continue;
+    if (t[0] == "v") ++totals[0];
+    if (t[0] == "vt") ++totals[1];
+    if (t[0] == "vn") ++totals[2];
+  }
+  auto at = [&](size_t number, const std::string& message) {
+    return path + ":" + std::to_string(number) + ": " + message;
+  };
+  // tinyobjloader reads a line only up to a NUL byte: what it saw would not be what is
+  // checked below.
+  for (const auto& [number, line] : all)
+    if (line.find('\0') != std::string_view::npos)
+      return at(number, "a NUL byte; an OBJ file is text");
+  long seen[3] = {0, 0, 0};
+  static const char* kind[3] = {"vertex", "texture coordinate", "normal"};
+  static const char* kinds[3] = {"vertices", "texture coordinates", "normals"};
+  for (const auto& [number, line] : all) {
+    const auto t = objTokens(line);
+    if (t.empty()) continue;
+    if (t[0] == "v" || t[0] == "vn" || t[0] == "vt") {
+      const int k = t[0] == "v" ? 0 : t[0] == "vt" ? 1 : 2;
+      ++seen[k];
+      const size_t need = k == 1 ? 2 : 4;
+      if (t.size() < need)
+        return at(number, std::string(kind[k]) + " has " + std::to_string(t.size() - 1) +
+                              " coordinates, expected " + std::to_string(need - 1));
+      for (size_t i = 1; i < t.size() && i < (k == 0 ? 4u : t.size()); ++i) {
+        double v = 0.0;
+        if (!parseNumber(t[i], v))
+          return at(number, std::string(kind[k]) + " coordinate \"" + std::string(t[i]) +
+                                "\" is not a number");
+        if (!std::isfinite(v))
+          return at(number, std::string(kind[k]) + " coordinate \"" + std::string(t[i]) +
+                                "\" is not finite");
+      }
+    } else if (t[0] == "f") {
+      if (t.size() < 4)
+        return at(number,
+                  "a face needs at least 3 vertices, this one has " + std::to_string(t.size() - 1));
+      if (t.size() > 256) return at(number, "a face has more than 255 vertices");
+      for (size_t i = 1; i < t.size(); ++i) {
+        // v, v/vt, v//vn or v/vt/vn
+        std::string_view ref = t[i];
+        for (int k = 0; k < 3; ++k) {
+          const size_t slash = ref.find('/');
+          const std::string_view part = ref.substr(0, slash);
+          if (k == 0 || !part.empty()) {
+            long index = 0;
+            if (!parseIndex(part, index))
+              return at(number, "face " + std::string(kind[k]) + " index \"" + std::string(part) +
+                                    "\" is not an integer");
+            // Negative indices count back from the last one read so far (OBJ's rule).
+            const long resolved = index < 0 ? seen[k] + index + 1 : index;
+            const long limit = index < 0 ? seen[k] : totals[k];
+            if (index == 0 || resolved < 1 || resolved > limit)
+              return at(number, "face " + std::string(kind[k]) + " index " + std::to_string(index) +
+                                    " is out of range: " + std::to_string(limit) + " " +
+                                    (limit == 1 ? kind[k] : kinds[k]) +
+                                    (index < 0 ? " before it" : " in the file"));
+          }
+          if (slash == std::string_view::npos) break;
+          ref = ref.substr(slash + 1);
+        }
+      }
+      faceLines.push_back(number);
+    }
+  }
+  if (totals[0] == 0) return path + ": no vertices (no \"v\" lines)";
+  if (faceLines.empty()) return path + ": no faces (no \"f\" lines)";
+  return {};
+}
+
+}  // namespace
+
+ObjReadResult readObjMesh(const std::string& path) {
+  std::string error;
+  const auto bytes = detail::readFileBytes(path, kMaxBytes, &error);
+  if (!bytes) return {std::nullopt, error};
+  return parseObjMesh(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
+                      path);
+}
+
+ObjReadResult parseObjMesh(std::string_view data, const std::string& path) {
+  ObjReadResult r;
+  const std::string text(data);
+  std::vector<size_t> faceLines;
+  r.error = checkLines(text, path, faceLines);
+  if (!r.error.empty()) return r;
+
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = false;  // fans below, so that each triangle keeps its face's line
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromString(text, "", config)) {
+    std::string why = reader.Error();
+    while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
+    r.error = path + ": " + why;
+    return r;
+  }
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+
+  // One vertex per position: exporters repeat positions where texture coordinates change.
+  SurfaceMesh m;
+  std::vector<uint32_t> welded(attrib.vertices.size() / 3);
+  std::map<std::array<float, 3>, uint32_t> byPosition;
+  for (size_t v = 0; v < welded.size(); ++v) {
+    const std::array<float, 3> p{attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                                 attrib.vertices[3 * v + 2]};
+    auto [it, added] = byPosition.try_emplace(p, uint32_t(m.positions.size()));
+    if (added) m.positions.emplace_back(p[0], p[1], p[2]);
+    welded[v] = it->second;
+  }
+  size_t faces = 0;
+  for (const tinyobj::shape_t& s : reader.GetShapes()) {
+    faces += s.mesh.num_face_vertices.size();
+    // Our checks above saw every index in range; tinyobjloader must agree before we index.
+    for (const tinyobj::index_t& i : s.mesh.indices)
+      if (i.vertex_index < 0 || size_t(i.vertex_index) >= welded.size()) {
+        r.error = path + ": a face refers to vertex " + std::to_string(i.vertex_index + 1) +
+                  " of the " + std::to_string(welded.size()) +
+                  " tinyobjloader read; the file's lines are not plain OBJ";
+        return r;
+      }
+  }
+  const bool linesKnown = faces == faceLines.size();
+  std::vector<size_t> triangleLine;
+  size_t face = 0;
+  for (const tinyobj::shape_t& s : reader.GetShapes()) {
+    size_t first = 0;
+    for (const unsigned char n : s.mesh.num_face_vertices) {
+      for (size_t k = 1; k + 1 < n; ++k) {
+        const uint32_t a = welded[size_t(s.mesh.indices[first].vertex_index)],
+                       b = welded[size_t(s.mesh.indices[first + k].vertex_index)],
+                       c = welded[size_t(s.mesh.indices[first + k + 1].vertex_index)];
+        if (a == b || b == c || c == a) continue;  // no area, no edges
+        m.indices.insert(m.indices.end(), {a, b, c});
+        triangleLine.push_back(linesKnown ? faceLines[face] : 0);
+      }
+      first += n;
+      ++face;
+    }
+  }
+  auto at = [&](size_t triangle, const std::string& message) {
+    const size_t line = triangle < triangleLine.size() ? triangleLine[triangle] : 0;
+    return path + (line ? ":" + std::to_string(line) : std::string()) + ": " + message;
+  };
+  if (m.indices.empty()) {
+    r.error = path + ": no faces with area (every face repeats a vertex)";
+    return r;
+  }
+
+  if (const size_t open = openEdges(m); open > 0) {
+    // The first face with an edge not met once the other way round.
+    std::unordered_map<uint64_t, int> directed;
+    const uint64_t n = m.positions.size();
+    for (size_t t = 0; t < m.indices.size(); t += 3)
+      for (int e = 0; e < 3; ++e) ++directed[m.indices[t + e] * n + m.indices[t + (e + 1) % 3]];
+    size_t bad = 0;
+    for (size_t t = 0; t < m.indices.size() && !bad; t += 3)
+      for (int e = 0; e < 3; ++e) {
+        const uint64_t a = m.indices[t + e], b = m.indices[t + (e + 1) % 3];
+        auto reverse = directed.find(b * n + a);
+        if (directed[a * n + b] != 1 || reverse == directed.end() || reverse->second != 1) {
+          bad = t / 3 + 1;
+          break;
+        }
+      }
+    r.error = at(bad ? bad - 1 : 0,
+                 "the surface is not closed: " + std::to_string(open) +
+                     " edges are not shared by exactly two faces turning the same way (the first "
+                     "on this line); a head must be a closed, consistently oriented surface to "
+                     "have an inside");
+    return r;
+  }
+
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::vec3& p : m.positions) {
+    lo = glm::min(lo, glm::dvec3(p));
+    hi = glm::max(hi, glm::dvec3(p));
+  }
+  const double size = std::max(hi.x - lo.x, std::max(hi.y - lo.y, hi.z - lo.z));
+  if (size > kMaxSize) {
+    r.error = path + ": the mesh is " + std::to_string(size) +
+              " m across; head.mesh is read in metres in the head frame (y up, face +z, crown "
+              "about 0.1 m above the origin), where a head and shoulders is under 1 m";
+    return r;
+  }
+  double volume = 0.0;
+  for (size_t t = 0; t < m.indices.size(); t += 3)
+    volume += glm::dot(glm::dvec3(m.positions[m.indices[t]]),
+                       glm::cross(glm::dvec3(m.positions[m.indices[t + 1]]),
+                                  glm::dvec3(m.positions[m.indices[t + 2]]))) /
+              6.0;
+  if (!(std::abs(volume) > 1e-12)) {
+    r.error = path + ": the surface encloses no volume";
+    return r;
+  }
+  if (volume < 0.0)  // the faces turn inwards: turn them out
+    for (size_t t = 0; t < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
+
+  // Normals weighted by the angle at each corner (independent of how the surface is split).
+  std::vector<glm::dvec3> normals(m.positions.size(), glm::dvec3(0.0));
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    const glm::dvec3 p[3] = {glm::dvec3(m.positions[m.indices[t]]),
+                             glm::dvec3(m.positions[m.indices[t + 1]]),
+                             glm::dvec3(m.positions[m.indices[t + 2]])};
+    const glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const double len = glm::length(n);
+    if (len < 1e-30) continue;
+    for (int c = 0; c < 3; ++c) {
+      const glm::dvec3 u = p[(c + 1) % 3] - p[c], v = p[(c + 2) % 3] - p[c];
+      const double lu = glm::length(u), lv = glm::length(v);
+      if (lu < 1e-30 || lv < 1e-30) continue;
+      const double angle = std::acos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0, 1.0));
+      normals[m.indices[t + c]] += angle * n / len;
+    }
+  }
+  m.normals.reserve(normals.size());
+  for (const glm::dvec3& n : normals)
+    m.normals.emplace_back(glm::length(n) > 1e-30 ? glm::normalize(n) : glm::dvec3(0, 1, 0));
+  r.mesh = std::move(m);
+  return r;
+}
+
+}  // namespace csm::io

@@ -1,0 +1,121 @@
+#include "sim/head/surface_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+namespace csm {
+
+namespace {
+
+// The Kuhn (Freudenthal) split of a cube into six tetrahedra about the diagonal 0-7: corner
+// c is (c & 1, c >> 1 & 1, c >> 2), and every tetrahedron is a path 0 -> 7 along the axes.
+constexpr std::array<std::array<int, 4>, 6> kTetrahedra{
+    {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}}};
+
+}  // namespace
+
+SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact) {
+  SurfaceMesh m;
+  std::unordered_map<uint64_t, uint32_t> edgeVertex;
+  auto position = [&](size_t node) {
+    const size_t i = node % size_t(g.dims.x), j = node / size_t(g.dims.x) % size_t(g.dims.y),
+                 k = node / (size_t(g.dims.x) * size_t(g.dims.y));
+    return glm::dvec3(g.origin) + double(g.cell) * glm::dvec3(double(i), double(j), double(k));
+  };
+  // One vertex per grid edge that the surface cuts, shared by every triangle through it.
+  auto vertexOn = [&](size_t a, size_t b) {
+    if (a > b) std::swap(a, b);
+    const uint64_t key = uint64_t(a) * uint64_t(g.nodes.size()) + b;
+    auto [it, added] = edgeVertex.try_emplace(key, uint32_t(m.positions.size()));
+    if (added) {
+      const double da = g.nodes[a].w, db = g.nodes[b].w;
+      const double t = std::clamp(da / (da - db), 0.0, 1.0);
+      glm::dvec3 p = glm::mix(position(a), position(b), t);
+      glm::dvec3 n = glm::mix(glm::dvec3(g.nodes[a]), glm::dvec3(g.nodes[b]), t);
+      if (exact) {
+        for (int step = 0; step < 3; ++step) {
+          const double e = 1e-5, d = exact(p);
+          const glm::dvec3 grad(exact(p + glm::dvec3(e, 0, 0)) - exact(p - glm::dvec3(e, 0, 0)),
+                                exact(p + glm::dvec3(0, e, 0)) - exact(p - glm::dvec3(0, e, 0)),
+                                exact(p + glm::dvec3(0, 0, e)) - exact(p - glm::dvec3(0, 0, e)));
+          n = grad / (2.0 * e);
+          const double len2 = glm::dot(n, n);
+          if (len2 < 1e-12) break;
+          p -= d * n / len2;
+        }
+      }
+      m.positions.emplace_back(p);
+      m.normals.emplace_back(glm::length(n) > 1e-12 ? glm::normalize(n) : glm::dvec3(0, 1, 0));
+    }
+    return it->second;
+  };
+  // Oriented by the midpoints of the cut edges, which never coincide (the vertices may, where
+  // the surface passes through a node), so every triangle turns outwards.
+  using Edge = std::pair<size_t, size_t>;
+  auto triangle = [&](Edge a, Edge b, Edge c, const glm::dvec3& outward) {
+    auto mid = [&](Edge e) { return 0.5 * (position(e.first) + position(e.second)); };
+    if (glm::dot(glm::cross(mid(b) - mid(a), mid(c) - mid(a)), outward) < 0.0) std::swap(b, c);
+    m.indices.insert(m.indices.end(), {vertexOn(a.first, a.second), vertexOn(b.first, b.second),
+                                       vertexOn(c.first, c.second)});
+  };
+  for (int k = 0; k + 1 < g.dims.z; ++k)
+    for (int j = 0; j + 1 < g.dims.y; ++j)
+      for (int i = 0; i + 1 < g.dims.x; ++i) {
+        std::array<size_t, 8> node;
+        int insideCorners = 0;
+        for (int c = 0; c < 8; ++c) {
+          node[c] = g.index(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2));
+          insideCorners += g.nodes[node[c]].w < 0.0f;
+        }
+        if (insideCorners == 0 || insideCorners == 8) continue;
+        for (const auto& tet : kTetrahedra) {
+          std::array<size_t, 4> in{}, out{};
+          int nIn = 0, nOut = 0;
+          glm::dvec3 inSum(0.0), outSum(0.0);
+          for (int v : tet) {
+            const size_t n = node[v];
+            if (g.nodes[n].w < 0.0f) {
+              in[nIn++] = n;
+              inSum += position(n);
+            } else {
+              out[nOut++] = n;
+              outSum += position(n);
+            }
+          }
+          if (nIn == 0 || nOut == 0) continue;
+          const glm::dvec3 outward = outSum / double(nOut) - inSum / double(nIn);
+          if (nIn == 1 || nOut == 1) {
+            // One corner apart from the other three: a triangle around it.
+            const size_t lone = nIn == 1 ? in[0] : out[0];
+            const std::array<size_t, 4>& rest = nIn == 1 ? out : in;
+            triangle({lone, rest[0]}, {lone, rest[1]}, {lone, rest[2]}, outward);
+          } else {
+            // Two and two: a quad through the four cut edges, as two triangles.
+            const Edge a{in[0], out[0]}, b{in[0], out[1]}, c{in[1], out[1]}, d{in[1], out[0]};
+            triangle(a, b, c, outward);
+            triangle(a, c, d, outward);
+          }
+        }
+      }
+  return m;
+}
+
+size_t openEdges(const SurfaceMesh& m) {
+  std::unordered_map<uint64_t, int> directed;
+  const uint64_t n = m.positions.size();
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
+    for (int e = 0; e < 3; ++e)
+      ++directed[uint64_t(m.indices[t + e]) * n + m.indices[t + (e + 1) % 3]];
+  size_t open = 0;
+  for (const auto& [key, count] : directed) {
+    const uint64_t reverse = (key % n) * n + key / n;
+    auto it = directed.find(reverse);
+    if (count != 1 || it == directed.end() || it->second != 1) ++open;
+  }
+  return open;
+}
+
+}  // namespace csm

@@ -1,0 +1,31 @@
+// A closed triangle surface: what the renderer draws of the head, and how a distance grid's zero
+// level becomes one (marching tetrahedra).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "sim/head/distance_grid.h"
+
+namespace csm {
+
+// A triangle mesh, counter-clockwise seen from outside.
+struct SurfaceMesh {
+  std::vector<glm::vec3> positions, normals;
+  std::vector<uint32_t> indices;
+};
+
+// The zero level of the grid by marching tetrahedra (six per cell, one diagonal, so that
+// neighbouring cells cut their shared faces alike): closed when the grid's border nodes lie
+// outside. With `exact`, vertices are moved onto its zero level and take its gradient as the
+// normal; otherwise the grid's.
+SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact = {});
+
+// Edges of a mesh used other than once in each direction (0 for a closed, consistently
+// oriented surface).
+size_t openEdges(const SurfaceMesh& m);
+
+}  // namespace csm

@@ -1,0 +1,386 @@
+#include "sim/param/sim_params.h"
+
+#include <iterator>
+
+namespace csm {
+namespace {
+
+bool paperModel(const Config& c) {
+  return c.sim.stiffnessModel == StiffnessModel::Paper;
+}
+bool separates(const Config& c) {
+  return c.hairstyle.separatePasses > 0;
+}
+bool hasFollowHairs(const Config& c) {
+  return c.hairstyle.followCount > 0;
+}
+bool calibratedModel(const Config& c) {
+  return c.sim.stiffnessModel == StiffnessModel::Calibrated;
+}
+
+bool volumeMode(const Config& c) {
+  return volumeForces(c.collision.mode);
+}
+
+bool strandMode(const Config& c) {
+  return strandContacts(c.collision.mode);
+}
+
+std::vector<Param<Config>> build() {
+  return {
+      param("hairstyle.file", "Groom file", "Hairstyle", &Config::hairstyle, &HairstyleConfig::file,
+            0, 0,
+            "A groom to load instead of growing strands: cyHair .hair, TressFX .tfx (any version) "
+            "or OBJ curves .obj (Blender's hair export); empty = the generator. Relative paths "
+            "are relative to the preset.",
+            Effect::Rebuild),
+      param("hairstyle.strands", "Strands", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::strands, 1, 1000000,
+            "Number of simulated strands. A smaller count keeps the first strands of a larger one.",
+            Effect::Rebuild)
+          .logScale(),
+      param("hairstyle.particles_per_strand", "Particles per strand", "Hairstyle",
+            &Config::hairstyle, &HairstyleConfig::particlesPerStrand, 0, 64,
+            "Fixed particle count per strand; 0 chooses it per strand from its length and curl.",
+            Effect::Rebuild),
+      param("hairstyle.min_particles", "Min particles", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::minParticles, 3, 64,
+            "Fewest particles a strand gets when chosen by length.", Effect::Rebuild),
+      param("hairstyle.max_particles", "Max particles", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::maxParticles, 3, 64,
+            "Most particles a strand gets when chosen by length.", Effect::Rebuild),
+      param("hairstyle.segment_length", "Segment length", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::segmentLength, 0.002, 0.2,
+            "Target arc length between particles (m) when the count follows length and curl.",
+            Effect::Rebuild),
+      param("hairstyle.length_min", "Length min", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::lengthMin, 0.005, 2.0, "Shortest strand (m).", Effect::Rebuild),
+      param("hairstyle.length_max", "Length max", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::lengthMax, 0.005, 2.0, "Longest strand (m).", Effect::Rebuild),
+      param("hairstyle.curl_radius", "Curl radius", "Hairstyle|Curl", &Config::hairstyle,
+            &HairstyleConfig::curlRadius, 0.0, 0.1, "Helix radius at the tip (m); 0 = straight.",
+            Effect::Rebuild),
+      param("hairstyle.curl_pitch", "Curl pitch", "Hairstyle|Curl", &Config::hairstyle,
+            &HairstyleConfig::curlPitch, 0.005, 0.5,
+            "Length along the strand of one turn of curl (m).", Effect::Rebuild),
+      param(
+          "hairstyle.curl_start", "Curl start", "Hairstyle|Curl", &Config::hairstyle,
+          &HairstyleConfig::curlStart, 0.0, 1.0,
+          "Fraction of the length, from the root, where curl begins: straight at the scalp, curly "
+          "toward the tips.",
+          Effect::Rebuild),
+      param("hairstyle.scalp_angle", "Scalp angle", "Hairstyle|Scalp", &Config::hairstyle,
+            &HairstyleConfig::scalpAngle, 5.0, 180.0,
+            "How far from the crown the scalp reaches (degrees).", Effect::Rebuild),
+      param("hairstyle.hairline_front", "Front hairline", "Hairstyle|Scalp", &Config::hairstyle,
+            &HairstyleConfig::hairlineFront, 5.0, 180.0,
+            "How far from the crown the hairline reaches on the forehead (degrees).",
+            Effect::Rebuild),
+      param("hairstyle.fall", "Fall", "Hairstyle", &Config::hairstyle, &HairstyleConfig::fall, 0.0,
+            1.0,
+            "How quickly strands turn from the scalp normal to hang down: 0 stands up, 1 falls at "
+            "once.",
+            Effect::Rebuild),
+      param(
+          "hairstyle.sweep", "Sweep back", "Hairstyle", &Config::hairstyle, &HairstyleConfig::sweep,
+          0.0, 2.0,
+          "How far hair growing toward the face is swept back and to the sides (0 = it falls over "
+          "the face).",
+          Effect::Rebuild),
+      param("hairstyle.parting", "Parting", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::parting, 0, 0,
+            "Where the hair parts on top: none (it falls from the crown all round), centre, or "
+            "on the head's left or right. Hair lies on the scalp away from the parting.",
+            Effect::Rebuild)
+          .choices({"none", "centre", "left", "right"}),
+      param("hairstyle.fringe", "Fringe", "Hairstyle", &Config::hairstyle, &HairstyleConfig::fringe,
+            0, 1,
+            "Hair from the front of the scalp falls forward over the forehead, cut at the brow "
+            "(the eyes stay open).",
+            Effect::Rebuild),
+      param("hairstyle.volume", "Volume", "Hairstyle", &Config::hairstyle, &HairstyleConfig::volume,
+            0.0, 0.05,
+            "Thickness of the hair's layer over the scalp (m): hair from higher roots lies this "
+            "much further out, over the hair from lower roots.",
+            Effect::Rebuild)
+          .display(1000.0, "mm"),
+      param("hairstyle.separate_passes", "Separation passes", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::separatePasses, 0, 100,
+            "Passes that push the grown strands apart to 2.2 hair radii where they lie closer, "
+            "so that the groom starts without strands through each other; 0 keeps it as grown. "
+            "Each pass costs a search of the groom's segment pairs.",
+            Effect::Rebuild),
+      param("hairstyle.separate_limit", "Separation limit", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::separateLimit, 0.0, 0.05,
+            "Farthest (m) the separation passes move a particle from where it grew.",
+            Effect::Rebuild)
+          .display(1000.0, "mm")
+          .onlyWhen(separates),
+      param("hairstyle.seed", "Seed", "Hairstyle", &Config::hairstyle, &HairstyleConfig::seed, 0,
+            2147483647, "Random seed of the groom. The same seed gives the same hair.",
+            Effect::Rebuild),
+      param("hairstyle.import_scale", "Import scale", "Hairstyle|Import", &Config::hairstyle,
+            &HairstyleConfig::importScale, 0.0, 1000.0,
+            "Scale applied to a groom file; 0 fits it to the head.", Effect::Rebuild),
+      param("hairstyle.import_rotation", "Import rotation", "Hairstyle|Import", &Config::hairstyle,
+            &HairstyleConfig::importRotation, -360, 360,
+            "Euler XYZ rotation (degrees) applied to a groom file.", Effect::Rebuild),
+      param("hairstyle.import_offset", "Import offset", "Hairstyle|Import", &Config::hairstyle,
+            &HairstyleConfig::importOffset, -10, 10,
+            "Offset (m) applied to a groom file after fitting.", Effect::Rebuild),
+      param(
+          "hairstyle.resample_tolerance", "Resample tolerance", "Hairstyle|Import",
+          &Config::hairstyle, &HairstyleConfig::resampleTolerance, 0.0, 0.05,
+          "Largest distance (m) the resampled strand may stray from the file's curve; 0 keeps the "
+          "file's points.",
+          Effect::Rebuild),
+      param("hairstyle.follow_count", "Follow hairs", "Hairstyle|Follow", &Config::hairstyle,
+            &HairstyleConfig::followCount, 0, 64,
+            "Render-only strands drawn around each simulated strand.", Effect::Render),
+      param("hairstyle.follow_spread", "Follow spread", "Hairstyle|Follow", &Config::hairstyle,
+            &HairstyleConfig::followSpread, 0.0, 0.05,
+            "Distance (m) of follow hairs from their guide at the root.", Effect::Render)
+          .onlyWhen(hasFollowHairs),
+      param("head.mesh", "Head mesh", "Head", &Config::head, &HeadConfig::mesh, 0, 0,
+            "A Wavefront OBJ head (metres, head frame: y up, face +z, crown about 0.1 m above the "
+            "origin; closed) to collide with and draw when collision.head_shape is sdf; empty = "
+            "the built-in mannequin. Relative paths are relative to the preset.",
+            Effect::Rebuild),
+      param("head.spheres", "Head spheres", "Head", &Config::head, &HeadConfig::spheres, -10, 10,
+            "Spheres (centre in the head frame, radius) that the hair collides with; the first is "
+            "the scalp the hair grows from.",
+            Effect::Rebuild),
+      param("head.fit_spheres", "Fit spheres", "Head", &Config::head, &HeadConfig::fitSpheres, 0, 1,
+            "Replace head.spheres by as many spheres fitted inside head.mesh (or the mannequin): "
+            "the largest ball inside it, then each the ball that covers most of the rest of the "
+            "head above y = -0.2 m (not the shoulders).",
+            Effect::Rebuild),
+      param("head.motion", "Motion", "Head", &Config::head, &HeadConfig::motion, 0, 0,
+            "How the head moves: none, nod, shake, spin, sway or bounce.", Effect::Live)
+          .choices({"none", "nod", "shake", "spin", "sway", "bounce"}),
+      param("head.amplitude", "Amplitude", "Head", &Config::head, &HeadConfig::amplitude, 0.0,
+            180.0, "Amplitude of the motion: degrees, or centimetres for bounce.", Effect::Live),
+      param("head.frequency", "Frequency", "Head", &Config::head, &HeadConfig::frequency, 0.0, 10.0,
+            "Motion frequency (Hz).", Effect::Live),
+      param("head.pivot", "Pivot", "Head", &Config::head, &HeadConfig::pivot, -1, 1,
+            "Point in the head frame that rotations turn about (the neck).", Effect::Live),
+      param("sim.dt", "Frame time step", "Simulation", &Config::sim, &SimConfig::dt, 1e-4, 0.1,
+            "Simulated seconds per frame; each frame is split into substeps.", Effect::Live)
+          .logScale(),
+      param(
+          "sim.stiffness_model", "Stiffness model", "Simulation", &Config::sim,
+          &SimConfig::stiffnessModel, 0, 0,
+          "calibrated: a window in metres and a bending stiffness; the hair looks the same at any "
+          "substeps, particle count and density (DESIGN.md section 4). paper: a window in "
+          "particles and alpha per step, as the paper does: more substeps stiffen the hair, more "
+          "particles soften it.",
+          Effect::Live)
+          .choices({"paper", "calibrated"}),
+      param("sim.substeps", "Substeps", "Simulation", &Config::sim, &SimConfig::substeps, 1, 64,
+            "Steps per frame (paper); the fewest steps per frame (calibrated: more when the "
+            "stiffness needs them, up to max substeps).",
+            Effect::Live),
+      param("sim.max_substeps", "Max substeps", "Simulation", &Config::sim, &SimConfig::maxSubsteps,
+            1, 256,
+            "Calibrated: the most steps per frame the stiffness may ask for. When it binds, the "
+            "stiffest strands are softer than asked, and the log and the panel say so.",
+            Effect::Live)
+          .onlyWhen(calibratedModel),
+      param("sim.window_length", "Stiffness window", "Simulation", &Config::sim,
+            &SimConfig::windowLength, 0.002, 0.1,
+            "Calibrated: half-length of each shape-matching region along the strand (m; the panel "
+            "shows cm). Regions never hold fewer than 3 particles. A longer window gives smoother "
+            "bends and needs fewer steps for the same stiffness. At most 10 cm: a window that "
+            "holds most of a strand barely pulls it to its goals (alpha under 0.002 a step), and "
+            "the strain limit's sweep then whips the hair (docs/RELIABILITY.md, torture map).",
+            Effect::Live)
+          .logScale()
+          .onlyWhen(calibratedModel)
+          .display(100.0, "cm"),
+      param("sim.bending_stiffness", "Bending stiffness", "Simulation", &Config::sim,
+            &SimConfig::bendingStiffness, 1e-7, 100.0,
+            "Calibrated: bending stiffness per unit mass, EI over the linear density (m^4/s^2). A "
+            "real hair is about 1e-3; a clump of hair acts stiffer. Doubling it halves the sag.",
+            Effect::Live)
+          .logScale()
+          .onlyWhen(calibratedModel)
+          .display(1.0, "m^4/s^2"),
+      param(
+          "sim.root_length", "Root length", "Simulation", &Config::sim, &SimConfig::rootLength, 0.0,
+          0.2,
+          "Calibrated: length of strand from the root that the scalp holds rigidly (m; the panel "
+          "shows cm); at least `pinned` particles. A length, so the held piece stays the same with "
+          "more particles.",
+          Effect::Live)
+          .onlyWhen(calibratedModel)
+          .display(100.0, "cm"),
+      param("sim.stiffness_window", "Stiffness window w", "Simulation", &Config::sim,
+            &SimConfig::stiffnessWindow, 1, 32,
+            "Paper: half-width of each shape-matching region, in particles: larger = stiffer hair.",
+            Effect::Live)
+          .onlyWhen(paperModel)
+          .display(1.0, "particles"),
+      param("sim.stiffness", "Stiffness alpha", "Simulation", &Config::sim, &SimConfig::stiffness,
+            0.0, 1.0, "Paper: how far particles move toward their goals each step (1 = the paper).",
+            Effect::Live)
+          .onlyWhen(paperModel),
+      param("sim.damping", "Damping", "Simulation", &Config::sim, &SimConfig::damping, 0.0, 100.0,
+            "Linear velocity damping (1/s): velocities fall by exp(-damping t).", Effect::Live),
+      param("sim.strain_limiting", "Strain limiting", "Simulation", &Config::sim,
+            &SimConfig::strainLimiting, 0, 1,
+            "Limit segment stretch root to tip after shape matching.", Effect::Live),
+      param("sim.strain_limit", "Strain limit", "Simulation", &Config::sim, &SimConfig::strainLimit,
+            0.0, 1.0, "Largest relative stretch of a segment, epsilon.", Effect::Live),
+      param("sim.pinned", "Pinned particles", "Simulation", &Config::sim, &SimConfig::pinned, 1, 4,
+            "Particles from the root that follow the head rigidly (calibrated: at least this many; "
+            "see root length).",
+            Effect::Live),
+      param("sim.gravity", "Gravity", "Simulation", &Config::sim, &SimConfig::gravity, -100, 100,
+            "Gravity (m/s^2).", Effect::Live),
+      param("sim.density", "Linear density", "Simulation", &Config::sim, &SimConfig::density, 1e-7,
+            1.0,
+            "Mass per metre of strand (kg/m); particle masses follow segment lengths. It describes "
+            "the hair and changes nothing in its motion: shape matching, gravity, wind drag and "
+            "the contact accelerations are all per unit mass, so a uniform mass scale cancels "
+            "(DESIGN.md section 4); the panel shows EI = bending stiffness x density from it.",
+            Effect::Info)
+          .logScale(),
+      param("sim.dftl", "DFTL correction", "Simulation", &Config::sim, &SimConfig::dftl, 0.0, 1.0,
+            "Dynamic follow-the-leader velocity correction after strain limiting (Mueller et al. "
+            "2012); 0 = off, 1 = full.",
+            Effect::Live),
+      param("sim.rotation_iterations", "Rotation iterations", "Simulation", &Config::sim,
+            &SimConfig::rotationIterations, 1, 32,
+            "Quaternion iterations per region and step when extracting rotations (warm-started).",
+            Effect::Live),
+      param("collision.mode", "Collisions", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::mode, 0, 0,
+            "off: none; head: hair against the head spheres; strands: and contacts between strands "
+            "that hold them apart; volume: and hair as a continuum on a grid (friction between "
+            "neighbours, a push out of over-dense places; cost linear in particles); "
+            "volume+strands: both. \"full\" (older presets) reads as strands.",
+            Effect::Live)
+          .choices({std::begin(kCollisionModeNames), std::end(kCollisionModeNames)})
+          .alias("full", int(CollisionMode::Strands)),
+      param("collision.head_shape", "Head shape", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::headShape, 0, 0,
+            "sdf: the built-in mannequin (head, neck, shoulders), or head.mesh, as a signed "
+            "distance field sampled at 4 mm, collided with and drawn; spheres: head.spheres, as "
+            "the paper does.",
+            Effect::Rebuild)
+          .choices({"sdf", "spheres"}),
+      param("collision.radius", "Hair radius", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::radius, 1e-5, 0.02,
+            "Collision radius of a strand (m): two strands touch at twice this.", Effect::Live)
+          .logScale(),
+      param("collision.margin", "Contact margin", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::margin, 0.0, 0.01,
+            "Strand contacts: pairs within 2 radii + this at the start of a frame are the ones its "
+            "substeps hold apart (m). Larger catches faster motion and costs more.",
+            Effect::Live)
+          .display(1000.0, "mm"),
+      param("collision.compliance", "Contact compliance", "Simulation|Collision",
+            &Config::collision, &CollisionConfig::compliance, 0.0, 100.0,
+            "Strand contacts: give of a contact, metres per newton (XPBD); 0 = hard.",
+            Effect::Live),
+      param("collision.iterations", "Contact iterations", "Simulation|Collision",
+            &Config::collision, &CollisionConfig::iterations, 1, 16,
+            "Strand contacts: iterations per substep. More hold dense hair apart better "
+            "(fewer crossings) and cost one more contact solve each.",
+            Effect::Live)
+          .onlyWhen(strandMode),
+      param("collision.solve", "Contact solve", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::solve, 0, 0,
+            "Strand contacts: how an iteration moves a segment. sweep: its pairs in order, each "
+            "from where the ones before it left the segment (a deep pair among shallow ones is "
+            "resolved at once); jacobi: by the mean of what its pairs ask. The same cost.",
+            Effect::Live)
+          .choices({"sweep", "jacobi"})
+          .onlyWhen(strandMode),
+      param("collision.lists", "Contact lists a frame", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::lists, 1, 16,
+            "Strand contacts: candidate searches a frame (at most its substeps), the first as "
+            "it starts and the others spread over its substeps. More catch strands that close "
+            "in on each other within a frame faster than the margin covers; each costs a "
+            "search.",
+            Effect::Live)
+          .onlyWhen(strandMode),
+      param("collision.friction", "Hair friction", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::friction, 0.0, 2.0,
+            "Coulomb friction coefficient between strands: sliding is held back by at most this "
+            "times the push that keeps them apart.",
+            Effect::Live),
+      param("collision.head_friction", "Head friction", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::headFriction, 0.0, 2.0,
+            "Coulomb friction coefficient between hair and head: sliding slows by at most this "
+            "times the push the head gives.",
+            Effect::Live),
+      param("collision.volume_cell", "Volume cell", "Simulation|Collision|Volume",
+            &Config::collision, &CollisionConfig::volumeCell, 0.002, 0.05,
+            "Volume mode: node spacing of the grid hair is splatted to (m). Finer resolves "
+            "thinner gaps and costs more memory.",
+            Effect::Live)
+          .onlyWhen(volumeMode)
+          .display(1000.0, "mm"),
+      param("collision.volume_friction", "Volume friction", "Simulation|Collision|Volume",
+            &Config::collision, &CollisionConfig::volumeFriction, 0.0, 100.0,
+            "Volume mode: rate (1/s) at which each particle's velocity joins the mean velocity "
+            "of the hair around it.",
+            Effect::Live)
+          .onlyWhen(volumeMode),
+      param("collision.volume_stiffness", "Volume stiffness", "Simulation|Collision|Volume",
+            &Config::collision, &CollisionConfig::volumeStiffness, 0.0, 100.0,
+            "Volume mode: push out of over-dense places, m/s^2 per unit gradient (1/m) of the "
+            "volume fraction over what is allowed.",
+            Effect::Live)
+          .onlyWhen(volumeMode),
+      param("collision.volume_fraction", "Volume fraction", "Simulation|Collision|Volume",
+            &Config::collision, &CollisionConfig::volumeFraction, 0.01, 1.0,
+            "Volume mode: the fraction of space hair may fill before it is pushed (or what the "
+            "groom packed at rest, where that is more).",
+            Effect::Live)
+          .onlyWhen(volumeMode),
+      param("wind.strength", "Strength", "Wind", &Config::wind, &WindConfig::strength, 0.0, 50.0,
+            "Mean wind speed (m/s).", Effect::Live),
+      param("wind.direction", "Direction", "Wind", &Config::wind, &WindConfig::direction, -1, 1,
+            "Direction the wind blows toward (normalised when used).", Effect::Live),
+      param("wind.gusts", "Gusts", "Wind", &Config::wind, &WindConfig::gusts, 0.0, 2.0,
+            "Relative amplitude of gusts over time.", Effect::Live),
+      param("wind.gust_frequency", "Gust frequency", "Wind", &Config::wind,
+            &WindConfig::gustFrequency, 0.0, 10.0, "How often gusts come (Hz).", Effect::Live),
+      param("wind.turbulence", "Turbulence", "Wind", &Config::wind, &WindConfig::turbulence, 0.0,
+            2.0, "Relative amplitude of the spatial turbulence.", Effect::Live),
+      param("wind.turbulence_scale", "Turbulence scale", "Wind", &Config::wind,
+            &WindConfig::turbulenceScale, 0.005, 2.0, "Size of turbulent eddies (m).",
+            Effect::Live),
+      param("wind.drag", "Drag", "Wind", &Config::wind, &WindConfig::drag, 0.0, 100.0,
+            "Acceleration per m/s of wind across the strand (1/s), applied implicitly (stable at "
+            "any step).",
+            Effect::Live),
+  };
+}
+
+}  // namespace
+
+const std::vector<Param<Config>>& simParams() {
+  static const std::vector<Param<Config>> list = build();
+  return list;
+}
+
+const Param<Config>* findSimParam(std::string_view key) {
+  return findParam(simParams(), key);
+}
+
+bool sameScene(const Config& a, const Config& b) {
+  for (const Param<Config>& p : simParams())
+    if (!sameValue(p, a, b)) return false;
+  return true;
+}
+
+bool needsRegrow(const Config& a, const Config& b) {
+  for (const Param<Config>& p : simParams())
+    if (p.effect == Effect::Rebuild && !sameValue(p, a, b)) return true;
+  return false;
+}
+
+}  // namespace csm

@@ -1,0 +1,114 @@
+// A running scene: the config, the groom grown from it, a solver and the head's motion.
+// The headless loop and the viewer both drive one of these; a changed parameter either takes
+// effect on the next step or, when it changes the hair's shape, regrows the groom.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "sim/core/config.h"
+#include "sim/core/groom.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/head/head_model.h"
+#include "sim/core/pose.h"
+#include "sim/core/solver.h"
+
+namespace csm {
+
+// The fastest the user's move of the head may move the roots (m/s). A head the user moves
+// faster (a jump: a reset of the viewer's drag, a fast drag, setUserPose) carries the hair
+// with it, rigidly, for the part of the move beyond this speed; the rest, and the preset's
+// own motion, are simulated. A head shaken hard turns at about 700 degrees a second, which moves
+// roots 10-12 cm from the neck's axis at 1.2-1.5 m/s.
+inline constexpr double kMaxRootSpeed = 2.0;
+
+// A point of a running scene to go back to (sim/run/frame_recording.h): the solver's whole state, the
+// clock, the head's poses and the config it ran with, for the groom of one generation.
+struct SimulationState {
+  long generation = -1;  // the groom it belongs to (Simulation::generation)
+  long frame = 0;
+  double time = 0.0;
+  long carried = 0;
+  Pose userPose, lastUserPose, lastPose;
+  Config config;
+  SolverState solver;
+  size_t bytes() const { return sizeof(*this) + solver.bytes.size(); }
+};
+
+class Simulation {
+ public:
+  explicit Simulation(std::unique_ptr<Solver> solver) : solver_(std::move(solver)) {}
+
+  // Where a long groom import stands, while load or setConfig build one (sim/groom/hairstyle.h).
+  void setImportProgress(ImportProgress progress) { importProgress_ = std::move(progress); }
+
+  // Grows the groom and resets the solver. On failure keeps what it had and says why.
+  bool load(const Config& config, const std::string& baseDir, std::string* error);
+  // Applies a changed config: regrows when a Rebuild parameter changed, else goes live.
+  // Returns false (keeping the old scene) when the new groom cannot be built.
+  bool setConfig(const Config& config, std::string* error);
+  // Back to the rest shape, time 0.
+  void reset();
+
+  void stepFrame();
+  // Saves where the scene is; restores it, config included, so that the frames after run as
+  // they did from there. Fails (false, *error set) for a state of another groom (a regrow in
+  // between) and then changes nothing.
+  void save(SimulationState& out) const;
+  bool restore(const SimulationState& in, std::string* error);
+  // An extra transform of the head on top of the preset's motion (the viewer's drag).
+  void setUserPose(const Pose& pose) { userPose_ = pose; }
+  const Pose& userPose() const { return userPose_; }
+  Pose headPoseAt(double t) const;
+  Pose headPose() const { return headPoseAt(time_); }
+
+  Solver& solver() { return *solver_; }
+  const Solver& solver() const { return *solver_; }
+  const Config& config() const { return config_; }
+  const Groom& groom() const { return *groom_; }
+  // The same groom, for a reader on another thread that keeps it past a regrow (the
+  // viewer's renderer): a regrow makes a new one and leaves this one as it is.
+  std::shared_ptr<const Groom> sharedGroom() const { return groom_; }
+  // The scene's head (built when the groom was), shared the same way: what the renderer draws.
+  const HeadModel& head() const { return *head_; }
+  std::shared_ptr<const HeadModel> sharedHead() const { return head_; }
+  const GroomReport& groomReport() const { return groomReport_; }
+  const std::string& baseDir() const { return baseDir_; }
+  double time() const { return time_; }
+  long frame() const { return frame_; }
+  // Frames since the last reset whose user move of the head was partly carried (kMaxRootSpeed).
+  long carriedFrames() const { return carried_; }
+  // Bumped whenever the groom is regrown, so renderers know to rebuild their buffers.
+  long generation() const { return generation_; }
+
+ private:
+  // Grows the groom for `config` and keeps it; the solver is not touched.
+  bool regrow(const Config& config, const std::string& baseDir, std::string* error);
+  void boundRoots();
+  // False, saying why, when the solver could not take the groom at its reset.
+  bool solverReady(std::string* error) const;
+  // The part of the head's move from `from` to `to` that moves the roots faster than
+  // kMaxRootSpeed, as a rigid transform of the world (identity when none).
+  Pose jumpOf(const Pose& from, const Pose& to) const;
+
+  std::unique_ptr<Solver> solver_;
+  Config config_;
+  std::string baseDir_;
+  std::shared_ptr<const Groom> groom_ = std::make_shared<const Groom>();
+  std::shared_ptr<const HeadModel> head_;  // built with the groom, handed to the solver
+  GroomReport groomReport_;
+  ImportProgress importProgress_;
+  void startingSolver() const;
+  Pose userPose_;
+  Pose lastUserPose_;  // the user's pose the last frame ran with
+  Pose lastPose_;
+  // The roots' bounding sphere in the head frame, for their speed.
+  glm::dvec3 rootCentre_{0.0};
+  double rootRadius_ = 0.0;
+  long carried_ = 0;
+  double time_ = 0.0;
+  long frame_ = 0;
+  long generation_ = 0;
+};
+
+}  // namespace csm

@@ -1,0 +1,107 @@
+// Baselines for the benchmarks (docs/BENCHMARKS.md): the strand models CSM is usually compared
+// with, behind the same Solver interface and on the same scenes. CPU, double precision, one
+// thread. They share gravity, wind (sim/solver/wind.h), linear damping, kinematic roots and a simple
+// projection out of the head spheres; none of them does hair-hair collision.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <deque>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "sim/core/hair_state.h"
+#include "sim/head/head_model.h"
+#include "sim/core/solver.h"
+
+namespace csm {
+
+// The knobs of the baselines. Spring stiffnesses are axial stiffnesses EA in newtons (force per
+// unit strain), so a strand's stiffness does not change with its particle count.
+struct BaselineParams {
+  double stretchStiffness = 0.05;  // EA of the edge springs i - i+1, N
+  double bendStiffness = 0.01;     // EA of the bending springs i - i+2, N (Selle et al. 2008)
+  int iterations = 4;              // PBD: constraint passes per step
+  double pbdStretch = 1.0;         // PBD: distance constraint stiffness k, 0..1 (Mueller 2007)
+  double pbdBend = 0.5;            // PBD: bending constraint (i - i+2) stiffness, 0..1
+  double ftlDamping = 0.9;         // DFTL velocity correction s_damping (Mueller 2012), 0..1
+  double ftlBend = 0.0;            // FTL: bending constraint stiffness per 1/60 s; 0 = the paper
+};
+
+// What every baseline has in common: the strand layout, roots that follow the head, external
+// accelerations, the head projection and the substep loop.
+class BaselineSolver : public Solver {
+ public:
+  explicit BaselineSolver(const BaselineParams& params) : params_(params) {}
+
+  void reset(const Groom& groom, const Config& config, const Pose& head) override;
+  void setConfig(const Config& config) override {
+    config_ = config;
+    headSpheres_ = headModel_.update(config).spheres();
+  }
+  void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
+  void stepFrame(const Pose& from, const Pose& to) override;
+
+  size_t strandCount() const override { return first_.size() - 1; }
+  size_t particleCount() const override { return x_.size(); }
+  double time() const override { return time_; }
+
+  void readPositions(std::vector<glm::vec4>& out) override;
+  void readVelocities(std::vector<glm::vec4>& out) override;
+  void writeState(const std::vector<glm::vec4>& positions,
+                  const std::vector<glm::vec4>& velocities) override;
+  // Measured at once: the state is on the CPU.
+  void requestSample(long frame) override;
+  std::optional<FrameSample> takeSample(bool wait = false) override;
+  void dropSamples() override { samples_.clear(); }
+  std::vector<StageTime> stageTimes() override { return {{"integrate", lastMs_}}; }
+
+  // One step of length h ending at head pose `head`.
+  virtual void step(double h, const Pose& head) = 0;
+
+  const BaselineParams& params() const { return params_; }
+  void setParams(const BaselineParams& p) { params_ = p; }
+  const std::vector<glm::dvec3>& positions() const { return x_; }
+  const std::vector<glm::dvec3>& velocities() const { return v_; }
+
+ protected:
+  virtual void onReset() {}
+
+  bool pinned(uint32_t i) const { return int(i - first_[strandOf_[i]]) < config_.sim.pinned; }
+  // Gravity, wind drag across the strand (as the CSM solver applies it: implicit in the
+  // velocity over a step of h, c / (1 + h c)) and nothing else.
+  glm::dvec3 externalAcceleration(uint32_t i, double h) const;
+  // Moves p out of every head sphere (radius + hair radius) by radial projection.
+  // Returns true when it moved. Does nothing when collisions are off.
+  bool projectOutOfHead(glm::dvec3& p) const;
+  // Kinematic root targets for the end of the step.
+  glm::dvec3 rootTarget(uint32_t i, const Pose& head) const { return head.apply(rest_[i]); }
+  // Sets spheres_ for the step's end pose.
+  void prepareStep(const Pose& head);
+  // v *= exp(-damping h), as the CSM solver damps.
+  void damp(double h);
+
+  BaselineParams params_;
+  Config config_;
+  SolverHead headModel_;             // the scene's head (handed, or built from config_)
+  std::vector<Sphere> headSpheres_;  // its spheres, head frame
+  double time_ = 0.0;
+  std::vector<uint32_t> first_{0};
+  std::vector<uint32_t> strandOf_;
+  std::vector<glm::dvec3> rest_;  // head frame
+  std::vector<double> mass_, invMass_;
+  std::vector<double> restLength_;  // segment i -> i+1; 0 after a strand's last particle
+  std::vector<double> bendLength_;  // rest distance i -> i+2; 0 where there is none
+  std::vector<glm::dvec3> x_, v_;
+  std::vector<Sphere> spheres_;  // world space, this step
+  std::deque<FrameSample> samples_;
+  double lastMs_ = 0.0;
+};
+
+// "ms-explicit", "ms-implicit", "pbd", "ftl"; null for an unknown name.
+std::unique_ptr<BaselineSolver> makeBaseline(std::string_view name, const BaselineParams& params);
+std::vector<std::string> baselineNames();
+
+}  // namespace csm

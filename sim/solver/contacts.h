@@ -1,0 +1,122 @@
+// Strand contacts as constraints (DESIGN.md section 1.7), the CPU reference of the GPU passes
+// (shaders/sim/candidates*.comp, contact_solve.comp):
+//  - once per frame (or collision.lists times), the candidate pairs: segments closer than
+//    2r + margin, each listed on both of its segments, with its contact distance (2r, or the
+//    pair's rest distance when the groom put it closer) and what the contact measures need;
+//  - every substep, after shape matching, each segment's correction from its candidates as
+//    compliant position constraints (XPBD, collision.iterations iterations, each a sweep of
+//    every segment's list that moves only the segment's own ends, in list order) with
+//    Coulomb friction; each iteration but the last moves the particles (applyCorrections),
+//    and the strain-limit sweep moves each particle by the mean of the corrections of the
+//    last iteration that its two segments sent it, before limiting it.
+// Every sweep and sum runs in a fixed order (a segment's candidates by their index), so the
+// result does not depend on the schedule.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "sim/core/config.h"
+#include "sim/core/results.h"
+#include "sim/core/hair_state.h"
+#include "sim/solver/stiffness.h"
+
+namespace csm {
+
+
+// The orientation flags of a pair: whether its closest points are inside both segments (only
+// then can the sign of the triple product flip by one passing through the other), whether it
+// is closer than 2r, the sign, and whether the segments are skew enough (the sine of their
+// angle above kSkewSine) for that sign to say which side each is on: a sign change of nearly
+// parallel segments can come from turning, not passing.
+inline constexpr uint32_t kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u, kPairSkew = 8u;
+inline constexpr double kSkewSine = 0.1;
+uint32_t pairFlags(const glm::dvec3& a0, const glm::dvec3& a1, const glm::dvec3& b0,
+                   const glm::dvec3& b1, double s, double t, double distance, double twoR);
+// The side a listed pair keeps (ContactCandidates::side) from its flags.
+int8_t keptSide(uint32_t flags);
+// The direction a contact pushes p (the lower segment; q the other way) and the separation
+// along it, for segments p0-p1 and q0-q1 with closest points at s and t, d apart. A pair with
+// a kept side, still interior and skew, is pushed along the common normal toward that side:
+// its separation is negative when one has passed through the other in the substeps since the
+// list (the closest points alone would push it on through). Any other pair is pushed along
+// its closest points, its separation d.
+glm::dvec3 contactNormal(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
+                         const glm::dvec3& q1, double s, double t, double d, int side,
+                         double& separation);
+// A crossing between two lists: the pair was interior in both, near in one, and flipped.
+inline bool crossed(uint32_t before, uint32_t now) {
+  return (before & now & kPairInterior) && ((before | now) & kPairNear) &&
+         ((before ^ now) & kPairPositive);
+}
+
+// One frame's candidates, by segment: segment i's are [start[i], start[i+1]).
+struct ContactCandidates {
+  std::vector<uint32_t> start;   // per particle + 1
+  std::vector<uint32_t> other;   // the other segment, ascending within a segment
+  std::vector<double> distance;  // contact distance
+  // The side to keep (contactNormal): +1 or -1, the sign of the pair's triple product when it
+  // was listed interior and skew; 0 for a pair held apart along its closest points only.
+  std::vector<int8_t> side;
+  // Pairs a < b with their flags, sorted, for the next list's crossings.
+  std::vector<std::pair<uint64_t, uint32_t>> flags;
+};
+
+// Whether a frame of `substeps` substeps with collision.lists = `lists` lists its candidates
+// again before substep `substep`: list j (0 < j < n, n = min(lists, substeps)) comes before
+// substep floor(j substeps / n). Substep 0 has the frame's own list.
+bool listsBefore(int substep, int substeps, int lists);
+
+// Whether a change of settings makes the last candidate search measure something else: the
+// mode, the radius or the margin.
+inline bool contactMeasuresChanged(const CollisionConfig& a, const CollisionConfig& b) {
+  return a.mode != b.mode || a.radius != b.radius || a.margin != b.margin;
+}
+
+struct ContactSettings {
+  double radius = 0.001, margin = 0.001, compliance = 0.0, friction = 0.3;
+  ContactSolve solve = ContactSolve::Sweep;  // collision.solve
+};
+
+// The candidates of positions x (rest: the same particles in the head frame, for rest
+// distances), measured; `previous` is the last list (crossings), or empty.
+ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,
+                                 std::span<const uint32_t> particleStrand,
+                                 const ContactSettings& settings, const ContactCandidates& previous,
+                                 ContactStats& stats);
+
+// The inverse mass of each particle as the contacts see it: 0 for the particles the head
+// holds (each strand's first regions.pinned), which follow the head whatever pushes them.
+std::vector<double> contactInverseMass(const HairState& state, const Regions& regions);
+
+// Moves each particle of the strands [first[s], first[s+1]) but the root by what its segments
+// sent (particleCorrection), its velocity by that over h: one contact iteration before the
+// next. The held particles were sent nothing (their inverse mass is 0).
+void applyCorrections(std::span<const glm::dvec4> correction, std::span<const uint32_t> first,
+                      double h, std::span<glm::dvec3> x, std::span<glm::dvec3> v);
+
+// The corrections of one substep of length h: segment i takes its candidates in order, moving
+// its own ends by each pair's share before the next pair (the other segments stay at x);
+// correction[2i] is what that moved particle i by and correction[2i+1] particle i+1, as one
+// segment (w up to 1). collision.solve = jacobi instead evaluates every pair from x and sends
+// the sum, as that many pairs (w). x and v after shape matching; invMass per particle, 0 for
+// the held ones (they follow the head).
+void solveContacts(const ContactCandidates& candidates, std::span<const glm::dvec3> x,
+                   std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
+                   const ContactSettings& settings, std::vector<glm::dvec4>& correction);
+
+// What particle i of the strand [first, end) moves by: the mean of what its segments sent.
+inline glm::dvec3 particleCorrection(std::span<const glm::dvec4> correction, uint32_t i,
+                                     uint32_t first, uint32_t end) {
+  glm::dvec4 c(0.0);
+  if (i + 1 < end) c += correction[2 * size_t(i)];
+  if (i > first) c += correction[2 * size_t(i - 1) + 1];
+  return c.w > 0.0 ? glm::dvec3(c) / c.w : glm::dvec3(0.0);
+}
+
+}  // namespace csm

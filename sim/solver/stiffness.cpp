@@ -1,0 +1,254 @@
+#include "sim/solver/stiffness.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+namespace csm {
+namespace {
+
+// c_w for w = 1..16, as measureWindowCoefficient (sim/solver/cpu_solver.h) measures it
+// (csmhair-bench --only window; the float rest positions leave about 1e-4 of noise in it).
+constexpr double kWindowCoefficient[] = {0.0,      0.055560, 0.043748, 0.037031, 0.033429, 0.031197,
+                                         0.029715, 0.028627, 0.027820, 0.027200, 0.026706, 0.026297,
+                                         0.025956, 0.025664, 0.025414, 0.025197, 0.025007};
+constexpr int kTableSize = int(sizeof kWindowCoefficient / sizeof kWindowCoefficient[0]) - 1;
+
+// Ties (a window of exactly w + 1/2 segments) go up, in the regions and in the rate alike:
+// rounding in the arc lengths must not split them.
+constexpr double kTie = 1e-6;
+
+glm::dvec3 restOf(const HairState& st, size_t i) {
+  return glm::dvec3(st.rest[i].x, st.rest[i].y, st.rest[i].z);
+}
+
+}  // namespace
+
+double windowCoefficient(int w) {
+  w = std::max(1, w);
+  if (w <= kTableSize) return kWindowCoefficient[w];
+  return (1.0 + 2.0 / w) / 45.0;
+}
+
+int calibratedWindow(double windowLength, double segmentLength, int particles) {
+  const int most = std::max(1, particles - 1);
+  if (!(segmentLength > 0.0)) return most;
+  const double w = std::floor(windowLength / segmentLength + 0.5 + kTie);
+  return int(std::clamp(w, 1.0, double(most)));
+}
+
+Regions buildRegions(const HairState& st, const SimConfig& sim) {
+  Regions r;
+  const size_t n = st.particleCount(), strands = st.strandCount();
+  r.lo.assign(n, 0);
+  r.hi.assign(n, 0);
+  r.mass.assign(n, 0.0);
+  r.inertia.assign(n, 0.0);
+  r.rate.assign(strands, 0.0);
+  r.window.assign(strands, 0);
+  r.pinned.assign(strands, std::max(0, sim.pinned));
+  r.ghostMass.assign(strands, 0.0);
+  const bool calibrated = sim.stiffnessModel == StiffnessModel::Calibrated;
+  const double L = sim.windowLength;
+  std::vector<double> arc, seg;
+  for (size_t s = 0; s < strands; ++s) {
+    const uint32_t a = st.strandFirst[s], b = st.strandFirst[s + 1];
+    const int count = int(b - a);
+    if (count <= 0) continue;
+    // Rest arc length of each particle and the length of each segment j -> j+1.
+    arc.assign(count, 0.0);
+    seg.assign(count, 0.0);
+    for (int j = 0; j + 1 < count; ++j) {
+      seg[j] = glm::length(restOf(st, a + j + 1) - restOf(st, a + j));
+      arc[j + 1] = arc[j] + seg[j];
+    }
+    const double meanSegment = count > 1 ? arc[count - 1] / (count - 1) : 0.0;
+    int ghosts = 0;  // the most ghosts a region has
+    if (calibrated) {
+      // The held piece by length, rounded to the nearest particle like the windows.
+      int pinned = std::max(0, sim.pinned);
+      if (sim.rootLength > 0.0f)
+        for (int j = 1; j < count; ++j)
+          if (arc[j] - 0.5 * seg[j - 1] <= sim.rootLength * (1.0 + kTie))
+            pinned = std::max(pinned, j + 1);
+      r.pinned[s] = std::min(pinned, count);
+      // In region k: the neighbours, and every i whose distance less a quarter of the two
+      // facing segments is within L. The distance grows with |i - k|, so each side is a run.
+      auto inside = [&](int i, int k) {
+        if (std::abs(i - k) <= 1) return true;
+        const int lo = std::min(i, k), hi = std::max(i, k);
+        return arc[hi] - arc[lo] - 0.25 * (seg[lo] + seg[hi - 1]) <= L + kTie * L;
+      };
+      const bool clamped = r.pinned[s] >= 2 && count >= 2 && seg[0] > 0.0;
+      for (int k = 0; k < count; ++k) {
+        int lo = k, hi = k;
+        while (lo > 0 && inside(lo - 1, k)) --lo;
+        while (hi + 1 < count && inside(hi + 1, k)) ++hi;
+        if (clamped && lo == 0) {
+          // Ghost j sits at arc -j seg[0]; the segment facing it from k is seg[k - 1] (or the
+          // ghost spacing for the root itself).
+          const double facing = k > 0 ? seg[k - 1] : seg[0];
+          int q = 0;
+          while (q < count + 64 &&
+                 (k + q + 1 <= 1 ||
+                  arc[k] + (q + 1) * seg[0] - 0.25 * (facing + seg[0]) <= L + kTie * L))
+            ++q;
+          lo = -q;
+          ghosts = std::max(ghosts, q);
+        }
+        r.lo[a + k] = lo;
+        r.hi[a + k] = hi;
+      }
+      const int w = calibratedWindow(L, meanSegment, count);
+      r.window[s] = w;
+      const double reach = w * meanSegment;
+      if (count > 1 && reach > 0.0)
+        r.rate[s] = double(sim.bendingStiffness) / (windowCoefficient(w) * std::pow(reach, 4.0));
+      // A ghost carries a whole segment of the root's spacing, shared like an inner
+      // particle's among 2w + 1 regions.
+      if (ghosts > 0) r.ghostMass[s] = seg[0] / (2.0 * w + 1.0);
+    } else {
+      const int w = std::max(1, sim.stiffnessWindow);
+      r.window[s] = w;
+      for (int k = 0; k < count; ++k) {
+        r.lo[a + k] = std::max(0, k - w);
+        r.hi[a + k] = std::min(count - 1, k + w);
+      }
+    }
+    r.maxRate = std::max(r.maxRate, r.rate[s]);
+    // Each particle carries half of each segment beside it, as makeHairState's masses do.
+    for (int i = 0; i < count; ++i) {
+      const double carried = std::max(0.5 * ((i > 0 ? seg[i - 1] : 0.0) + seg[i]), 1e-6);
+      r.mass[a + i] = carried / double(r.hi[a + i] - std::max(0, r.lo[a + i]) + 1);
+    }
+    // J_k, directly: a build-time cost of O(region) per region.
+    const glm::dvec3 root = restOf(st, a);
+    const glm::dvec3 step = count > 1 ? restOf(st, a + 1) - root : glm::dvec3(0.0);
+    const double mg = r.ghostMass[s];
+    for (int k = 0; k < count; ++k) {
+      const int lo = r.lo[a + k], hi = r.hi[a + k];
+      auto at = [&](int i) { return i >= 0 ? restOf(st, a + i) : root + double(i) * step; };
+      auto weight = [&](int i) { return i >= 0 ? r.mass[a + i] : mg; };
+      double M = 0.0;
+      glm::dvec3 c(0.0);
+      for (int i = lo; i <= hi; ++i) {
+        M += weight(i);
+        c += weight(i) * at(i);
+      }
+      c /= M;
+      double J = 0.0;
+      for (int i = lo; i <= hi; ++i) {
+        const glm::dvec3 d = at(i) - c;
+        J += weight(i) * glm::dot(d, d);
+      }
+      r.inertia[a + k] = J;
+    }
+  }
+  r.planRate = planRate(r.rate);
+  return r;
+}
+
+double planRate(const std::vector<double>& rates) {
+  if (rates.empty()) return 0.0;
+  std::vector<double> sorted = rates;
+  std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+  const double limit = kOutlierRate * sorted[sorted.size() / 2];
+  double rate = 0.0;
+  for (const double k : rates)
+    if (k <= limit) rate = std::max(rate, k);
+  return rate;
+}
+
+bool regionsChanged(const SimConfig& a, const SimConfig& b) {
+  return a.stiffnessModel != b.stiffnessModel || a.stiffnessWindow != b.stiffnessWindow ||
+         a.windowLength != b.windowLength || a.bendingStiffness != b.bendingStiffness ||
+         a.rootLength != b.rootLength || a.pinned != b.pinned;
+}
+
+FramePlan planFrame(const SimConfig& sim, double maxRate) {
+  FramePlan p;
+  const int fewest = std::max(1, sim.substeps);
+  p.substeps = p.wanted = fewest;
+  if (sim.stiffnessModel == StiffnessModel::Calibrated && maxRate > 0.0) {
+    // A hair's breadth under a whole number of steps needs no extra step.
+    const double need = std::ceil(double(sim.dt) * std::sqrt(maxRate) - 1e-6);
+    p.wanted = int(std::clamp(need, double(fewest), 1e6));
+    p.substeps = std::max(fewest, std::min(p.wanted, std::max(1, sim.maxSubsteps)));
+    p.capped = p.wanted > p.substeps;
+  }
+  p.h = double(sim.dt) / p.substeps;
+  return p;
+}
+
+StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim) {
+  StiffnessInfo info;
+  info.model = sim.stiffnessModel;
+  info.plan = planFrame(sim, regions.planRate);
+  info.strands = regions.rate.size();
+  bool first = true;
+  for (size_t s = 0; s < regions.rate.size(); ++s) {
+    const double k = regions.rate[s];
+    const double alpha = stepAlpha(sim, k, info.plan.h);
+    if (sim.stiffnessModel == StiffnessModel::Calibrated && k * info.plan.h * info.plan.h > 1.0)
+      ++info.stifferStrands;
+    const int w = regions.window[s];
+    if (first) {
+      info.alphaMin = info.alphaMax = alpha;
+      info.rateMin = info.rateMax = k;
+      info.windowMin = info.windowMax = w;
+      first = false;
+      continue;
+    }
+    info.alphaMin = std::min(info.alphaMin, alpha);
+    info.alphaMax = std::max(info.alphaMax, alpha);
+    info.rateMin = std::min(info.rateMin, k);
+    info.rateMax = std::max(info.rateMax, k);
+    info.windowMin = std::min(info.windowMin, w);
+    info.windowMax = std::max(info.windowMax, w);
+  }
+  return info;
+}
+
+namespace {
+
+std::string range(double lo, double hi, const char* format) {
+  char a[32], b[32];
+  std::snprintf(a, sizeof a, format, lo);
+  std::snprintf(b, sizeof b, format, hi);
+  return std::string(a) == b ? std::string(a) : std::string(a) + "-" + b;
+}
+
+}  // namespace
+
+std::string stiffnessText(const StiffnessInfo& info) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%d steps of %.3g ms", info.plan.substeps, 1000.0 * info.plan.h);
+  std::string s = buf;
+  s += ", alpha " + range(info.alphaMin, info.alphaMax, "%.3g");
+  s += ", " + range(info.windowMin, info.windowMax, "%.0f") +
+       (info.windowMax == 1 ? " particle per side" : " particles per side");
+  if (info.model == StiffnessModel::Calibrated)
+    s += ", k " + range(info.rateMin, info.rateMax, "%.3g") + " /s^2";
+  return s;
+}
+
+std::string stiffnessWarning(const StiffnessInfo& info) {
+  char buf[256];
+  if (info.plan.capped) {
+    std::snprintf(buf, sizeof buf,
+                  "the stiffness asks for %d steps per frame but sim.max_substeps is %d: the "
+                  "stiffest strands are softer than asked (alpha = 1)",
+                  info.plan.wanted, info.plan.substeps);
+    return buf;
+  }
+  if (info.stifferStrands == 0) return {};
+  std::snprintf(buf, sizeof buf,
+                "%zu of %zu strands, shorter than the window, are stiffer than %d steps a frame "
+                "resolve: they run at alpha = 1 (as stiff as the steps allow)",
+                info.stifferStrands, info.strands, info.plan.substeps);
+  return buf;
+}
+
+}  // namespace csm

@@ -1,0 +1,135 @@
+// Stiffness: the shape-matching regions of every particle, and how far one step pulls toward
+// the goals, for both stiffness models (DESIGN.md section 4, "Stiffness depends on the step
+// and the resolution"). Both solvers build their regions here, so they agree by construction.
+//
+// Why a calibrated model: with goals from predicted positions and a pull alpha per step, a
+// bending mode that one application of the goals shrinks by mu feels a stiffness
+// K = alpha mu / ((1 - alpha mu) h^2). On a long strand mu = c_w (kappa w l)^4 for a mode of
+// wavenumber kappa (constant curvature is left alone), so CSM is an Euler-Bernoulli beam with
+// bending stiffness per unit mass B = alpha c_w (w l)^4 / h^2: with the paper's alpha = 1 it
+// grows as 1/h^2 and, at a fixed w in particles, falls as l^4. The calibrated model takes B
+// and a window length L as the parameters, gives each strand the rate
+// k = B / (c_w (w l)^4) with w its particles per side of L, and pulls by
+// alpha = min(1, k h^2) each step: then K = k mu (exact while k h^2 <= 1), whatever h and l.
+// The substeps follow: a frame of dt needs N >= dt sqrt(k_max) for alpha to stay below 1.
+#pragma once
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "sim/core/config.h"
+#include "sim/core/results.h"
+#include "sim/core/hair_state.h"
+
+namespace csm {
+
+// c_w for a window of w particles per side: one application of the goals (alpha = 1) removes
+// mu = c_w (kappa w l)^4 of a small bending wave of wavenumber kappa on a long straight strand
+// of segment l, in the limit kappa w l -> 0. Measured on CpuSolver (measureWindowCoefficient in
+// sim/solver/cpu_solver.h; tests/cpu/stiffness_test.cpp measures it again for w = 1..16); beyond
+// the table, (1 + 2/w) / 45, which it tends to (1/45 is the continuous window's).
+double windowCoefficient(int w);
+
+// Particles per side of a calibrated window of length L on a strand of n particles with mean
+// segment l: L / l rounded, at least 1 (a region is never narrower than 3 particles), at most
+// n - 1 (beyond it every region is the whole strand).
+int calibratedWindow(double windowLength, double segmentLength, int particles);
+
+// The shape-matching regions of a groom. Region k holds the particles [max(0, lo[k]), hi[k]]
+// of its strand (indices within the strand) and, when lo[k] < 0, -lo[k] ghost particles behind
+// the root (below). Regions are symmetric (i is in region k exactly when k is in region i), so
+// the regions that contain particle i are the regions max(0, lo[i]) .. hi[i]: the goal of a
+// particle averages over its own range.
+//
+// Ghosts (calibrated model, strands held by at least 2 pinned particles): the strand continues
+// straight into the scalp, rigidly with the head, at the spacing of its first segment: ghost j
+// rests at rest_0 - j (rest_1 - rest_0). They are members of the regions near the root but
+// centres of none, and their sums are arithmetic series, O(1) per region. Without them the
+// regions at the root are clipped and pivot about it: the root holds the strand the less
+// firmly the longer the window (a 12 cm strand sags 4x more at a 4 cm window than at 1 cm);
+// with them the scalp is a clamp whatever the window.
+//
+// Masses: shape matching is homogeneous in mass (a uniform scale cancels from centroids, A and
+// J alike), so the regions weigh particles by mass over the linear density, i.e. by the strand
+// length each carries (m): the density then cancels exactly, bit for bit, in both solvers.
+struct Regions {
+  std::vector<int> lo, hi;      // per particle
+  std::vector<double> mass;     // per particle: m_i / |K_i| over the density (m), its share in
+                                // each of its regions
+  std::vector<double> inertia;  // per region: J_k = sum of mass |rest - rest centroid_k|^2
+  // Per strand.
+  std::vector<double> rate;       // k (1/s^2) of the calibrated model, else 0
+  std::vector<int> window;        // particles per side
+  std::vector<int> pinned;        // particles from the root that follow the head
+  std::vector<double> ghostMass;  // per-region mass of a ghost (0: the strand has none)
+  double maxRate = 0.0;
+  double planRate = 0.0;  // the rate the steps follow (planRate below)
+
+  size_t size() const { return lo.size(); }
+};
+
+// Paper: regions [k - w, k + w] clipped to the strand, sim.pinned pinned particles, no ghosts.
+// Calibrated: particle i is in region k when their rest arc distance, less a quarter of each of
+// the two segments that face each other, is within sim.windowLength (for even spacing:
+// w = L / l rounded), or when they are neighbours; ghosts likewise; the particles within
+// sim.rootLength of the root (at least sim.pinned) are pinned. Per-region masses follow FastLSM
+// (Rivers & James 2007): each particle's mass is shared equally among the regions that
+// contain it, so the goals exert no net force on a free strand.
+Regions buildRegions(const HairState& state, const SimConfig& sim);
+
+// Sums over the first q ghosts of a strand, each of per-region mass m: with root-relative
+// coordinates ghost j is at -j d (d = rest_1 - rest_0 in the head frame, D = its current world
+// image), so sum m = q m, sum m y = -S1 m D, sum m ybar = -S1 m d, sum m y ybar^T = S2 m D d^T
+// with S1 = q(q+1)/2, S2 = q(q+1)(2q+1)/6.
+inline double ghostSum1(int q) {
+  return 0.5 * q * (q + 1.0);
+}
+inline double ghostSum2(int q) {
+  return q * (q + 1.0) * (2.0 * q + 1.0) / 6.0;
+}
+
+// The rate a frame's steps follow: the largest k of the strands within kOutlierRate of the
+// median strand's. k grows as 1/length^4 once a strand is shorter than the window (a strand of
+// 7.5 um asks for a million steps a frame): such strands are nearly rigid whatever their k and
+// run at alpha = 1 when stiffer than the steps resolve (describeStiffness counts them), so a
+// few degenerate strands of a real groom cannot set the steps of the rest. 16: a strand that
+// spans half the window the median strand spans still sets them.
+inline constexpr double kOutlierRate = 16.0;
+double planRate(const std::vector<double>& rates);
+
+// True when a change from `a` to `b` changes the regions (the solvers rebuild them).
+bool regionsChanged(const SimConfig& a, const SimConfig& b);
+
+
+// Paper: sim.substeps. Calibrated: at least sim.substeps, and enough that
+// alpha = k_max h^2 <= 1, up to sim.max_substeps.
+FramePlan planFrame(const SimConfig& sim, double maxRate);
+
+// The pull toward the goals in one step of length h, for a strand of calibrated rate k.
+inline double stepAlpha(const SimConfig& sim, double rate, double h) {
+  if (sim.stiffnessModel == StiffnessModel::Paper) return sim.stiffness;
+  const double a = rate * h * h;
+  return a < 1.0 ? a : 1.0;
+}
+
+// Twist of nearly straight regions (see extractRotation in sim/solver/cpu_solver.h): the paper
+// model turns it by the full iteration, so it relaxes faster with more substeps; the calibrated
+// model relaxes it at kTwistIterationsPerSecond, what the paper's default of 3 iterations per
+// 1/240 s step gives, whatever the step.
+inline constexpr double kTwistIterationsPerSecond = 720.0;
+inline double twistStepOf(const SimConfig& sim, double h, int iterations) {
+  if (sim.stiffnessModel == StiffnessModel::Paper) return 1.0;
+  const double s = kTwistIterationsPerSecond * h / std::max(1, iterations);
+  return s < 1.0 ? s : 1.0;
+}
+
+StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim);
+
+// "4 steps of 4.17 ms, alpha 0.71-1, 2-3 particles per side" and the like, for logs.
+std::string stiffnessText(const StiffnessInfo& info);
+// The warning when the cap binds, or else when some strands are stiffer than the steps; empty
+// when neither.
+std::string stiffnessWarning(const StiffnessInfo& info);
+
+}  // namespace csm
