@@ -53,7 +53,7 @@
       // whose item count only the GPU knows (CSM_DISPATCH_*)
 #define CSM_BIND_CANDIDATE_RANGE \
   20  // uvec2 per particle, twice (this frame's half and the last
-      // frame's, P.grid.w says which): where each segment's candidates
+      // frame's, P.listHalf says which): where each segment's candidates
       // start in CANDIDATES (LAST_CANDIDATES for last frame's), and how
       // many
 #define CSM_BIND_INVERSE_MASS \

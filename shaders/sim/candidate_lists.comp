@@ -84,15 +84,15 @@ void siftDown(uint base, uint root, uint end) {
 }
 
 void main() {
-  if (globalIndex() >= P.counts.x) return;
+  if (globalIndex() >= P.particles) return;
   uint a = segmentOrder[globalIndex()];
-  uint here = P.grid.w * P.counts.x + a, before = (1u - P.grid.w) * P.counts.x + a;
+  uint here = P.listHalf * P.particles + a, before = (1u - P.listHalf) * P.particles + a;
   uint base = segBase[a];
   uint n = 0u;
   // When the grid or the pair list did not fit this search, the last list stays; the counters
   // say so (and keep the count of such searches).
-  uint total = texelFetch(gridStartTex, int(P.grid.x + 1u)).x;
-  bool fits = total <= P.grid.y && counters[CSM_COUNTER_PAIR_LIST] <= P.grid.z;
+  uint total = texelFetch(gridStartTex, int(P.bucketMask + 1u)).x;
+  bool fits = total <= P.entryCapacity && counters[CSM_COUNTER_PAIR_LIST] <= P.pairListCapacity;
   if (a == 0u && !fits) ++counters[CSM_COUNTER_OVERFLOWS];
   uvec2 last = candidateRange[before];
   if (!fits) {
@@ -137,7 +137,7 @@ void main() {
     if (j < last.y && (other & kIndex) == b &&
         crossed(other >> uint(CSM_CANDIDATE_SHIFT), c.x >> uint(CSM_CANDIDATE_SHIFT))) {
       ++crossings;
-      if (uintBitsToFloat(c.y) < 2.0 * P.stepping.z) ++close;  // a rest distance
+      if (uintBitsToFloat(c.y) < 2.0 * P.radius) ++close;  // a rest distance
     }
   }
   // A list the driver's loop limit cut short: counted, and nothing listed.

@@ -100,8 +100,8 @@ void main() {
   uint pairsHere = 0u, penetrationsHere = 0u, candidatesHere = 0u;
   float deepest = 0.0;
   bool cut = false;  // the loops ended early (the driver's loop limit)
-  uint total = texelFetch(gridStartTex, int(P.grid.x + 1u)).x;
-  if (e < total && total <= P.grid.y) {
+  uint total = texelFetch(gridStartTex, int(P.bucketMask + 1u)).x;
+  if (e < total && total <= P.entryCapacity) {
     uvec4 me = texelFetch(entryTex, int(e));
     uint key = me.x, a = me.y;
     uvec3 lowA = entryBoxLow(me), highA = entryBoxHigh(me);
@@ -109,8 +109,8 @@ void main() {
     // Segments of a's own strand: [sFirst, sLast) (the gap rule).
     uint strandA = particleStrand[a];
     uint sFirst = strandFirst[strandA], sLast = strandFirst[strandA + 1u] - 1u;
-    float r = P.stepping.z, twoR = 2.0 * r;
-    float reach = P.contact.x;  // 2r + margin
+    float r = P.radius, twoR = 2.0 * r;
+    float reach = P.candidateDistance;  // 2r + margin
     uint hi = texelFetch(gridStartTex, int(bucketOf(key) + 1u)).x;
     uint base = e + 1u;
     for (; base < hi; base += kChunk) {
@@ -161,7 +161,7 @@ void main() {
           atomicAdd(groupDepth[depthBin(depth)], 1u);
         }
         uint k = atomicAdd(counters[CSM_COUNTER_PAIR_LIST], 1u);
-        if (k < P.grid.z) {
+        if (k < P.pairListCapacity) {
           imageStore(pairList, int(k),
                      uvec4(low, high | (flags << uint(CSM_CANDIDATE_SHIFT)), floatBitsToUint(d0), 0u));
           atomicAdd(segmentPairs[low], 1u);

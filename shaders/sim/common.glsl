@@ -3,40 +3,16 @@
 // The C++ side of SimParams and Substep is csm::gpu::SimParams / Substep in
 // sim/gpu/gpu_params.h; a test compares the two layouts through GL's program introspection.
 #include "sim/bindings.glsl"
+#include "sim/shared_constants.glsl"
 
+// The parameter block, declared once for C++ and GLSL (shaders/sim/shared_constants.glsl says
+// what each field holds).
 struct SimParams {
-  vec4 gravity;    // xyz, w unused
-  vec4 windDir;    // xyz unit direction, w strength (m/s)
-  vec4 windShape;  // x gusts, y gust frequency (Hz), z turbulence, w turbulence scale (m)
-  vec4 stepping;   // x alpha, y strain limit epsilon, z hair radius r, w head friction
-  vec4 contact;    // x candidate distance 2r + margin (m), y compliance (m/N), z friction,
-                   // w 1 when collision.solve is sweep, 0 for jacobi
-  vec4 misc;       // x DFTL, y wind drag (1/s), z, w unused
-  ivec4 ints;      // x unused (pinned particles are per strand), y stiffness model (0 paper,
-                   // 1 calibrated), z rotation iterations, w head spheres
-  uvec4 flags;     // x strain limiting, y head collision, z wind, w strand contacts this frame
-  uvec4 counts;    // x particles, y strands, z segments, w unused
-  uvec4 grid;      // x bucket mask (buckets - 1), y entry capacity, z pair list capacity,
-                   // w this frame's half of CANDIDATE_RANGE (0 or 1)
-  vec4 cells;      // x cell edge (m), y 1 / edge, z box padding (m), w unused
-  vec4 origin;     // xyz the grid's origin (the head's position this frame), w unused
-  // The volume mode (sim/solver/volume.h): its grid is fixed to the head where the frame starts.
-  mat4 volumeToHead;  // world to that head frame
-  mat4 volumeToWorld;  // and back
-  vec4 volumeOrigin;  // xyz the grid's lowest node (head frame), w node spacing (m)
-  uvec4 volumeDims;   // xyz nodes per axis, w volume forces this frame
-  vec4 volume;        // x friction (1/s), y stiffness (m^2/s^2), z fraction allowed, w volume
-                      // fraction per fixed-point unit of strand length at a node
-  // The head's distance field (sim/head/head_shape.h), in the head's frame.
-  vec4 headField;      // xyz the field's lowest node, w node spacing (m)
-  uvec4 headFieldDims;  // xyz nodes per axis, w 1 when the head is the field (else spheres)
+  CSM_SIM_PARAMS(CSM_MEMBER)
 };
 
 struct Substep {
-  mat4 head;       // head pose at the end of the step: pinned roots follow it
-  mat4 headDelta;  // start-of-step pose after the inverse of the end pose (head friction)
-  vec4 time;       // x time at the start of the step, y h, z twist step (twistStepOf), w velocity
-                   // kept by damping (exp(-c h))
+  CSM_SUBSTEP(CSM_MEMBER)
 };
 
 layout(std430, binding = CSM_BIND_PARAMS) readonly buffer Params {
@@ -196,24 +172,24 @@ bool crossed(uint before, uint now) {
          ((before ^ now) & kPairPositive) != 0u;
 }
 
-// The collision grid (DESIGN.md section 1.7): cells of edge P.cells.x, at least twice the
+// The collision grid (DESIGN.md section 1.7): cells of edge P.cellEdge, at least twice the
 // contact distance and half or three quarters of a mean segment (CollisionGrid::cellSize:
 // half in dense hair). Each segment is entered in every cell that its capsule of radius
-// P.cells.z (half the candidate distance and 1% for rounding) reaches: the cells of its
-// padded box that the segment itself passes within P.cells.z of (clipToCell), with the box of
+// P.cellPadding (half the candidate distance and 1% for rounding) reaches: the cells of its
+// padded box that the segment itself passes within P.cellPadding of (clipToCell), with the box of
 // the part it has there. A pair is kept only in the cell holding the midpoint of its closest
 // points (the owner): both segments lie within half the candidate distance of that point, so
 // both are entered there and their boxes there overlap, and the pair is found
 // exactly once. Every pass computes cells, clips and boxes with these functions from the same
 // positions, so they agree to the bit.
 
-// Cells are counted from the head (P.origin) and clamped to -512..511 per axis (+-6.7 m with
+// Cells are counted from the head (P.gridOrigin) and clamped to -512..511 per axis (+-6.7 m with
 // Fig. 1's 13 mm cells): a cell's 30-bit key is then exact, and a far-away segment of an
 // exploding simulation shares the border cells instead of overflowing (slower, still exact:
 // a border cell takes the whole segment, and the owner of a pair out there is a border cell).
 const int kCellLow = -512, kCellHigh = 511;  // the clamp; 10 bits of a key per axis
 ivec3 cellOf(vec3 p) {
-  return ivec3(clamp(floor((p - P.origin.xyz) * P.cells.y), float(kCellLow), float(kCellHigh)));
+  return ivec3(clamp(floor((p - P.gridOrigin) * P.inverseCellEdge), float(kCellLow), float(kCellHigh)));
 }
 
 uint cellKey(ivec3 c) {
@@ -222,21 +198,21 @@ uint cellKey(ivec3 c) {
 }
 
 void segmentBox(vec3 p0, vec3 p1, out vec3 lo, out vec3 hi) {
-  lo = min(p0, p1) - P.cells.z;
-  hi = max(p0, p1) + P.cells.z;
+  lo = min(p0, p1) - P.cellPadding;
+  hi = max(p0, p1) + P.cellPadding;
 }
 
-// The part of segment p0-p1 within cell c grown by P.cells.z on every side, [q0, q1]: false
+// The part of segment p0-p1 within cell c grown by P.cellPadding on every side, [q0, q1]: false
 // when the segment misses it (the cell is in its padded box, but the segment passes farther
-// than P.cells.z from it). A border cell (see cellOf) takes the whole segment. `precise`: the
+// than P.cellPadding from it). A border cell (see cellOf) takes the whole segment. `precise`: the
 // count and scatter passes must agree on every cell to the bit (each bucket's count returns
 // to zero), so no compiler may fuse or reorder this arithmetic differently in the two.
 bool clipToCell(vec3 p0, vec3 p1, ivec3 c, out vec3 q0, out vec3 q1) {
   q0 = p0;
   q1 = p1;
   if (any(equal(c, ivec3(kCellLow))) || any(equal(c, ivec3(kCellHigh)))) return true;
-  precise vec3 lo = P.origin.xyz + vec3(c) * P.cells.x - P.cells.z;
-  precise vec3 hi = lo + vec3(P.cells.x + 2.0 * P.cells.z);
+  precise vec3 lo = P.gridOrigin + vec3(c) * P.cellEdge - P.cellPadding;
+  precise vec3 hi = lo + vec3(P.cellEdge + 2.0 * P.cellPadding);
   precise vec3 d = p1 - p0;
   // Axes along which the segment hardly moves do not clip: the padded box put it in range.
   bvec3 still = lessThan(abs(d), vec3(1e-12));
@@ -255,8 +231,8 @@ bool clipToCell(vec3 p0, vec3 p1, ivec3 c, out vec3 q0, out vec3 q1) {
 // rounded outward (two boxes that overlap in the cell overlap here too).
 const float kEntrySteps = 1023.0;
 uvec4 packEntry(uint key, uint segment, vec3 low, vec3 high, ivec3 cell) {
-  vec3 l = (low - P.origin.xyz) * P.cells.y - vec3(cell);
-  vec3 h = (high - P.origin.xyz) * P.cells.y - vec3(cell);
+  vec3 l = (low - P.gridOrigin) * P.inverseCellEdge - vec3(cell);
+  vec3 h = (high - P.gridOrigin) * P.inverseCellEdge - vec3(cell);
   uvec3 ql = uvec3(clamp(floor(l * kEntrySteps), 0.0, kEntrySteps));
   uvec3 qh = uvec3(clamp(ceil(h * kEntrySteps), 0.0, kEntrySteps));
   return uvec4(key, segment, ql.x | (ql.y << 10u) | (ql.z << 20u),
@@ -296,7 +272,7 @@ uint bucketOf(uint key) {
   h ^= h >> 16u;
   h *= 0x7feb352du;
   h ^= h >> 15u;
-  return h & P.grid.x;
+  return h & P.bucketMask;
 }
 
 // --- The volume grid (sim/solver/volume.h, csm::VolumeGrid). ---
@@ -305,8 +281,8 @@ const float kVolumeUnit = 16777216.0;  // csm::kVolumeUnit
 
 // The trilinear cell of head-frame position x: its lowest node and the fractions.
 void volumeLocate(vec3 x, out ivec3 base, out vec3 f) {
-  vec3 u = (x - P.volumeOrigin.xyz) / P.volumeOrigin.w;
-  ivec3 top = ivec3(P.volumeDims.xyz) - 2;
+  vec3 u = (x - P.volumeOrigin) / P.volumeCell;
+  ivec3 top = ivec3(P.volumeDims) - 2;
   base = clamp(ivec3(floor(u)), ivec3(0), top);
   f = clamp(u - vec3(base), 0.0, 1.0);
 }
@@ -326,7 +302,7 @@ int volumeNodes() { return int(P.volumeDims.x * P.volumeDims.y * P.volumeDims.z)
 // node (so an untouched grid gives an empty box). Outside it every node's field is 0, as on
 // the CPU, and is neither computed nor read.
 ivec3 volumeBox(isamplerBuffer sums, out ivec3 low, out ivec3 high) {
-  ivec3 dims = ivec3(P.volumeDims.xyz);
+  ivec3 dims = ivec3(P.volumeDims);
   low = max(dims - texelFetch(sums, volumeNodes()).xyz - 1, ivec3(0));
   high = min(texelFetch(sums, volumeNodes() + 1).xyz, dims - 1);
   return max(high - low + 1, ivec3(0));

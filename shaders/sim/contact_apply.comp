@@ -16,10 +16,10 @@ uniform uint substep;
 
 void main() {
   uint s = globalIndex();
-  if (s >= P.counts.y) return;
+  if (s >= P.strands) return;
   uint a = strandFirst[s];
   uint n = strandFirst[s + 1u] - a;
-  float h = S[substep].time.y;
+  float h = S[substep].h;
   for (uint i = 1u; i < n; ++i) {
     uint p = a + i;
     vec4 c = correction[2u * (p - 1u) + 1u];

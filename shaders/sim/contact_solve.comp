@@ -34,8 +34,9 @@ layout(std430, binding = CSM_BIND_SEGMENT_ORDER) readonly buffer SegmentOrder {
 uniform uint substep;
 
 // The most a pair moves one end of a segment in a sweep, in units of the pair's depth: near a
-// held end a pair asks the free end for depth / s (csm::kLever in sim/solver/contacts.cpp says why).
-const float kLever = 2.5;
+// held end a pair asks the free end for depth / s (CSM_CONTACT_LEVER, shared with
+// sim/solver/contacts.cpp, whose kLever says why).
+const float kLever = CSM_CONTACT_LEVER;
 // How far (m) a sweep must move an end to count as one of the particle's segments (csm::
 // kFullWeight).
 const float kFullWeight = 1e-6;
@@ -49,22 +50,22 @@ vec2 inverseMasses(uint i) {
 }
 
 void main() {
-  if (globalIndex() >= P.counts.x) return;
+  if (globalIndex() >= P.particles) return;
   uint a = segmentOrder[globalIndex()];
-  uint here = P.grid.w * P.counts.x + a;
+  uint here = P.listHalf * P.particles + a;
   uvec2 range = candidateRange[here];
   uint n = range.y;
   // The segment's own ends, and their velocities, as its sweep has moved them so far (a move
   // of dx changes the velocity by dx / h): each pair's friction takes what sliding the pairs
   // before it left, not the same sliding again. The other segments stay where the iteration
   // found them; jacobi (collision.solve) evaluates every pair from there too.
-  bool sweep = P.contact.w > 0.5;
+  bool sweep = P.sweepSolve > 0.5;
   vec3 moved0 = vec3(0.0), moved1 = vec3(0.0);  // what the pairs moved the ends by, in order
   float count = 0.0;                            // how many did
   if (n > 0u) {
-    float h = S[substep].time.y;
-    float tilde = P.contact.y / (h * h);
-    float mu = P.contact.z;
+    float h = S[substep].h;
+    float tilde = P.compliance / (h * h);
+    float mu = P.friction;
     vec3 a0 = fetchPos(a), a1 = fetchPos(a + 1u);
     vec3 va0 = fetchVel(a), va1 = fetchVel(a + 1u);
     vec2 wa = inverseMasses(a);

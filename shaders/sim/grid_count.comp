@@ -16,7 +16,7 @@ layout(std430, binding = CSM_BIND_COUNTERS) buffer Counters { uint counters[]; }
 
 void main() {
   uint i = globalIndex();
-  if (i + 1u >= P.counts.x || particleStrand[i] != particleStrand[i + 1u]) return;
+  if (i + 1u >= P.particles || particleStrand[i] != particleStrand[i + 1u]) return;
   vec3 p0 = texelFetch(posTex, int(i)).xyz, p1 = texelFetch(posTex, int(i + 1u)).xyz;
   ivec3 lo, hi;
   if (!segmentCells(p0, p1, lo, hi)) {

@@ -21,7 +21,7 @@ layout(binding = CSM_IMAGE_ENTRIES, rgba32ui) writeonly uniform uimageBuffer ent
 
 void main() {
   uint i = globalIndex();
-  if (i + 1u >= P.counts.x || particleStrand[i] != particleStrand[i + 1u]) return;
+  if (i + 1u >= P.particles || particleStrand[i] != particleStrand[i + 1u]) return;
   vec3 p0 = texelFetch(posTex, int(i)).xyz, p1 = texelFetch(posTex, int(i + 1u)).xyz;
   ivec3 lo, hi;
   if (!segmentCells(p0, p1, lo, hi)) return;
@@ -36,6 +36,6 @@ void main() {
         uint key = cellKey(cell);
         uint bucket = bucketOf(key);
         uint slot = gridStart[bucket] + atomicAdd(gridCount[bucket], 0xffffffffu) - 1u;
-        if (slot < P.grid.y) imageStore(entries, int(slot), packEntry(key, i, low, high, cell));
+        if (slot < P.entryCapacity) imageStore(entries, int(slot), packEntry(key, i, low, high, cell));
       }
 }

@@ -4,16 +4,16 @@
 layout(binding = CSM_TEX_HEAD_FIELD) uniform samplerBuffer headFieldTex;
 
 bool headIsField() {
-  return P.headFieldDims.w != 0u;
+  return P.headIsField != 0u;
 }
 
 // Gradient (xyz, not normalised) and distance (w) at p, head frame. Beyond the grid: the
 // border's value plus the way to it (the border lies outside the head).
 vec4 headFieldSample(vec3 p) {
-  ivec3 dims = ivec3(P.headFieldDims.xyz);
-  vec3 f = (p - P.headField.xyz) / P.headField.w;
+  ivec3 dims = ivec3(P.headFieldDims);
+  vec3 f = (p - P.headFieldOrigin) / P.headFieldCell;
   vec3 inside = clamp(f, vec3(0.0), vec3(dims - 1));
-  float beyond = length(f - inside) * P.headField.w;
+  float beyond = length(f - inside) * P.headFieldCell;
   ivec3 c = min(ivec3(floor(inside)), dims - 2);
   vec3 t = inside - vec3(c);
   int base = c.x + dims.x * (c.y + dims.y * c.z);

@@ -51,7 +51,7 @@ void main() {
   uint l = gl_LocalInvocationID.x;
   uint maxStrain = 0u, segments = 0u, inside = 0u, nonFinite = 0u;
   float strainSum = 0.0, speed = 0.0;
-  if (i < P.counts.x) {
+  if (i < P.particles) {
     uint s = particleStrand[i];
     uint a = strandFirst[s], b = strandFirst[s + 1u];
     vec3 x = texelFetch(posTex, int(i)).xyz;
@@ -63,7 +63,7 @@ void main() {
       if (int(i - a) >= int(strandStiffness[s].z) && headIsField())
         inside = headFieldSample(toHeadFrame(S[lastStep].head, x)).w < 0.0 ? 1u : 0u;
       else if (int(i - a) >= int(strandStiffness[s].z))
-        for (int k = 0; k < P.ints.w; ++k) {
+        for (int k = 0; k < P.headSpheres; ++k) {
           vec4 sp = spheres[sphereBase + uint(k)];
           if (length(x - sp.xyz) < sp.w * (1.0 - 1e-6)) {
             inside = 1u;

@@ -31,7 +31,7 @@ void storeSide(uint i, uvec2 c) {
 
 void main() {
   uint k = globalIndex();
-  if (k >= min(counters[CSM_COUNTER_PAIR_LIST], P.grid.z)) return;
+  if (k >= min(counters[CSM_COUNTER_PAIR_LIST], P.pairListCapacity)) return;
   uvec4 p = imageLoad(pairList, int(k));
   uint a = p.x, b = p.y & kIndex, flags = p.y & ~kIndex;
   bool crowded =

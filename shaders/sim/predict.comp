@@ -48,14 +48,14 @@ vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
     gradient += w * (inBox ? g.xyz : vec3(0.0));
   }
   vec3 dv = vec3(0.0);
-  if (sums.w > 0.0) dv += (1.0 - exp(-P.volume.x * h)) * (sums.xyz / sums.w - v);
-  if (P.volume.y > 0.0) dv -= h * P.volume.y * mat3(P.volumeToWorld) * gradient;
+  if (sums.w > 0.0) dv += (1.0 - exp(-P.volumeFriction * h)) * (sums.xyz / sums.w - v);
+  if (P.volumeStiffness > 0.0) dv -= h * P.volumeStiffness * mat3(P.volumeToWorld) * gradient;
   return dv;
 }
 
 void main() {
   uint i = globalIndex();
-  if (i >= P.counts.x) return;
+  if (i >= P.particles) return;
   uint s = particleStrand[i];
   uint a = strandFirst[s], b = strandFirst[s + 1u];
   Substep st = S[substep];
@@ -64,22 +64,22 @@ void main() {
     pred[i] = vec4((st.head * vec4(r.xyz, 1.0)).xyz, 1.0);
     return;
   }
-  float h = st.time.y;
+  float h = st.h;
   vec3 x = texelFetch(posTex, int(i)).xyz;
   vec3 v = texelFetch(velTex, int(i)).xyz;
-  vec3 acc = P.gravity.xyz;
-  if (P.flags.z != 0u) {
+  vec3 acc = P.gravity;
+  if (P.windOn != 0u) {
     // Drag acts on the wind across the strand, not along it; implicit in the velocity
     // (c / (1 + h c) instead of c), as CpuSolver::windDrag.
     vec3 d = texelFetch(posTex, int(min(i + 1u, b - 1u))).xyz -
              texelFetch(posTex, int(max(i, a + 1u) - 1u)).xyz;
     float len = length(d);
     vec3 t = len > 1e-12 ? d / len : vec3(0.0);
-    vec3 rel = windVelocity(x, st.time.x) - v;
-    float c = P.misc.y;
+    vec3 rel = windVelocity(x, st.stepStart) - v;
+    float c = P.windDrag;
     acc += c / (1.0 + h * c) * (rel - dot(rel, t) * t);
   }
-  if (P.volumeDims.w != 0u) v += volumeVelocityChange(x, v, h);
+  if (P.volumeForces != 0u) v += volumeVelocityChange(x, v, h);
   v += h * acc;
   pred[i] = vec4(x + h * v, 1.0);
 }

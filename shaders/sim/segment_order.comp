@@ -22,7 +22,7 @@ shared uint runCount[CSM_PARTICLE_GROUP];
 void main() {
   uint a = globalIndex();
   uint lid = gl_LocalInvocationID.x;
-  bool valid = a < P.counts.x;
+  bool valid = a < P.particles;
   uint mine = valid ? segBase[a + 1u] - segBase[a] : 0u;
   runCount[lid] = mine;
   barrier();

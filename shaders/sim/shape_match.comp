@@ -45,14 +45,14 @@ uniform uint substep;
 
 void main() {
   uint id = globalIndex();
-  if (id >= P.counts.y) return;
+  if (id >= P.strands) return;
   uint s = strandOrder[id];
   uint a = strandFirst[s];
   int n = int(strandFirst[s + 1u] - a);
   // MAX_N is the groom's longest strand (GpuSolver::reset rebuilds this pass when it grows);
   // the guard only keeps a failed rebuild from writing past the arrays.
   if (n <= 0 || n > MAX_N) return;
-  int iterations = max(1, P.ints.z);
+  int iterations = max(1, P.rotationIterations);
   vec3 origin = texelFetch(predTex, int(a)).xyz;
   vec3 rest0 = texelFetch(restTex, int(a)).xyz;
   Substep st = S[substep];
@@ -113,7 +113,7 @@ void main() {
                  (ghosts > 0 ? rest0 - float(ghosts) * d : texelFetch(restTex, int(a) + lo).xyz);
     float chordLength = length(chord);
     vec3 axis = chordLength > 0.0 ? chord / chordLength : vec3(0.0);
-    vec4 q = extractRotation(A, region.y, rotation[a + uint(k)], iterations, axis, st.time.z);
+    vec4 q = extractRotation(A, region.y, rotation[a + uint(k)], iterations, axis, st.twistStep);
     rotation[a + uint(k)] = q;
     mat3 R = quatToMat(q);
     prefR[k + 1] = prefR[k] + R;
@@ -124,9 +124,9 @@ void main() {
   // lo..hi of its own range), g_i = ((sum R_k) ȳ_i + sum (c_k - R_k c̄_k)) / |K_i|, then
   // integration (eq. 2-3): x = x* + alpha (g - x*), v = (x - x_old) / h, damped. alpha is the
   // paper's, or min(1, k h^2) with the strand's calibrated rate k.
-  float h = st.time.y;
-  float keep = st.time.w;
-  float alpha = P.ints.y == 1 ? min(1.0, stiff.x * h * h) : P.stepping.x;
+  float h = st.h;
+  float keep = st.velocityKept;
+  float alpha = P.stiffnessModel == CSM_STIFFNESS_CALIBRATED ? min(1.0, stiff.x * h * h) : P.alpha;
   int pinned = int(stiff.z);
   for (int i = 0; i < n; ++i) {
     uint p = a + uint(i);

@@ -144,7 +144,7 @@ bool pushOutOfFieldHead(inout vec3 p, vec3 prev, mat4 head, float r, float maxLe
     // A pass, as in pushOutOfHead below: within reach and outside, done; else toward prev.
     if (checkReach) {
       len = length(p - prev);
-      reach = len <= maxLength * (1.0 + 1e-5);
+      reach = len <= maxLength * (1.0 + CSM_REACH_SLACK_FLOAT);
       if (clearance != kUnknownClearance) {
         depth = clearance;
         checkDepth = true;
@@ -213,7 +213,7 @@ bool pushOutOfSphere(inout vec3 p, vec3 prev, vec3 c, float radius, float maxLen
 // How far p (world) lies outside the nearest of the head's spheres.
 float outsideHead(vec3 p, uint sphereBase) {
   float d = 1e30;
-  for (int k = 0; k < P.ints.w; ++k) {
+  for (int k = 0; k < P.headSpheres; ++k) {
     vec4 sp = spheres[sphereBase + uint(k)];
     d = min(d, length(p - sp.xyz) - sp.w);
   }
@@ -226,7 +226,7 @@ bool pushHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxLength
   bool touching = false;
   for (int pass = 0; pass < 4; ++pass) {
     bool moved = false;
-    for (int k = 0; k < P.ints.w; ++k) {
+    for (int k = 0; k < P.headSpheres; ++k) {
       vec4 sp = spheres[sphereBase + uint(k)];
       moved = pushOutOfSphere(p, prev, sp.xyz, sp.w + r, maxLength) || moved;
     }
@@ -249,7 +249,7 @@ bool pushOutOfHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxL
   float level = 1e30;  // min(0, how far prev lies outside), read once when needed
   for (int pass = 0;; ++pass) {
     float len = length(p - prev);
-    bool reach = len <= maxLength * (1.0 + 1e-5);
+    bool reach = len <= maxLength * (1.0 + CSM_REACH_SLACK_FLOAT);
     float depth = outsideHead(p, sphereBase);
     if (reach && depth >= 0.0) return true;
     if (level == 1e30) level = min(0.0, outsideHead(prev, sphereBase));
@@ -275,7 +275,7 @@ bool pushOutOfHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxL
 
 void main() {
   uint id = globalIndex();
-  if (id >= P.counts.y) return;
+  if (id >= P.strands) return;
   uint s = strandOrder[id];
   uint a = strandFirst[s];
   int n = int(strandFirst[s + 1u] - a);
@@ -284,15 +284,15 @@ void main() {
   if (n <= first) return;
 
   Substep st = S[substep];
-  float h = st.time.y;
-  bool limit = P.flags.x != 0u;
-  bool headCollide = P.flags.y != 0u;
-  bool contacts = P.flags.w != 0u;
-  float epsilon = P.stepping.y;
-  float r = P.stepping.z;
-  float friction = P.stepping.w;
-  float dftl = P.misc.x;
-  int sphereCount = P.ints.w;
+  float h = st.h;
+  bool limit = P.strainLimiting != 0u;
+  bool headCollide = P.headCollision != 0u;
+  bool contacts = P.strandContacts != 0u;
+  float epsilon = P.strainLimit;
+  float r = P.radius;
+  float friction = P.headFriction;
+  float dftl = P.dftl;
+  int sphereCount = P.headSpheres;
   uint sphereBase = substep * uint(sphereCount);
 
   vec3 restPrev = texelFetch(restTex, int(a) + first - 1).xyz;

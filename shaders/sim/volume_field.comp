@@ -19,12 +19,12 @@ layout(std430, binding = CSM_BIND_VOLUME_FIELD) writeonly buffer VolumeField {
 };
 
 float excessAt(uint node) {
-  float allowed = max(P.volume.z, texelFetch(restFractionTex, int(node)).x);
-  return max(0.0, float(texelFetch(sumsTex, int(node)).x) * P.volume.w - allowed);
+  float allowed = max(P.volumeAllowed, texelFetch(restFractionTex, int(node)).x);
+  return max(0.0, float(texelFetch(sumsTex, int(node)).x) * P.volumePerUnit - allowed);
 }
 
 void main() {
-  ivec3 dims = ivec3(P.volumeDims.xyz);
+  ivec3 dims = ivec3(P.volumeDims);
   ivec3 low, high;
   ivec3 box = volumeBox(sumsTex, low, high);
   uint k = globalIndex();
@@ -37,7 +37,7 @@ void main() {
     below[axis] = max(n[axis] - 1, 0);
     above[axis] = min(n[axis] + 1, dims[axis] - 1);
     gradient[axis] = (excessAt(volumeNode(above)) - excessAt(volumeNode(below))) /
-                     (float(above[axis] - below[axis]) * P.volumeOrigin.w);
+                     (float(above[axis] - below[axis]) * P.volumeCell);
   }
   ivec4 sums = texelFetch(sumsTex, int(node));
   volumeField[2u * node] = vec4(vec3(sums.yzw), float(sums.x));

@@ -25,8 +25,8 @@ void main() {
     reachedHigh[lid] = 0;
   }
   barrier();
-  vec3 x = i < P.counts.x ? texelFetch(posTex, int(i)).xyz : vec3(0.0);
-  bool splats = i < P.counts.x && !any(isnan(x)) && !any(isinf(x));
+  vec3 x = i < P.particles ? texelFetch(posTex, int(i)).xyz : vec3(0.0);
+  bool splats = i < P.particles && !any(isnan(x)) && !any(isinf(x));
   if (splats) {
     vec3 v = texelFetch(velTex, int(i)).xyz;
     ivec3 base;
@@ -44,7 +44,7 @@ void main() {
       atomicAdd(volumeSums[k + 3u], int(round(wl * v.z)));
     }
     // The nodes reached, base to base + 1 (volumeBox's encoding), the group's first.
-    ivec3 dims = ivec3(P.volumeDims.xyz);
+    ivec3 dims = ivec3(P.volumeDims);
     for (int a = 0; a < 3; ++a) {
       atomicMax(reachedLow[a], dims[a] - base[a]);
       atomicMax(reachedHigh[a], base[a] + 2);

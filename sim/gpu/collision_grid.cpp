@@ -171,9 +171,14 @@ void CollisionGrid::beginFrame(bool contacts) {
 }
 
 void CollisionGrid::writeParams(SimParams& p, float reach) const {
-  p.grid = glm::uvec4(buckets_ - 1, entryCapacity_, pairListCapacity_, half_);
+  p.bucketMask = buckets_ - 1;
+  p.entryCapacity = entryCapacity_;
+  p.pairListCapacity = pairListCapacity_;
+  p.listHalf = half_;
   const double cell = cellSize(reach);
-  p.cells = glm::vec4(float(cell), float(1.0 / cell), 0.5f * reach * kPadSlack + 1e-7f, 0.0f);
+  p.cellEdge = float(cell);
+  p.inverseCellEdge = float(1.0 / cell);
+  p.cellPadding = 0.5f * reach * kPadSlack + 1e-7f;
 }
 
 void CollisionGrid::bind() const {

@@ -204,7 +204,7 @@ GpuSolver::GridStats GpuSolver::gridStats() {
   g.buckets = grid_.bucketCount();
   g.pairs = c[CSM_COUNTER_PAIR_LIST];
   g.pairCapacity = grid_.pairListCapacity();
-  g.cell = params_.cells.x;
+  g.cell = params_.cellEdge;
   return g;
 }
 
@@ -213,41 +213,64 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   const CollisionConfig& col = config_.collision;
   const WindConfig& wind = config_.wind;
   gpu::SimParams& p = params_;
-  p.gravity = glm::vec4(sim.gravity, 0.0f);
+  p.gravity = sim.gravity;
   const glm::dvec3 dir = glm::normalize(glm::dvec3(wind.direction));
-  p.windDir = glm::vec4(glm::vec3(dir), wind.strength);
-  p.windShape = glm::vec4(wind.gusts, wind.gustFrequency, wind.turbulence, wind.turbulenceScale);
-  p.stepping = glm::vec4(sim.stiffness, sim.strainLimit, col.radius, col.headFriction);
+  p.windDirection = glm::vec3(dir);
+  p.windStrength = wind.strength;
+  p.gusts = wind.gusts;
+  p.gustFrequency = wind.gustFrequency;
+  p.turbulence = wind.turbulence;
+  p.turbulenceScale = wind.turbulenceScale;
+  p.alpha = sim.stiffness;
+  p.strainLimit = sim.strainLimit;
+  p.radius = col.radius;
+  p.headFriction = col.headFriction;
   const float reach = 2.0f * col.radius + col.margin;
-  p.contact = glm::vec4(reach, col.compliance, col.friction,
-                        col.solve == ContactSolve::Sweep ? 1.0f : 0.0f);
-  p.misc = glm::vec4(sim.dftl, wind.drag, 0.0f, 0.0f);
-  p.ints =
-      glm::ivec4(0, int(sim.stiffnessModel), sim.rotationIterations, int(shape_.spheres.size()));
-  const bool windOn = wind.strength > 0.0f && wind.drag > 0.0f;
-  p.flags =
-      glm::uvec4(sim.strainLimiting, collidesWithHead(col.mode), windOn, strandContacts(col.mode));
-  p.counts = glm::uvec4(hair_.particles, hair_.strands, hair_.segments, 0u);
+  p.candidateDistance = reach;
+  p.compliance = col.compliance;
+  p.friction = col.friction;
+  p.sweepSolve = col.solve == ContactSolve::Sweep ? 1.0f : 0.0f;
+  p.dftl = sim.dftl;
+  p.windDrag = wind.drag;
+  static_assert(int(StiffnessModel::Paper) == CSM_STIFFNESS_PAPER &&
+                int(StiffnessModel::Calibrated) == CSM_STIFFNESS_CALIBRATED);
+  p.stiffnessModel = int(sim.stiffnessModel);
+  p.rotationIterations = sim.rotationIterations;
+  p.headSpheres = int(shape_.spheres.size());
+  p.strainLimiting = sim.strainLimiting;
+  p.headCollision = collidesWithHead(col.mode);
+  p.windOn = wind.strength > 0.0f && wind.drag > 0.0f;
+  p.strandContacts = strandContacts(col.mode);
+  p.particles = hair_.particles;
+  p.strands = hair_.strands;
+  p.segments = hair_.segments;
   grid_.writeParams(p, reach);
   // Cells count from the head, so the clamped 10-bit cell coordinates (common.glsl) cover
   // +-512 cells around it wherever it moves.
-  p.origin = glm::vec4(glm::vec3(poses.back().translation), 0.0f);
+  p.gridOrigin = glm::vec3(poses.back().translation);
   // The volume grid, fixed to the head where the frame starts.
   glm::dmat4 toWorld = glm::mat4_cast(head_.rotation);
   toWorld[3] = glm::dvec4(head_.translation, 1.0);
   p.volumeToWorld = glm::mat4(toWorld);
   p.volumeToHead = glm::mat4(glm::inverse(toWorld));
-  p.volumeOrigin = glm::vec4(glm::vec3(volume_.origin()), float(volume_.cell()));
-  p.volumeDims =
-      glm::uvec4(glm::uvec3(volume_.dims()), volumeForces(col.mode) && !volume_.empty() ? 1u : 0u);
-  p.volume = glm::vec4(col.volumeFriction, col.volumeStiffness, col.volumeFraction,
-                       float(volume_.fillPerUnit()));
+  p.volumeOrigin = glm::vec3(volume_.origin());
+  p.volumeCell = float(volume_.cell());
+  p.volumeDims = glm::uvec3(volume_.dims());
+  p.volumeForces = volumeForces(col.mode) && !volume_.empty() ? 1u : 0u;
+  p.volumeFriction = col.volumeFriction;
+  p.volumeStiffness = col.volumeStiffness;
+  p.volumeAllowed = col.volumeFraction;
+  p.volumePerUnit = float(volume_.fillPerUnit());
   if (const DistanceGrid* field = uploadedField_) {
-    p.headField = glm::vec4(field->origin, field->cell);
-    p.headFieldDims = glm::uvec4(glm::uvec3(field->dims), 1u);
+    p.headFieldOrigin = field->origin;
+    p.headFieldCell = field->cell;
+    p.headFieldDims = glm::uvec3(field->dims);
+    p.headIsField = 1u;
   } else {
-    p.headField = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    p.headFieldDims = glm::uvec4(2u, 2u, 2u, 0u);
+    p.headFieldOrigin = glm::vec3(0.0f);
+    p.headFieldCell = 1.0f;
+    p.headFieldDims = glm::uvec3(2u);
+    p.headIsField = 0u;
   }
 
   const int substeps = int(poses.size());
@@ -267,8 +290,10 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
     now[3] = glm::dvec4(poses[k].translation, 1.0);
     was[3] = glm::dvec4(before[k].translation, 1.0);
     s.headDelta = glm::mat4(was * glm::inverse(now));
-    s.time = glm::vec4(float(t), float(h), float(twistStepOf(sim, h, sim.rotationIterations)),
-                       float(keep));
+    s.stepStart = float(t);
+    s.h = float(h);
+    s.twistStep = float(twistStepOf(sim, h, sim.rotationIterations));
+    s.velocityKept = float(keep);
     std::memcpy(blob.data() + sizeof(p) + k * sizeof(s), &s, sizeof(s));
     for (const Sphere& sp : worldSpheres(shape_.spheres, poses[k]))
       spheres.emplace_back(sp.center, sp.radius);
@@ -321,7 +346,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   const uint32_t particles = uint32_t(hair_.particles), strands = uint32_t(hair_.strands);
 
   // The volume mode's grid, from where the frame starts (sim/solver/volume.h).
-  if (params_.volumeDims.w != 0u) {
+  if (params_.volumeForces != 0u) {
     timer_.stage(gpu::kVolume);
     volumeSums_.clearToZero();
     gl::memoryBarrier(gpu::kPassBarrier);
@@ -360,8 +385,10 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
 void GpuSolver::listAgain() {
   // The lists swap, so the parameters' grid half changes: only that field is written again.
   grid_.swapLists();
-  grid_.writeParams(params_, params_.contact.x);
-  paramsBuffer_.setSubData(offsetof(gpu::SimParams, grid), sizeof(params_.grid), &params_.grid);
+  grid_.writeParams(params_, params_.candidateDistance);
+  const glm::uvec4 grid(params_.bucketMask, params_.entryCapacity, params_.pairListCapacity,
+                        params_.listHalf);
+  paramsBuffer_.setSubData(offsetof(gpu::SimParams, bucketMask), sizeof(grid), &grid);
   grid_.bind();
   grid_.findCandidates(&timer_, false);
 }

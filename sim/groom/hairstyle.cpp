@@ -19,6 +19,7 @@
 #include "sim/groom/fit.h"
 #include "sim/groom/groom_file.h"
 #include "sim/groom/resample.h"
+#include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
 namespace {
@@ -132,22 +133,6 @@ struct GrowthHead {
     return glm::normalize(want + glm::dvec3(0.0, 0.0, -3.0 * depth));
   }
 };
-
-// Resamples a dense polyline to n points evenly spaced in arc length.
-std::vector<glm::dvec3> resample(const std::vector<glm::dvec3>& q, int n) {
-  std::vector<double> s(q.size(), 0.0);
-  for (size_t i = 1; i < q.size(); ++i) s[i] = s[i - 1] + glm::length(q[i] - q[i - 1]);
-  std::vector<glm::dvec3> out(n);
-  size_t j = 0;
-  for (int i = 0; i < n; ++i) {
-    const double target = s.back() * i / (n - 1);
-    while (j + 2 < q.size() && s[j + 1] < target) ++j;
-    const double span = s[j + 1] - s[j];
-    const double f = span > 0.0 ? std::clamp((target - s[j]) / span, 0.0, 1.0) : 0.0;
-    out[i] = glm::mix(q[j], q[j + 1], f);
-  }
-  return out;
-}
 
 // The direction hair lies in at p (head frame) before it hangs free: down, away from the
 // parting (or from the crown's axis) on top of the head, and back from the face; a fringe
@@ -285,9 +270,9 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
 // pushed apart at rest").
 constexpr double kSeparation = 2.2;
 constexpr int kSweeps = 3;
-// As in the contact solve (sim/solver/contacts.cpp): near a root, a pair asks the free end for its
+// As in the contact solve (sim/solver/contacts.cpp, kLever): near a root, a pair asks the free end for its
 // depth over the lever arm; no end moves further than this many times the pair's depth.
-constexpr double kSeparationLever = 2.5;
+constexpr double kSeparationLever = CSM_CONTACT_LEVER;
 
 void pushApart(std::vector<glm::dvec3>& x, const std::vector<double>& w, uint32_t a, uint32_t b,
                double target) {
@@ -384,7 +369,7 @@ Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& spheres
     std::vector<glm::dvec3> dense = growStrand(h, head, margin, uint64_t(s), dir);
     double arc = 0.0;
     for (size_t i = 1; i < dense.size(); ++i) arc += glm::length(dense[i] - dense[i - 1]);
-    std::vector<glm::dvec3> pts = resample(dense, particlesForLength(h, arc));
+    std::vector<glm::dvec3> pts = io::resamplePolyline(dense, particlesForLength(h, arc));
     strand.clear();
     for (size_t i = 0; i < pts.size(); ++i) {
       if (i > 0) head.pushOut(pts[i], margin);

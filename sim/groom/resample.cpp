@@ -69,6 +69,21 @@ float localDeviation(std::span<const glm::vec3> strand, const std::vector<double
 
 }  // namespace
 
+std::vector<glm::dvec3> resamplePolyline(std::span<const glm::dvec3> q, int n) {
+  std::vector<double> s(q.size(), 0.0);
+  for (size_t i = 1; i < q.size(); ++i) s[i] = s[i - 1] + glm::length(q[i] - q[i - 1]);
+  std::vector<glm::dvec3> out(n);
+  size_t j = 0;
+  for (int i = 0; i < n; ++i) {
+    const double target = s.back() * i / std::max(1, n - 1);
+    while (j + 2 < q.size() && s[j + 1] < target) ++j;
+    const double span = s[j + 1] - s[j];
+    const double f = span > 0.0 ? std::clamp((target - s[j]) / span, 0.0, 1.0) : 0.0;
+    out[i] = glm::mix(q[j], q[j + 1], f);
+  }
+  return out;
+}
+
 std::vector<glm::vec3> resampleStrand(std::span<const glm::vec3> strand, uint32_t count) {
   count = std::max<uint32_t>(count, 2);
   if (strand.empty()) return {};

@@ -41,7 +41,12 @@ struct ResampleStats {
 // Options are clamped to 2 <= minParticles <= maxParticles.
 ResampleStats resampleGroom(Groom& groom, const ResampleOptions& options);
 
-// `count` (>= 2) points spaced uniformly by arc length along the polyline `strand`.
+// `n` (>= 2) points evenly spaced in arc length along the polyline q, in double precision (the
+// generator's dense curves): the first and the last at q's ends.
+std::vector<glm::dvec3> resamplePolyline(std::span<const glm::dvec3> q, int n);
+
+// `count` (>= 2) points spaced uniformly by arc length along the polyline `strand` (float, as a
+// groom file's points are; resampleGroom's).
 std::vector<glm::vec3> resampleStrand(std::span<const glm::vec3> strand, uint32_t count);
 
 // The largest distance from a point of `original` to the polyline `resampled` (the exact

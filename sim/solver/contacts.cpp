@@ -7,6 +7,7 @@
 
 #include "sim/core/segment_pairs.h"
 #include "sim/base/parallel.h"
+#include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
 namespace {
@@ -158,7 +159,7 @@ namespace {
 // the sweep takes it back (a mean over the pairs did): Fig. 1's crowded roots then kick tips to
 // 12 m/s. 2.5 leaves every pair at s >= 0.4 as it is; a segment with no held end never asks
 // more than 1.21 (g / (g^2 + (1 - g)^2) at g = 1/sqrt(2), the other segment held).
-constexpr double kLever = 2.5;
+constexpr double kLever = CSM_CONTACT_LEVER;  // the GPU pass shares it
 // How far (m) a sweep must move an end to count as one of the particle's segments: less counts
 // for that fraction of one, so a pair that starts to touch does not halve the move that the
 // particle's other segment sends at once (a jump that float and double took apart).

@@ -12,6 +12,7 @@
 #include "sim/base/state_bytes.h"
 #include "sim/solver/wind.h"
 #include "sim/solver/accuracy.h"
+#include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
 namespace {
@@ -140,7 +141,7 @@ struct HeadCollider {
     double level = NAN;  // min(0, how far prev lies outside), read once when needed
     for (int pass = 0;; ++pass) {
       const double length = glm::length(p - prev);
-      const bool reach = length <= maxLength * (1.0 + 1e-6);
+      const bool reach = length <= maxLength * (1.0 + CSM_REACH_SLACK_DOUBLE);
       // The push's own last read where it has one (the field's projection): no second read.
       const double depth = std::isnan(clearance) ? outside(p) : clearance;
       if (reach && depth >= 0.0) return true;

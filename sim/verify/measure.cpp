@@ -74,22 +74,6 @@ PositionError timeStepError(const SolverMaker& make, const Scene& scene,
   return acc.result();
 }
 
-std::vector<glm::vec3> resamplePolyline(std::span<const glm::vec3> q, int n) {
-  std::vector<double> s(q.size(), 0.0);
-  for (size_t i = 1; i < q.size(); ++i)
-    s[i] = s[i - 1] + glm::length(glm::dvec3(q[i]) - glm::dvec3(q[i - 1]));
-  std::vector<glm::vec3> out(n);
-  size_t j = 0;
-  for (int i = 0; i < n; ++i) {
-    const double target = s.back() * i / std::max(1, n - 1);
-    while (j + 2 < q.size() && s[j + 1] < target) ++j;
-    const double span = s[j + 1] - s[j];
-    const double f = span > 0.0 ? std::clamp((target - s[j]) / span, 0.0, 1.0) : 0.0;
-    out[i] = glm::vec3(glm::mix(glm::dvec3(q[j]), glm::dvec3(q[j + 1]), f));
-  }
-  return out;
-}
-
 std::vector<glm::dvec3> sampleStrand(std::span<const glm::vec4> x, uint32_t a, uint32_t b,
                                      int samples) {
   std::vector<glm::dvec3> out(samples);

@@ -72,9 +72,6 @@ PositionError timeStepError(const SolverMaker& make, const Scene& scene,
 
 // ---- Resolution ---------------------------------------------------------------------------
 
-// The polyline resampled to n points evenly spaced in arc length.
-std::vector<glm::vec3> resamplePolyline(std::span<const glm::vec3> points, int n);
-
 // The strand [a, b) of x sampled at `samples` points evenly spaced in particle parameter
 // (rest arc length, as the particles are evenly spaced at rest), linearly between particles.
 std::vector<glm::dvec3> sampleStrand(std::span<const glm::vec4> x, uint32_t a, uint32_t b,

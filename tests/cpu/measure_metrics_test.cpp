@@ -9,6 +9,7 @@
 #include "sim/solver/cpu_solver.h"
 #include "sim/verify/measure.h"
 #include "sim/solver/accuracy.h"
+#include "sim/groom/resample.h"
 
 using namespace csm;
 
@@ -165,13 +166,13 @@ TEST_CASE("hair-hair penetrations: segment pairs closer than the hair radius") {
 }
 
 TEST_CASE("resampling and sampling a strand") {
-  const std::vector<glm::vec3> line = {{0, 0, 0}, {0.1f, 0, 0}, {0.3f, 0, 0}};
-  const std::vector<glm::vec3> r = resamplePolyline(line, 4);
+  const std::vector<glm::dvec3> line = {{0, 0, 0}, {0.1, 0, 0}, {0.3, 0, 0}};
+  const std::vector<glm::dvec3> r = io::resamplePolyline(line, 4);
   REQUIRE(r.size() == 4);
   CHECK(r[1].x == Approx(0.1));
   CHECK(r[3].x == Approx(0.3));
   std::vector<glm::vec4> x;
-  for (const glm::vec3& p : r) x.emplace_back(p, 1.0f);
+  for (const glm::dvec3& p : r) x.emplace_back(glm::vec3(p), 1.0f);
   const std::vector<glm::dvec3> s = sampleStrand(x, 0, 4, 7);
   CHECK(s[3].x == Approx(0.15));
   CHECK(centrelineRmsMm(s, s) == 0.0);

@@ -8,6 +8,7 @@
 #include "sim/solver/cpu_solver.h"
 #include "sim/param/sim_params.h"
 #include "tests/torture_cases.h"
+#include "sim/verify/soak.h"
 
 using namespace csm;
 using namespace csm::test;

@@ -10,6 +10,7 @@
 #include "sim/head/head_model.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
+#include "sim/verify/soak.h"
 
 namespace csm::bench {
 

@@ -1,0 +1,87 @@
+// What the CPU reference and the GPU passes share, in one file both include: C++ through
+// sim/gpu/gpu_params.h and sim/solver/*.cpp, GLSL through shaders/sim/common.glsl. Only
+// #defines, valid in both. Each number names the two places that use it; the GPU solver's
+// parameter block is declared once here, as a list both languages expand into a struct.
+#ifndef CSM_SIM_SHARED_CONSTANTS_GLSL
+#define CSM_SIM_SHARED_CONSTANTS_GLSL
+
+// ---- Strand contacts --------------------------------------------------------------------------
+// Near a held end a pair asks the free end for its depth over the lever arm; no end moves further
+// than this many times the pair's depth in one sweep: sim/solver/contacts.cpp (kLever, which
+// says why 2.5), shaders/sim/contact_solve.comp, and the generator's separation
+// (sim/groom/hairstyle.cpp, kSeparationLever).
+#define CSM_CONTACT_LEVER 2.5
+
+// ---- The head's push within reach --------------------------------------------------------------
+// A particle pushed out of the head counts as within reach of its parent while the segment is no
+// longer than its limit times (1 + this): sim/solver/cpu_solver.cpp in double, where 1e-6 is far
+// above the rounding of a length; shaders/sim/strain_limit.comp in float, where a length of a few
+// centimetres rounds by ~1e-7 relative and the push and the clamp each add some: 1e-5.
+#define CSM_REACH_SLACK_DOUBLE 1e-6
+#define CSM_REACH_SLACK_FLOAT 1e-5
+
+// ---- Stiffness models (StiffnessModel, sim/core/config.h; shaders/sim/shape_match.comp) --------
+#define CSM_STIFFNESS_PAPER 0
+#define CSM_STIFFNESS_CALIBRATED 1
+
+// ---- The parameter block ------------------------------------------------------------------------
+// SimParams: the frame's parameters, written by GpuSolver::writeParams (sim/gpu/gpu_solver.cpp)
+// and CollisionGrid (the grid's fields), read as `P` by every pass. Fields in groups of 16 bytes
+// (std430: a vec3 takes the first 12 of its group and a scalar may follow it; mat4 whole
+// groups), so that C++ (glm, no padding) and GLSL agree; tests/gpu/gpu_solver_test.cpp checks
+// every offset against the linked program's. By group:
+//   gravity (m/s^2)
+//   windDirection (unit), windStrength (m/s)
+//   gusts, gustFrequency (Hz), turbulence, turbulenceScale (m)
+//   alpha (the paper's), strainLimit (epsilon), radius (hair radius r, m), headFriction
+//   candidateDistance (2r + margin, m), compliance (m/N), friction, sweepSolve (1: collision.solve
+//     sweep, 0: jacobi)
+//   dftl, windDrag (1/s)
+//   stiffnessModel (CSM_STIFFNESS_*), rotationIterations, headSpheres (count)
+//   strainLimiting, headCollision, windOn, strandContacts (this frame): 0 or 1
+//   particles, strands, segments
+//   bucketMask (buckets - 1), entryCapacity, pairListCapacity, listHalf (this frame's half of the
+//     candidate range: 0 or 1)
+//   cellEdge (m), inverseCellEdge, cellPadding (the box padding, m)
+//   gridOrigin: the grid's origin, the head's position this frame
+//   volumeToHead, volumeToWorld: the volume grid, fixed to the head where the frame starts
+//     (sim/solver/volume.h), and back
+//   volumeOrigin (its lowest node, head frame), volumeCell (node spacing, m)
+//   volumeDims (nodes per axis), volumeForces (this frame: 0 or 1)
+//   volumeFriction (1/s), volumeStiffness (m^2/s^2), volumeAllowed (fraction), volumePerUnit
+//     (volume fraction per fixed-point unit of strand length at a node)
+//   headFieldOrigin (the head's distance field's lowest node, head frame), headFieldCell (m)
+//   headFieldDims (nodes per axis), headIsField (1: the head is the field, else spheres)
+#define CSM_SIM_PARAMS(F)                                                                        \
+  F(vec3, gravity) F(float, unused0)                                                             \
+  F(vec3, windDirection) F(float, windStrength)                                                  \
+  F(float, gusts) F(float, gustFrequency) F(float, turbulence) F(float, turbulenceScale)         \
+  F(float, alpha) F(float, strainLimit) F(float, radius) F(float, headFriction)                  \
+  F(float, candidateDistance) F(float, compliance) F(float, friction) F(float, sweepSolve)       \
+  F(float, dftl) F(float, windDrag) F(float, unused1) F(float, unused2)                          \
+  F(int, unused3) F(int, stiffnessModel) F(int, rotationIterations) F(int, headSpheres)          \
+  F(uint, strainLimiting) F(uint, headCollision) F(uint, windOn) F(uint, strandContacts)         \
+  F(uint, particles) F(uint, strands) F(uint, segments) F(uint, unused4)                         \
+  F(uint, bucketMask) F(uint, entryCapacity) F(uint, pairListCapacity) F(uint, listHalf)         \
+  F(float, cellEdge) F(float, inverseCellEdge) F(float, cellPadding) F(float, unused5)           \
+  F(vec3, gridOrigin) F(float, unused6)                                                          \
+  F(mat4, volumeToHead) F(mat4, volumeToWorld)                                                   \
+  F(vec3, volumeOrigin) F(float, volumeCell)                                                     \
+  F(uvec3, volumeDims) F(uint, volumeForces)                                                     \
+  F(float, volumeFriction) F(float, volumeStiffness) F(float, volumeAllowed)                     \
+  F(float, volumePerUnit)                                                                        \
+  F(vec3, headFieldOrigin) F(float, headFieldCell)                                               \
+  F(uvec3, headFieldDims) F(uint, headIsField)
+
+// Substep: one per substep of the frame, after SimParams (`S[k]`).
+//   head: the head's pose at the end of the step (pinned roots follow it)
+//   headDelta: the start-of-step pose after the inverse of the end pose (head friction)
+//   stepStart (s), h (s), twistStep (twistStepOf), velocityKept (by damping: exp(-c h))
+#define CSM_SUBSTEP(F)                                                                           \
+  F(mat4, head) F(mat4, headDelta)                                                               \
+  F(float, stepStart) F(float, h) F(float, twistStep) F(float, velocityKept)
+
+// A field of the list as a struct member (both languages).
+#define CSM_MEMBER(type, name) type name;
+
+#endif
