@@ -24,7 +24,7 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state) {
     return;
   }
   const SimFrame& f = viewer.simFrame();
-  const SimFrame::Timeline& t = f.timeline;
+  const TimelineStatus& t = f.timeline;
   const bool recorded = t.first >= 0;
   const long at = t.shown >= 0 ? t.shown : t.live;
 

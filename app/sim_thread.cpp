@@ -2,7 +2,6 @@
 
 #include "app/import_progress.h"
 #include "sim/run/frame_driver.h"
-#include "sim/groom/hair_sequence.h"
 #include "sim/run/simulation.h"
 
 namespace csm {
@@ -103,7 +102,7 @@ void SimThread::run(std::string* startError, Started* started) {
       for (;;) {
         if (pending_.any()) break;
         if (canStep()) {
-          if (!options_.paced || paused_ || bakeLeft_ > 0) break;
+          if (!options_.paced || paused_ || timeline_.baking()) break;
           const auto due =
               anchorWall_ + std::chrono::duration_cast<Clock::duration>(
                                 std::chrono::duration<double>(sim_->time() - anchorSim_));
@@ -136,7 +135,7 @@ void SimThread::run(std::string* startError, Started* started) {
   // GL objects go while the context is current.
   {
     std::lock_guard lock(mutex_);
-    for (Slot& s : slots_) s = Slot{};
+    buffers_.release();
     running_ = false;
     published_.notify_all();
   }
@@ -187,14 +186,12 @@ void SimThread::apply(Pending& p, long ticket) {
   if (restarted) {
     driver_->restart();
     maxStrain_.clear();
-    shown_ = -1;
-    bakeLeft_ = 0;
-    if (recording_) timeline_.record(*sim_);  // frame 0, or the frame a regrow starts from
+    timeline_.restarted(*sim_);
   }
   const bool resumed = applyTimeline(p, ticket);
   // The paced clock starts again from here when the hair starts again or starts moving; not
   // on every command (a drag posts one a frame), which would let it run ahead of real time.
-  if (restarted || resumed || (p.paused && !*p.paused) || p.steps > 0 || p.bake) {
+  if (restarted || resumed || (p.paused && !*p.paused) || p.steps > 0 || p.timeline.bake) {
     anchorWall_ = Clock::now();
     anchorSim_ = sim_->time();
   }
@@ -202,75 +199,36 @@ void SimThread::apply(Pending& p, long ticket) {
 }
 
 bool SimThread::applyTimeline(const Pending& p, long ticket) {
-  if (p.recording) recording_ = *p.recording;
-  if (p.budget) budget_ = *p.budget;
-  if (p.show) {
-    const bool recorded = timeline_.at(*p.show) || (a_ && a_->at(*p.show));
-    shown_ = *p.show >= 0 && recorded ? *p.show : -1;
-    if (shown_ >= 0) paused_ = true;
-  }
+  if (p.timeline.recording) timeline_.setRecording(*p.timeline.recording);
+  if (p.timeline.show && timeline_.show(*p.timeline.show)) paused_ = true;
   bool resumed = false;
-  if (p.resume && loaded_) {
-    std::string error;
-    double mismatch = 0.0;
-    if (timeline_.resume(*sim_, *p.resume, &error, &mismatch)) {
+  if (p.timeline.resume && loaded_) {
+    std::string message;
+    if (timeline_.resume(*sim_, *p.timeline.resume, &message)) {
       driver_->restart();
       maxStrain_.clear();
-      shown_ = -1;
       paused_ = true;
       resumed = true;
-      std::string text = "resumed from frame " + std::to_string(*p.resume);
-      if (mismatch > 0.0)
-        text += "; stepped again it differs from the recording by up to " +
-                std::to_string(mismatch * 1000.0) + " mm";
-      event(SimEvent::Kind::Resumed, ticket, text);
+      event(SimEvent::Kind::Resumed, ticket, message);
     } else {
-      event(SimEvent::Kind::ResumeFailed, ticket, "cannot resume: " + error);
+      event(SimEvent::Kind::ResumeFailed, ticket, message);
     }
   }
-  if (p.keepA && loaded_) {
-    a_ = std::make_unique<FrameRecording>(timeline_);
-    aConfig_ = std::make_shared<const Config>(sim_->config());
-    aGeneration_ = sim_->generation();
+  if (p.timeline.keepA && loaded_) timeline_.keepAsA(*sim_);
+  if (p.timeline.budget || p.timeline.keepA) timeline_.setBudget(p.timeline.budget ? *p.timeline.budget : timeline_.budget());
+  if (p.timeline.showA) timeline_.showA(*p.timeline.showA);
+  if (p.timeline.exportRange && loaded_) {
+    const auto& [dir, range] = *p.timeline.exportRange;
+    std::string message;
+    const bool ok = timeline_.exportFrames(*sim_, dir, range.first, range.second, &message);
+    event(ok ? SimEvent::Kind::Exported : SimEvent::Kind::ExportFailed, ticket, message);
   }
-  // One budget for both: the recording gets what A leaves (A shares the keyframes' saved states
-  // with it, but is counted whole).
-  if (p.budget || p.keepA) {
-    const size_t a = a_ ? a_->bytes() : 0;
-    timeline_.setBudget(budget_ > a ? budget_ - a : 0);
-  }
-  if (p.showA) showingA_ = *p.showA && a_ != nullptr;
-  if (p.exportRange && loaded_) {
-    const auto& [dir, range] = *p.exportRange;
-    std::string error;
-    long written = 0;
-    bool ok = io::prepareSequenceDir(dir, &error);
-    for (long f = range.first; ok && f <= range.second; ++f) {
-      const FrameRecording::Shown* shown = timeline_.at(f);
-      if (!shown) {
-        error = "frame " + std::to_string(f) + " is not recorded";
-        ok = false;
-      } else {
-        ok = io::writeSequenceFrame(dir, ++written, sim_->groom(), shown->positions, &error);
-      }
-    }
-    if (ok)
-      event(SimEvent::Kind::Exported, ticket,
-            "wrote frames " + std::to_string(range.first) + "-" + std::to_string(range.second) +
-                " as " + std::to_string(written) + " cyHair files into " + dir);
-    else
-      event(SimEvent::Kind::ExportFailed, ticket, "export: " + error);
-  }
-  if (p.bake && loaded_) {
-    bakeLeft_ = bakeTotal_ = std::max(0L, *p.bake);
-    shown_ = -1;
-    if (bakeLeft_ > 0) paused_ = false;
-  }
+  if (p.timeline.bake && loaded_ && timeline_.bake(*p.timeline.bake)) paused_ = false;
   return resumed;
 }
 
 bool SimThread::canStep() const {
-  if (!loaded_ || driver_->stopped() || shown_ >= 0) return false;
+  if (!loaded_ || driver_->stopped() || timeline_.showing()) return false;
   if (options_.frameLimit >= 0 && sim_->frame() >= options_.frameLimit) return false;
   return !paused_ || steps_ > 0;
 }
@@ -278,8 +236,7 @@ bool SimThread::canStep() const {
 void SimThread::stepFrame() {
   if (paused_ && steps_ > 0) --steps_;
   driver_->step();
-  if (recording_) timeline_.record(*sim_);
-  if (bakeLeft_ > 0 && --bakeLeft_ == 0) paused_ = true;
+  if (timeline_.stepped(*sim_)) paused_ = true;  // a bake's last frame
   std::vector<FrameSample> samples = driver_->takeSamples();
   for (const FrameSample& s : samples) maxStrain_.push(float(s.accuracy.maxStrain));
   if (options_.recordMetrics) {
@@ -303,32 +260,6 @@ std::string SimThread::counts() const {
 void SimThread::event(SimEvent::Kind kind, long ticket, std::string text) {
   std::lock_guard lock(mutex_);
   events_.push_back({kind, ticket, std::move(text)});
-}
-
-int SimThread::writeSlot(unsigned source, std::size_t bytes) {
-  int s = -1;
-  gl::Fence readDone;
-  {
-    std::lock_guard lock(mutex_);
-    for (int i = 0; i < int(slots_.size()); ++i)
-      if (i != latestSlot_ && i != heldSlot_) {
-        s = i;
-        break;
-      }
-    readDone = std::move(slots_[s].read);
-  }
-  // The UI's draws from this buffer, if any, are done (usually long since).
-  readDone.wait();
-  readDone = gl::Fence();
-  Slot& slot = slots_[s];
-  if (slot.buffer.id() == 0) slot.buffer = gl::Buffer();
-  if (std::size_t(slot.buffer.size()) != bytes)
-    slot.buffer.setData(GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
-  // The solver wrote the positions from compute shaders.
-  gl::memoryBarrier(gl::Barrier::BufferUpdate);
-  gl::copyBuffer(source, slot.buffer.id(), GLsizeiptr(bytes));
-  slot.written = gl::Fence::insert();
-  return s;
 }
 
 void SimThread::publish(long ticket) {
@@ -357,33 +288,11 @@ void SimThread::publish(long ticket) {
     f->nanFrame = driver_->nanFrame();
     f->nanParticles = driver_->nanParticles();
     f->idle = !canStep();
-    SimFrame::Timeline& t = f->timeline;
-    t.recording = recording_;
-    t.first = timeline_.firstFrame();
-    t.last = timeline_.lastFrame();
-    t.live = sim_->frame();
-    t.bytes = timeline_.bytes();
-    t.budget = budget_;
-    t.keyframes = timeline_.keyframeCount();
-    t.bakeLeft = bakeLeft_;
-    t.bakeTotal = bakeTotal_;
-    t.refused = timeline_.refused();
-    t.aFirst = a_ ? a_->firstFrame() : -1;
-    t.aLast = a_ ? a_->lastFrame() : -1;
-    t.aBytes = a_ ? a_->bytes() : 0;
-    t.aConfig = aConfig_;
-    t.aGeneration = aGeneration_;
-    const FrameRecording::Shown* shown = nullptr;
-    if (shown_ >= 0 && showingA_ && a_ && a_->at(shown_)) {
-      shown = a_->at(shown_);
-      t.showingA = true;
-    } else if (shown_ >= 0) {
-      shown = timeline_.at(shown_);
-    }
+    f->timeline = timeline_.status(*sim_);
+    const FrameRecording::Shown* shown = timeline_.shownFrame();
     const unsigned buffer = gl_ ? solver.positionBuffer() : 0;
     if (shown) {
       // A recorded frame on show: its positions, time and head instead of the live ones.
-      t.shown = shown->frame;
       f->frame = shown->frame;
       f->time = shown->time;
       f->headPose = shown->head;
@@ -392,8 +301,8 @@ void SimThread::publish(long ticket) {
       for (const glm::vec3& x : shown->positions) host->emplace_back(x, 1.0f);
       f->hostPositions = std::move(host);
     } else if (buffer != 0 && f->particles > 0) {
-      f->slot = writeSlot(buffer, f->particles * sizeof(glm::vec4));
-      f->positionBuffer = slots_[f->slot].buffer.id();
+      f->slot = buffers_.write(buffer, f->particles * sizeof(glm::vec4));
+      f->positionBuffer = buffers_.buffer(f->slot);
     } else {
       auto host = std::make_shared<std::vector<glm::vec4>>();
       solver.readPositions(*host);
@@ -403,7 +312,7 @@ void SimThread::publish(long ticket) {
   {
     std::lock_guard lock(mutex_);
     f->serial = ++serial_;
-    if (f->slot >= 0) latestSlot_ = f->slot;
+    if (f->slot >= 0) buffers_.publish(f->slot);
     latest_ = std::move(f);
   }
   published_.notify_all();
@@ -417,6 +326,7 @@ long SimThread::post(const std::function<void(Pending&, long)>& edit) {
   {
     std::lock_guard lock(mutex_);
     ticket = ++posted_;
+    pending_.posted = true;
     edit(pending_, ticket);
   }
   wakeThread_.notify_all();
@@ -459,39 +369,39 @@ long SimThread::step() {
 }
 
 long SimThread::setRecording(bool on) {
-  return post([&](Pending& p, long) { p.recording = on; });
+  return post([&](Pending& p, long) { p.timeline.recording = on; });
 }
 
 long SimThread::setCacheBudget(size_t bytes) {
-  return post([&](Pending& p, long) { p.budget = bytes; });
+  return post([&](Pending& p, long) { p.timeline.budget = bytes; });
 }
 
 long SimThread::show(long frame) {
-  return post([&](Pending& p, long) { p.show = frame; });
+  return post([&](Pending& p, long) { p.timeline.show = frame; });
 }
 
 long SimThread::resume(long frame) {
   return post([&](Pending& p, long) {
-    p.show.reset();
-    p.resume = frame;
+    p.timeline.show.reset();
+    p.timeline.resume = frame;
   });
 }
 
 long SimThread::bake(long frames) {
-  return post([&](Pending& p, long) { p.bake = frames; });
+  return post([&](Pending& p, long) { p.timeline.bake = frames; });
 }
 
 long SimThread::exportRecorded(const std::string& dir, long first, long last) {
   return post(
-      [&](Pending& p, long) { p.exportRange = std::make_pair(dir, std::make_pair(first, last)); });
+      [&](Pending& p, long) { p.timeline.exportRange = std::make_pair(dir, std::make_pair(first, last)); });
 }
 
 long SimThread::keepAsA() {
-  return post([](Pending& p, long) { p.keepA = true; });
+  return post([](Pending& p, long) { p.timeline.keepA = true; });
 }
 
 long SimThread::showA(bool on) {
-  return post([&](Pending& p, long) { p.showA = on; });
+  return post([&](Pending& p, long) { p.timeline.showA = on; });
 }
 
 long SimThread::latestSerial() const {
@@ -529,16 +439,12 @@ bool SimThread::waitFor(const std::function<bool(const SimFrame&)>& done, double
 
 std::shared_ptr<const SimFrame> SimThread::acquire() {
   std::lock_guard lock(mutex_);
-  if (latest_ && latest_->slot >= 0 && latest_->slot != heldSlot_) {
-    heldSlot_ = latest_->slot;
-    slots_[heldSlot_].written.waitOnGpu();
-  }
+  if (latest_) buffers_.hold(latest_->slot);
   return latest_;
 }
 
 void SimThread::drawn() {
-  std::lock_guard lock(mutex_);
-  if (heldSlot_ >= 0) slots_[heldSlot_].read = gl::Fence::insert();
+  buffers_.drawn();
 }
 
 std::vector<SimEvent> SimThread::takeEvents() {

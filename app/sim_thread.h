@@ -8,11 +8,9 @@
 // the last ticket applied before it, so the UI and tests know when a change has taken effect
 // (sync()).
 //
-// Positions pass from the simulation's context to the window's through three GPU buffers
-// with fences: the simulation copies each finished frame into a buffer that is neither the
-// one the UI draws nor the latest one handed over, after the UI's fence says its draws from
-// that buffer are done. Nothing is read back to the CPU. A CPU solver's positions are handed
-// over as a host copy instead.
+// Positions pass from the simulation's context to the window's through a TripleBuffer
+// (app/triple_buffer.h); a CPU solver's are handed over as a host copy instead. The timeline
+// (recording, a frame on show, A/B, bake, export) is sim/run/timeline.h's, driven between frames.
 #pragma once
 
 #include <array>
@@ -31,13 +29,14 @@
 
 #include "app/history.h"
 #include "app/metrics.h"
+#include "app/triple_buffer.h"
 #include "gl/buffer.h"
 #include "gl/context.h"
 #include "gl/fence.h"
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
 #include "sim/core/pose.h"
-#include "sim/run/frame_recording.h"
+#include "sim/run/timeline.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/core/solver.h"
 #include "sim/run/make_solver.h"
@@ -77,24 +76,9 @@ struct SimFrame {
   long nanFrame = -1;
   uint64_t nanParticles = 0;
   bool idle = false;  // will step no further without a command (paused, stopped, limit)
-  // The timeline (sim/run/frame_recording.h): what is recorded, and the recorded frame on show instead
+  // The timeline (sim/run/timeline.h): what is recorded, and the recorded frame on show instead
   // of the live one (then `frame`, `time`, `headPose` and the positions are that frame's).
-  struct Timeline {
-    bool recording = true;
-    long first = -1, last = -1;                   // the recorded frames
-    long shown = -1;                              // -1: the live frame
-    long live = 0;                                // the simulation's own frame
-    size_t bytes = 0, budget = 0, keyframes = 0;  // the budget holds `bytes` and `aBytes`
-    long bakeLeft = 0, bakeTotal = 0;             // a bake's frames still to run, of how many
-    long refused = 0;                             // frames too big for the budget alone
-    // A kept recording to compare with (A/B): its frames, its memory, its parameters, and
-    // whether the frame on show is A's (the same frame number) instead of the recording's.
-    long aFirst = -1, aLast = -1;
-    long aGeneration = -1;  // the groom A was recorded on (SimFrame::generation)
-    size_t aBytes = 0;
-    bool showingA = false;
-    std::shared_ptr<const Config> aConfig;
-  } timeline;
+  TimelineStatus timeline;
   // This frame's positions (vec4 per particle): a buffer of the share group, to draw after
   // SimThread::acquire() (which orders the window's context after the copy), or a host copy.
   unsigned positionBuffer = 0;
@@ -207,7 +191,19 @@ class SimThread {
   long latestSerial() const;  // of the latest frame published (0 before the first)
 
  private:
+  // The commands posted since the thread last looked, merged (the latest of each kind, the
+  // steps summed) and applied together in a fixed order (apply). A new command is a field here,
+  // its method and its line in apply or applyTimeline.
+  struct TimelineEdits {
+    std::optional<bool> recording;
+    std::optional<size_t> budget;
+    std::optional<long> show, resume, bake;
+    std::optional<std::pair<std::string, std::pair<long, long>>> exportRange;
+    bool keepA = false;
+    std::optional<bool> showA;
+  };
   struct Pending {
+    bool posted = false;  // a command came
     std::optional<std::pair<Config, std::string>> open;
     std::optional<Config> config;
     long openTicket = 0, configTicket = 0;  // the commands' own tickets, for their events
@@ -215,21 +211,9 @@ class SimThread {
     std::optional<Pose> userPose;
     std::optional<bool> paused;
     int steps = 0;
-    std::optional<bool> recording;
-    std::optional<size_t> budget;
-    std::optional<long> show, resume, bake;
-    std::optional<std::pair<std::string, std::pair<long, long>>> exportRange;
-    bool keepA = false;
-    std::optional<bool> showA;
+    TimelineEdits timeline;
     bool quit = false;
-    bool any() const {
-      return open || config || reset || userPose || paused || steps > 0 || recording || budget ||
-             show || resume || bake || exportRange || keepA || showA || quit;
-    }
-  };
-  struct Slot {
-    gl::Buffer buffer{gl::NoCreate};
-    gl::Fence written, read;
+    bool any() const { return posted; }
   };
 
   explicit SimThread(Options options);
@@ -241,7 +225,6 @@ class SimThread {
   bool canStep() const;
   void stepFrame();
   void publish(long ticket);
-  int writeSlot(unsigned source, std::size_t bytes);
   void event(SimEvent::Kind kind, long ticket, std::string text);
   std::string counts() const;
 
@@ -255,8 +238,7 @@ class SimThread {
   long posted_ = 0;
   std::shared_ptr<const SimFrame> latest_;
   std::vector<SimEvent> events_;
-  std::array<Slot, 3> slots_;
-  int latestSlot_ = -1, heldSlot_ = -1;
+  TripleBuffer buffers_;  // the positions handed to the window
   MetricsLog metricsLog_;
   bool running_ = true;  // false once the thread has left its loop
   mutable std::mutex importMutex_;
@@ -272,15 +254,7 @@ class SimThread {
   long applied_ = 0;
   long serial_ = 0;
   History maxStrain_{120};
-  FrameRecording timeline_;
-  bool recording_ = true;
-  long shown_ = -1;
-  long bakeLeft_ = 0, bakeTotal_ = 0;
-  size_t budget_ = FrameRecordingOptions{}.budgetBytes;  // the timeline's, A's included
-  std::unique_ptr<FrameRecording> a_;                    // the kept recording (A/B)
-  std::shared_ptr<const Config> aConfig_;
-  long aGeneration_ = -1;
-  bool showingA_ = false;
+  Timeline timeline_;
   // Real-time pacing: the wall time and sim time the clock last started from.
   std::chrono::steady_clock::time_point anchorWall_;
   double anchorSim_ = 0.0;

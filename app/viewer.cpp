@@ -422,7 +422,7 @@ void Viewer::showRecorded(long frame) {
 }
 
 void Viewer::playRecording(bool play) {
-  const SimFrame::Timeline& t = frame_->timeline;
+  const TimelineStatus& t = frame_->timeline;
   playing_ = play && t.first >= 0;
   if (!playing_) return;
   paused_ = true;
@@ -433,7 +433,7 @@ void Viewer::playRecording(bool play) {
 
 void Viewer::advancePlayback() {
   if (!playing_) return;
-  const SimFrame::Timeline& t = frame_->timeline;
+  const TimelineStatus& t = frame_->timeline;
   const double dt = std::max(1e-6, double(frame_->config.sim.dt));
   long frame =
       playFrom_ + long(std::chrono::duration<double>(Clock::now() - playStart_).count() / dt);
@@ -484,7 +484,7 @@ void Viewer::keepAsA() {
 }
 
 void Viewer::rerunFromA() {
-  const SimFrame::Timeline& t = frame_->timeline;
+  const TimelineStatus& t = frame_->timeline;
   if (t.aFirst < 0) return;
   if (t.aGeneration != frame_->generation) {
     log(MessageLevel::Error,

@@ -683,7 +683,7 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
   REQUIRE(v->open(c, "", "", &error));
   REQUIRE(v->waitForSimFrame(40));
   REQUIRE(v->sync());
-  const SimFrame::Timeline& t = v->simFrame().timeline;
+  const TimelineStatus& t = v->simFrame().timeline;
   REQUIRE(v->simFrame().frame == 40);
   CHECK(t.first == 0);
   CHECK(t.last == 40);
