@@ -34,23 +34,17 @@ constexpr uint64_t kSparsePairs = 20;
 // frame (counted as oversize), which keeps the pass bounded when a simulation explodes.
 constexpr uint32_t kMaxSegmentCells = CSM_MAX_SEGMENT_CELLS;
 
-// A capacity for `needed` items: a quarter more, so a growing tangle does not reallocate every
-// frame, never over `limit` (items of one buffer, a 32-bit index); 0 when `current` holds
-// that already.
-uint32_t grownCapacity(uint64_t needed, uint32_t current, uint64_t limit) {
-  const uint64_t want = std::min(limit, needed + needed / 4);
-  return want > current ? uint32_t(want) : 0;
-}
 
 }  // namespace
 
-bool CollisionGrid::build(std::string* error) {
+bool CollisionGrid::build(std::string* error, ContactSolve& solve) {
+  solve_ = &solve;
   // What one buffer texture may hold here (llvmpipe and NVIDIA: 2^27 texels; GL 4.3 guarantees
   // 2^16): the buffers that grow with the hair are read and written through such views (a
   // view past it is read and written as the implementation pleases).
   const gl::Caps caps = gl::queryCaps();
-  textureTexels_ = uint64_t(std::max<GLint>(caps.maxTextureBufferSize, 0));
-  viewAlignment_ = uint64_t(std::max<GLint>(caps.textureBufferOffsetAlignment, 1));
+  capacity_.setDevice(uint64_t(std::max<GLint>(caps.maxTextureBufferSize, 0)),
+                      uint64_t(std::max<GLint>(caps.textureBufferOffsetAlignment, 1)));
   searchCounters_ = gl::Buffer();
   searchCounters_.setData(kSearchCounters * sizeof(uint32_t), nullptr, GL_STREAM_READ);
   return passes_.count.build("sim/grid_count.comp", CSM_PARTICLE_GROUP, {}, error) &&
@@ -61,10 +55,9 @@ bool CollisionGrid::build(std::string* error) {
          passes_.dispatchSize.build("sim/dispatch_size.comp", 1, {}, error) &&
          passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, {}, error) &&
          passes_.order.build("sim/segment_order.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.apply.build("sim/contact_apply.comp", CSM_STRAND_GROUP, {}, error) &&
          buildSplit(passes_.pairScatter, "sim/pair_scatter.comp", error) &&
-         buildSplit(passes_.lists, "sim/candidate_lists.comp", error) &&
-         buildSplit(passes_.solve, "sim/contact_solve.comp", error) && setListSplit();
+         buildSplit(passes_.lists, "sim/candidate_lists.comp", error) && solve.build(error) &&
+         setListSplit();
 }
 
 bool CollisionGrid::buildSplit(ComputePass (&pass)[2], const char* path, std::string* error) {
@@ -73,18 +66,16 @@ bool CollisionGrid::buildSplit(ComputePass (&pass)[2], const char* path, std::st
 }
 
 bool CollisionGrid::setListSplit() {
-  // The second view of the sides and of the lists starts where the first ends: as many RG32UI
-  // texels as a view holds, down to where a view may start.
-  const uint64_t step = std::max<uint64_t>(1, viewAlignment_ / sizeof(glm::uvec2));
-  const uint64_t texels = std::min({textureTexels_, splitTexels_, uint64_t(1) << 31});
-  listSplit_ = uint32_t(texels / step * step);
-  for (ComputePass* pass : {&passes_.pairScatter[1], &passes_.lists[1], &passes_.solve[1]})
-    pass->set("listSplit", listSplit_);
+  // The second view of the sides and of the lists starts where the first ends.
+  const uint32_t split = capacity_.listSplit();
+  for (ComputePass* pass : {&passes_.pairScatter[1], &passes_.lists[1]})
+    pass->set("listSplit", split);
+  if (solve_) solve_->setListSplit(split);
   return true;
 }
 
 void CollisionGrid::limitListSplit(uint64_t texels) {
-  splitTexels_ = texels;
+  capacity_.limitListSplit(texels);
   setListSplit();
 }
 
@@ -99,7 +90,6 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   // The per-segment scan (where each segment's pairs start) runs on the same scan passes, over
   // one count per particle.
   segmentScan_ = std::max<uint32_t>(64, std::bit_ceil(uint32_t(particles)));
-  zeroed<glm::vec4>(correction_, 2 * particles);
   zeroed<glm::uvec2>(candidateRange_, 2 * particles);
   half_ = 0;
   lastFrameListed_ = false;
@@ -117,8 +107,7 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   fill(segmentOrder_, order);
   view(gridStartTex_, gridStart_, GL_R32UI);
   searchPending_ = false;
-  entryCapacity_ = 0;  // reserveFor sizes the entry buffer and the pair list
-  pairListCapacity_ = 0;
+  capacity_.clear();  // reserveFor sizes the entry buffer and the pair list
 }
 
 double CollisionGrid::cellSize(float reach) const {
@@ -172,8 +161,8 @@ void CollisionGrid::beginFrame(bool contacts) {
 
 void CollisionGrid::writeParams(SimParams& p, float reach) const {
   p.bucketMask = buckets_ - 1;
-  p.entryCapacity = entryCapacity_;
-  p.pairListCapacity = pairListCapacity_;
+  p.entryCapacity = capacity_.entries();
+  p.pairListCapacity = capacity_.pairs();
   p.listHalf = half_;
   const double cell = cellSize(reach);
   p.cellEdge = float(cell);
@@ -183,7 +172,6 @@ void CollisionGrid::writeParams(SimParams& p, float reach) const {
 
 void CollisionGrid::bind() const {
   const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
-  correction_.bindBase(ssbo, CSM_BIND_CORRECTION);
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
@@ -223,7 +211,8 @@ void CollisionGrid::findCandidates(StageTimer* timer, bool measured) {
   gl::memoryBarrier(kPassBarrier);
   // One invocation per entry: how many there are is known on the GPU only (no read-back inside
   // a frame), so the dispatch is sized there.
-  dispatchFor(CSM_COUNTER_ENTRIES, entryCapacity_, CSM_CONTACT_GROUP, CSM_DISPATCH_CANDIDATES);
+  dispatchFor(CSM_COUNTER_ENTRIES, capacity_.entries(), CSM_CONTACT_GROUP,
+              CSM_DISPATCH_CANDIDATES);
   passes_.candidates.runIndirect(dispatch_, CSM_DISPATCH_CANDIDATES);
   gl::memoryBarrier(kPassBarrier);
   // Counting sort of the pairs by segment: the same scan over the segments' pair counts, its
@@ -240,11 +229,11 @@ void CollisionGrid::findCandidates(StageTimer* timer, bool measured) {
   // The segments by candidate count, for the list pass and the substeps' contact solves.
   passes_.order.run(particles);
   gl::memoryBarrier(kPassBarrier);
-  dispatchFor(CSM_COUNTER_PAIR_LIST, pairListCapacity_, CSM_PARTICLE_GROUP,
+  dispatchFor(CSM_COUNTER_PAIR_LIST, capacity_.pairs(), CSM_PARTICLE_GROUP,
               CSM_DISPATCH_PAIR_SCATTER);
-  passes_.pairScatter[splitViews()].runIndirect(dispatch_, CSM_DISPATCH_PAIR_SCATTER);
+  passes_.pairScatter[capacity_.splitViews()].runIndirect(dispatch_, CSM_DISPATCH_PAIR_SCATTER);
   gl::memoryBarrier(kPassBarrier);
-  passes_.lists[splitViews()].run(particles);
+  passes_.lists[capacity_.splitViews()].run(particles);
   gl::memoryBarrier(kPassBarrier);
   // What this search needed, for the next one's beginFrame.
   gl::memoryBarrier(gl::Barrier::BufferUpdate);
@@ -256,12 +245,12 @@ void CollisionGrid::findCandidates(StageTimer* timer, bool measured) {
 void CollisionGrid::sizeForLastSearch() {
   if (segments_ == 0) return;
   searchPending_ = false;  // read here instead
-  const std::vector<uint32_t> c = readCounters();
+  const std::vector<uint32_t> c = counters_.download<uint32_t>(CSM_COUNTERS);
   // The cells for the hair as it stands: three quarters of a segment where it has few pairs
   // a segment (a search whose grid did not fit counts no pairs: kept dense). Cells half as
   // long hold ~1.5x the entries (Fig. 1): twice what this search needed, then.
   const double searched = cellPerSegment_;
-  const bool sparse = c[CSM_COUNTER_ENTRIES] <= entryCapacity_ &&
+  const bool sparse = c[CSM_COUNTER_ENTRIES] <= capacity_.entries() &&
                       uint64_t(c[CSM_COUNTER_PAIR_LIST]) <= kSparsePairs * segments_;
   cellPerSegment_ = sparse ? kSparseCellPerSegment : kDenseCellPerSegment;
   // A quarter over what it needed, as after an overflow: growEntries and growPairList keep
@@ -297,18 +286,6 @@ void CollisionGrid::clearFrameCounters() {
   counters_.clearToZero(0, CSM_COUNTERS_PER_FRAME * sizeof(uint32_t));
 }
 
-void CollisionGrid::solve(unsigned substep, int iterations, uint32_t strands) {
-  if (segments_ == 0) return;
-  ComputePass& solve = passes_.solve[splitViews()];
-  for (int k = 1; k < iterations; ++k) {
-    solve.runSubstep(uint32_t(particles_), substep);
-    gl::memoryBarrier(kPassBarrier);
-    passes_.apply.runSubstep(strands, substep);
-    gl::memoryBarrier(kPassBarrier);
-  }
-  solve.runSubstep(uint32_t(particles_), substep);
-  gl::memoryBarrier(kPassBarrier);
-}
 
 void CollisionGrid::scan(uint32_t blocks, uint32_t totalSlot) {
   // Block sums, their scan, each block rescanned from its offset (scan_*.comp).
@@ -324,107 +301,40 @@ bool CollisionGrid::countersSeen(const uint32_t* c) {
   // The grid or the pair list did not fit that frame (it kept the lists before it): room for
   // the next.
   bool grew = false;
-  if (c[CSM_COUNTER_ENTRIES] > entryCapacity_) {
+  if (c[CSM_COUNTER_ENTRIES] > capacity_.entries()) {
     growEntries(c[CSM_COUNTER_ENTRIES]);
     grew = true;
   }
-  if (c[CSM_COUNTER_PAIR_LIST] > pairListCapacity_) {
+  if (c[CSM_COUNTER_PAIR_LIST] > capacity_.pairs()) {
     growPairList(c[CSM_COUNTER_PAIR_LIST]);
     grew = true;
   }
   return grew;
 }
 
-void CollisionGrid::limitStorage(uint64_t bytes) {
-  bufferBytes_ = bytes;
-}
-
-uint64_t CollisionGrid::entryLimit() const {
-  // 16 bytes an entry, one RGBA32UI texel: 2 GiB at most, and what the device's views hold.
-  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, textureTexels_});
-}
-
-uint64_t CollisionGrid::pairLimit() const {
-  // The sides and each frame's lists take two RG32UI texels a pair, in two views of
-  // listSplit_ texels each; the pair list one RGBA32UI texel a pair, within one view as
-  // listSplit_ is (16 bytes a pair each).
-  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, uint64_t(listSplit_)});
-}
-
-void CollisionGrid::SplitView::attach(const gl::Buffer& buffer, uint64_t texels, uint32_t split) {
-  // The second view, when the buffer needs none, views the first's texels (never read).
-  const uint64_t lowTexels = std::min<uint64_t>(texels, split);
-  const uint64_t highFirst = texels > split ? split : 0;
-  const uint64_t highTexels = texels > split ? texels - split : lowTexels;
-  constexpr uint64_t bytes = sizeof(glm::uvec2);
-  viewRange(low, buffer, GL_RG32UI, 0, GLsizeiptr(lowTexels * bytes));
-  viewRange(high, buffer, GL_RG32UI, GLintptr(highFirst * bytes), GLsizeiptr(highTexels * bytes));
-}
-
-void CollisionGrid::SplitView::bindImages(GLuint lowUnit, GLuint highUnit, GLenum access) const {
-  low.bindImage(lowUnit, access, GL_RG32UI);
-  high.bindImage(highUnit, access, GL_RG32UI);
-}
 
 void CollisionGrid::growEntries(uint64_t needed) {
-  const uint32_t want = grownCapacity(needed, entryCapacity_, entryLimit());
-  if (want == 0) return;
-  entryCapacity_ = want;
-  zeroed<glm::uvec4>(entries_, entryCapacity_);
+  if (!capacity_.growEntries(needed)) return;
+  zeroed<glm::uvec4>(entries_, capacity_.entries());
   view(entryTex_, entries_, GL_RGBA32UI);
 }
 
 void CollisionGrid::growPairList(uint64_t needed) {
-  const uint32_t want = grownCapacity(needed, pairListCapacity_, pairLimit());
-  if (want == 0) return;
-  pairListCapacity_ = want;
-  zeroed<glm::uvec4>(pairList_, pairListCapacity_);
+  if (!capacity_.growPairs(needed)) return;
+  zeroed<glm::uvec4>(pairList_, capacity_.pairs());
   view(pairListTex_, pairList_, GL_RGBA32UI);
-  const uint64_t sides = 2 * uint64_t(pairListCapacity_);
+  const uint64_t sides = 2 * uint64_t(capacity_.pairs());
+  const uint32_t split = capacity_.listSplit();
   zeroed<glm::uvec2>(pairSides_, sides);
-  pairSidesTex_.attach(pairSides_, sides, listSplit_);
+  pairSidesTex_.attach(pairSides_, sides, split);
   // Both frames' lists, two sides per pair each; last frame's lists are gone, and their
   // ranges with them (a search over the grown list that still does not fit keeps none).
   for (int h = 0; h < 2; ++h) {
     zeroed<glm::uvec2>(candidates_[h], sides);
-    candidatesTex_[h].attach(candidates_[h], sides, listSplit_);
+    candidatesTex_[h].attach(candidates_[h], sides, split);
   }
   candidateRange_.clearToZero();
   lastFrameListed_ = false;
-}
-
-std::vector<uint32_t> CollisionGrid::readCounters() const {
-  return counters_.download<uint32_t>(CSM_COUNTERS);
-}
-
-std::vector<std::pair<uint32_t, uint32_t>> CollisionGrid::readPairs(bool* overflow) const {
-  const std::vector<uint32_t> c = readCounters();
-  const size_t found = c[CSM_COUNTER_PAIR_LIST];
-  if (overflow) *overflow = found > pairListCapacity_;
-  std::vector<std::pair<uint32_t, uint32_t>> out;
-  for (const glm::uvec4& p :
-       pairList_.download<glm::uvec4>(std::min<size_t>(found, pairListCapacity_)))
-    if ((p.y >> CSM_CANDIDATE_SHIFT) & kPairNear)
-      out.emplace_back(p.x, p.y & ((1u << CSM_CANDIDATE_SHIFT) - 1u));
-  return out;
-}
-
-std::vector<std::vector<std::pair<uint32_t, float>>> CollisionGrid::readCandidates() const {
-  const size_t n = particles_, first = size_t(half_) * n;
-  const std::vector<glm::uvec2> range = candidateRange_.download<glm::uvec2>(2 * n);
-  const std::vector<glm::uvec2> all =
-      candidates_[half_].download<glm::uvec2>(2 * size_t(pairListCapacity_));
-  std::vector<std::vector<std::pair<uint32_t, float>>> out(n);
-  for (size_t i = 0; i < n; ++i)
-    for (uint32_t k = 0; k < range[first + i].y; ++k) {
-      const glm::uvec2 c = all[range[first + i].x + k];
-      out[i].emplace_back(c.x & ((1u << CSM_CANDIDATE_SHIFT) - 1u), std::bit_cast<float>(c.y));
-    }
-  return out;
-}
-
-std::vector<uint32_t> CollisionGrid::readSegmentOrder() const {
-  return segmentOrder_.download<uint32_t>(particles_);
 }
 
 ContactStats contactStatsOf(const uint32_t* c) {

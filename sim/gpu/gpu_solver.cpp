@@ -55,7 +55,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
         !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, {}, error) ||
         !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, {}, error) ||
-        !grid_.build(error))
+        !grid_.build(error, contactSolve_))
       return false;
   }
   if (maxN != builtMaxN_) {
@@ -86,6 +86,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   // Rest lengths set the cell edge (DESIGN.md section 1.7): strain limiting keeps the current
   // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
   grid_.reset(hair_.particles, hair_.segments, hair_.meanSegment);
+  contactSolve_.reset(hair_.particles, hair_.segments);
   grid_.reserveFor(state_.position, state_.particleStrand,
                    2.0f * config.collision.radius + config.collision.margin,
                    glm::vec3(head.translation));
@@ -196,7 +197,7 @@ size_t GpuSolver::volumeNodesVisited() const {
 }
 
 GpuSolver::GridStats GpuSolver::gridStats() {
-  const std::vector<uint32_t> c = grid_.readCounters();
+  const std::vector<uint32_t> c = gpu::readCounters(grid_);
   GridStats g;
   g.entries = c[CSM_COUNTER_ENTRIES];
   g.capacity = grid_.entryCapacity();
@@ -307,6 +308,7 @@ void GpuSolver::bindAll() {
   const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
   hair_.bind();
   grid_.bind();
+  contactSolve_.bind();
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
   volumeSums_.bindBase(ssbo, CSM_BIND_VOLUME_SUMS);
   volumeLength_.bindBase(ssbo, CSM_BIND_VOLUME_LENGTH);
@@ -368,7 +370,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     gl::memoryBarrier(gpu::kPassBarrier);
     if (contacts) {
       timer_.stage(gpu::kContacts);
-      grid_.solve(unsigned(k), config_.collision.iterations, strands);
+      contactSolve_.run(unsigned(k), config_.collision.iterations, strands, grid_.splitViews());
     }
     timer_.stage(gpu::kStrainLimiting);
     passes_.strainLimit[uploadedField_ ? 1 : 0].runSubstep(strands, unsigned(k));
@@ -390,6 +392,7 @@ void GpuSolver::listAgain() {
                         params_.listHalf);
   paramsBuffer_.setSubData(offsetof(gpu::SimParams, bucketMask), sizeof(grid), &grid);
   grid_.bind();
+  contactSolve_.bind();
   grid_.findCandidates(&timer_, false);
 }
 
@@ -408,7 +411,7 @@ void GpuSolver::detectContacts() {
   listCandidatesNow(&timer_);
   // A tool asks for this pass's candidates: when the grid did not fit, grow it and run again
   // (stepFrame instead grows it as the next frame begins).
-  if (grid_.countersSeen(grid_.readCounters().data())) {
+  if (grid_.countersSeen(gpu::readCounters(grid_).data())) {
     writeParams({head_}, {head_});
     bindAll();
     grid_.findCandidates(&timer_);
@@ -495,7 +498,7 @@ void GpuSolver::carry(const Pose& by) {
 }
 
 ContactStats GpuSolver::readContactStats() {
-  return gpu::contactStatsOf(grid_.readCounters().data());
+  return gpu::contactStatsOf(gpu::readCounters(grid_).data());
 }
 
 unsigned GpuSolver::lastSubstepSpheres() const {

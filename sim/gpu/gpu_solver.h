@@ -19,6 +19,8 @@
 #include "gl/buffer.h"
 #include "sim/gpu/collision_grid.h"
 #include "sim/gpu/compute_pass.h"
+#include "sim/gpu/contact_readback.h"
+#include "sim/gpu/contact_solve.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/sample_ring.h"
 #include "sim/solver/volume.h"
@@ -89,14 +91,14 @@ class GpuSolver final : public Solver {
   // The pairs (a < b) closer than 2r of the last candidate pass, in no particular order;
   // `overflow` when the pair list did not hold them.
   std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr) {
-    return grid_.readPairs(overflow);
+    return gpu::readPairs(grid_, overflow);
   }
   // Per segment (by its first particle): its candidates (other segment, contact distance).
   std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates() {
-    return grid_.readCandidates();
+    return gpu::readCandidates(grid_);
   }
   // The order the list pass and the contact solve take the segments in (segment_order.comp).
-  std::vector<uint32_t> readSegmentOrder() const { return grid_.readSegmentOrder(); }
+  std::vector<uint32_t> readSegmentOrder() const { return gpu::readSegmentOrder(grid_); }
   // The grid of the last candidate pass (reads back): entries it needed, entries the buffers
   // hold (over it, the frame kept the last list), segments in no cell (not finite, or a
   // box over the cell cap), and the cell edge in metres.
@@ -143,7 +145,8 @@ class GpuSolver final : public Solver {
     gpu::ComputePass strainLimit[2];
   } passes_;
   gpu::StrandBuffers hair_;
-  gpu::CollisionGrid grid_;
+  gpu::CollisionGrid grid_;        // strand contacts: the search
+  gpu::ContactSolve contactSolve_;  // and the solve
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
   // The volume mode: the grid's geometry (the CPU reference's), its sums, per-particle
   // lengths, rest fractions and each node's field (CSM_BIND_VOLUME_FIELD), read by texel fetches.

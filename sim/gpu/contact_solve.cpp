@@ -1,0 +1,45 @@
+#include "sim/gpu/contact_solve.h"
+
+#include <glm/vec4.hpp>
+
+#include "gl/draw.h"
+#include "shaders/sim/bindings.glsl"
+#include "sim/gpu/buffer_fill.h"
+
+namespace csm::gpu {
+
+bool ContactSolve::build(std::string* error) {
+  return apply_.build("sim/contact_apply.comp", CSM_STRAND_GROUP, {}, error) &&
+         solve_[0].build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {}, error) &&
+         solve_[1].build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {{"CSM_SPLIT_VIEWS", ""}},
+                         error);
+}
+
+void ContactSolve::setListSplit(uint32_t split) {
+  solve_[1].set("listSplit", split);
+}
+
+void ContactSolve::reset(size_t particles, uint32_t segments) {
+  particles_ = particles;
+  segments_ = segments;
+  zeroed<glm::vec4>(correction_, 2 * particles);
+}
+
+void ContactSolve::bind() const {
+  correction_.bindBase(GL_SHADER_STORAGE_BUFFER, CSM_BIND_CORRECTION);
+}
+
+void ContactSolve::run(unsigned substep, int iterations, uint32_t strands, bool splitViews) {
+  if (segments_ == 0) return;
+  ComputePass& solve = solve_[splitViews];
+  for (int k = 1; k < iterations; ++k) {
+    solve.runSubstep(uint32_t(particles_), substep);
+    gl::memoryBarrier(kPassBarrier);
+    apply_.runSubstep(strands, substep);
+    gl::memoryBarrier(kPassBarrier);
+  }
+  solve.runSubstep(uint32_t(particles_), substep);
+  gl::memoryBarrier(kPassBarrier);
+}
+
+}  // namespace csm::gpu

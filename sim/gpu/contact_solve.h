@@ -1,0 +1,39 @@
+// Strand contacts on the GPU, every substep (sim/solver/contacts.h's solveContacts is the CPU
+// reference): contact_solve.comp gives each segment its corrections from the candidate lists the
+// CollisionGrid built this frame (sim/gpu/collision_grid.h), collision.iterations times;
+// contact_apply.comp moves the particles by each iteration but the last, whose corrections
+// strain_limit.comp applies.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "gl/buffer.h"
+#include "sim/gpu/compute_pass.h"
+
+namespace csm::gpu {
+
+class ContactSolve {
+ public:
+  bool build(std::string* error);
+  // The texel where the lists' second view starts (ContactCapacity::listSplit).
+  void setListSplit(uint32_t split);
+  // Sizes the corrections for `particles` particles, zeroed.
+  void reset(size_t particles, uint32_t segments);
+  // The corrections at CSM_BIND_CORRECTION.
+  void bind() const;
+  // One substep's corrections (the timer's stage is the caller's): `iterations` solves, each but
+  // the last applied to the positions and velocities of the `strands` here, the last left for
+  // the strain-limit sweep. `splitViews`: the lists run past their first view.
+  void run(unsigned substep, int iterations, uint32_t strands, bool splitViews);
+
+ private:
+  size_t particles_ = 0;
+  uint32_t segments_ = 0;
+  // Without the second view of the lists, and with it (CSM_SPLIT_VIEWS).
+  ComputePass solve_[2], apply_;
+  gl::Buffer correction_{gl::NoCreate};
+};
+
+}  // namespace csm::gpu
