@@ -150,7 +150,7 @@ void drawStiffnessInfo(const Viewer& viewer) {
 }
 
 void drawGroupContents(const ParamGroup& group, Viewer& viewer) {
-  Preset& edited = viewer.editedConfig();
+  Preset& edited = viewer.document().edited();
   bool apply = false;
   for (const PresetParam* p : group.params) {
     const bool applies = p->applies(edited);
@@ -347,9 +347,9 @@ void drawBanners(Viewer& viewer) {
     }
     ImGui::End();
   }
-  if (!viewer.hasRenderer())
+  if (!viewer.sceneView().hasRenderer())
     banner("##renderer", "The renderer did not start, so the hair is simulated but not drawn:\n" +
-                             viewer.rendererError());
+                             viewer.sceneView().rendererError());
 
   // The latest message, for a few seconds at the bottom: a refused edit or a saved file
   // should not need the Messages section opened to be seen.
@@ -394,15 +394,15 @@ void drawBanners(Viewer& viewer) {
     ImGui::End();
     ImGui::PopStyleColor(2);
   }
-  if (viewer.shaderReloadFailed()) {
+  if (viewer.sceneView().shaderReloadFailed()) {
     ImGui::SetNextWindowSize(ImVec2(640.0f, 300.0f), ImGuiCond_Appearing);
     if (ImGui::Begin("Shader reload failed: the old shaders are still in use")) {
-      if (ImGui::Button("Dismiss")) viewer.dismissShaderLog();
+      if (ImGui::Button("Dismiss")) viewer.sceneView().dismissShaderLog();
       ImGui::SameLine();
       if (ImGui::Button("Try again (F5)")) viewer.reloadShaders();
       ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
       ImGui::PushStyleColor(ImGuiCol_Text, kRed);
-      ImGui::TextUnformatted(viewer.shaderLog().c_str());
+      ImGui::TextUnformatted(viewer.sceneView().shaderLog().c_str());
       ImGui::PopStyleColor();
       ImGui::EndChild();
     }

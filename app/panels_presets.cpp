@@ -20,7 +20,7 @@ void rescan(const Viewer& viewer, PanelState& state) {
       state.selectedPreset >= 0 && state.selectedPreset < int(state.presetFiles.size())
           ? state.presetFiles[size_t(state.selectedPreset)]
           : std::filesystem::path();
-  state.presetDirs = presetDirectories(viewer.presetPath());
+  state.presetDirs = presetDirectories(viewer.document().path());
   state.presetFiles = listPresets(state.presetDirs);
   state.selectedPreset = -1;
   for (size_t i = 0; i < state.presetFiles.size(); ++i)
@@ -40,7 +40,7 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
   if (!ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) return;
   rescan(viewer, state);
   ImGui::Text("%s", viewer.preset().name.c_str());
-  const std::vector<std::string_view> changed = viewer.modifiedKeys();
+  const std::vector<std::string_view> changed = viewer.document().modifiedKeys();
   if (!changed.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(kYellow, "modified (%zu)", changed.size());
@@ -52,7 +52,7 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
     }
   }
   ImGui::TextDisabled(
-      "%s", viewer.presetPath().empty() ? "built-in preset" : viewer.presetPath().c_str());
+      "%s", viewer.document().path().empty() ? "built-in preset" : viewer.document().path().c_str());
 
   if (state.presetFiles.empty()) {
     ImGui::TextWrapped(
@@ -62,8 +62,8 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
                                  ImVec2(-1.0f, ImGui::GetTextLineHeightWithSpacing() * 5.5f))) {
     std::error_code ec;
     const std::filesystem::path open =
-        viewer.presetPath().empty() ? std::filesystem::path()
-                                    : std::filesystem::weakly_canonical(viewer.presetPath(), ec);
+        viewer.document().path().empty() ? std::filesystem::path()
+                                    : std::filesystem::weakly_canonical(viewer.document().path(), ec);
     for (size_t i = 0; i < state.presetFiles.size(); ++i) {
       const bool current = !open.empty() && open == state.presetFiles[i];
       const std::string name = shortName(state.presetFiles[i], state) + (current ? "  (open)" : "");
@@ -85,7 +85,7 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Load the selected preset (or double-click it).");
   ImGui::SameLine();
-  ImGui::BeginDisabled(viewer.presetPath().empty());
+  ImGui::BeginDisabled(viewer.document().path().empty());
   if (ImGui::Button("Save")) viewer.save();
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
@@ -110,7 +110,7 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
   ImGui::BeginDisabled(state.saveAsName.empty());
   if (ImGui::Button("Save as")) {
     const std::filesystem::path path =
-        saveAsPath(state.saveAsName, viewer.presetPath(), state.presetDirs);
+        saveAsPath(state.saveAsName, viewer.document().path(), state.presetDirs);
     if (viewer.saveAs(path.string())) {
       state.saveAsName.clear();
       state.presetsScannedAt = -1e9;

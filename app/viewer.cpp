@@ -31,10 +31,6 @@ using Clock = std::chrono::steady_clock;
 
 const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
-// After the camera or the head last moved, the view counts as moving this long: a drag
-// that pauses for a frame does not flip the quality back and forth.
-constexpr double kStillSeconds = 0.3;
-
 }  // namespace
 
 std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string* error) {
@@ -68,14 +64,10 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   ImGui_ImplOpenGL3_Init("#version 430 core");
   v->imguiReady_ = true;
 
-  v->renderer_ = HairRenderer::create(&v->rendererError_);
-  if (v->renderer_) {
-    // Pass timings by glFinish would stall every frame of the window.
-    v->renderer_->setSynchronousTiming(false);
-  } else {
-    v->log(MessageLevel::Error,
-           "The renderer did not start; the hair is simulated but not drawn: " + v->rendererError_);
-  }
+  v->view_ = std::make_unique<SceneView>();
+  if (!v->view_->hasRenderer())
+    v->log(MessageLevel::Error, "The renderer did not start; the hair is simulated but not drawn: " +
+                                    v->view_->rendererError());
 
   SimThread::Options so;
   so.makeSolver = v->options_.makeSolver;
@@ -107,10 +99,7 @@ Viewer::~Viewer() {
   frame_.reset();
   if (window_) window_->makeCurrent();
   // GL objects go before the context.
-  renderer_.reset();
-  uploaded_ = gl::Buffer(gl::NoCreate);
-  sceneFbo_ = gl::Framebuffer(gl::NoCreate);
-  sceneColor_ = gl::Texture(gl::NoCreate);
+  view_.reset();
   if (imguiReady_) {
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -164,15 +153,12 @@ void Viewer::handle(const SimEvent& e) {
   switch (e.kind) {
     case SimEvent::Kind::Opened:
       if (pendingOpen_ && pendingOpen_->ticket == e.ticket) {
-        loaded_ = pendingOpen_->preset;
-        current_ = loaded_;
-        edited_ = current_;
-        presetPath_ = pendingOpen_->path;
+        doc_.opened(pendingOpen_->preset, pendingOpen_->path);
         pendingOpen_.reset();
         userPose_ = Pose{};
         afterSceneChange();
         log(MessageLevel::Info, "opened " +
-                                    (presetPath_.empty() ? "the built-in preset" : presetPath_) +
+                                    (doc_.path().empty() ? "the built-in preset" : doc_.path()) +
                                     ": " + e.text);
         stiffnessWarning_.clear();
       }
@@ -190,8 +176,11 @@ void Viewer::handle(const SimEvent& e) {
     case SimEvent::Kind::ConfigRefused:
       // The frames carry the config that still runs: the widgets show it again.
       log(MessageLevel::Error, "not applied: " + e.text);
-      current_.scene = frame_->config;
-      edited_ = current_;
+      {
+        Preset running = doc_.current();
+        running.scene = frame_->config;
+        doc_.applied(running);
+      }
       updateTitle();
       break;
     case SimEvent::Kind::Regrew:
@@ -306,20 +295,19 @@ bool Viewer::applyConfig(const Preset& next) {
   if (!capacity.empty()) problems.push_back(capacity);
   if (!problems.empty()) {
     for (const std::string& p : problems) log(MessageLevel::Error, "not applied: " + p);
-    edited_ = current_;  // the widgets show what runs
+    doc_.discardEdits();  // the widgets show what runs
     return false;
   }
-  const bool sceneChanged = !sameScene(current_.scene, next.scene);
+  const bool sceneChanged = !sameScene(doc_.current().scene, next.scene);
   if (sceneChanged && pendingOpen_) {
     // The edit would land on the preset being replaced; the view may change meanwhile.
     log(MessageLevel::Warning, "not applied: a preset is loading; change it once it shows");
-    edited_ = current_;
+    doc_.discardEdits();
     return false;
   }
   if (sceneChanged) sim_->setConfig(next.scene);
-  current_ = next;
-  edited_ = current_;
-  ++viewVersion_;
+  doc_.applied(next);
+  view_->changed();
   updateTitle();
   return true;
 }
@@ -342,7 +330,7 @@ bool Viewer::setParam(std::string_view key, std::string_view text, std::string* 
   if (!p) {
     why = std::string(key) + ": unknown parameter";
   } else {
-    Preset next = current_;
+    Preset next = doc_.current();
     why = paramFromText(*p, next, text);
     if (why.empty()) {
       if (applyConfig(next)) return true;
@@ -359,46 +347,35 @@ bool Viewer::setParam(std::string_view key, std::string_view text, std::string* 
 }
 
 bool Viewer::save() {
-  if (presetPath_.empty()) {
+  if (doc_.path().empty()) {
     log(MessageLevel::Warning, "the built-in preset has no file: use Save as");
     return false;
   }
-  return saveAs(presetPath_);
+  return saveAs(doc_.path());
 }
 
 bool Viewer::saveAs(const std::string& path) {
   std::string error;
-  if (!csm::savePreset(path, current_, &error)) {
+  if (!doc_.saveAs(path, &error)) {
     log(MessageLevel::Error, "save failed: " + error);
     return false;
   }
-  loaded_ = current_;
-  presetPath_ = path;
   log(MessageLevel::Info, "saved " + path);
   updateTitle();
   return true;
 }
 
 void Viewer::revert() {
-  if (applyConfig(loaded_)) log(MessageLevel::Info, "reverted to the loaded preset");
-}
-
-std::vector<std::string_view> Viewer::modifiedKeys() const {
-  std::vector<std::string_view> keys;
-  for (const PresetParam& p : params())
-    if (p.group != "Camera" && !sameValue(p, loaded_, current_)) keys.push_back(p.key);
-  return keys;
+  if (applyConfig(doc_.loaded())) log(MessageLevel::Info, "reverted to the loaded preset");
 }
 
 void Viewer::afterSceneChange() {
-  ++viewVersion_;
+  view_->changed();
   updateTitle();
 }
 
 void Viewer::updateTitle() {
-  std::string t = "csmhair - " + current_.name;
-  if (!presetPath_.empty()) t += " (" + presetPath_ + ")";
-  if (modified()) t += " *";
+  const std::string t = doc_.title();
   if (t != title_) {
     title_ = t;
     window_->setTitle(t);
@@ -463,7 +440,7 @@ void Viewer::resumeFrom(long frame) {
 void Viewer::bake(double seconds) {
   playing_ = false;
   paused_ = false;
-  const double dt = std::max(1e-6, double(current_.scene.sim.dt));
+  const double dt = std::max(1e-6, double(doc_.current().scene.sim.dt));
   sim_->bake(std::max(1L, std::lround(seconds / dt)));
 }
 
@@ -507,10 +484,10 @@ std::vector<std::string_view> Viewer::keysChangedSinceA() const {
   std::vector<std::string_view> keys;
   const std::shared_ptr<const Config>& a = frame_->timeline.aConfig;
   if (!a) return keys;
-  Preset then = current_;
+  Preset then = doc_.current();
   then.scene = *a;
   for (const PresetParam& p : params())
-    if (p.group != "Camera" && !sameValue(p, then, current_)) keys.push_back(p.key);
+    if (p.group != "Camera" && !sameValue(p, then, doc_.current())) keys.push_back(p.key);
   return keys;
 }
 
@@ -525,14 +502,14 @@ void Viewer::resetHair() {
 }
 
 void Viewer::resetView() {
-  Preset next = current_;
-  next.view.camera = loaded_.view.camera;
+  Preset next = doc_.current();
+  next.view.camera = doc_.loaded().view.camera;
   applyConfig(next);
 }
 
 void Viewer::frameHead() {
   if (!frame_->head) return;  // nothing loaded yet
-  Preset next = current_;
+  Preset next = doc_.current();
   csm::frameHead(next.view.camera, next.scene, *frame_->head, frame_->headPose);
   applyConfig(next);
 }
@@ -543,31 +520,10 @@ void Viewer::resetHead() {
 }
 
 bool Viewer::reloadShaders() {
-  if (!renderer_) {
-    log(MessageLevel::Error, "no renderer to reload: " + rendererError_);
-    return false;
-  }
-  // From the source tree, unless a folder was chosen (CSM_SHADER_DIR, setShaderDirectory),
-  // so edits to shaders/ show at once.
-  if (!std::getenv("CSM_SHADER_DIR") && gl::shaderDirectory().empty()) {
-#ifdef CSM_SOURCE_DIR
-    const std::filesystem::path dir = std::filesystem::path(CSM_SOURCE_DIR) / "shaders";
-    if (std::filesystem::is_directory(dir)) gl::setShaderDirectory(dir);
-#endif
-  }
-  std::string buildLog;
-  ++viewVersion_;
-  if (renderer_->reloadShaders(&buildLog)) {
-    shaderReloadFailed_ = false;
-    shaderLog_ = buildLog;
-    log(MessageLevel::Info, "shaders reloaded from " + gl::shaderDirectory().string() +
-                                (buildLog.empty() ? "" : " (with warnings)"));
-    return true;
-  }
-  shaderReloadFailed_ = true;
-  shaderLog_ = buildLog;
-  log(MessageLevel::Error, "shader reload failed; the old shaders are still in use");
-  return false;
+  std::string message;
+  const bool ok = view_->reloadShaders(&message);
+  log(ok ? MessageLevel::Info : MessageLevel::Error, message);
+  return ok;
 }
 
 bool Viewer::vsync() const {
@@ -600,7 +556,7 @@ bool Viewer::screenshotDue() const {
 }
 
 void Viewer::viewChanged() {
-  lastMotion_ = Clock::now();
+  view_->moved();
 }
 
 void Viewer::handleKeys() {
@@ -627,22 +583,22 @@ void Viewer::handleMouse() {
   const bool left = io.MouseDown[0], right = io.MouseDown[1], middle = io.MouseDown[2];
   if (moved && (right || (left && io.KeyCtrl))) {
     // Turn the head about the neck: the hair reacts on the next step.
-    userPose_ = dragHead(userPose_, current_.view.camera, current_.scene.head, d.x, d.y);
+    userPose_ = dragHead(userPose_, doc_.current().view.camera, doc_.current().scene.head, d.x, d.y);
     sim_->setUserPose(userPose_);
     viewChanged();
   } else if (moved && (middle || (left && io.KeyShift))) {
-    Preset next = current_;
+    Preset next = doc_.current();
     panCamera(next.view.camera, d.x, d.y, window_->framebufferSize().height);
     applyConfig(next);
     viewChanged();
   } else if (moved && left) {
-    Preset next = current_;
+    Preset next = doc_.current();
     orbitCamera(next.view.camera, d.x, d.y);
     applyConfig(next);
     viewChanged();
   }
   if (io.MouseWheel != 0.0f) {
-    Preset next = current_;
+    Preset next = doc_.current();
     zoomCamera(next.view.camera, io.MouseWheel);
     applyConfig(next);
     viewChanged();
@@ -651,67 +607,16 @@ void Viewer::handleMouse() {
 
 // --- Drawing -------------------------------------------------------------------------------
 
-unsigned Viewer::positionsForRender() {
-  if (frame_->positionBuffer != 0) return frame_->positionBuffer;
-  if (!frame_->hostPositions) return 0;
-  // A solver that keeps its state on the CPU: upload each new frame's positions.
-  if (uploaded_.id() == 0) uploaded_ = gl::Buffer();
-  if (uploadedSerial_ != frame_->serial && !frame_->hostPositions->empty()) {
-    uploaded_.upload(*frame_->hostPositions);
-    uploadedSerial_ = frame_->serial;
-  }
-  return uploaded_.id();
-}
-
 void Viewer::renderScene(bool capture) {
-  const WindowSize size = window_->framebufferSize();
-  if (size.width <= 0 || size.height <= 0) return;
-  const ViewConfig& look = current_.view;
-  const bool moving =
-      std::chrono::duration<double>(Clock::now() - lastMotion_).count() < kStillSeconds;
   const bool running = !paused_ && !frame_->idle;
-  const DrawQuality quality = !capture && look.render.interactive && (moving || running)
-                                  ? DrawQuality::Interactive
-                                  : DrawQuality::Full;
-  const SceneKey key{frame_->serial, viewVersion_, size.width, size.height, quality};
-
-  if (sceneColor_.id() == 0 || sceneColor_.width() != size.width ||
-      sceneColor_.height() != size.height) {
-    sceneColor_ = gl::Texture::create2D(GL_RGBA8, size.width, size.height);
-    sceneFbo_ = gl::Framebuffer();
-    sceneFbo_.attach(GL_COLOR_ATTACHMENT0, sceneColor_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
-    drawnKey_ = SceneKey{};
+  const SceneView::Drawn drawn =
+      view_->draw(*frame_, doc_.current().view, window_->framebufferSize(), running, capture);
+  if (drawn.scene) {
+    // The simulation may write this frame's buffer again once these draws are done.
+    sim_->drawn();
+    stats_.renderStages = drawn.stages;
+    stats_.drawnStrands = drawn.strands;
   }
-  if (!(key == drawnKey_) || capture) {
-    if (renderer_ && frame_->loaded && frame_->groom) {
-      FrameView view;
-      view.scene = &frame_->config;
-      view.look = &look;
-      view.groom = frame_->groom.get();
-      view.generation = frame_->generation;
-      view.head = frame_->head.get();
-      view.headPose = frame_->headPose;
-      view.positionBuffer = positionsForRender();
-      view.width = size.width;
-      view.height = size.height;
-      view.targetFramebuffer = sceneFbo_.id();
-      if (quality == DrawQuality::Interactive) view.amount = interactiveAmount(look.render);
-      renderer_->render(view);
-      // The simulation may write this frame's buffer again once these draws are done.
-      sim_->drawn();
-      stats_.renderStages = renderer_->stageTimes();
-      stats_.drawnStrands = renderer_->drawnStrands();
-    } else {
-      sceneFbo_.clearColor(0,
-                           std::array<float, 4>{look.render.background.x, look.render.background.y,
-                                                look.render.background.z, 1.0f});
-    }
-    drawnKey_ = key;
-    lastQuality_ = quality;
-    ++scenesDrawn_;
-  }
-  sceneFbo_.blitTo(0, {0, 0, size.width, size.height}, {0, 0, size.width, size.height});
-  gl::Framebuffer::bindDefault();
 }
 
 void Viewer::takeScreenshot() {
@@ -782,7 +687,7 @@ int Viewer::run() {
     for (;;) {
       const auto now = Clock::now();
       const bool busy = now - window_->lastInput() < std::chrono::seconds(1) ||
-                        now - lastMotion_ < seconds(kStillSeconds) || screenshotPending() ||
+                        view_->moving() || screenshotPending() ||
                         pendingOpen_ || playing_ || sim_->latestSerial() != frame_->serial;
       const auto next = start + (busy ? busyBudget : idleBudget);
       if (now >= next || window_->shouldClose()) break;

@@ -1,13 +1,15 @@
 // The interactive viewer: a window showing the hair simulating in real time, with Dear ImGui
 // panels built from the one parameter table. The main loop follows Dear ImGui's
-// example_glfw_opengl3: poll, new frame, widgets, render, swap.
+// example_glfw_opengl3: poll, new frame, widgets, render, swap. In three parts: the preset as a
+// document (app/preset_document.h), the picture of the scene (app/scene_view.h), and this, the
+// loop: the window, input, the simulation thread's commands and events, messages, screenshots.
 //
 // The simulation runs on a thread of its own (SimThread) with a context shared with the
 // window's, so the UI, the camera and the panels run at display rate whatever a frame of
 // simulation costs; the view shows the latest frame the simulation finished. While the
 // camera moves or the hair simulates the scene is drawn in the preset's interactive quality
 // (render.interactive_*), in full when still and for screenshots; a scene that has not
-// changed is not drawn again (the last picture is kept in a texture).
+// changed is not drawn again (SceneView keeps the last picture in a texture).
 //
 // Every change of the scene, from a panel widget, the mouse camera, a key or a test script,
 // goes through applyConfig(), so what a test drives is what an artist drives. Changes reach
@@ -27,20 +29,17 @@
 
 #include "app/cli.h"
 #include "app/preset.h"
+#include "app/preset_document.h"
+#include "app/scene_view.h"
 #include "app/scene_setup.h"
 #include "app/sim_thread.h"
 #include "app/viewer_image.h"
 #include "app/viewer_stats.h"
-#include "gl/buffer.h"
-#include "gl/framebuffer.h"
-#include "gl/texture.h"
-#include "render/renderer.h"
 #include "sim/core/config.h"
 
 namespace csm {
 
 class GlfwWindow;
-class HairRenderer;
 struct PanelState;
 
 struct ViewerOptions {
@@ -71,9 +70,6 @@ struct ViewerMessage {
   std::chrono::steady_clock::time_point when;
 };
 
-// How the last scene picture was drawn.
-enum class DrawQuality { Full, Interactive };
-
 class Viewer {
  public:
   // Opens the window, Dear ImGui, the renderer and the simulation thread. Null when there is
@@ -103,10 +99,6 @@ class Viewer {
   bool save();  // over the opened preset
   bool saveAs(const std::string& path);
   void revert();  // back to the preset as loaded (or last saved)
-  // Parameters that differ from the loaded preset. Camera moves do not count (orbiting
-  // should not nag), but Save stores the current view.
-  std::vector<std::string_view> modifiedKeys() const;
-  bool modified() const { return !modifiedKeys().empty(); }
 
   // --- Running ---------------------------------------------------------------------------
   void setPaused(bool paused);
@@ -162,10 +154,13 @@ class Viewer {
   // The latest frame of the simulation the window has taken in: what is drawn and what the
   // Stats panel shows (time, counts, stiffness, samples, NaN).
   const SimFrame& simFrame() const { return *frame_; }
-  const Preset& preset() const { return current_; }  // what runs and is shown
-  Preset& editedConfig() { return edited_; }         // what the widgets edit
-  const Preset& loadedConfig() const { return loaded_; }
-  const std::string& presetPath() const { return presetPath_; }
+  // The preset: what runs and is shown, what the widgets edit, as loaded, its file.
+  const PresetDocument& document() const { return doc_; }
+  PresetDocument& document() { return doc_; }
+  const Preset& preset() const { return doc_.current(); }
+  // The picture of the scene: the renderer, the quality it was drawn at, the shader log.
+  const SceneView& sceneView() const { return *view_; }
+  SceneView& sceneView() { return *view_; }
   bool loading() const { return pendingOpen_.has_value(); }
   const ViewerStats& stats() const { return stats_; }
   const std::vector<ViewerMessage>& messages() const { return messages_; }
@@ -174,23 +169,13 @@ class Viewer {
   // Shows messages (one a line) in the preset problems window, titled with `note`.
   void showPresetErrors(const std::string& text, const std::string& note);
   const std::string& presetErrorsNote() const { return presetErrorsNote_; }
-  const std::string& shaderLog() const { return shaderLog_; }
-  bool shaderReloadFailed() const { return shaderReloadFailed_; }
-  void dismissShaderLog() {
-    shaderLog_.clear();
-    shaderReloadFailed_ = false;
-  }
-  bool hasRenderer() const { return renderer_ != nullptr; }
   SimThread::ImportStatus importStatus() const { return sim_->importStatus(); }
-  const std::string& rendererError() const { return rendererError_; }
   bool nanStopped() const;
   long nanFrame() const { return frame_->nanFrame; }
   uint64_t nanParticles() const { return frame_->nanParticles; }
   const Image& lastScreenshot() const { return lastScreenshot_; }
   const std::string& lastScreenshotPath() const { return lastScreenshotPath_; }
   long framesDrawn() const { return framesDrawn_; }
-  long scenesDrawn() const { return scenesDrawn_; }  // scene pictures drawn (not reused)
-  DrawQuality lastQuality() const { return lastQuality_; }
   GlfwWindow& window() { return *window_; }
   bool vsync() const;
   void setVsync(bool on);
@@ -206,14 +191,6 @@ class Viewer {
     Preset preset;
     std::string baseDir, path;
   };
-  // What a scene picture depends on: when none of it changed, the last one is shown again.
-  struct SceneKey {
-    long serial = -1, view = -1;
-    int width = 0, height = 0;
-    DrawQuality quality = DrawQuality::Full;
-    bool operator==(const SceneKey&) const = default;
-  };
-
   Viewer() = default;
   void startOpen(const Preset& preset, const std::string& baseDir, const std::string& path);
   void takeSimFrame();
@@ -223,7 +200,6 @@ class Viewer {
   void drainInbox();
   bool screenshotDue() const;
   void renderScene(bool capture);
-  unsigned positionsForRender();
   void takeScreenshot();
   void afterSceneChange();
   void updateTitle();
@@ -233,30 +209,15 @@ class Viewer {
   ViewerOptions options_;
   std::unique_ptr<GlfwWindow> window_;
   bool imguiReady_ = false;
-  std::unique_ptr<HairRenderer> renderer_;
-  std::string rendererError_;
+  std::unique_ptr<SceneView> view_;
   std::unique_ptr<SimThread> sim_;
   std::shared_ptr<const SimFrame> frame_ = std::make_shared<SimFrame>();
-  gl::Buffer uploaded_{gl::NoCreate};  // a CPU solver's positions
-  long uploadedSerial_ = -1;
 
-  // The last scene picture, shown again while nothing it depends on changes.
-  gl::Texture sceneColor_{gl::NoCreate};
-  gl::Framebuffer sceneFbo_{gl::NoCreate};
-  SceneKey drawnKey_;
-  long viewVersion_ = 0;
-  std::chrono::steady_clock::time_point lastMotion_{};  // camera or head moved
-  DrawQuality lastQuality_ = DrawQuality::Full;
-  long scenesDrawn_ = 0;
-
-  Preset current_, edited_, loaded_;
-  std::string presetPath_;
+  PresetDocument doc_;
   std::optional<PendingOpen> pendingOpen_;
   std::string openError_;  // why the last open failed
   std::vector<std::string> presetErrors_;
   std::string presetErrorsNote_;
-  std::string shaderLog_;
-  bool shaderReloadFailed_ = false;
   std::vector<ViewerMessage> messages_;
   std::thread::id uiThread_;
   mutable std::mutex inboxMutex_;

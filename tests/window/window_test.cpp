@@ -270,7 +270,7 @@ TEST_CASE(
   CHECK((now.target == camera.target && now.distance == camera.distance && now.yaw == camera.yaw &&
          now.pitch == camera.pitch && now.fov == camera.fov));
   CHECK(v->simFrame().time == Approx(t));
-  const auto changed = v->modifiedKeys();
+  const auto changed = v->document().modifiedKeys();
   CHECK(std::find(changed.begin(), changed.end(), "hairstyle.strands") != changed.end());
   CHECK(std::find(changed.begin(), changed.end(), "wind.strength") != changed.end());
 
@@ -384,7 +384,7 @@ TEST_CASE("window: a broken preset shows its messages and the scene keeps runnin
   REQUIRE(v->loadPreset((kSource / "presets/short_shake.json").string()));
   REQUIRE(v->sync());
   REQUIRE(v->setParam("hairstyle.strands", "500"));
-  const std::string opened = v->presetPath();
+  const std::string opened = v->document().path();
   const fs::path broken = dir / "broken.json";
   std::ofstream(broken) << R"({"sim": {"substeps": 0}, "wind": {"strenght": 3}})";
 
@@ -396,7 +396,7 @@ TEST_CASE("window: a broken preset shows its messages and the scene keeps runnin
   CHECK(all.find("sim.substeps") != std::string::npos);
   CHECK(all.find("strenght") != std::string::npos);
   CHECK(all.find("broken.json") != std::string::npos);
-  CHECK(v->presetPath() == opened);
+  CHECK(v->document().path() == opened);
   REQUIRE(v->sync());
   CHECK(v->simFrame().strands == 500);
 
@@ -463,15 +463,15 @@ TEST_CASE("window: a shader that fails to reload keeps the old program and shows
   c.scene.hairstyle.strands = 400;
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
-  REQUIRE(v->hasRenderer());
+  REQUIRE(v->sceneView().hasRenderer());
   v->setPaused(true);
   runFrames(*v, 2);
   const Image before = screenshot(*v, dir / "before_reload.png");
 
   std::ofstream(shaders / "render/hair.frag", std::ios::app) << "\nthis is not GLSL\n";
   CHECK_FALSE(v->reloadShaders());
-  CHECK(v->shaderReloadFailed());
-  CHECK(v->shaderLog().find("hair.frag") != std::string::npos);
+  CHECK(v->sceneView().shaderReloadFailed());
+  CHECK(v->sceneView().shaderLog().find("hair.frag") != std::string::npos);
   // The old programs still draw: the scene area below the log window is as it was.
   const Image after = screenshot(*v, dir / "after_failed_reload.png");
   const double changed = share(before, 430, 380, 880, 640, [&](const uint8_t* p) {
@@ -484,7 +484,7 @@ TEST_CASE("window: a shader that fails to reload keeps the old program and shows
   fs::copy_file(kSource / "shaders/render/hair.frag", shaders / "render/hair.frag",
                 fs::copy_options::overwrite_existing);
   CHECK(v->reloadShaders());
-  CHECK_FALSE(v->shaderReloadFailed());
+  CHECK_FALSE(v->sceneView().shaderReloadFailed());
   v.reset();
   gl::setShaderDirectory({});
   removeTemp(dir);
@@ -498,11 +498,11 @@ TEST_CASE("window: save as writes the preset and clears the modified marker", "[
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
   REQUIRE(v->setParam("wind.gusts", "1.25"));
-  CHECK(v->modified());
+  CHECK(v->document().modified());
   const fs::path out = saveAsPath("mine", (dir / "x.json").string(), {});
   CHECK(out == dir / "mine.json");
   REQUIRE(v->saveAs(out.string()));
-  CHECK_FALSE(v->modified());
+  CHECK_FALSE(v->document().modified());
   Preset back = defaultPreset();
   PresetErrors errors;
   REQUIRE(loadPreset(out.string(), back, errors));
@@ -622,7 +622,7 @@ TEST_CASE("window: interactive quality while simulating, full when still and for
   REQUIRE(v->preset().view.render.interactive);
   runSimFrames(*v, 3);
   runFrames(*v, 1);
-  CHECK(v->lastQuality() == DrawQuality::Interactive);
+  CHECK(v->sceneView().lastQuality() == DrawQuality::Interactive);
   // A share of the strands: render.interactive_amount of 400 x 4 drawn.
   const double amount = v->preset().view.render.interactiveAmount;
   CHECK(double(v->stats().drawnStrands) < 0.6 * 1600.0);
@@ -630,28 +630,28 @@ TEST_CASE("window: interactive quality while simulating, full when still and for
 
   // A screenshot is drawn in full even while the hair runs.
   screenshot(*v, dir / "running.png");
-  CHECK(v->lastQuality() == DrawQuality::Full);
+  CHECK(v->sceneView().lastQuality() == DrawQuality::Full);
   CHECK(v->stats().drawnStrands == 1600);
 
   // Paused and still: full quality, and then no new picture while nothing changes.
   v->setPaused(true);
   REQUIRE(v->sync());
   runFrames(*v, 2);
-  CHECK(v->lastQuality() == DrawQuality::Full);
-  const long scenes = v->scenesDrawn();
+  CHECK(v->sceneView().lastQuality() == DrawQuality::Full);
+  const long scenes = v->sceneView().scenesDrawn();
   runFrames(*v, 5);
-  CHECK(v->scenesDrawn() == scenes);
+  CHECK(v->sceneView().scenesDrawn() == scenes);
   // A change of the look draws again.
   REQUIRE(v->setParam("render.strand_width", "2.5"));
   runFrames(*v, 1);
-  CHECK(v->scenesDrawn() == scenes + 1);
+  CHECK(v->sceneView().scenesDrawn() == scenes + 1);
 
   // Interactive quality off: full while running too.
   REQUIRE(v->setParam("render.interactive", "false"));
   v->setPaused(false);
   runSimFrames(*v, 2);
   runFrames(*v, 1);
-  CHECK(v->lastQuality() == DrawQuality::Full);
+  CHECK(v->sceneView().lastQuality() == DrawQuality::Full);
   removeTemp(dir);
 }
 
