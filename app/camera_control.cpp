@@ -8,9 +8,9 @@
 #include <glm/common.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "render/renderer.h"
 #include "app/params.h"
 #include "sim/head/head_model.h"
+#include "render/camera.h"
 
 namespace csm {
 namespace {

@@ -7,18 +7,16 @@
 
 #include "app/capture.h"
 #include "app/import_progress.h"
-#include "sim/solver/contacts.h"
 #include "sim/run/frame_driver.h"
 #include "app/metrics.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
-#include "sim/core/pose.h"
 #include "sim/groom/cyhair.h"
 #include "sim/groom/hair_sequence.h"
-#include "sim/solver/accuracy.h"
 #include "sim/run/make_solver.h"
 #include "sim/run/simulation.h"
+#include "sim/solver/stiffness.h"
 
 namespace csm {
 namespace {

@@ -4,8 +4,6 @@
 #include <cstdio>
 #include <fstream>
 
-#include "app/preset.h"
-
 namespace csm {
 
 namespace {
@@ -131,7 +129,7 @@ nlohmann::json MetricsLog::toJson(nlohmann::json meta) const {
 }
 
 bool MetricsLog::write(const std::string& path, const nlohmann::json& meta,
-                            std::string* error) const {
+                       std::string* error) const {
   const std::string text = toJson(meta).dump(2) + "\n";
   const std::string tmp = path + ".tmp";
   {

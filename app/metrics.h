@@ -9,9 +9,7 @@
 
 #include "sim/core/config.h"
 #include "sim/groom/hairstyle.h"
-#include "sim/solver/accuracy.h"
-#include "sim/core/solver.h"
-#include "sim/solver/stiffness.h"
+#include "sim/core/results.h"
 
 namespace csm {
 

@@ -7,6 +7,7 @@
 #include <imgui_stdlib.h>
 
 #include "app/viewer.h"
+#include "sim/solver/stiffness.h"
 
 namespace csm {
 namespace {

@@ -1,6 +1,6 @@
 // The viewer's Dear ImGui panels. Parameter widgets are built by one loop over the parameter
-// table (sim/param/sim_params.h), grouped by `group` ("Simulation|Collision" is a tree node inside the
-// Simulation header), with the description as tooltip: no per-field UI code (SPlisHSPlasH's
+// table (sim/param/sim_params.h), grouped by `group` ("Simulation|Collision" is a tree node inside
+// the Simulation header), with the description as tooltip: no per-field UI code (SPlisHSPlasH's
 // GUI/imgui/imguiParameters.cpp works the same way).
 #pragma once
 

@@ -51,8 +51,8 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
       ImGui::EndTooltip();
     }
   }
-  ImGui::TextDisabled(
-      "%s", viewer.document().path().empty() ? "built-in preset" : viewer.document().path().c_str());
+  ImGui::TextDisabled("%s", viewer.document().path().empty() ? "built-in preset"
+                                                             : viewer.document().path().c_str());
 
   if (state.presetFiles.empty()) {
     ImGui::TextWrapped(
@@ -62,8 +62,9 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
                                  ImVec2(-1.0f, ImGui::GetTextLineHeightWithSpacing() * 5.5f))) {
     std::error_code ec;
     const std::filesystem::path open =
-        viewer.document().path().empty() ? std::filesystem::path()
-                                    : std::filesystem::weakly_canonical(viewer.document().path(), ec);
+        viewer.document().path().empty()
+            ? std::filesystem::path()
+            : std::filesystem::weakly_canonical(viewer.document().path(), ec);
     for (size_t i = 0; i < state.presetFiles.size(); ++i) {
       const bool current = !open.empty() && open == state.presetFiles[i];
       const std::string name = shortName(state.presetFiles[i], state) + (current ? "  (open)" : "");

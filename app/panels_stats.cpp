@@ -81,8 +81,9 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
               double(f.timeline.budget) / (1 << 20),
               f.timeline.first >= 0 ? f.timeline.last - f.timeline.first + 1 : 0L,
               f.timeline.shown >= 0 ? ", one shown" : "");
-  ImGui::TextDisabled("picture: %s quality",
-                      viewer.sceneView().lastQuality() == DrawQuality::Interactive ? "interactive" : "full");
+  ImGui::TextDisabled(
+      "picture: %s quality",
+      viewer.sceneView().lastQuality() == DrawQuality::Interactive ? "interactive" : "full");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "While the camera moves or the hair simulates the scene is drawn with\n"

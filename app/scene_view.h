@@ -14,7 +14,6 @@
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
-#include "render/renderer.h"
 #include "render/view_config.h"
 
 namespace csm {

@@ -215,7 +215,8 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
     }
   }
   if (p.timeline.keepA && loaded_) timeline_.keepAsA(*sim_);
-  if (p.timeline.budget || p.timeline.keepA) timeline_.setBudget(p.timeline.budget ? *p.timeline.budget : timeline_.budget());
+  if (p.timeline.budget || p.timeline.keepA)
+    timeline_.setBudget(p.timeline.budget ? *p.timeline.budget : timeline_.budget());
   if (p.timeline.showA) timeline_.showA(*p.timeline.showA);
   if (p.timeline.exportRange && loaded_) {
     const auto& [dir, range] = *p.timeline.exportRange;
@@ -392,8 +393,9 @@ long SimThread::bake(long frames) {
 }
 
 long SimThread::exportRecorded(const std::string& dir, long first, long last) {
-  return post(
-      [&](Pending& p, long) { p.timeline.exportRange = std::make_pair(dir, std::make_pair(first, last)); });
+  return post([&](Pending& p, long) {
+    p.timeline.exportRange = std::make_pair(dir, std::make_pair(first, last));
+  });
 }
 
 long SimThread::keepAsA() {

@@ -30,23 +30,18 @@
 #include "app/history.h"
 #include "app/metrics.h"
 #include "app/triple_buffer.h"
-#include "gl/buffer.h"
 #include "gl/context.h"
-#include "gl/fence.h"
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
 #include "sim/core/pose.h"
 #include "sim/run/timeline.h"
 #include "sim/groom/hairstyle.h"
-#include "sim/core/solver.h"
 #include "sim/run/make_solver.h"
-#include "sim/solver/stiffness.h"
 
 namespace csm {
 
 class FrameDriver;
 class Simulation;
-
 
 // One finished frame as the simulation thread hands it over. Immutable once published.
 struct SimFrame {
@@ -60,7 +55,7 @@ struct SimFrame {
   std::shared_ptr<const Groom> groom;
   GroomReport groomReport;
   std::shared_ptr<const HeadModel> head;  // the scene's head (built with the groom)
-  Pose headPose;  // where the head was at the end of the frame
+  Pose headPose;                          // where the head was at the end of the frame
   std::size_t strands = 0, particles = 0;
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)
   StiffnessInfo stiffness;
@@ -107,7 +102,7 @@ struct SimEvent {
 class SimThread {
  public:
   struct Options {
-    SolverByName makeSolver;    // by name; the thread makes its solver with its context current
+    SolverByName makeSolver;     // by name; the thread makes its solver with its context current
     std::string solver = "gpu";  // falls back to "cpu", with a warning, when it fails
     // The thread's context, sharing objects with the UI's; null for CPU solvers only. The
     // SimThread owns it and destroys it on the thread that destroys the SimThread.
@@ -154,7 +149,8 @@ class SimThread {
   long show(long frame);
   long resume(long frame);
   long bake(long frames);
-  // Writes the recorded frames first..last as DIR/frame_00001.hair, ... (sim/groom/hair_sequence.h).
+  // Writes the recorded frames first..last as DIR/frame_00001.hair, ...
+  // (sim/groom/hair_sequence.h).
   long exportRecorded(const std::string& dir, long first, long last);
   // A/B: keep the recording as it is now as A (with its parameters); show A's frame instead of
   // the recording's at the frame on show (or not).

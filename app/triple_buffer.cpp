@@ -1,7 +1,5 @@
 #include "app/triple_buffer.h"
 
-#include "gl/draw.h"
-
 namespace csm {
 
 int TripleBuffer::write(unsigned source, std::size_t bytes) {

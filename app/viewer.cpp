@@ -18,11 +18,10 @@
 #include "app/preset.h"
 #include "app/window.h"
 #include "gl/debug.h"
-#include "gl/shader_source.h"
-#include "render/hair_renderer.h"
 #include "sim/run/make_solver.h"
 #include "sim/param/sim_params.h"
 #include "sim/run/scene_checks.h"
+#include "sim/solver/stiffness.h"
 
 namespace csm {
 namespace {
@@ -66,8 +65,9 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
 
   v->view_ = std::make_unique<SceneView>();
   if (!v->view_->hasRenderer())
-    v->log(MessageLevel::Error, "The renderer did not start; the hair is simulated but not drawn: " +
-                                    v->view_->rendererError());
+    v->log(MessageLevel::Error,
+           "The renderer did not start; the hair is simulated but not drawn: " +
+               v->view_->rendererError());
 
   SimThread::Options so;
   so.makeSolver = v->options_.makeSolver;
@@ -583,7 +583,8 @@ void Viewer::handleMouse() {
   const bool left = io.MouseDown[0], right = io.MouseDown[1], middle = io.MouseDown[2];
   if (moved && (right || (left && io.KeyCtrl))) {
     // Turn the head about the neck: the hair reacts on the next step.
-    userPose_ = dragHead(userPose_, doc_.current().view.camera, doc_.current().scene.head, d.x, d.y);
+    userPose_ =
+        dragHead(userPose_, doc_.current().view.camera, doc_.current().scene.head, d.x, d.y);
     sim_->setUserPose(userPose_);
     viewChanged();
   } else if (moved && (middle || (left && io.KeyShift))) {
@@ -686,9 +687,9 @@ int Viewer::run() {
     // (which post an empty event) end the wait early.
     for (;;) {
       const auto now = Clock::now();
-      const bool busy = now - window_->lastInput() < std::chrono::seconds(1) ||
-                        view_->moving() || screenshotPending() ||
-                        pendingOpen_ || playing_ || sim_->latestSerial() != frame_->serial;
+      const bool busy = now - window_->lastInput() < std::chrono::seconds(1) || view_->moving() ||
+                        screenshotPending() || pendingOpen_ || playing_ ||
+                        sim_->latestSerial() != frame_->serial;
       const auto next = start + (busy ? busyBudget : idleBudget);
       if (now >= next || window_->shouldClose()) break;
       glfwWaitEventsTimeout(std::chrono::duration<double>(next - now).count());

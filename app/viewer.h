@@ -35,7 +35,6 @@
 #include "app/sim_thread.h"
 #include "app/viewer_image.h"
 #include "app/viewer_stats.h"
-#include "sim/core/config.h"
 
 namespace csm {
 

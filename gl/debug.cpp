@@ -6,6 +6,8 @@
 #include <cstring>
 #include <string>
 
+#include "gl/gl.h"
+
 namespace csm::gl {
 namespace {
 

@@ -3,7 +3,6 @@
 #include <functional>
 #include <string_view>
 
-#include "gl/gl.h"
 
 namespace csm::gl {
 

@@ -2,7 +2,7 @@
 // Common include for the raw-GL layer. Everything in gl works with whatever GL
 // context is current (EGL headless or a GLFW window): nothing here depends on EGL
 // except context.h.
-#include <epoxy/gl.h>
+#include <epoxy/gl.h>  // IWYU pragma: export
 
 namespace csm::gl {
 

@@ -10,7 +10,7 @@
 
 namespace csm::gl {
 
-// The text of a shader file, by its path relative to shaders/ ("sim/step.comp").
+// The text of a shader file, by its path relative to shaders/ ("sim/predict.comp").
 // When a shader directory is set (setShaderDirectory, or the CSM_SHADER_DIR environment
 // variable) and holds the file, it is read from disk, for hot reload; otherwise the copy
 // compiled into the binary is used. nullopt when neither has it.

@@ -300,7 +300,8 @@ void HairRenderer::render(const FrameView& frame) {
       std::clamp(amount.shadowMapSize > 0 ? amount.shadowMapSize : look.shadowMapSize, 16, 8192);
   const int subdivision =
       std::clamp(amount.subdivision > 0 ? amount.subdivision : look.subdivision, 1, 64);
-  geometryFor(subdivision).update(*frame.groom, frame.generation, subdivision, frame.head->spheres());
+  geometryFor(subdivision)
+      .update(*frame.groom, frame.generation, subdivision, frame.head->spheres());
   if (scalpKey_ != std::make_pair(frame.groom, frame.generation)) {
     scalp_ = makeScalpMap(*frame.groom, scalpSpheres(*frame.head));
     scalpKey_ = {frame.groom, frame.generation};

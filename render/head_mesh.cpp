@@ -8,6 +8,7 @@
 
 #include "gl/draw.h"
 #include "render/bindings.h"
+#include "sim/head/mannequin.h"
 
 namespace csm {
 

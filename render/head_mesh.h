@@ -1,6 +1,6 @@
 // The head as drawn: a mesh in the head's frame, instanced once per placement (world centre,
 // scale) of an SSBO and turned by the head's rotation (head.vert). Spheres: a unit UV sphere
-// once per head sphere. The mannequin or head.mesh: its mesh (sim/head/head_shape.h) once.
+// once per head sphere. The mannequin or head.mesh: its mesh (sim/head/head_model.h) once.
 #pragma once
 
 #include <vector>
@@ -10,7 +10,6 @@
 #include "sim/core/pose.h"
 #include "sim/head/surface_mesh.h"
 #include "sim/head/head_model.h"
-#include "sim/head/mannequin.h"
 
 namespace csm {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gl/query.h"
-#include "sim/core/solver.h"
+#include "sim/core/results.h"
 
 namespace csm {
 

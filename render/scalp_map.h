@@ -11,7 +11,6 @@
 
 #include "gl/texture.h"
 #include "sim/core/groom.h"
-#include "sim/core/pose.h"
 #include "sim/head/head_model.h"
 
 namespace csm {

@@ -16,7 +16,7 @@
 #include "gl/buffer.h"
 #include "gl/vertex_array.h"
 #include "sim/core/groom.h"
-#include "sim/core/pose.h"
+#include "sim/core/config.h"
 
 namespace csm {
 

@@ -62,7 +62,8 @@ inline Groom importFor(const Config& c, const Groom& file, GroomReport* report =
   scene.hairstyle.strands = 1000000;  // every strand of the file
   Groom out;
   std::string error;
-  const bool ok = fitFileGroom(scene, *HeadModel::require(scene), file, "imported.hair", out, &error, report);
+  const bool ok =
+      fitFileGroom(scene, *HeadModel::require(scene), file, "imported.hair", out, &error, report);
   INFO(error);
   REQUIRE(ok);
   return out;

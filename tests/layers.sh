@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# The modules point one way (docs/DESIGN.md section 2): gl -> sim -> render -> app, tools/
-# beside app. Fails on an include against that direction, on sim/ code calling GL outside
-# sim/gpu, and on a CPU test binary that links a GL, window or GUI library.
+# The modules point one way (docs/ARCHITECTURE.md section 2): gl -> sim -> render -> app, tools/
+# beside app, and inside sim/ its layers, bottom to top: base, core, param, head, groom, solver,
+# gpu, run, verify. Fails on an include against that direction (a folder includes only folders
+# below it or itself), on sim/verify in the app or the renderer, on GL outside sim/gpu, on the
+# CPU library of sim/run reaching the GPU solver, and on a CPU test binary that links a GL,
+# window or GUI library.
 #   tests/layers.sh SOURCE_DIR CPU_TEST_BINARY
 set -u
 src=$1
@@ -19,6 +22,22 @@ check() {  # check DIR PATTERN WHY
 check gl '#include "(sim|render|app|tools)/' "gl/ includes nothing above it"
 check sim '#include "(render|app|tools)/' "sim/ includes neither render/, app/ nor tools/"
 check render '#include "(app|tools)/' "render/ includes neither app/ nor tools/"
+# Inside sim/: each layer includes only the layers below it and itself.
+layers=(base core param head groom solver gpu run verify)
+for i in "${!layers[@]}"; do
+  above=("${layers[@]:i+1}")
+  [ ${#above[@]} -eq 0 ] && continue
+  pattern="#include \"sim/($(IFS='|'; echo "${above[*]}"))/"
+  check "sim/${layers[i]}" "$pattern" "sim/${layers[i]} includes no layer above it (${above[*]})"
+done
+hits=$(find "$src/sim" -maxdepth 1 -name '*.h' -o -maxdepth 1 -name '*.cpp')
+if [ -n "$hits" ]; then echo "FAIL: sim/ sources outside its layers:"; echo "$hits"; fail=1; else echo "ok: every sim/ source in a layer"; fi
+# The verification layer is for tests and tools: the program does not include it.
+check app '#include "sim/verify/' "app/ does not include sim/verify"
+check render '#include "sim/verify/' "render/ does not include sim/verify"
+# sim/run's CPU library needs no GL: only the solver factory (its own library) knows the GPU one.
+hits=$(grep -rnE '#include "sim/gpu/' "$src/sim/run" --include='*.h' --include='*.cpp' | grep -v "^$src/sim/run/make_solver\.")
+if [ -n "$hits" ]; then echo "FAIL: sim/run reaches sim/gpu outside make_solver:"; echo "$hits"; fail=1; else echo "ok: sim/run reaches sim/gpu only in make_solver"; fi
 # Only the GPU solver talks to GL, and only through gl/.
 hits=$(grep -rnE '#include [<"](epoxy|GL|EGL)/|#include "gl/' "$src/sim" --include='*.h' --include='*.cpp' | grep -v "^$src/sim/gpu/")
 if [ -n "$hits" ]; then echo "FAIL: GL outside sim/gpu:"; echo "$hits"; fail=1; else echo "ok: GL in sim/ only under sim/gpu"; fi

@@ -1,4 +1,4 @@
-// The calibrated stiffness model's claims (sim/solver/stiffness.h, DESIGN.md section 4), measured
+// The calibrated stiffness model's claims (sim/solver/stiffness.h, METHOD.md section 4), measured
 // through the Solver interface, so that the CPU reference (tests/cpu/stiffness_test.cpp) and
 // the GPU solver (tests/gpu/gpu_stiffness_test.cpp) are held to the same scenes and numbers.
 #pragma once
@@ -21,8 +21,6 @@
 #include "sim/head/head_model.h"
 
 namespace csm::test {
-
-
 
 // The built-in default preset (nodding, a light gusty breeze, head collisions only) with its
 // first `strands` strands. Strands touch only the head, so each moves as it does among all

@@ -1,4 +1,4 @@
-// Strand contacts, list pass (DESIGN.md section 1.7), one invocation per segment: sorts the
+// Strand contacts, list pass (METHOD.md section 3.8), one invocation per segment: sorts the
 // segment's candidates (pair_scatter.comp left them, with their flags and contact distances,
 // in its range in no order) into its list, the same range of this frame's lists (CANDIDATES),
 // in ascending order of the other segment; and counts crossings: pairs, from the lower

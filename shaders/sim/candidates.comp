@@ -1,4 +1,4 @@
-// Strand contacts, candidate pass (DESIGN.md section 1.7; the CPU reference is
+// Strand contacts, candidate pass (METHOD.md section 3.3; the CPU reference is
 // csm::findCandidates in sim/solver/contacts.cpp): the segment pairs closer than 2r + margin at the
 // start of the frame, one invocation per grid entry (a segment in one of its cells), in grid
 // order, so the invocations of a SIMD group usually share a bucket and read the same

@@ -71,7 +71,8 @@ vec4 extractRotation(mat3 A, float invJ, vec4 q, int iterations, vec3 axis, floa
 // --- Hair-hair collision. ---
 
 // Closest points of segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection,
-// section 5.1.9), as csm::closestSegmentPoints. Returns the squared distance.
+// section 5.1.9), as csm::closestSegmentPoints (sim/core/segment_pairs.cpp). Returns the squared
+// distance.
 float closestSegmentPoints(vec3 p0, vec3 p1, vec3 q0, vec3 q1, out float s, out float t) {
   vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
   float a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
@@ -172,7 +173,7 @@ bool crossed(uint before, uint now) {
          ((before ^ now) & kPairPositive) != 0u;
 }
 
-// The collision grid (DESIGN.md section 1.7): cells of edge P.cellEdge, at least twice the
+// The collision grid (METHOD.md section 3.6): cells of edge P.cellEdge, at least twice the
 // contact distance and half or three quarters of a mean segment (CollisionGrid::cellSize:
 // half in dense hair). Each segment is entered in every cell that its capsule of radius
 // P.cellPadding (half the candidate distance and 1% for rounding) reaches: the cells of its

@@ -1,4 +1,4 @@
-// Strand contacts, one substep (DESIGN.md section 1.7; the CPU reference is csm::solveContacts
+// Strand contacts, one substep (METHOD.md section 3.1; the CPU reference is csm::solveContacts
 // in sim/solver/contacts.cpp), one invocation per segment, after shape matching: each of the
 // segment's candidates closer than its contact distance is a compliant position constraint
 // (XPBD, one iteration of collision.iterations: lambda = -C / (W + compliance / h^2);

@@ -1,4 +1,4 @@
-// The head's distance field (sim/head/head_shape.h): a vec4 per node, the gradient (xyz) and the
+// The head's distance field (sim/head/distance_grid.h): a vec4 per node, the gradient (xyz) and the
 // distance (w), read by trilinear interpolation in the head's frame. The float twin of
 // DistanceGrid::sample.
 layout(binding = CSM_TEX_HEAD_FIELD) uniform samplerBuffer headFieldTex;

@@ -74,7 +74,7 @@ void main() {
         float rest = length(texelFetch(restTex, int(i) + 1).xyz - texelFetch(restTex, int(i)).xyz);
         vec3 next = texelFetch(posTex, int(i) + 1).xyz;
         if (rest > 0.0 && finite3(next)) {
-          // Less what float positions cannot resolve: floatBlur in sim/metrics.cpp.
+          // Less what float positions cannot resolve: floatBlur in sim/solver/accuracy.cpp.
           float blur = 1.1920929e-7 * (maxAbs(x) + maxAbs(next));  // 2^-23
           float stretch = length(next - x) - rest;
           stretch = stretch > blur ? stretch - blur : stretch < -blur ? stretch + blur : 0.0;

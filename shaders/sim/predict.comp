@@ -1,6 +1,7 @@
-// Step 1-2 of DESIGN.md section 1, one invocation per particle: kinematic roots follow the
+// Steps 1-2 of METHOD.md section 2.2, one invocation per particle: kinematic roots follow the
 // head; free particles get gravity and wind drag, and move to x* = x + h (v + h f / m). The velocity itself is not written: integration
-// (at the end of shape_match.comp) recomputes it from the positions, as the CPU solver does.
+// (at the end of shape_match.comp) recomputes it from the positions, as the CPU solver does
+// (its twin: CpuSolver's predict step, sim/solver/cpu_solver.cpp).
 #include "sim/common.glsl"
 #include "sim/wind.glsl"
 

@@ -1,5 +1,6 @@
-// Steps 3-5 of DESIGN.md section 1, one invocation per strand: shape matching of every
-// region, goals, and integration.
+// Steps 3-5 of METHOD.md section 2, one invocation per strand: shape matching of every
+// region, goals, and integration. The CPU twin: CpuSolver (sim/solver/cpu_solver.cpp), on the
+// regions sim/solver/stiffness.h builds for both.
 //
 // Why one invocation per strand: the region sums and the goal sums are prefix sums along
 // the strand (Rivers & James 2007, FastLSM), and a strand has 8-25 particles (the paper's

@@ -1,4 +1,4 @@
-// Step 6 of DESIGN.md section 1, one invocation per strand: the strand contacts' corrections
+// Step 6 of METHOD.md section 2.7, one invocation per strand: the strand contacts' corrections
 // (contact_solve.comp: each particle moves by the mean of what its segments sent), strain
 // limiting in one sweep from root to tip (paper section 3.2: each segment is fixed against an
 // already final parent, so no iteration), pushing out of the head (its distance field, or its
@@ -185,7 +185,7 @@ bool pushOutOfFieldHead(inout vec3 p, vec3 prev, mat4 head, float r, float maxLe
 // from `prev` no longer than maxLength: when the radial projection is out of reach, take the
 // nearest point of the circle where the sphere meets the ball of reach around prev. (Moving
 // along the chord toward prev instead would jump: a chord between two points on the sphere
-// always cuts through it.) The float twin of pushOutOfSphere in sim/cpu/cpu_solver.cpp.
+// always cuts through it.) The float twin of pushOutOfSphere in sim/solver/cpu_solver.cpp.
 bool pushOutOfSphere(inout vec3 p, vec3 prev, vec3 c, float radius, float maxLength) {
   vec3 d = p - c;
   float len2 = dot(d, d);

@@ -37,7 +37,7 @@ inline const char* collisionModeName(CollisionMode m) {
 }
 enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
 // What the head is, for collision and drawing: the built-in mannequin's signed distance field
-// (sim/head/head_shape.h), or the spheres of head.spheres, as the paper does.
+// (sim/head/head_model.h), or the spheres of head.spheres, as the paper does.
 enum class HeadShape : int { Sdf = 0, Spheres = 1 };
 // How a strand-contact iteration moves a segment (sim/solver/contacts.h): sweep takes its pairs in
 // order, each from where the ones before it left the segment; jacobi moves it by the mean of
@@ -46,8 +46,8 @@ enum class ContactSolve : int { Sweep = 0, Jacobi = 1 };
 // Where the generator parts the hair: none (it falls from the crown all round), down the middle,
 // or on the head's left (+x) or right (-x).
 enum class Parting : int { None = 0, Centre = 1, Left = 2, Right = 3 };
-// How stiffness is given (sim/solver/stiffness.h). Paper: a window in particles and alpha = the pull
-// toward the goals per step, as the paper does; the hair gets stiffer with more substeps and
+// How stiffness is given (sim/solver/stiffness.h). Paper: a window in particles and alpha = the
+// pull toward the goals per step, as the paper does; the hair gets stiffer with more substeps and
 // softer with more particles. Calibrated: a window in metres and a bending stiffness per unit
 // mass; each step pulls by alpha = min(1, k h^2), so the hair is the same at any step size,
 // resolution and density.

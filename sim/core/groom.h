@@ -1,5 +1,5 @@
 // A groom: the rest shape of every strand in the head's local frame, before simulation.
-// Built by the hairstyle generator (sim/groom/hairstyle.h) or read from a file (sim/io/).
+// Built by the hairstyle generator (sim/groom/hairstyle.h) or read from a file (sim/groom/).
 #pragma once
 
 #include <cstddef>

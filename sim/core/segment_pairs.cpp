@@ -173,4 +173,13 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
   return out;
 }
 
+glm::dvec3 separationDirection(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
+                               const glm::dvec3& q1, double s, double t, double d) {
+  const glm::dvec3 between = glm::mix(p0, p1, s) - glm::mix(q0, q1, t);
+  if (d > 1e-12) return between / d;
+  const glm::dvec3 n = glm::cross(p1 - p0, q1 - q0);
+  const double len = glm::length(n);
+  return len > 1e-15 ? n / len : glm::dvec3(0.0, 1.0, 0.0);
+}
+
 }  // namespace csm

@@ -19,10 +19,16 @@ struct SegmentPair {
   bool operator==(const SegmentPair& o) const { return a == o.a && b == o.b; }
 };
 
-// Closest points of segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection, 5.1.9).
+// Closest points of segments p0-p1 and q0-q1 (Ericson, Real-Time Collision Detection, 5.1.9);
+// the GPU's are shaders/sim/common.glsl's closestSegmentPoints.
 // Returns the squared distance.
 double closestSegmentPoints(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
                             const glm::dvec3& q1, double& s, double& t);
+
+// The unit direction from q's closest point to p's, for segments p0-p1 and q0-q1 with closest
+// points at s and t, d apart; where they touch, their common normal (+y when parallel too).
+glm::dvec3 separationDirection(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
+                               const glm::dvec3& q1, double s, double t, double d);
 
 // True when segments a and b may touch: both exist and are not neighbours along one strand
 // (pairs of one strand closer than `strandGap` segments are skipped).

@@ -21,8 +21,6 @@ namespace csm {
 
 class HeadModel;  // sim/head/head_model.h
 
-
-
 // Everything a solver's next frames depend on, as bytes in the solver's own precision
 // (positions, velocities, each region's rotation, its clock and head): restored, the solver
 // runs on exactly as it did from there (the viewer's timeline, sim/run/frame_recording.h).

@@ -8,8 +8,6 @@
 #include <glm/vec3.hpp>
 
 #include "gl/caps.h"
-#include "gl/draw.h"
-#include "sim/solver/contacts.h"
 #include "sim/gpu/buffer_fill.h"
 #include "shaders/sim/bindings.glsl"
 
@@ -33,7 +31,6 @@ constexpr uint64_t kSparsePairs = 20;
 // segment stretched to ~1.5 mean lengths or more misses it. Such a segment is in no cell this
 // frame (counted as oversize), which keeps the pass bounded when a simulation explodes.
 constexpr uint32_t kMaxSegmentCells = CSM_MAX_SEGMENT_CELLS;
-
 
 }  // namespace
 
@@ -211,8 +208,7 @@ void CollisionGrid::findCandidates(StageTimer* timer, bool measured) {
   gl::memoryBarrier(kPassBarrier);
   // One invocation per entry: how many there are is known on the GPU only (no read-back inside
   // a frame), so the dispatch is sized there.
-  dispatchFor(CSM_COUNTER_ENTRIES, capacity_.entries(), CSM_CONTACT_GROUP,
-              CSM_DISPATCH_CANDIDATES);
+  dispatchFor(CSM_COUNTER_ENTRIES, capacity_.entries(), CSM_CONTACT_GROUP, CSM_DISPATCH_CANDIDATES);
   passes_.candidates.runIndirect(dispatch_, CSM_DISPATCH_CANDIDATES);
   gl::memoryBarrier(kPassBarrier);
   // Counting sort of the pairs by segment: the same scan over the segments' pair counts, its
@@ -286,7 +282,6 @@ void CollisionGrid::clearFrameCounters() {
   counters_.clearToZero(0, CSM_COUNTERS_PER_FRAME * sizeof(uint32_t));
 }
 
-
 void CollisionGrid::scan(uint32_t blocks, uint32_t totalSlot) {
   // Block sums, their scan, each block rescanned from its offset (scan_*.comp).
   passes_.scanBlocks.set("blocks", blocks).run(blocks);
@@ -311,7 +306,6 @@ bool CollisionGrid::countersSeen(const uint32_t* c) {
   }
   return grew;
 }
-
 
 void CollisionGrid::growEntries(uint64_t needed) {
   if (!capacity_.growEntries(needed)) return;

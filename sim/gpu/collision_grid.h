@@ -7,10 +7,10 @@
 // GPU by what the frame has (dispatch_size.comp): a generous capacity costs memory, not time. The
 // substeps' solve is ContactSolve's (sim/gpu/contact_solve.h); how large the buffers may grow is
 // ContactCapacity's (sim/gpu/contact_capacity.h); tests read the lists back through
-// sim/gpu/contact_readback.h. The grid's and the pair list's capacities are sized at reset for a search of the hair as it
-// stands (sizeForLastSearch), then follow what the last search needed: its counters are
-// copied behind a fence as it ends and read as the next one begins (beginFrame), so the buffers
-// grow at the same search whatever the GPU's timing and whoever reads the samples (the
+// sim/gpu/contact_readback.h. The grid's and the pair list's capacities are sized at reset for a
+// search of the hair as it stands (sizeForLastSearch), then follow what the last search needed: its
+// counters are copied behind a fence as it ends and read as the next one begins (beginFrame), so
+// the buffers grow at the same search whatever the GPU's timing and whoever reads the samples (the
 // simulation stays deterministic). A search over either capacity keeps each segment's list from
 // the search before (its pairs, evaluated where the hair is now; none after a reset or a growth
 // of the pair list) and says so in the counters (entries or pairs needed > capacity), and the
@@ -36,7 +36,7 @@
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/split_view.h"
 #include "sim/gpu/stage_timer.h"
-#include "sim/core/solver.h"
+#include "sim/core/results.h"
 
 namespace csm::gpu {
 
@@ -142,25 +142,25 @@ class CollisionGrid {
   double meanSegment_ = 0.0;
   double cellPerSegment_ = 0.5;  // cell edge in mean rest segments (cellSize)
   uint32_t buckets_ = 0, scanBlocks_ = 0;
-  uint32_t segmentScan_ = 0;           // counts in the per-segment scan (a power of two)
-  ContactCapacity capacity_;           // the entries and pairs the buffers hold, and may
-  ContactSolve* solve_ = nullptr;      // told where the lists' second view starts
-  uint32_t half_ = 0;                  // which of candidates_ (and of candidateRange_'s halves)
-                                       // holds this frame's lists
-  bool lastFrameListed_ = false;       // whether the other buffer holds last frame's lists (and
-                                       // the counters its measures)
-  bool searchPending_ = false;         // searchCounters_ holds a search's, not yet read
+  uint32_t segmentScan_ = 0;       // counts in the per-segment scan (a power of two)
+  ContactCapacity capacity_;       // the entries and pairs the buffers hold, and may
+  ContactSolve* solve_ = nullptr;  // told where the lists' second view starts
+  uint32_t half_ = 0;              // which of candidates_ (and of candidateRange_'s halves)
+                                   // holds this frame's lists
+  bool lastFrameListed_ = false;   // whether the other buffer holds last frame's lists (and
+                                   // the counters its measures)
+  bool searchPending_ = false;     // searchCounters_ holds a search's, not yet read
 
   struct Passes {
     ComputePass count, scanBlocks, scanSums, scanAdd, scatter, dispatchSize, candidates, order;
     // Without the second view of the sides and the lists, and with it (CSM_SPLIT_VIEWS).
     ComputePass pairScatter[2], lists[2];
   } passes_;
-  gl::Buffer gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate},
-      scanBlockSums_{gl::NoCreate}, entries_{gl::NoCreate}, counters_{gl::NoCreate},
-      segmentPairs_{gl::NoCreate}, segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate},
-      pairList_{gl::NoCreate}, pairSides_{gl::NoCreate}, candidateRange_{gl::NoCreate},
-      dispatch_{gl::NoCreate}, searchCounters_{gl::NoCreate}, segmentOrder_{gl::NoCreate};
+  gl::Buffer gridCount_{gl::NoCreate}, gridStart_{gl::NoCreate}, scanBlockSums_{gl::NoCreate},
+      entries_{gl::NoCreate}, counters_{gl::NoCreate}, segmentPairs_{gl::NoCreate},
+      segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate}, pairList_{gl::NoCreate},
+      pairSides_{gl::NoCreate}, candidateRange_{gl::NoCreate}, dispatch_{gl::NoCreate},
+      searchCounters_{gl::NoCreate}, segmentOrder_{gl::NoCreate};
   gl::Fence searchEnd_;  // after the copy to searchCounters_
   gl::Buffer candidates_[2] = {gl::Buffer(gl::NoCreate), gl::Buffer(gl::NoCreate)};
   // Views of the buffers that grow with the hair: texelFetch (entries) and image load / store

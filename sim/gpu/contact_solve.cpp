@@ -2,7 +2,6 @@
 
 #include <glm/vec4.hpp>
 
-#include "gl/draw.h"
 #include "shaders/sim/bindings.glsl"
 #include "sim/gpu/buffer_fill.h"
 

@@ -83,7 +83,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
     if (failure_.empty()) failure_ = "the GPU solver's shaders did not build";
     gl::logMessage(gl::LogLevel::Error, failure_);
   }
-  // Rest lengths set the cell edge (DESIGN.md section 1.7): strain limiting keeps the current
+  // Rest lengths set the cell edge (METHOD.md section 3.6): strain limiting keeps the current
   // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
   grid_.reset(hair_.particles, hair_.segments, hair_.meanSegment);
   contactSolve_.reset(hair_.particles, hair_.segments);
@@ -342,7 +342,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   writeParams(poses, before);
   bindAll();
   timer_.beginFrame();
-  // The frame's candidates, from where it starts (DESIGN.md section 1.7).
+  // The frame's candidates, from where it starts (METHOD.md section 3.3).
   if (contacts) grid_.findCandidates(&timer_);
 
   const uint32_t particles = uint32_t(hair_.particles), strands = uint32_t(hair_.strands);
@@ -534,6 +534,25 @@ void GpuSolver::requestSample(long frame) {
 
 std::optional<FrameSample> GpuSolver::takeSample(bool wait) {
   return samples_.take(wait);
+}
+
+std::unique_ptr<GpuSolver> GpuSolver::start(std::string* error) {
+  // Without a current context GL calls go to the dispatcher's no-op stubs: GL_VERSION is null.
+  if (gl::versionString() == nullptr) {
+    if (error)
+      *error =
+          "the GPU solver needs a current OpenGL 4.3 context and none is current "
+          "(headless runs make one through EGL; or use --solver cpu)";
+    return nullptr;
+  }
+  const gl::Caps caps = gl::queryCaps();
+  if (caps.major * 10 + caps.minor < 43) {
+    if (error)
+      *error = "the GPU solver needs OpenGL 4.3 compute shaders; the context is " + caps.version +
+               " on " + caps.renderer + " (use --solver cpu)";
+    return nullptr;
+  }
+  return create(error);
 }
 
 }  // namespace csm

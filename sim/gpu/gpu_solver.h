@@ -1,4 +1,4 @@
-// Chain Shape Matching on the GPU: the step of DESIGN.md section 1 in GLSL compute shaders
+// Chain Shape Matching on the GPU: the step of METHOD.md section 2 in GLSL compute shaders
 // (shaders/sim/), the same math in the same order as CpuSolver, in float. Everything stays
 // on the GPU; nothing is read back inside a frame.
 //
@@ -38,6 +38,9 @@ class GpuSolver final : public Solver {
   // Needs a current GL 4.3 context; compiles the shaders. Null, with the compiler's log in
   // `error`, when they do not build.
   static std::unique_ptr<GpuSolver> create(std::string* error);
+  // The same, after checking that a context is current and runs GL 4.3 compute shaders: null
+  // with a message that says what to do instead (--solver cpu) otherwise.
+  static std::unique_ptr<GpuSolver> start(std::string* error);
   ~GpuSolver() override;
 
   std::string_view name() const override { return "gpu"; }
@@ -145,7 +148,7 @@ class GpuSolver final : public Solver {
     gpu::ComputePass strainLimit[2];
   } passes_;
   gpu::StrandBuffers hair_;
-  gpu::CollisionGrid grid_;        // strand contacts: the search
+  gpu::CollisionGrid grid_;         // strand contacts: the search
   gpu::ContactSolve contactSolve_;  // and the solve
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
   // The volume mode: the grid's geometry (the CPU reference's), its sums, per-particle
@@ -155,12 +158,13 @@ class GpuSolver final : public Solver {
       volumeField_{gl::NoCreate};
   gl::BufferTexture volumeSumsTex_{gl::NoCreate}, volumeRestTex_{gl::NoCreate},
       volumeFieldTex_{gl::NoCreate};
-  // The head's distance field (sim/head/head_shape.h), read by texel fetches; one node when unused.
+  // The head's distance field (sim/head/distance_grid.h), read by texel fetches; one node when
+  // unused.
   gl::Buffer headField_{gl::NoCreate};
   gl::BufferTexture headFieldTex_{gl::NoCreate};
   const DistanceGrid* uploadedField_ = nullptr;
   std::shared_ptr<const HeadModel> uploadedHead_;  // the model uploadedField_ belongs to
-  int substepsWritten_ = 0;  // steps of the last writeParams
+  int substepsWritten_ = 0;                        // steps of the last writeParams
   gpu::StageTimer timer_;
   bool measureContacts_ = false;
   // With hair-hair off and the measures on: frames stepped since the last measure search (1:

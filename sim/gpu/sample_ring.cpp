@@ -4,7 +4,6 @@
 #include <bit>
 #include <vector>
 
-#include "gl/draw.h"
 #include "shaders/sim/bindings.glsl"
 #include "sim/gpu/collision_grid.h"
 

@@ -11,7 +11,7 @@
 
 #include "gl/buffer.h"
 #include "gl/fence.h"
-#include "sim/core/solver.h"
+#include "sim/core/results.h"
 
 namespace csm::gpu {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gl/query.h"
-#include "sim/core/solver.h"
+#include "sim/core/results.h"
 
 namespace csm::gpu {
 

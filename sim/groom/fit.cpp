@@ -11,7 +11,6 @@
 #include <glm/vec3.hpp>
 
 #include "sim/head/distance_grid.h"
-#include "sim/head/head_model.h"
 
 namespace csm::io {
 namespace {

@@ -1,6 +1,6 @@
 // Fitting a groom read from a file onto the simulation's head: files come in arbitrary
 // units (centimetres, or normalised to unit size) and placements; the solver wants metres
-// with the roots on the head spheres (DESIGN.md §3: y up, head ~0.1 m in radius).
+// with the roots on the head spheres (METHOD.md §9: y up, head ~0.1 m in radius).
 #pragma once
 
 #include <cstddef>
@@ -11,8 +11,6 @@
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
 #include "sim/head/distance_grid.h"
-#include "sim/head/mannequin.h"
-#include "sim/head/head_model.h"
 
 namespace csm::io {
 
@@ -37,7 +35,7 @@ struct FitOptions {
   // head sphere (along that sphere's normal through the root); the strand keeps its shape.
   // Surface points buried inside another sphere are passed over while others exist.
   bool snapRoots = false;
-  // With a field (the mannequin, sim/head/head_shape.h), roots snap to its nearest surface point
+  // With a field (the mannequin, sim/head/mannequin.h), roots snap to its nearest surface point
   // instead of the spheres'.
   const DistanceGrid* headField = nullptr;
 };

@@ -12,7 +12,6 @@
 #include <glm/gtc/constants.hpp>
 
 #include "sim/core/segment_pairs.h"
-#include "sim/solver/contacts.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/mannequin.h"
 #include "sim/head/head_model.h"
@@ -24,7 +23,7 @@
 namespace csm {
 namespace {
 
-// Landmarks of the head frame the groom is laid out by (DESIGN.md section 3: y up, the face
+// Landmarks of the head frame the groom is laid out by (METHOD.md section 9: y up, the face
 // towards +z): the crown's depth, a side parting's offset from the middle, the brow's height.
 constexpr double kCrownZ = -0.02, kSideParting = 0.035, kBrowY = 0.012;
 
@@ -270,8 +269,8 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
 // pushed apart at rest").
 constexpr double kSeparation = 2.2;
 constexpr int kSweeps = 3;
-// As in the contact solve (sim/solver/contacts.cpp, kLever): near a root, a pair asks the free end for its
-// depth over the lever arm; no end moves further than this many times the pair's depth.
+// As in the contact solve (sim/solver/contacts.cpp, kLever): near a root, a pair asks the free end
+// for its depth over the lever arm; no end moves further than this many times the pair's depth.
 constexpr double kSeparationLever = CSM_CONTACT_LEVER;
 
 void pushApart(std::vector<glm::dvec3>& x, const std::vector<double>& w, uint32_t a, uint32_t b,
@@ -282,8 +281,7 @@ void pushApart(std::vector<glm::dvec3>& x, const std::vector<double>& w, uint32_
   const double ga0 = w[a] * (1 - s), ga1 = w[a + 1] * s, gb0 = w[b] * (1 - t), gb1 = w[b + 1] * t;
   const double W = ga0 * (1 - s) + ga1 * s + gb0 * (1 - t) + gb1 * t;
   if (W < 1e-12) return;  // both ends held, or the contact at a held root
-  double separation;
-  const glm::dvec3 n = contactNormal(x[a], x[a + 1], x[b], x[b + 1], s, t, d, 0, separation);
+  const glm::dvec3 n = separationDirection(x[a], x[a + 1], x[b], x[b + 1], s, t, d);
   const double depth = target - d;
   const double most = std::max({ga0, ga1, gb0, gb1}) / W;  // the furthest end's move a depth
   const double lambda = depth / W * std::min(1.0, kSeparationLever / most);
@@ -518,8 +516,8 @@ void keepStrands(Groom& g, size_t count) {
 
 }  // namespace
 
-bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseDir, Groom& out, std::string* error,
-                GroomReport* report, const ImportProgress& progress) {
+bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseDir, Groom& out,
+                std::string* error, GroomReport* report, const ImportProgress& progress) {
   GroomReport local;
   GroomReport& r = report ? *report : local;
   r = {};
@@ -540,7 +538,8 @@ bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseD
     if (error) *error = read.error;
     return false;
   }
-  if (!fitFileGroom(c, head, std::move(*read.groom), path, out, error, &r, !read.rootsKnown, progress))
+  if (!fitFileGroom(c, head, std::move(*read.groom), path, out, error, &r, !read.rootsKnown,
+                    progress))
     return false;
   // The file's strands and repairs: those the reader dropped, then those the scene did.
   r.fileStrands += read.repair.droppedStrands;
@@ -550,8 +549,9 @@ bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseD
   return true;
 }
 
-bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::string& path, Groom& out, std::string* error,
-                  GroomReport* report, bool findRoots, const ImportProgress& progress) {
+bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::string& path,
+                  Groom& out, std::string* error, GroomReport* report, bool findRoots,
+                  const ImportProgress& progress) {
   // The stages' shares of a large import's time (5 M points: csmhair-bench --only import).
   auto at = [&](const char* stage, double done) {
     if (progress) progress(stage, done);

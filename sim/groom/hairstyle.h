@@ -66,8 +66,9 @@ std::string groomReportText(const GroomReport& r);
 // snapped to the scalp, repaired at the scene's resolution, resampled to the particles the
 // tolerance needs, and pushed out of the head. Returns false with a message naming the file
 // (and byte offset or line) on failure.
-bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseDir, Groom& out, std::string* error,
-                GroomReport* report = nullptr, const ImportProgress& progress = {});
+bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseDir, Groom& out,
+                std::string* error, GroomReport* report = nullptr,
+                const ImportProgress& progress = {});
 
 // What buildGroom does with a groom file once read (`g`, from `path`): the strands kept, the
 // fit to the head, the roots snapped, the second repair (strands shorter than half of
@@ -75,9 +76,9 @@ bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseD
 // resampling, the particles pushed out of the head, the checks. With `findRoots` (a format that
 // does not say which end is the root: OBJ curves) each strand first starts at the end that lies
 // on the scalp the groom's first ends share (turned round where its other end does).
-bool fitFileGroom(const Config& c, const HeadModel& head, Groom g, const std::string& path, Groom& out, std::string* error,
-                  GroomReport* report = nullptr, bool findRoots = false,
-                  const ImportProgress& progress = {});
+bool fitFileGroom(const Config& c, const HeadModel& head, Groom g, const std::string& path,
+                  Groom& out, std::string* error, GroomReport* report = nullptr,
+                  bool findRoots = false, const ImportProgress& progress = {});
 
 // Points of an imported strand closer than this share of hairstyle.segment_length are merged
 // (0.1 mm at the default 2 cm): far below any groom's sampling (a dense one has a point a

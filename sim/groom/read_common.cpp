@@ -35,7 +35,6 @@ std::string checkGroomStructure(const Groom& groom) {
 
 namespace detail {
 
-
 void finishGroom(GroomReadResult& result, Groom groom, std::string_view name,
                  std::function<std::string(size_t point, int axis)> where,
                  std::vector<size_t> fileStrand) {
@@ -60,7 +59,6 @@ std::function<std::string(size_t point, int axis)> byteOfPoint(uint64_t base, ui
     return "byte " + std::to_string(base + stride * point + 4 * uint64_t(axis));
   };
 }
-
 
 }  // namespace detail
 }  // namespace csm::io

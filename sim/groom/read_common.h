@@ -48,7 +48,6 @@ std::string checkGroomStructure(const Groom& groom);
 
 namespace detail {
 
-
 // The end of every reader: the first repair (io/repair.h: strands with a coordinate that is not
 // finite or with fewer than two distinct points dropped, repeated points merged), each note
 // placed in the file by `where`; sets result.groom, or result.error when no strand is left.
@@ -61,7 +60,6 @@ void finishGroom(GroomReadResult& result, Groom groom, std::string_view name,
 // "byte N" of a coordinate of point i when point i's x lies at byte base + stride * i.
 std::function<std::string(size_t point, int axis)> byteOfPoint(uint64_t base, uint64_t stride);
 
-
 // Reads the file at `path` (refusing one over kMaxFileBytes before allocating) and hands its
 // bytes to `read(bytes, path)`; a file that cannot be read is an error naming it.
 template <class Reader>
@@ -71,7 +69,6 @@ GroomReadResult readGroomFile(const std::string& path, Reader read) {
   if (!bytes) return result;
   return read(std::span<const std::byte>(*bytes), std::string_view(path));
 }
-
 
 }  // namespace detail
 }  // namespace csm::io

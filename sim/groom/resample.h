@@ -1,6 +1,6 @@
 // Resampling groom strands to the particle counts the solver wants. Groom files carry
 // 50-200 points per strand for rendering; the paper simulates 8-25 particles per strand
-// by length and curl (DESIGN.md §1), and the picture's smoothness comes from spline
+// by length and curl (METHOD.md §5), and the picture's smoothness comes from spline
 // subdivision at draw time, not from more particles.
 #pragma once
 

@@ -27,6 +27,7 @@ struct DistanceGrid {
   }
   // Distance at p (trilinear), and the interpolated gradient when asked (not normalised). Far
   // outside the grid the distance is to the grid's box, whose border lies outside the shape.
+  // The GPU reads the same nodes the same way (shaders/sim/head_field.glsl).
   double sample(const glm::dvec3& p, glm::dvec3* gradient = nullptr) const;
 };
 

@@ -16,8 +16,8 @@ struct ObjReadResult {
   std::string error;                // "path:line: message" or "path: message" on failure
 };
 
-// Reads the OBJ at `path` as a closed surface in metres, in the head frame (DESIGN.md
-// section 3). Polygons are split into fans; vertices at the same position are merged (exporters
+// Reads the OBJ at `path` as a closed surface in metres, in the head frame (METHOD.md
+// section 9). Polygons are split into fans; vertices at the same position are merged (exporters
 // split them at texture seams); the surface is turned outwards when it faces in; normals are
 // the angle-weighted normals of the triangles (the file's are not used). Refused: a missing
 // file; a vertex coordinate that is not a finite number; a face with fewer than three vertices

@@ -2,9 +2,10 @@
 // its key (a dotted path that mirrors the preset's JSON), label, group, range, description and
 // what a change needs. The row's type comes from the field's C++ type, so a row cannot
 // disagree with its field (an unsupported type is a compile error), and defaults are the
-// config structs' own. Each module declares the parameters of its own config (sim/param/sim_params.h,
-// render/view_params.h); the program lifts them into one list over the whole preset
-// (app/params.h), which the JSON reader and writer, --set, --list-params and the panels walk.
+// config structs' own. Each module declares the parameters of its own config
+// (sim/param/sim_params.h, render/view_params.h); the program lifts them into one list over the
+// whole preset (app/params.h), which the JSON reader and writer, --set, --list-params and the
+// panels walk.
 #pragma once
 
 #include <functional>

@@ -171,7 +171,7 @@ std::vector<Param<Config>> build() {
           "sim.stiffness_model", "Stiffness model", "Simulation", &Config::sim,
           &SimConfig::stiffnessModel, 0, 0,
           "calibrated: a window in metres and a bending stiffness; the hair looks the same at any "
-          "substeps, particle count and density (DESIGN.md section 4). paper: a window in "
+          "substeps, particle count and density (METHOD.md section 4). paper: a window in "
           "particles and alpha per step, as the paper does: more substeps stiffen the hair, more "
           "particles soften it.",
           Effect::Live)
@@ -242,7 +242,7 @@ std::vector<Param<Config>> build() {
             "Mass per metre of strand (kg/m); particle masses follow segment lengths. It describes "
             "the hair and changes nothing in its motion: shape matching, gravity, wind drag and "
             "the contact accelerations are all per unit mass, so a uniform mass scale cancels "
-            "(DESIGN.md section 4); the panel shows EI = bending stiffness x density from it.",
+            "(METHOD.md section 4); the panel shows EI = bending stiffness x density from it.",
             Effect::Info)
           .logScale(),
       param("sim.dftl", "DFTL correction", "Simulation", &Config::sim, &SimConfig::dftl, 0.0, 1.0,

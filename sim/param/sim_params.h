@@ -1,6 +1,6 @@
-// The simulation's parameters (sim/param/param_table.h): every field of sim/core/config.h's Config that a
-// preset sets, declared once here. The program lifts them, with the view's, into the preset's
-// one list (app/params.h).
+// The simulation's parameters (sim/param/param_table.h): every field of sim/core/config.h's Config
+// that a preset sets, declared once here. The program lifts them, with the view's, into the
+// preset's one list (app/params.h).
 #pragma once
 
 #include <string_view>

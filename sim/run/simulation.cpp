@@ -4,7 +4,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/solver/cpu_solver.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/param/sim_params.h"
 #include "sim/run/scene_checks.h"
@@ -59,7 +58,7 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     lastUserPose_ = userPose_;
     startingSolver();
     solver_->setHead(head_);
-  solver_->reset(*groom_, config_, lastPose_);
+    solver_->reset(*groom_, config_, lastPose_);
     return solverReady(error);
   }
   config_ = config;

@@ -22,8 +22,8 @@ namespace csm {
 // roots 10-12 cm from the neck's axis at 1.2-1.5 m/s.
 inline constexpr double kMaxRootSpeed = 2.0;
 
-// A point of a running scene to go back to (sim/run/frame_recording.h): the solver's whole state, the
-// clock, the head's poses and the config it ran with, for the groom of one generation.
+// A point of a running scene to go back to (sim/run/frame_recording.h): the solver's whole state,
+// the clock, the head's poses and the config it ran with, for the groom of one generation.
 struct SimulationState {
   long generation = -1;  // the groom it belongs to (Simulation::generation)
   long frame = 0;

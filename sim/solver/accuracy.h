@@ -15,7 +15,6 @@
 
 namespace csm {
 
-
 // Rest length of every segment i -> i+1 of the groom (0 after a strand's last particle).
 std::vector<double> restLengths(const Groom& groom);
 

@@ -53,10 +53,7 @@ glm::dvec3 contactNormal(const glm::dvec3& p0, const glm::dvec3& p1, const glm::
     }
   }
   separation = d;
-  if (d > 1e-12) return between / d;
-  const glm::dvec3 n = glm::cross(p1 - p0, q1 - q0);
-  const double len = glm::length(n);
-  return len > 1e-15 ? n / len : glm::dvec3(0.0, 1.0, 0.0);
+  return separationDirection(p0, p1, q0, q1, s, t, d);
 }
 
 ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,

@@ -1,4 +1,4 @@
-// Strand contacts as constraints (DESIGN.md section 1.7), the CPU reference of the GPU passes
+// Strand contacts as constraints (METHOD.md section 3), the CPU reference of the GPU passes
 // (shaders/sim/candidates*.comp, contact_solve.comp):
 //  - once per frame (or collision.lists times), the candidate pairs: segments closer than
 //    2r + margin, each listed on both of its segments, with its contact distance (2r, or the
@@ -27,7 +27,6 @@
 #include "sim/solver/stiffness.h"
 
 namespace csm {
-
 
 // The orientation flags of a pair: whether its closest points are inside both segments (only
 // then can the sign of the triple product flip by one passing through the other), whether it

@@ -1,3 +1,5 @@
+// The step in double; shaders/sim/predict.comp, shape_match.comp and strain_limit.comp are its
+// GLSL twins (sim/solver/cpu_solver.h).
 #include "sim/solver/cpu_solver.h"
 
 #include <algorithm>
@@ -64,7 +66,7 @@ bool pushOutOfSphere(glm::dvec3& p, const glm::dvec3& prev, const glm::dvec3& c,
   return true;
 }
 
-// The same for the head's distance field (sim/head/head_shape.h), read in the head's frame: p
+// The same for the head's distance field (sim/head/distance_grid.h), read in the head's frame: p
 // moves along the field's normal out of the surface inflated by `radius`, and when that is
 // out of reach of prev, onto the nearest point of the circle where the surface's tangent
 // plane there meets the ball of reach. `normal` gets the outward normal (world); `clearance`
@@ -335,7 +337,7 @@ void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   clearStages();
   const FramePlan plan = planFrame(config_.sim, regions_.planRate);
   ++framesSinceMeasure_;
-  // The frame's contact candidates, from where it starts (DESIGN.md section 1.7).
+  // The frame's contact candidates, from where it starts (METHOD.md section 3.3).
   auto t0 = Clock::now();
   if (strandContacts(config_.collision.mode)) {
     ContactCandidates previous = std::move(candidates_);

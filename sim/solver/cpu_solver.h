@@ -1,6 +1,8 @@
-// The reference Chain Shape Matching solver: the whole step of DESIGN.md section 1 in double
+// The reference Chain Shape Matching solver: the whole step of METHOD.md section 2 in double
 // precision on the CPU. The GPU solver is tested against it; the benchmarks use it as the
-// baseline.
+// baseline. Its GLSL twins, step by step: shaders/sim/predict.comp, shaders/sim/shape_match.comp,
+// shaders/sim/strain_limit.comp (with the head's push, pushOutOfHead) and, for strand contacts,
+// sim/solver/contacts.h's.
 #pragma once
 
 #include <deque>

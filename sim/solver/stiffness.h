@@ -1,6 +1,7 @@
 // Stiffness: the shape-matching regions of every particle, and how far one step pulls toward
-// the goals, for both stiffness models (DESIGN.md section 4, "Stiffness depends on the step
-// and the resolution"). Both solvers build their regions here, so they agree by construction.
+// the goals, for both stiffness models (METHOD.md section 4.1: stiffness depends on the step
+// and the resolution). Both solvers build their regions here, so they agree by construction
+// (the GPU's read them in shaders/sim/shape_match.comp).
 //
 // Why a calibrated model: with goals from predicted positions and a pull alpha per step, a
 // bending mode that one application of the goals shrinks by mu feels a stiffness
@@ -100,7 +101,6 @@ double planRate(const std::vector<double>& rates);
 
 // True when a change from `a` to `b` changes the regions (the solvers rebuild them).
 bool regionsChanged(const SimConfig& a, const SimConfig& b);
-
 
 // Paper: sim.substeps. Calibrated: at least sim.substeps, and enough that
 // alpha = k_max h^2 <= 1, up to sim.max_substeps.

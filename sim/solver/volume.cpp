@@ -1,3 +1,5 @@
+// The CPU side of the volume mode; shaders/sim/volume_splat.comp and volume_field.comp are the
+// GPU twins (sim/solver/volume.h).
 #include "sim/solver/volume.h"
 
 #include <algorithm>

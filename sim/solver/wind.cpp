@@ -1,3 +1,4 @@
+// The GLSL twin: shaders/sim/wind.glsl.
 #include "sim/solver/wind.h"
 
 #include <cmath>

@@ -36,7 +36,8 @@ bool finite(const glm::vec4& p) {
 }
 
 // The far ends: the for the step (1/240-1/24 s) and the substeps (1-8), the parameter
-// table's (sim/param/sim_params.cpp) for the rest; tests/cpu/torture_test.cpp checks them against it.
+// table's (sim/param/sim_params.cpp) for the rest; tests/cpu/torture_test.cpp checks them against
+// it.
 constexpr float kWindowLengthMin = 0.002f, kWindowLengthMax = 0.1f;
 constexpr int kPaperWindowMin = 1, kPaperWindowMax = 32;
 constexpr float kWindMax = 50.0f;

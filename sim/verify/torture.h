@@ -1,5 +1,5 @@
-// The torture map (docs/RELIABILITY.md; the soak is sim/verify/soak.h): a scene pushed to each end of every
-// live parameter's range, one factor at a time, on any solver and in every collision mode,
+// The torture map (docs/RELIABILITY.md; the soak is sim/verify/soak.h): a scene pushed to each end
+// of every live parameter's range, one factor at a time, on any solver and in every collision mode,
 // checked frame by frame for what must never happen: a non-finite state, a segment stretched
 // past the strain limit, hair inside the head, hair flung faster than the motion can explain.
 // csmhair-bench's `torture` and `soak` sections and the tests run the same cells.
@@ -12,7 +12,7 @@
 
 #include "sim/core/config.h"
 #include "sim/core/pose.h"
-#include "sim/verify/measure.h"
+#include "sim/core/solver.h"
 
 namespace csm {
 

@@ -1,4 +1,4 @@
-// Invariants of the CPU reference solver (DESIGN.md section 1).
+// Invariants of the CPU reference solver (METHOD.md section 2).
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -10,7 +10,6 @@
 #include "sim/groom/hairstyle.h"
 #include "sim/head/head_model.h"
 
-
 namespace csm::test {
 
 // A few hundred strands of the default hairstyle: quick, but with every feature in play.

@@ -1,5 +1,5 @@
-// The volume mode (sim/solver/volume.h): the grid's sums, the model's two terms, and what it does to
-// a groom.
+// The volume mode (sim/solver/volume.h): the grid's sums, the model's two terms, and what it does
+// to a groom.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // libFuzzer target: text as an OBJ head (sim/head/obj_mesh.h's parseObjMesh, what head.mesh
-// reads), and a mesh it accepts through what the scene makes of it (sim/head/head_shape.h): its
+// reads), and a mesh it accepts through what the scene makes of it (sim/head/head_model.h): its
 // distance field, spheres fitted to it, the field's zero level.
 #include <algorithm>
 #include <cmath>

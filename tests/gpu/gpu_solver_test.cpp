@@ -644,8 +644,8 @@ TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][so
   const GLenum strideProp = GL_TOP_LEVEL_ARRAY_STRIDE;
   GLint stride = 0;
   glGetProgramResourceiv(program->id(), GL_BUFFER_VARIABLE,
-                         glGetProgramResourceIndex(program->id(), GL_BUFFER_VARIABLE, "S[0].h"),
-                         1, &strideProp, 1, nullptr, &stride);
+                         glGetProgramResourceIndex(program->id(), GL_BUFFER_VARIABLE, "S[0].h"), 1,
+                         &strideProp, 1, nullptr, &stride);
   CHECK(size_t(stride) == sizeof(Substep));
 }
 

@@ -11,7 +11,6 @@
 #include "sim/groom/hairstyle.h"
 #include "app/preset.h"
 #include "sim/run/make_solver.h"
-#include "sim/run/simulation.h"
 #include "sim/head/head_model.h"
 
 namespace csm::bench {

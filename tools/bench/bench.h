@@ -13,7 +13,6 @@
 #include "sim/run/frame_driver.h"
 #include "sim/verify/measure.h"
 #include "sim/core/solver.h"
-#include "sim/verify/soak.h"
 
 namespace csm::bench {
 

@@ -1,7 +1,7 @@
 // What a large groom costs to import: a cyHair file of 50,000 strands x 100 points (5 M points,
 // written here, in centimetres as a DCC tool writes them) read, repaired, fitted, resampled and
-// placed on the head (sim/groom/hairstyle.h's buildGroom, each stage timed through its progress), then
-// a scene loaded with it and its first frame simulated; the process's peak resident memory
+// placed on the head (sim/groom/hairstyle.h's buildGroom, each stage timed through its progress),
+// then a scene loaded with it and its first frame simulated; the process's peak resident memory
 // after each (VmHWM, reset before the import starts).
 #include <chrono>
 #include <cmath>

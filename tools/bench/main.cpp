@@ -15,8 +15,6 @@
 #include "tools/bench/bench.h"
 #include "gl/context.h"
 #include "sim/run/make_solver.h"
-#include "sim/run/simulation.h"
-#include "sim/verify/soak.h"
 
 #ifndef CSM_SOURCE_DIR
 #define CSM_SOURCE_DIR "."

@@ -1,7 +1,7 @@
-// The timeline's price (sim/run/frame_recording.h, the viewer's Timeline panel): per frame, what recording
-// costs beside the step it records (the positions read back, a keyframe's whole state every 30
-// frames), the memory a frame and a keyframe take, and how long a resume takes from the frame
-// farthest from its keyframe (29 frames stepped again).
+// The timeline's price (sim/run/frame_recording.h, the viewer's Timeline panel): per frame, what
+// recording costs beside the step it records (the positions read back, a keyframe's whole state
+// every 30 frames), the memory a frame and a keyframe take, and how long a resume takes from the
+// frame farthest from its keyframe (29 frames stepped again).
 #include <chrono>
 #include <cstdio>
 #include <memory>

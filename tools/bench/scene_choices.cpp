@@ -1,4 +1,4 @@
-// "Model no more than a scene needs" (DESIGN.md section 1): on the default preset's scene,
+// "Model no more than a scene needs" (METHOD.md section 5): on the default preset's scene,
 // what particles per strand, collision modes and substeps each cost and what they buy.
 #include <algorithm>
 #include <chrono>

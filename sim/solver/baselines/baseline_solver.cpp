@@ -12,6 +12,7 @@
 #include "sim/head/head_model.h"
 #include "sim/solver/wind.h"
 #include "sim/solver/accuracy.h"
+#include "sim/core/hair_state.h"
 
 namespace csm {
 

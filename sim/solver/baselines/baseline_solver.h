@@ -1,7 +1,7 @@
 // Baselines for the benchmarks (docs/BENCHMARKS.md): the strand models CSM is usually compared
 // with, behind the same Solver interface and on the same scenes. CPU, double precision, one
-// thread. They share gravity, wind (sim/solver/wind.h), linear damping, kinematic roots and a simple
-// projection out of the head spheres; none of them does hair-hair collision.
+// thread. They share gravity, wind (sim/solver/wind.h), linear damping, kinematic roots and a
+// simple projection out of the head spheres; none of them does hair-hair collision.
 #pragma once
 
 #include <memory>
@@ -12,7 +12,6 @@
 
 #include <glm/vec3.hpp>
 
-#include "sim/core/hair_state.h"
 #include "sim/head/head_model.h"
 #include "sim/core/solver.h"
 
