@@ -287,7 +287,9 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
 }
 
 void HairRenderer::render(const FrameView& frame) {
-  if (!frame.scene || !frame.look || !frame.groom || frame.width <= 0 || frame.height <= 0) return;
+  if (!frame.scene || !frame.look || !frame.groom || !frame.head || frame.width <= 0 ||
+      frame.height <= 0)
+    return;
   const Config& c = *frame.scene;
   const RenderConfig& look = frame.look->render;
   const DrawAmount& amount = frame.amount;

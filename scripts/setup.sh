@@ -15,6 +15,7 @@ packages=(
   xvfb xauth                     # the window under a virtual display (tests, no-display runs)
   python3 python3-matplotlib     # test scripts and benchmark charts
   ffmpeg                         # headless --video (its ffprobe reads the file back in the tests)
+  iwyu                           # include-what-you-use: no include of ours a file does not use
 )
 # shellcheck source=scripts/packages.sh
 source "$root/scripts/packages.sh"
