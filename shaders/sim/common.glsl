@@ -174,7 +174,7 @@ bool crossed(uint before, uint now) {
 }
 
 // The collision grid (METHOD.md section 3.6): cells of edge P.cellEdge, at least twice the
-// contact distance and half or three quarters of a mean segment (CollisionGrid::cellSize:
+// contact distance and half or three quarters of a mean segment (ContactSearch::cellSize:
 // half in dense hair). Each segment is entered in every cell that its capsule of radius
 // P.cellPadding (half the candidate distance and 1% for rounding) reaches: the cells of its
 // padded box that the segment itself passes within P.cellPadding of (clipToCell), with the box of

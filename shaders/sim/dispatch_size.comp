@@ -1,4 +1,4 @@
-// Indirect dispatch sizes (CollisionGrid::findCandidates), one invocation: the work groups a
+// Indirect dispatch sizes (ContactSearch::findCandidates), one invocation: the work groups a
 // later pass needs for the items counter `counter` says this frame has, at most `capacity`
 // (the pass itself checks what fits), laid out as ComputePass::run lays them out (a 2D grid of
 // groups beyond 65535; globalIndex() flattens it). The pass then runs on what this frame

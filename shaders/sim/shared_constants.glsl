@@ -26,7 +26,7 @@
 
 // ---- The parameter block ------------------------------------------------------------------------
 // SimParams: the frame's parameters, written by GpuSolver::writeParams (sim/gpu/gpu_solver.cpp)
-// and CollisionGrid (the grid's fields), read as `P` by every pass. Fields in groups of 16 bytes
+// and ContactSearch (the grid's fields), read as `P` by every pass. Fields in groups of 16 bytes
 // (std430: a vec3 takes the first 12 of its group and a scalar may follow it; mat4 whole
 // groups), so that C++ (glm, no padding) and GLSL agree; tests/gpu/gpu_solver_test.cpp checks
 // every offset against the linked program's. By group:

@@ -1,8 +1,8 @@
 // How large the strand-contact buffers that grow with the hair's density are, and may be on
 // this device: the grid's entries and the candidate pair list (with its sides and each frame's
 // lists), grown a quarter over what a search needed, never past what one buffer and one view of
-// it hold (the device's buffer textures, limitStorage in tests). No GL: the CollisionGrid
-// (sim/gpu/collision_grid.h) reallocates what this says.
+// it hold (the device's buffer textures, limitStorage in tests). No GL: the ContactSearch
+// (sim/gpu/contact_search.h) reallocates what this says.
 #pragma once
 
 #include <cstdint>

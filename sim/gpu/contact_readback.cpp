@@ -11,11 +11,11 @@
 
 namespace csm::gpu {
 
-std::vector<uint32_t> readCounters(const CollisionGrid& g) {
+std::vector<uint32_t> readCounters(const ContactSearch& g) {
   return g.counters().download<uint32_t>(CSM_COUNTERS);
 }
 
-std::vector<std::pair<uint32_t, uint32_t>> readPairs(const CollisionGrid& g, bool* overflow) {
+std::vector<std::pair<uint32_t, uint32_t>> readPairs(const ContactSearch& g, bool* overflow) {
   const std::vector<uint32_t> c = readCounters(g);
   const size_t found = c[CSM_COUNTER_PAIR_LIST];
   if (overflow) *overflow = found > g.pairListCapacity();
@@ -27,7 +27,7 @@ std::vector<std::pair<uint32_t, uint32_t>> readPairs(const CollisionGrid& g, boo
   return out;
 }
 
-std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates(const CollisionGrid& g) {
+std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates(const ContactSearch& g) {
   const size_t n = g.particles(), first = size_t(g.half()) * n;
   const std::vector<glm::uvec2> range = g.candidateRange().download<glm::uvec2>(2 * n);
   const std::vector<glm::uvec2> all =
@@ -41,7 +41,7 @@ std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates(const Collis
   return out;
 }
 
-std::vector<uint32_t> readSegmentOrder(const CollisionGrid& g) {
+std::vector<uint32_t> readSegmentOrder(const ContactSearch& g) {
   return g.segmentOrder().download<uint32_t>(g.particles());
 }
 

@@ -1,6 +1,6 @@
 // Strand contacts on the GPU, every substep (sim/solver/contacts.h's solveContacts is the CPU
 // reference): contact_solve.comp gives each segment its corrections from the candidate lists the
-// CollisionGrid built this frame (sim/gpu/collision_grid.h), collision.iterations times;
+// ContactSearch built this frame (sim/gpu/contact_search.h), collision.iterations times;
 // contact_apply.comp moves the particles by each iteration but the last, whose corrections
 // strain_limit.comp applies.
 #pragma once

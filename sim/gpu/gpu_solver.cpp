@@ -55,7 +55,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
         !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, {}, error) ||
         !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, {}, error) ||
-        !grid_.build(error, contactSolve_))
+        !contactSearch_.build(error, contactSolve_))
       return false;
   }
   if (maxN != builtMaxN_) {
@@ -85,11 +85,11 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   }
   // Rest lengths set the cell edge (METHOD.md section 3.6): strain limiting keeps the current
   // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
-  grid_.reset(hair_.particles, hair_.segments, hair_.meanSegment);
+  contactSearch_.reset(hair_.particles, hair_.segments, hair_.meanSegment);
   contactSolve_.reset(hair_.particles, hair_.segments);
-  grid_.reserveFor(state_.position, state_.particleStrand,
-                   2.0f * config.collision.radius + config.collision.margin,
-                   glm::vec3(head.translation));
+  contactSearch_.reserveFor(state_.position, state_.particleStrand,
+                            2.0f * config.collision.radius + config.collision.margin,
+                            glm::vec3(head.translation));
   uploadRegions();
   resetVolume();
   uploadHeadField();
@@ -155,7 +155,7 @@ bool GpuSolver::listsCandidates() const {
 void GpuSolver::sizeLists() {
   if (hair_.particles == 0 || !failure_.empty()) return;
   listCandidatesNow(nullptr);
-  grid_.sizeForLastSearch();
+  contactSearch_.sizeForLastSearch();
   gl::memoryBarrier(gl::Barrier::All);
 }
 
@@ -191,20 +191,20 @@ void GpuSolver::resetVolume() {
 }
 
 size_t GpuSolver::volumeNodesVisited() const {
-  const std::vector<glm::uvec4> d = grid_.dispatch().download<glm::uvec4>(CSM_DISPATCHES);
+  const std::vector<glm::uvec4> d = contactSearch_.dispatch().download<glm::uvec4>(CSM_DISPATCHES);
   return size_t(d[CSM_DISPATCH_VOLUME_FIELD].x) * d[CSM_DISPATCH_VOLUME_FIELD].y *
          CSM_PARTICLE_GROUP;
 }
 
 GpuSolver::GridStats GpuSolver::gridStats() {
-  const std::vector<uint32_t> c = gpu::readCounters(grid_);
+  const std::vector<uint32_t> c = gpu::readCounters(contactSearch_);
   GridStats g;
   g.entries = c[CSM_COUNTER_ENTRIES];
-  g.capacity = grid_.entryCapacity();
+  g.capacity = contactSearch_.entryCapacity();
   g.oversize = c[CSM_COUNTER_OVERSIZE];
-  g.buckets = grid_.bucketCount();
+  g.buckets = contactSearch_.bucketCount();
   g.pairs = c[CSM_COUNTER_PAIR_LIST];
-  g.pairCapacity = grid_.pairListCapacity();
+  g.pairCapacity = contactSearch_.pairListCapacity();
   g.cell = params_.cellEdge;
   return g;
 }
@@ -245,7 +245,7 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.particles = hair_.particles;
   p.strands = hair_.strands;
   p.segments = hair_.segments;
-  grid_.writeParams(p, reach);
+  contactSearch_.writeParams(p, reach);
   // Cells count from the head, so the clamped 10-bit cell coordinates (common.glsl) cover
   // +-512 cells around it wherever it moves.
   p.gridOrigin = glm::vec3(poses.back().translation);
@@ -307,7 +307,7 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
 void GpuSolver::bindAll() {
   const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
   hair_.bind();
-  grid_.bind();
+  contactSearch_.bind();
   contactSolve_.bind();
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
   volumeSums_.bindBase(ssbo, CSM_BIND_VOLUME_SUMS);
@@ -338,12 +338,12 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   }
   const bool contacts = strandContacts(config_.collision.mode);
   // Measuring contacts with hair-hair off, the grid keeps the last sample's list (crossings).
-  if (contacts || !measureContacts_) grid_.beginFrame(contacts);
+  if (contacts || !measureContacts_) contactSearch_.beginFrame(contacts);
   writeParams(poses, before);
   bindAll();
   timer_.beginFrame();
   // The frame's candidates, from where it starts (METHOD.md section 3.3).
-  if (contacts) grid_.findCandidates(&timer_);
+  if (contacts) contactSearch_.findCandidates(&timer_);
 
   const uint32_t particles = uint32_t(hair_.particles), strands = uint32_t(hair_.strands);
 
@@ -357,7 +357,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     // Only the nodes of the box the hair reached: sized on the GPU.
     passes_.volumeDispatch.set("groupSize", uint32_t(CSM_PARTICLE_GROUP)).run(1);
     gl::memoryBarrier(gl::Barrier::Command);
-    passes_.volumeField.runIndirect(grid_.dispatch(), CSM_DISPATCH_VOLUME_FIELD);
+    passes_.volumeField.runIndirect(contactSearch_.dispatch(), CSM_DISPATCH_VOLUME_FIELD);
     gl::memoryBarrier(gpu::kPassBarrier);
   }
   for (int k = 0; k < substeps; ++k) {
@@ -370,7 +370,8 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     gl::memoryBarrier(gpu::kPassBarrier);
     if (contacts) {
       timer_.stage(gpu::kContacts);
-      contactSolve_.run(unsigned(k), config_.collision.iterations, strands, grid_.splitViews());
+      contactSolve_.run(unsigned(k), config_.collision.iterations, strands,
+                        contactSearch_.splitViews());
     }
     timer_.stage(gpu::kStrainLimiting);
     passes_.strainLimit[uploadedField_ ? 1 : 0].runSubstep(strands, unsigned(k));
@@ -386,22 +387,22 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
 
 void GpuSolver::listAgain() {
   // The lists swap, so the parameters' grid half changes: only that field is written again.
-  grid_.swapLists();
-  grid_.writeParams(params_, params_.candidateDistance);
+  contactSearch_.swapLists();
+  contactSearch_.writeParams(params_, params_.candidateDistance);
   const glm::uvec4 grid(params_.bucketMask, params_.entryCapacity, params_.pairListCapacity,
                         params_.listHalf);
   paramsBuffer_.setSubData(offsetof(gpu::SimParams, bucketMask), sizeof(grid), &grid);
-  grid_.bind();
+  contactSearch_.bind();
   contactSolve_.bind();
-  grid_.findCandidates(&timer_, false);
+  contactSearch_.findCandidates(&timer_, false);
 }
 
 void GpuSolver::listCandidatesNow(gpu::StageTimer* timer) {
   // Parameters as they stand, at the current time (no step is taken).
-  grid_.beginFrame(true);
+  contactSearch_.beginFrame(true);
   writeParams({head_}, {head_});
   bindAll();
-  grid_.findCandidates(timer);
+  contactSearch_.findCandidates(timer);
 }
 
 void GpuSolver::detectContacts() {
@@ -411,10 +412,10 @@ void GpuSolver::detectContacts() {
   listCandidatesNow(&timer_);
   // A tool asks for this pass's candidates: when the grid did not fit, grow it and run again
   // (stepFrame instead grows it as the next frame begins).
-  if (grid_.countersSeen(gpu::readCounters(grid_).data())) {
+  if (contactSearch_.countersSeen(gpu::readCounters(contactSearch_).data())) {
     writeParams({head_}, {head_});
     bindAll();
-    grid_.findCandidates(&timer_);
+    contactSearch_.findCandidates(&timer_);
   }
   timer_.endFrame();
   gl::memoryBarrier(gl::Barrier::All);
@@ -498,7 +499,7 @@ void GpuSolver::carry(const Pose& by) {
 }
 
 ContactStats GpuSolver::readContactStats() {
-  return gpu::contactStatsOf(gpu::readCounters(grid_).data());
+  return gpu::contactStatsOf(gpu::readCounters(contactSearch_).data());
 }
 
 unsigned GpuSolver::lastSubstepSpheres() const {
@@ -527,7 +528,7 @@ void GpuSolver::requestSample(long frame) {
             .set("lastStep", unsigned(std::max(substepsWritten_ - 1, 0)))
             .run(uint32_t(hair_.particles));
       },
-      measure_, grid_.counters(), listed || measureContacts_);
+      measure_, contactSearch_.counters(), listed || measureContacts_);
   // The next frame's start, searched here, outside its timing (the sample has its copy).
   if (measuring && framesSinceMeasure_ != 0) measureNow();
 }

@@ -4,7 +4,7 @@
 //
 // The pieces: StrandBuffers (the hair's state and layout), three typed passes per step
 // (predict.comp per particle; shape_match.comp per strand: region sums, rotations, goals,
-// integration; strain_limit.comp per strand), CollisionGrid (hair-hair contacts once per frame
+// integration; strain_limit.comp per strand), ContactSearch (hair-hair contacts once per frame
 // when collision.mode is full, acting during the next frame), SampleRing (the measures,
 // fenced and read a few frames late) and StageTimer. The regions and the number of steps come
 // from sim/solver/stiffness.h, as for CpuSolver. 3 dispatches per step + 11 per frame.
@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "gl/buffer.h"
-#include "sim/gpu/collision_grid.h"
+#include "sim/gpu/contact_search.h"
 #include "sim/gpu/compute_pass.h"
 #include "sim/gpu/contact_readback.h"
 #include "sim/gpu/contact_solve.h"
@@ -85,23 +85,23 @@ class GpuSolver final : public Solver {
   // each frame with strand contacts); the next frame builds its own.
   void detectContacts();
   // Caps the collision grid's growing buffers at `bytes` each, as a device whose buffer
-  // textures hold no more (CollisionGrid::limitStorage): the next reset sizes them under it,
+  // textures hold no more (ContactSearch::limitStorage): the next reset sizes them under it,
   // and a frame after the cap is raised may grow them past it.
-  void limitGridStorage(uint64_t bytes) { grid_.limitStorage(bytes); }
-  // Where the second view of the sides and lists starts, at most (CollisionGrid::limitListSplit).
-  void limitGridListSplit(uint64_t texels) { grid_.limitListSplit(texels); }
-  uint32_t gridListSplit() const { return grid_.listSplit(); }
+  void limitGridStorage(uint64_t bytes) { contactSearch_.limitStorage(bytes); }
+  // Where the second view of the sides and lists starts, at most (ContactSearch::limitListSplit).
+  void limitGridListSplit(uint64_t texels) { contactSearch_.limitListSplit(texels); }
+  uint32_t gridListSplit() const { return contactSearch_.listSplit(); }
   // The pairs (a < b) closer than 2r of the last candidate pass, in no particular order;
   // `overflow` when the pair list did not hold them.
   std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr) {
-    return gpu::readPairs(grid_, overflow);
+    return gpu::readPairs(contactSearch_, overflow);
   }
   // Per segment (by its first particle): its candidates (other segment, contact distance).
   std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates() {
-    return gpu::readCandidates(grid_);
+    return gpu::readCandidates(contactSearch_);
   }
   // The order the list pass and the contact solve take the segments in (segment_order.comp).
-  std::vector<uint32_t> readSegmentOrder() const { return gpu::readSegmentOrder(grid_); }
+  std::vector<uint32_t> readSegmentOrder() const { return gpu::readSegmentOrder(contactSearch_); }
   // The grid of the last candidate pass (reads back): entries it needed, entries the buffers
   // hold (over it, the frame kept the last list), segments in no cell (not finite, or a
   // box over the cell cap), and the cell edge in metres.
@@ -119,7 +119,7 @@ class GpuSolver final : public Solver {
   void resetVolume();
   // Whether frames or samples list candidates (a strand mode, or contact measures).
   bool listsCandidates() const;
-  // The grid's buffers sized for the hair as it stands (CollisionGrid::sizeForLastSearch).
+  // The grid's buffers sized for the hair as it stands (ContactSearch::sizeForLastSearch).
   void sizeLists();
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
@@ -148,8 +148,8 @@ class GpuSolver final : public Solver {
     gpu::ComputePass strainLimit[2];
   } passes_;
   gpu::StrandBuffers hair_;
-  gpu::CollisionGrid grid_;         // strand contacts: the search
-  gpu::ContactSolve contactSolve_;  // and the solve
+  gpu::ContactSearch contactSearch_;  // strand contacts: the search
+  gpu::ContactSolve contactSolve_;    // and the solve
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
   // The volume mode: the grid's geometry (the CPU reference's), its sums, per-particle
   // lengths, rest fractions and each node's field (CSM_BIND_VOLUME_FIELD), read by texel fetches.

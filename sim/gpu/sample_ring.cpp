@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "shaders/sim/bindings.glsl"
-#include "sim/gpu/collision_grid.h"
+#include "sim/gpu/contact_search.h"
 
 namespace csm::gpu {
 

@@ -43,7 +43,7 @@ namespace csm::gpu {
 // The contact measures in a counters buffer (CSM_COUNTER_*).
 ContactStats contactStatsOf(const uint32_t* counters);
 
-class CollisionGrid {
+class ContactSearch {
  public:
   // Builds the passes; the lists' second view starts where `solve`'s does too.
   bool build(std::string* error, ContactSolve& solve);

@@ -1,4 +1,4 @@
-#include "sim/gpu/collision_grid.h"
+#include "sim/gpu/contact_search.h"
 
 #include <algorithm>
 #include <bit>
@@ -34,7 +34,7 @@ constexpr uint32_t kMaxSegmentCells = CSM_MAX_SEGMENT_CELLS;
 
 }  // namespace
 
-bool CollisionGrid::build(std::string* error, ContactSolve& solve) {
+bool ContactSearch::build(std::string* error, ContactSolve& solve) {
   solve_ = &solve;
   // What one buffer texture may hold here (llvmpipe and NVIDIA: 2^27 texels; GL 4.3 guarantees
   // 2^16): the buffers that grow with the hair are read and written through such views (a
@@ -57,12 +57,12 @@ bool CollisionGrid::build(std::string* error, ContactSolve& solve) {
          setListSplit();
 }
 
-bool CollisionGrid::buildSplit(ComputePass (&pass)[2], const char* path, std::string* error) {
+bool ContactSearch::buildSplit(ComputePass (&pass)[2], const char* path, std::string* error) {
   return pass[0].build(path, CSM_PARTICLE_GROUP, {}, error) &&
          pass[1].build(path, CSM_PARTICLE_GROUP, {{"CSM_SPLIT_VIEWS", ""}}, error);
 }
 
-bool CollisionGrid::setListSplit() {
+bool ContactSearch::setListSplit() {
   // The second view of the sides and of the lists starts where the first ends.
   const uint32_t split = capacity_.listSplit();
   for (ComputePass* pass : {&passes_.pairScatter[1], &passes_.lists[1]})
@@ -71,12 +71,12 @@ bool CollisionGrid::setListSplit() {
   return true;
 }
 
-void CollisionGrid::limitListSplit(uint64_t texels) {
+void ContactSearch::limitListSplit(uint64_t texels) {
   capacity_.limitListSplit(texels);
   setListSplit();
 }
 
-void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegment) {
+void ContactSearch::reset(size_t particles, uint32_t segments, double meanSegment) {
   particles_ = particles;
   segments_ = segments;
   meanSegment_ = meanSegment;
@@ -107,7 +107,7 @@ void CollisionGrid::reset(size_t particles, uint32_t segments, double meanSegmen
   capacity_.clear();  // reserveFor sizes the entry buffer and the pair list
 }
 
-double CollisionGrid::cellSize(float reach) const {
+double ContactSearch::cellSize(float reach) const {
   // Cells of at least twice the candidate distance and half or three quarters of a mean rest
   // segment (the CPU reference, findContactsGrid, takes half the current median; the pairs
   // found do not depend on the cell, only the search's cost does). Larger cells hold fewer
@@ -118,7 +118,7 @@ double CollisionGrid::cellSize(float reach) const {
   return std::max({2.0 * double(reach), cellPerSegment_ * meanSegment_, 1e-6});
 }
 
-void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uint32_t> strand,
+void ContactSearch::reserveFor(std::span<const glm::vec4> x, std::span<const uint32_t> strand,
                                float reach, const glm::vec3& origin) {
   const double cell = cellSize(reach), pad = 0.5 * reach * kPadSlack;
   uint64_t entries = 0;
@@ -143,7 +143,7 @@ void CollisionGrid::reserveFor(std::span<const glm::vec4> x, std::span<const uin
   growPairList(std::max<uint64_t>(1024, 4 * entries));
 }
 
-void CollisionGrid::beginFrame(bool contacts) {
+void ContactSearch::beginFrame(bool contacts) {
   growFromLastSearch();
   if (contacts && !lastFrameListed_) {
     // No last list: nothing to count crossings against.
@@ -156,7 +156,7 @@ void CollisionGrid::beginFrame(bool contacts) {
   lastFrameListed_ = contacts;
 }
 
-void CollisionGrid::writeParams(SimParams& p, float reach) const {
+void ContactSearch::writeParams(SimParams& p, float reach) const {
   p.bucketMask = buckets_ - 1;
   p.entryCapacity = capacity_.entries();
   p.pairListCapacity = capacity_.pairs();
@@ -167,7 +167,7 @@ void CollisionGrid::writeParams(SimParams& p, float reach) const {
   p.cellPadding = 0.5f * reach * kPadSlack + 1e-7f;
 }
 
-void CollisionGrid::bind() const {
+void ContactSearch::bind() const {
   const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
@@ -188,7 +188,7 @@ void CollisionGrid::bind() const {
                                         GL_READ_ONLY);
 }
 
-void CollisionGrid::findCandidates(StageTimer* timer, bool measured) {
+void ContactSearch::findCandidates(StageTimer* timer, bool measured) {
   if (segments_ == 0) return;
   const uint32_t particles = uint32_t(particles_);
   if (timer) timer->stage(kGrid);
@@ -238,7 +238,7 @@ void CollisionGrid::findCandidates(StageTimer* timer, bool measured) {
   searchPending_ = true;
 }
 
-void CollisionGrid::sizeForLastSearch() {
+void ContactSearch::sizeForLastSearch() {
   if (segments_ == 0) return;
   searchPending_ = false;  // read here instead
   const std::vector<uint32_t> c = counters_.download<uint32_t>(CSM_COUNTERS);
@@ -259,7 +259,7 @@ void CollisionGrid::sizeForLastSearch() {
   lastFrameListed_ = false;
 }
 
-void CollisionGrid::growFromLastSearch() {
+void ContactSearch::growFromLastSearch() {
   if (!searchPending_) return;
   searchPending_ = false;
   searchEnd_.wait();
@@ -268,7 +268,7 @@ void CollisionGrid::growFromLastSearch() {
   countersSeen(c);
 }
 
-void CollisionGrid::dispatchFor(uint32_t counter, uint32_t capacity, uint32_t groupSize,
+void ContactSearch::dispatchFor(uint32_t counter, uint32_t capacity, uint32_t groupSize,
                                 uint32_t slot) {
   passes_.dispatchSize.set("counter", counter)
       .set("capacity", capacity)
@@ -278,11 +278,11 @@ void CollisionGrid::dispatchFor(uint32_t counter, uint32_t capacity, uint32_t gr
   gl::memoryBarrier(gl::Barrier::Command);
 }
 
-void CollisionGrid::clearFrameCounters() {
+void ContactSearch::clearFrameCounters() {
   counters_.clearToZero(0, CSM_COUNTERS_PER_FRAME * sizeof(uint32_t));
 }
 
-void CollisionGrid::scan(uint32_t blocks, uint32_t totalSlot) {
+void ContactSearch::scan(uint32_t blocks, uint32_t totalSlot) {
   // Block sums, their scan, each block rescanned from its offset (scan_*.comp).
   passes_.scanBlocks.set("blocks", blocks).run(blocks);
   gl::memoryBarrier(kPassBarrier);
@@ -292,7 +292,7 @@ void CollisionGrid::scan(uint32_t blocks, uint32_t totalSlot) {
   gl::memoryBarrier(kPassBarrier);
 }
 
-bool CollisionGrid::countersSeen(const uint32_t* c) {
+bool ContactSearch::countersSeen(const uint32_t* c) {
   // The grid or the pair list did not fit that frame (it kept the lists before it): room for
   // the next.
   bool grew = false;
@@ -307,13 +307,13 @@ bool CollisionGrid::countersSeen(const uint32_t* c) {
   return grew;
 }
 
-void CollisionGrid::growEntries(uint64_t needed) {
+void ContactSearch::growEntries(uint64_t needed) {
   if (!capacity_.growEntries(needed)) return;
   zeroed<glm::uvec4>(entries_, capacity_.entries());
   view(entryTex_, entries_, GL_RGBA32UI);
 }
 
-void CollisionGrid::growPairList(uint64_t needed) {
+void ContactSearch::growPairList(uint64_t needed) {
   if (!capacity_.growPairs(needed)) return;
   zeroed<glm::uvec4>(pairList_, capacity_.pairs());
   view(pairListTex_, pairList_, GL_RGBA32UI);
