@@ -189,14 +189,15 @@ void drawMessages(const Viewer& viewer, size_t count) {
 
 // The keys' actions as buttons, for the mouse.
 void drawControls(Viewer& viewer) {
-  if (ImGui::Button(viewer.paused() ? "Run" : "Pause")) viewer.setPaused(!viewer.paused());
+  if (ImGui::Button(viewer.controls().paused() ? "Run" : "Pause"))
+    viewer.controls().setPaused(!viewer.controls().paused());
   ImGui::SameLine();
   if (ImGui::Button("Step")) {
-    viewer.setPaused(true);
-    viewer.stepOnce();
+    viewer.controls().setPaused(true);
+    viewer.controls().stepOnce();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Reset hair")) viewer.resetHair();
+  if (ImGui::Button("Reset hair")) viewer.controls().resetHair();
   ImGui::SameLine();
   if (ImGui::Button("Frame head")) viewer.frameHead();
   ImGui::SameLine();
@@ -332,7 +333,7 @@ void drawBanners(Viewer& viewer) {
     ImGui::End();
     ImGui::PopStyleColor(2);
   };
-  if (viewer.nanStopped())
+  if (viewer.controls().nanStopped())
     banner("##nan", "The simulation produced NaN at frame " + std::to_string(viewer.nanFrame()) +
                         " (" + std::to_string(viewer.nanParticles()) +
                         " particles) and is paused; strands in the picture may be broken.\n"

@@ -73,9 +73,9 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
   ImGui::Text("%.1f fps   %.1f ms a frame", s.fps, s.frameMs.mean());
   ImGui::Text("solver %s, %s", f.solver.c_str(), viewer.window().renderer().c_str());
   ImGui::Text("t = %.2f s, frame %ld%s", f.time, f.frame,
-              viewer.loading()  ? "  (loading)"
-              : viewer.paused() ? "  (paused)"
-                                : "");
+              viewer.loading()             ? "  (loading)"
+              : viewer.controls().paused() ? "  (paused)"
+                                           : "");
   ImGui::Text("timeline: %.1f of %.0f MB, %ld frames%s",
               double(f.timeline.bytes + f.timeline.aBytes) / (1 << 20),
               double(f.timeline.budget) / (1 << 20),

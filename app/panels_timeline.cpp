@@ -33,59 +33,59 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state) {
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderInt("##frame", &frame, int(t.first), int(t.last),
                          t.shown >= 0 ? "recorded frame %d" : "live, frame %d")) {
-      viewer.playRecording(false);
-      viewer.showRecorded(frame);
+      viewer.controls().playRecording(false);
+      viewer.controls().showRecorded(frame);
     }
   } else {
     ImGui::TextDisabled("nothing recorded yet");
   }
   ImGui::BeginDisabled(!recorded);
   if (ImGui::Button("|<")) {
-    viewer.playRecording(false);
-    viewer.showRecorded(t.first);
+    viewer.controls().playRecording(false);
+    viewer.controls().showRecorded(t.first);
   }
   ImGui::SameLine();
   if (ImGui::Button("<")) {
-    viewer.playRecording(false);
-    viewer.showRecorded(std::max(t.first, at - 1));
+    viewer.controls().playRecording(false);
+    viewer.controls().showRecorded(std::max(t.first, at - 1));
   }
   ImGui::SameLine();
-  if (ImGui::Button(viewer.playingRecording() ? "Stop" : "Play", ImVec2(48.0f, 0.0f)))
-    viewer.playRecording(!viewer.playingRecording());
+  if (ImGui::Button(viewer.controls().playingRecording() ? "Stop" : "Play", ImVec2(48.0f, 0.0f)))
+    viewer.controls().playRecording(!viewer.controls().playingRecording());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play the recording back at real time");
   ImGui::SameLine();
   if (ImGui::Button(">")) {
-    viewer.playRecording(false);
-    viewer.showRecorded(std::min(t.last, at + 1));
+    viewer.controls().playRecording(false);
+    viewer.controls().showRecorded(std::min(t.last, at + 1));
   }
   ImGui::SameLine();
   if (ImGui::Button(">|")) {
-    viewer.playRecording(false);
-    viewer.showRecorded(t.last);
+    viewer.controls().playRecording(false);
+    viewer.controls().showRecorded(t.last);
   }
   ImGui::SameLine();
-  bool loop = viewer.loopRecording();
-  if (ImGui::Checkbox("Loop", &loop)) viewer.setLoopRecording(loop);
+  bool loop = viewer.controls().loopRecording();
+  if (ImGui::Checkbox("Loop", &loop)) viewer.controls().setLoopRecording(loop);
   ImGui::SameLine();
   ImGui::BeginDisabled(t.shown < 0);
-  if (ImGui::Button("Resume from here")) viewer.resumeFrom(t.shown);
+  if (ImGui::Button("Resume from here")) viewer.controls().resumeFrom(t.shown);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip(
         "Simulate on from the frame shown, with the parameters as they are now.\n"
         "The frames recorded after it are dropped and recorded again.");
   ImGui::SameLine();
-  if (ImGui::Button("Live")) viewer.showRecorded(-1);
+  if (ImGui::Button("Live")) viewer.controls().showRecorded(-1);
   ImGui::EndDisabled();
   ImGui::EndDisabled();
 
   bool recording = t.recording;
-  if (ImGui::Checkbox("Record", &recording)) viewer.setRecording(recording);
+  if (ImGui::Checkbox("Record", &recording)) viewer.controls().setRecording(recording);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f);
   ImGui::InputFloat("s", &state.bakeSeconds, 0.5f, 2.0f, "%.1f");
   state.bakeSeconds = std::clamp(state.bakeSeconds, 0.1f, 600.0f);
   ImGui::SameLine();
-  if (ImGui::Button("Bake")) viewer.bake(state.bakeSeconds);
+  if (ImGui::Button("Bake")) viewer.controls().bake(state.bakeSeconds);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Simulate (and record) this many seconds as fast as they go, then pause");
   if (t.bakeLeft > 0 && t.bakeTotal > 0) {
@@ -97,13 +97,14 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state) {
   }
   ImGui::SetNextItemWidth(160.0f);
   if (ImGui::SliderInt("cache MB", &state.cacheMb, 16, 8192, "%d MB", ImGuiSliderFlags_Logarithmic))
-    viewer.setCacheBudget(size_t(state.cacheMb) << 20);
+    viewer.controls().setCacheBudget(size_t(state.cacheMb) << 20);
   ImGui::SameLine();
   ImGui::Text("%.1f of %.0f MB, %ld frames (%zu keyframes)", double(t.bytes + t.aBytes) / (1 << 20),
               double(t.budget) / (1 << 20), recorded ? t.last - t.first + 1 : 0L, t.keyframes);
   // Out: the recorded range as cyHair files.
   ImGui::BeginDisabled(!recorded);
-  if (ImGui::Button("Export .hair")) viewer.exportRecorded(state.exportDir, t.first, t.last);
+  if (ImGui::Button("Export .hair"))
+    viewer.controls().exportRecorded(state.exportDir, t.first, t.last);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Every recorded frame as FOLDER/frame_00001.hair, ... (cyHair)");
   ImGui::SameLine();
@@ -113,23 +114,23 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state) {
 
   // A/B: the recording kept as A, B simulated again over its span with today's parameters.
   ImGui::BeginDisabled(!recorded);
-  if (ImGui::Button("Keep as A")) viewer.keepAsA();
+  if (ImGui::Button("Keep as A")) viewer.controls().keepAsA();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Keep this recording, and its parameters, to compare with");
   ImGui::EndDisabled();
   if (t.aFirst >= 0) {
     ImGui::SameLine();
-    if (ImGui::Button("Run B")) viewer.rerunFromA();
+    if (ImGui::Button("Run B")) viewer.controls().rerunFromA();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
           "Simulate A's frames again from its first, with the parameters as they are now:\n"
           "the same head motion and wind, which follow the clock");
     ImGui::SameLine();
     bool a = t.showingA;
-    if (ImGui::Checkbox("show A (B)", &a)) viewer.showA(a);
+    if (ImGui::Checkbox("show A (B)", &a)) viewer.controls().showA(a);
     ImGui::SameLine();
     std::string changed;
-    for (std::string_view k : viewer.keysChangedSinceA())
+    for (std::string_view k : viewer.controls().keysChangedSinceA())
       changed += (changed.empty() ? "" : ", ") + std::string(k);
     ImGui::Text("A: frames %ld-%ld, %.1f MB; B differs in: %s", t.aFirst, t.aLast,
                 double(t.aBytes) / (1 << 20), changed.empty() ? "nothing yet" : changed.c_str());

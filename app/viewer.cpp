@@ -87,6 +87,9 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   v->sim_ = SimThread::start(std::move(so), &started, error);
   if (!v->sim_) return nullptr;
   if (!started.warning.empty()) v->log(MessageLevel::Warning, started.warning);
+  v->controls_ = std::make_unique<SimControls>(
+      *v->sim_, v->frame_, v->doc_,
+      [raw = v.get()](MessageLevel level, std::string text) { raw->log(level, std::move(text)); });
   v->takeSimFrame();
   v->panels_ = std::make_unique<PanelState>();
   v->lastFrameStart_ = v->fpsWindowStart_ = Clock::now();
@@ -95,6 +98,7 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
 
 Viewer::~Viewer() {
   // The simulation first: its thread uses the shared context and the buffers drawn from.
+  controls_.reset();
   sim_.reset();
   frame_.reset();
   if (window_) window_->makeCurrent();
@@ -197,8 +201,8 @@ void Viewer::handle(const SimEvent& e) {
       log(MessageLevel::Info, e.text);
       break;
     case SimEvent::Kind::Nan:
-      if (e.ticket >= resetTicket_) {
-        setPaused(true);
+      if (controls_->current(e.ticket)) {
+        controls_->setPaused(true);
         log(MessageLevel::Error, e.text + "; paused. R resets the hair to rest.");
       }
       break;
@@ -218,10 +222,6 @@ bool Viewer::waitForSimFrame(long frame, double timeoutSeconds) {
   return ok;
 }
 
-bool Viewer::nanStopped() const {
-  return frame_->nanFrame >= 0 && frame_->ticket >= resetTicket_;
-}
-
 // --- The scene -------------------------------------------------------------------------
 
 void Viewer::startOpen(const Preset& preset, const std::string& baseDir, const std::string& path) {
@@ -231,11 +231,11 @@ void Viewer::startOpen(const Preset& preset, const std::string& baseDir, const s
   p.path = path;
   // Running, from the new scene's first frame on (posted first: the open is the last
   // command open() waits for).
-  setPaused(false);
+  controls_->setPaused(false);
   p.ticket = sim_->open(preset.scene, baseDir);
   pendingOpen_ = std::move(p);
   // A NaN of the old scene goes with it.
-  resetTicket_ = pendingOpen_->ticket;
+  controls_->opened(pendingOpen_->ticket);
 }
 
 bool Viewer::open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
@@ -384,123 +384,6 @@ void Viewer::updateTitle() {
 
 // --- Running ---------------------------------------------------------------------------
 
-void Viewer::setPaused(bool paused) {
-  paused_ = paused;
-  playing_ = false;
-  // Going on from a recorded frame on show is the live frame going on; resumeFrom() goes on
-  // from the frame shown.
-  if (!paused && frame_->timeline.shown >= 0) sim_->show(-1);
-  sim_->setPaused(paused);
-}
-
-void Viewer::showRecorded(long frame) {
-  if (frame >= 0) paused_ = true;
-  sim_->show(frame);
-}
-
-void Viewer::playRecording(bool play) {
-  const TimelineStatus& t = frame_->timeline;
-  playing_ = play && t.first >= 0;
-  if (!playing_) return;
-  paused_ = true;
-  playFrom_ = t.shown >= 0 && t.shown < t.last ? t.shown : t.first;
-  playStart_ = Clock::now();
-  sim_->show(playFrom_);
-}
-
-void Viewer::advancePlayback() {
-  if (!playing_) return;
-  const TimelineStatus& t = frame_->timeline;
-  const double dt = std::max(1e-6, double(frame_->config.sim.dt));
-  long frame =
-      playFrom_ + long(std::chrono::duration<double>(Clock::now() - playStart_).count() / dt);
-  if (t.last < 0) {
-    playing_ = false;
-    return;
-  }
-  if (frame > t.last) {
-    if (loopPlayback_) {
-      playFrom_ = t.first;
-      playStart_ = Clock::now();
-      frame = t.first;
-    } else {
-      frame = t.last;
-      playing_ = false;
-    }
-  }
-  if (frame != t.shown) sim_->show(frame);
-}
-
-void Viewer::resumeFrom(long frame) {
-  playing_ = false;
-  paused_ = true;
-  sim_->resume(frame);
-}
-
-void Viewer::bake(double seconds) {
-  playing_ = false;
-  paused_ = false;
-  const double dt = std::max(1e-6, double(doc_.current().scene.sim.dt));
-  sim_->bake(std::max(1L, std::lround(seconds / dt)));
-}
-
-void Viewer::setRecording(bool on) {
-  sim_->setRecording(on);
-}
-
-void Viewer::setCacheBudget(size_t bytes) {
-  sim_->setCacheBudget(bytes);
-}
-
-void Viewer::exportRecorded(const std::string& dir, long first, long last) {
-  sim_->exportRecorded(dir, first, last);
-}
-
-void Viewer::keepAsA() {
-  sim_->keepAsA();
-}
-
-void Viewer::rerunFromA() {
-  const TimelineStatus& t = frame_->timeline;
-  if (t.aFirst < 0) return;
-  if (t.aGeneration != frame_->generation) {
-    log(MessageLevel::Error,
-        "cannot run B: A was recorded on another groom (the hair was regrown since); keep a "
-        "new A");
-    return;
-  }
-  playing_ = false;
-  paused_ = false;
-  sim_->showA(false);
-  sim_->resume(t.aFirst);
-  sim_->bake(std::max(1L, t.aLast - t.aFirst));
-}
-
-void Viewer::showA(bool on) {
-  sim_->showA(on);
-}
-
-std::vector<std::string_view> Viewer::keysChangedSinceA() const {
-  std::vector<std::string_view> keys;
-  const std::shared_ptr<const Config>& a = frame_->timeline.aConfig;
-  if (!a) return keys;
-  Preset then = doc_.current();
-  then.scene = *a;
-  for (const PresetParam& p : params())
-    if (p.group != "Camera" && !sameValue(p, then, doc_.current())) keys.push_back(p.key);
-  return keys;
-}
-
-void Viewer::stepOnce() {
-  setPaused(true);
-  sim_->step();
-}
-
-void Viewer::resetHair() {
-  resetTicket_ = sim_->reset();
-  log(MessageLevel::Info, "hair reset to rest");
-}
-
 void Viewer::resetView() {
   Preset next = doc_.current();
   next.view.camera = doc_.loaded().view.camera;
@@ -563,9 +446,9 @@ void Viewer::handleKeys() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantCaptureKeyboard) return;  // typing in a text field
   auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-  if (pressed(GLFW_KEY_SPACE)) setPaused(!paused_);
-  if (pressed(GLFW_KEY_N) || pressed(GLFW_KEY_PERIOD)) stepOnce();
-  if (pressed(GLFW_KEY_R)) resetHair();
+  if (pressed(GLFW_KEY_SPACE)) controls_->setPaused(!controls_->paused());
+  if (pressed(GLFW_KEY_N) || pressed(GLFW_KEY_PERIOD)) controls_->stepOnce();
+  if (pressed(GLFW_KEY_R)) controls_->resetHair();
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) requestScreenshot(defaultScreenshotName());
   if (pressed(GLFW_KEY_F)) frameHead();
   if (pressed(GLFW_KEY_HOME)) resetView();
@@ -609,7 +492,7 @@ void Viewer::handleMouse() {
 // --- Drawing -------------------------------------------------------------------------------
 
 void Viewer::renderScene(bool capture) {
-  const bool running = !paused_ && !frame_->idle;
+  const bool running = !controls_->paused() && !frame_->idle;
   const SceneView::Drawn drawn =
       view_->draw(*frame_, doc_.current().view, window_->framebufferSize(), running, capture);
   if (drawn.scene) {
@@ -655,7 +538,7 @@ void Viewer::runFrame() {
   ImGui::NewFrame();
 
   takeSimFrame();
-  advancePlayback();
+  controls_->advancePlayback();
   handleKeys();
   handleMouse();
   drawPanels(*this, *panels_);
@@ -688,7 +571,7 @@ int Viewer::run() {
     for (;;) {
       const auto now = Clock::now();
       const bool busy = now - window_->lastInput() < std::chrono::seconds(1) || view_->moving() ||
-                        screenshotPending() || pendingOpen_ || playing_ ||
+                        screenshotPending() || pendingOpen_ || controls_->playingRecording() ||
                         sim_->latestSerial() != frame_->serial;
       const auto next = start + (busy ? busyBudget : idleBudget);
       if (now >= next || window_->shouldClose()) break;
@@ -769,7 +652,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
     }
   }
   if (!startupErrors.empty()) return 2;
-  if (viewer->nanStopped()) return 1;
+  if (viewer->controls().nanStopped()) return 1;
   if (!options.screenshot.empty() && viewer->lastScreenshotPath() != options.screenshot) return 1;
   return 0;
 }

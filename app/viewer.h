@@ -31,9 +31,11 @@
 #include "app/preset.h"
 #include "app/preset_document.h"
 #include "app/scene_view.h"
+#include "app/sim_controls.h"
 #include "app/scene_setup.h"
 #include "app/sim_thread.h"
 #include "app/viewer_image.h"
+#include "app/viewer_message.h"
 #include "app/viewer_stats.h"
 
 namespace csm {
@@ -60,13 +62,6 @@ struct ViewerOptions {
   double idleFps = 20.0;
   // Builds solvers by name; tests put their own in. Empty: csm::makeSolver.
   SolverByName makeSolver;
-};
-
-enum class MessageLevel { Info, Warning, Error };
-struct ViewerMessage {
-  MessageLevel level;
-  std::string text;
-  std::chrono::steady_clock::time_point when;
 };
 
 class Viewer {
@@ -100,32 +95,9 @@ class Viewer {
   void revert();  // back to the preset as loaded (or last saved)
 
   // --- Running ---------------------------------------------------------------------------
-  void setPaused(bool paused);
-  bool paused() const { return paused_; }
-  void stepOnce();   // one frame, paused
-  void resetHair();  // back to rest, time 0; clears a NaN stop
-  // The timeline (the simulation thread's recording, sim/run/frame_recording.h). Showing a recorded
-  // frame pauses the simulation (-1: the live frame again); playing shows the recording at
-  // real time from the frame shown, looping or stopping at its end; resume goes on simulating
-  // from a recorded frame (paused there); bake runs seconds of simulation as fast as they go.
-  void showRecorded(long frame);
-  void playRecording(bool play);
-  bool playingRecording() const { return playing_; }
-  void setLoopRecording(bool loop) { loopPlayback_ = loop; }
-  bool loopRecording() const { return loopPlayback_; }
-  void resumeFrom(long frame);
-  void bake(double seconds);
-  void setRecording(bool on);
-  void setCacheBudget(size_t bytes);
-  // Writes the recorded frames first..last as DIR/frame_00001.hair, ... (cyHair).
-  void exportRecorded(const std::string& dir, long first, long last);
-  // A/B: keep the recording as A; simulate its span again from its first frame with the
-  // parameters as they are now (B: the same head motion and wind, which follow the clock);
-  // show A's frame instead of B's at the frame on show; the parameters B differs in.
-  void keepAsA();
-  void rerunFromA();
-  void showA(bool on);
-  std::vector<std::string_view> keysChangedSinceA() const;
+  // Pause, step, reset and the timeline: what the window asks of its simulation thread.
+  SimControls& controls() { return *controls_; }
+  const SimControls& controls() const { return *controls_; }
   void resetView();  // the preset's camera
   void frameHead();
   void resetHead();  // undo the mouse's head pose
@@ -169,7 +141,6 @@ class Viewer {
   void showPresetErrors(const std::string& text, const std::string& note);
   const std::string& presetErrorsNote() const { return presetErrorsNote_; }
   SimThread::ImportStatus importStatus() const { return sim_->importStatus(); }
-  bool nanStopped() const;
   long nanFrame() const { return frame_->nanFrame; }
   uint64_t nanParticles() const { return frame_->nanParticles; }
   const Image& lastScreenshot() const { return lastScreenshot_; }
@@ -213,6 +184,7 @@ class Viewer {
   std::shared_ptr<const SimFrame> frame_ = std::make_shared<SimFrame>();
 
   PresetDocument doc_;
+  std::unique_ptr<SimControls> controls_;  // over sim_, frame_ and doc_
   std::optional<PendingOpen> pendingOpen_;
   std::string openError_;  // why the last open failed
   std::vector<std::string> presetErrors_;
@@ -225,13 +197,6 @@ class Viewer {
   std::string groomWarning_;          // likewise what the groom's import repaired
 
   Pose userPose_;
-  bool paused_ = false;
-  // Playing the recording back: from which frame, since when (the UI's clock).
-  bool playing_ = false, loopPlayback_ = true;
-  long playFrom_ = 0;
-  std::chrono::steady_clock::time_point playStart_;
-  void advancePlayback();
-  long resetTicket_ = 0;  // frames before it may still show a NaN the reset clears
   long framesDrawn_ = 0;
   std::string title_;
 

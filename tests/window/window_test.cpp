@@ -253,7 +253,7 @@ TEST_CASE(
   CHECK(before == 6000);
   const CameraConfig camera = v->preset().view.camera;
   // Paused, so the clock can be compared across the change.
-  v->setPaused(true);
+  v->controls().setPaused(true);
   REQUIRE(v->sync());
   const double t = v->simFrame().time;
 
@@ -274,14 +274,14 @@ TEST_CASE(
   CHECK(std::find(changed.begin(), changed.end(), "hairstyle.strands") != changed.end());
   CHECK(std::find(changed.begin(), changed.end(), "wind.strength") != changed.end());
 
-  v->setPaused(false);
+  v->controls().setPaused(false);
   runSimFrames(*v, 10);
   CHECK(v->simFrame().strands == 1500);
   CHECK(v->simFrame().particles > 1500);
   REQUIRE(v->simFrame().sample.has_value());
   CHECK(v->simFrame().sample->frame > 0);
   CHECK(std::isfinite(v->simFrame().sample->accuracy.maxStrain));
-  CHECK_FALSE(v->nanStopped());
+  CHECK_FALSE(v->controls().nanStopped());
 
   const fs::path shot = dir / "viewer.png";
   const Image img = screenshot(*v, shot);
@@ -300,7 +300,7 @@ TEST_CASE(
 
   // Hair, not just the head: paused, the same frame with one strand instead of 1500 differs
   // in the scene area between the panels.
-  v->setPaused(true);
+  v->controls().setPaused(true);
   runFrames(*v, 1);
   const Image withHair = screenshot(*v, dir / "with_hair.png");
   REQUIRE(v->setParam("hairstyle.strands", "1"));
@@ -367,7 +367,7 @@ TEST_CASE("window: the stiffness window changes live; a capped stiffness is said
   REQUIRE(v->sync());
   CHECK(warnings() == 1);
   runSimFrames(*v, 2);
-  CHECK_FALSE(v->nanStopped());
+  CHECK_FALSE(v->controls().nanStopped());
 
   // The paper model takes its window in particles and sim.substeps as they are.
   REQUIRE(v->setParam("sim.stiffness_model", "paper"));
@@ -431,8 +431,8 @@ TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[win
   REQUIRE(v->open(c, "", "", &error));
   // The samples come a few frames late: the thread stops within a few frames of the bad one.
   REQUIRE(v->waitForSimFrame(40));
-  REQUIRE(v->nanStopped());
-  CHECK(v->paused());
+  REQUIRE(v->controls().nanStopped());
+  CHECK(v->controls().paused());
   CHECK(v->nanFrame() >= 4);
   const long frame = v->simFrame().frame;
   CHECK(frame < 40);
@@ -446,8 +446,8 @@ TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[win
   CHECK(share(img, img.width / 2 - 200, 0, img.width / 2 + 200, 120,
               [&](const uint8_t* p) { return near(p, bannerish, 25); }) > 0.05);
 
-  v->resetHair();
-  CHECK_FALSE(v->nanStopped());
+  v->controls().resetHair();
+  CHECK_FALSE(v->controls().nanStopped());
   removeTemp(dir);
 }
 
@@ -464,7 +464,7 @@ TEST_CASE("window: a shader that fails to reload keeps the old program and shows
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
   REQUIRE(v->sceneView().hasRenderer());
-  v->setPaused(true);
+  v->controls().setPaused(true);
   runFrames(*v, 2);
   const Image before = screenshot(*v, dir / "before_reload.png");
 
@@ -634,7 +634,7 @@ TEST_CASE("window: interactive quality while simulating, full when still and for
   CHECK(v->stats().drawnStrands == 1600);
 
   // Paused and still: full quality, and then no new picture while nothing changes.
-  v->setPaused(true);
+  v->controls().setPaused(true);
   REQUIRE(v->sync());
   runFrames(*v, 2);
   CHECK(v->sceneView().lastQuality() == DrawQuality::Full);
@@ -648,7 +648,7 @@ TEST_CASE("window: interactive quality while simulating, full when still and for
 
   // Interactive quality off: full while running too.
   REQUIRE(v->setParam("render.interactive", "false"));
-  v->setPaused(false);
+  v->controls().setPaused(false);
   runSimFrames(*v, 2);
   runFrames(*v, 1);
   CHECK(v->sceneView().lastQuality() == DrawQuality::Full);
@@ -693,7 +693,7 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
   const Image live = screenshot(*v, dir / "live40.png");
 
   // Scrubbed back to frame 12: that frame's picture, the simulation paused at 40.
-  v->showRecorded(12);
+  v->controls().showRecorded(12);
   REQUIRE(v->sync());
   CHECK(v->simFrame().timeline.shown == 12);
   CHECK(v->simFrame().frame == 12);
@@ -701,19 +701,19 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
   const Image at12 = screenshot(*v, dir / "recorded12.png");
   CHECK(sceneDifference(at12, live) > 0.01);
   // Frame 40 from the recording is the live frame 40, pixel for pixel.
-  v->showRecorded(40);
+  v->controls().showRecorded(40);
   REQUIRE(v->sync());
   CHECK(sceneDifference(screenshot(*v, dir / "recorded40.png"), live) == 0.0);
 
   // Played back from frame 12 at real time (1/60 s a frame), not looping: it moves on, no
   // faster than real time (however slowly the UI draws: llvmpipe may take most of a second a
   // frame), and stops at the last frame.
-  v->setLoopRecording(false);
-  v->showRecorded(12);
+  v->controls().setLoopRecording(false);
+  v->controls().showRecorded(12);
   REQUIRE(v->sync());
   const auto playStart = Clock::now();
-  v->playRecording(true);
-  CHECK(v->playingRecording());
+  v->controls().playRecording(true);
+  CHECK(v->controls().playingRecording());
   while (v->simFrame().timeline.shown <= 15 && Clock::now() < playStart + std::chrono::minutes(1)) {
     v->runFrame();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -724,10 +724,10 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
   CHECK(played > 15);
   CHECK(played <= 12 + long(elapsed * 60.0) + 1);
   // Looping, from near the end: it comes round to the start.
-  v->setLoopRecording(true);
-  v->showRecorded(38);
+  v->controls().setLoopRecording(true);
+  v->controls().showRecorded(38);
   REQUIRE(v->sync());
-  v->playRecording(true);
+  v->controls().playRecording(true);
   const auto loopStart = Clock::now();
   bool wrapped = false;
   while (!wrapped && Clock::now() < loopStart + std::chrono::minutes(1)) {
@@ -736,26 +736,26 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   CHECK(wrapped);
-  CHECK(v->playingRecording());
-  v->playRecording(false);
+  CHECK(v->controls().playingRecording());
+  v->controls().playRecording(false);
 
   // Resumed from frame 20 and run on to the limit (40): the frames as recorded, the same
   // picture at 40.
-  v->showRecorded(20);
+  v->controls().showRecorded(20);
   REQUIRE(v->sync());
   const Image at20 = screenshot(*v, dir / "recorded20.png");
-  v->resumeFrom(20);
+  v->controls().resumeFrom(20);
   REQUIRE(v->sync());
   CHECK(v->simFrame().timeline.shown == -1);
   CHECK(v->simFrame().frame == 20);
   CHECK(v->simFrame().timeline.last == 20);
-  CHECK(v->paused());
+  CHECK(v->controls().paused());
   CHECK(sceneDifference(screenshot(*v, dir / "resumed20.png"), at20) == 0.0);
   bool said = false;
   for (const ViewerMessage& m : v->messages())
     said |= m.text.rfind("resumed from frame 20", 0) == 0;
   CHECK(said);
-  v->setPaused(false);
+  v->controls().setPaused(false);
   REQUIRE(v->waitForSimFrame(40));
   REQUIRE(v->sync());
   CHECK(v->simFrame().frame == 40);
@@ -764,9 +764,9 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
 
   // A bake: 10 frames as fast as they go, recorded, then paused (the limit lifted by a reset
   // would start again at 0: bake from the resumed 20 instead).
-  v->resumeFrom(20);
+  v->controls().resumeFrom(20);
   REQUIRE(v->sync());
-  v->bake(10.0 / 60.0);
+  v->controls().bake(10.0 / 60.0);
   REQUIRE(v->waitForSimFrame(30));
   REQUIRE(v->sync());
   CHECK(v->simFrame().frame == 30);
@@ -786,7 +786,7 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   REQUIRE(v->open(c, "", "", &error));
   REQUIRE(v->waitForSimFrame(30));
   REQUIRE(v->sync());
-  v->keepAsA();
+  v->controls().keepAsA();
   REQUIRE(v->sync());
   CHECK(v->simFrame().timeline.aFirst == 0);
   CHECK(v->simFrame().timeline.aLast == 30);
@@ -794,36 +794,36 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   CHECK(v->simFrame().timeline.aBytes > 0);
   CHECK(v->simFrame().timeline.bytes + v->simFrame().timeline.aBytes <=
         v->simFrame().timeline.budget);
-  v->showRecorded(30);
+  v->controls().showRecorded(30);
   REQUIRE(v->sync());
   const Image a30 = screenshot(*v, dir / "a30.png");
 
   // B: a strong wind, simulated again over A's frames.
   REQUIRE(v->setParam("wind.strength", "14", &error));
-  CHECK(v->keysChangedSinceA() == std::vector<std::string_view>{"wind.strength"});
-  v->rerunFromA();
+  CHECK(v->controls().keysChangedSinceA() == std::vector<std::string_view>{"wind.strength"});
+  v->controls().rerunFromA();
   REQUIRE(v->waitForSimFrame(30));
   REQUIRE(v->sync());
   CHECK(v->simFrame().timeline.last == 30);
   CHECK(v->simFrame().timeline.bytes + v->simFrame().timeline.aBytes <=
         v->simFrame().timeline.budget);
-  v->showRecorded(30);
+  v->controls().showRecorded(30);
   REQUIRE(v->sync());
   CHECK_FALSE(v->simFrame().timeline.showingA);
   const Image b30 = screenshot(*v, dir / "b30.png");
   CHECK(sceneDifference(a30, b30) > 0.01);
   // The toggle: A's frame 30 again, pixel for pixel.
-  v->showA(true);
+  v->controls().showA(true);
   REQUIRE(v->sync());
   CHECK(v->simFrame().timeline.showingA);
   CHECK(sceneDifference(screenshot(*v, dir / "a30_again.png"), a30) == 0.0);
-  v->showA(false);
+  v->controls().showA(false);
   REQUIRE(v->sync());
   CHECK(sceneDifference(screenshot(*v, dir / "b30_again.png"), b30) == 0.0);
 
   // The recording (B) out as cyHair, one file a frame, the same strands in each.
   const fs::path seq = dir / "seq";
-  v->exportRecorded(seq.string(), 0, 30);
+  v->controls().exportRecorded(seq.string(), 0, 30);
   REQUIRE(v->sync());
   size_t files = 0;
   for (const auto& e : fs::directory_iterator(seq)) files += e.path().extension() == ".hair";
@@ -839,7 +839,7 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   // A regrown groom: A cannot be run again on it, and the viewer says so.
   REQUIRE(v->setParam("hairstyle.strands", "300", &error));
   REQUIRE(v->sync());
-  v->rerunFromA();
+  v->controls().rerunFromA();
   CHECK(v->messages().back().text.rfind("cannot run B: A was recorded on another groom", 0) == 0);
   removeTemp(dir);
 }
