@@ -3,7 +3,6 @@
 #include <functional>
 #include <string_view>
 
-
 namespace csm::gl {
 
 enum class LogLevel { Info, Warning, Error };
