@@ -81,7 +81,6 @@ class SolverHead {
   // built for other head settings. Throws std::runtime_error naming the file when head.mesh
   // cannot be read (a scene that loads through Simulation has had it read already).
   const HeadModel& update(const Config& c);
-  const HeadModel* model() const { return model_.get(); }
   const std::shared_ptr<const HeadModel>& shared() const { return model_; }
 
  private:
