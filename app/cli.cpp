@@ -40,7 +40,22 @@ usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx | GROOM.obj] [options]
   --exit-after N         window: simulate N frames as fast as they come (not paced to
                          real time), then exit
   --quiet                no progress on stderr
+  --require-gpu          exit with status 1 when OpenGL runs on a software renderer
+                         (llvmpipe, softpipe, swrast) instead of a GPU; without it that is a
+                         warning (stderr, the window's Messages)
+  --info                 print the headless OpenGL device (how it was chosen, renderer,
+                         driver version) and its limits, then exit
   --help                 this text
+
+Environment:
+  CSM_EGL_DEVICE=N|NAME  headless: the EGL device to run on, and no other. N is the CUDA
+                         device index where the driver reports one (NVIDIA: as nvidia-smi
+                         counts), else the place in EGL's device list; NAME is matched
+                         against the devices' names (e.g. /dev/dri/renderD129, NVIDIA). A
+                         device that does not exist is an error listing those that do.
+  CSM_EGL_PLATFORM=device|surfaceless|default
+                         headless: only that EGL path (default: GPUs first, then Mesa's
+                         surfaceless driver, then software devices, then the default display)
 
 Exit status: 0 success, 1 runtime failure (no GL context, NaN in the simulation, I/O),
 2 bad input (command line, preset, groom file).
@@ -118,6 +133,10 @@ std::optional<Options> parseCommandLine(int argc, char** argv, std::string* erro
       if (!value(o.screenshot)) return fail("--screenshot needs a file name");
     } else if (arg == "--exit-after") {
       if (!number(o.exitAfter, 0)) return fail("--exit-after needs a whole number >= 0");
+    } else if (arg == "--require-gpu") {
+      o.requireGpu = true;
+    } else if (arg == "--info") {
+      o.info = true;
     } else if (arg == "--quiet") {
       o.quiet = true;
     } else if (arg.rfind("--", 0) == 0) {

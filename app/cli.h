@@ -20,7 +20,9 @@ struct Options {
   bool validateMode = false;
   bool help = false;
   bool quiet = false;
-  std::string savePreset;  // --save-preset FILE.json: write the resolved scene
+  bool requireGpu = false;  // --require-gpu: a software OpenGL renderer is an error
+  bool info = false;        // --info: the OpenGL device and its limits, then exit
+  std::string savePreset;   // --save-preset FILE.json: write the resolved scene
   // Capture.
   std::string outDir;
   int every = 1;

@@ -9,6 +9,7 @@
 #include "app/import_progress.h"
 #include "sim/run/frame_driver.h"
 #include "app/metrics.h"
+#include "gl/caps.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
@@ -24,6 +25,24 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 }  // namespace
+
+int printDeviceInfo(const Options& options) {
+  std::string error;
+  std::unique_ptr<gl::HeadlessContext> context = gl::HeadlessContext::create(&error);
+  if (!context) {
+    std::fprintf(stderr, "csmhair: no OpenGL 4.3 context: %s\n", error.c_str());
+    return 1;
+  }
+  const gl::Caps caps = gl::queryCaps();
+  std::printf("context:                    %s\n%s\n", context->platform().c_str(),
+              caps.summary().c_str());
+  if (caps.software && options.requireGpu) {
+    std::fprintf(stderr, "csmhair: --require-gpu: %s is a software renderer, not a GPU\n",
+                 caps.renderer.c_str());
+    return 1;
+  }
+  return 0;
+}
 
 int runHeadless(const Options& options, const SceneSetup& scene) {
   std::string error;
@@ -68,6 +87,18 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
                    error.c_str());
       return 1;
     }
+    if (gl::isSoftwareRenderer(context->renderer())) {
+      if (options.requireGpu) {
+        std::fprintf(stderr,
+                     "csmhair: --require-gpu: the OpenGL context (%s) is a software renderer, "
+                     "%s, not a GPU\n",
+                     context->platform().c_str(), context->renderer().c_str());
+        return 1;
+      }
+      if (!options.quiet)
+        std::fprintf(stderr, "csmhair: warning: %s\n",
+                     gl::softwareRendererWarning(context->renderer()).c_str());
+    }
   }
   std::unique_ptr<Solver> solver = makeSolver(options.solver, &error);
   if (!solver) {
@@ -108,10 +139,12 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   };
   const StiffnessInfo stiffness = sim.solver().stiffness();
   if (!options.quiet)
-    std::fprintf(stderr, "csmhair: %s: %zu strands, %zu particles, solver %s, %ld frames; %s\n",
-                 scene.source.c_str(), sim.solver().strandCount(), sim.solver().particleCount(),
-                 std::string(sim.solver().name()).c_str(), frames,
-                 stiffnessText(stiffness).c_str());
+    std::fprintf(
+        stderr, "csmhair: %s: %zu strands, %zu particles, solver %s%s%s%s, %ld frames; %s\n",
+        scene.source.c_str(), sim.solver().strandCount(), sim.solver().particleCount(),
+        std::string(sim.solver().name()).c_str(), sim.solver().variant().empty() ? "" : " (",
+        sim.solver().variant().c_str(), sim.solver().variant().empty() ? "" : ")", frames,
+        stiffnessText(stiffness).c_str());
   // Said even with --quiet: what the import changed of the file, and hair softer than asked.
   if (const std::string groom = groomReportText(sim.groomReport()); !groom.empty())
     std::fprintf(stderr, "csmhair: warning: %s\n", groom.c_str());
@@ -271,6 +304,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     d.strands = sim.solver().strandCount();
     d.particles = sim.solver().particleCount();
     d.solver = std::string(sim.solver().name());
+    d.solverVariant = sim.solver().variant();
     d.groom = sim.groomReport();
     d.device = options.solver == "gpu" && context ? context->renderer() : std::string("cpu");
     nlohmann::json meta = describeRun(d);

@@ -10,4 +10,8 @@ namespace csm {
 // Returns the process exit status.
 int runHeadless(const Options& options, const SceneSetup& scene);
 
+// --info: the headless context's device and limits on stdout. 1 when there is no context,
+// or with --require-gpu when it is a software renderer.
+int printDeviceInfo(const Options& options);
+
 }  // namespace csm

@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
   }
   if (options->listParams) return listParams();
   if (options->validateMode) return validate(options->validate);
+  if (options->info) return csm::printDeviceInfo(*options);
 
   csm::SceneSetup scene;
   if (!csm::setupScene(*options, scene, &error)) {

@@ -173,6 +173,7 @@ nlohmann::json describeRun(const RunDescription& r) {
       {"stiffness_window", c.sim.stiffnessWindow},
       {"collision_mode", collisionModeName(c.collision.mode)},
       {"solver", r.solver},
+      {"solver_variant", r.solverVariant},
       {"groom",
        {{"file_strands", r.groom.fileStrands},
         {"file_points", r.groom.filePoints},

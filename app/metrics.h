@@ -56,6 +56,7 @@ struct RunDescription {
   StiffnessInfo stiffness;
   std::size_t strands = 0, particles = 0;
   std::string solver;
+  std::string solverVariant;  // Solver::variant(): the GPU solver's kernel path
   GroomReport groom;
   // Where the solver ran: the GL renderer string for the GPU solver (e.g. "llvmpipe (LLVM
   // 15.0.6, 256 bits)" or "NVIDIA H100 80GB HBM3/PCIe/SSE2"), "cpu" otherwise.

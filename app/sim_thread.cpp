@@ -269,6 +269,8 @@ void SimThread::publish(long ticket) {
   f->loaded = loaded_;
   Solver& solver = sim_->solver();
   f->solver = std::string(solver.name());
+  if (const std::string variant = solver.variant(); !variant.empty())
+    f->solver += " (" + variant + ")";
   if (loaded_) {
     f->frame = sim_->frame();
     f->time = sim_->time();

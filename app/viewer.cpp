@@ -17,6 +17,7 @@
 #include "app/params.h"
 #include "app/preset.h"
 #include "app/window.h"
+#include "gl/caps.h"
 #include "gl/debug.h"
 #include "sim/run/make_solver.h"
 #include "sim/param/sim_params.h"
@@ -44,6 +45,12 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   wo.vsync = options.vsync;
   v->window_ = GlfwWindow::create(wo, error);
   if (!v->window_) return nullptr;
+  const bool software = gl::isSoftwareRenderer(v->window_->renderer());
+  if (software && options.requireGpu) {
+    *error = "--require-gpu: the window's OpenGL (" + v->window_->renderer() +
+             ") is a software renderer, not a GPU";
+    return nullptr;
+  }
 
   // Messages from gl (shader logs, GL errors), of either thread, go to the Messages panel.
   gl::setLogSink([raw = v.get()](gl::LogLevel level, std::string_view text) {
@@ -62,6 +69,8 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   ImGui_ImplGlfw_InitForOpenGL(v->window_->handle(), true);
   ImGui_ImplOpenGL3_Init("#version 430 core");
   v->imguiReady_ = true;
+
+  if (software) v->log(MessageLevel::Warning, gl::softwareRendererWarning(v->window_->renderer()));
 
   v->view_ = std::make_unique<SceneView>();
   if (!v->view_->hasRenderer())
@@ -589,6 +598,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
   vo.height = options.height;
   vo.solver = options.solver;
   vo.quiet = options.quiet;
+  vo.requireGpu = options.requireGpu;
   // A scripted run measures and captures: as fast as the simulation goes, to its last frame.
   const bool scripted = options.exitAfter >= 0;
   vo.vsync = !scripted;

@@ -48,6 +48,8 @@ struct ViewerOptions {
   std::string solver = "gpu";  // falls back to "cpu", with a message, when the GPU one fails
   bool vsync = true;
   bool quiet = false;
+  // A software OpenGL renderer (llvmpipe) is an error, not a warning; --require-gpu.
+  bool requireGpu = false;
   // The simulation keeps to real time (off: as fast as it goes, for scripted runs and tests).
   bool paced = true;
   // The simulation stops after this frame (-1: never); --exit-after.

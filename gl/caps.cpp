@@ -18,6 +18,18 @@ GLint integer(GLenum name) {
 
 }  // namespace
 
+bool isSoftwareRenderer(const std::string& renderer) {
+  for (const char* s : {"llvmpipe", "softpipe", "swrast", "SwiftShader"})
+    if (renderer.find(s) != std::string::npos) return true;
+  return false;
+}
+
+std::string softwareRendererWarning(const std::string& renderer) {
+  return "OpenGL runs on a software renderer (" + renderer +
+         "): the GPU solver and the drawing run on the CPU, far slower than on a GPU. "
+         "--require-gpu makes this an error; CSM_EGL_DEVICE chooses the headless device";
+}
+
 Caps queryCaps() {
   Caps c;
   c.vendor = glString(GL_VENDOR);
@@ -26,8 +38,7 @@ Caps queryCaps() {
   c.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
   c.major = integer(GL_MAJOR_VERSION);
   c.minor = integer(GL_MINOR_VERSION);
-  for (const char* s : {"llvmpipe", "softpipe", "swrast", "SwiftShader"})
-    if (c.renderer.find(s) != std::string::npos) c.software = true;
+  c.software = isSoftwareRenderer(c.renderer);
 
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &c.maxShaderStorageBlockSize);
   c.maxShaderStorageBufferBindings = integer(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS);

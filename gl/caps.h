@@ -36,6 +36,12 @@ struct Caps {
   std::string summary() const;
 };
 
+// Whether GL_RENDERER names a software rasterizer (llvmpipe, softpipe, swrast, SwiftShader).
+bool isSoftwareRenderer(const std::string& renderer);
+
+// One line for logs and warnings: that the context runs on the CPU, naming it, and what follows.
+std::string softwareRendererWarning(const std::string& renderer);
+
 // Queries the current context. Not cached: the window and headless contexts differ.
 Caps queryCaps();
 

@@ -76,7 +76,9 @@ void releaseDisplay(EGLDisplay d) {
 struct Device {
   EGLDeviceEXT handle;
   std::string label;
-  int score;  // higher first: NVIDIA 3, other DRM GPU 2, other non-software 1, software 0
+  int score;      // higher first: NVIDIA 3, other DRM GPU 2, other non-software 1, software 0
+  int index;      // place in eglQueryDevicesEXT's order
+  int cuda = -1;  // the CUDA device index, where the driver says it (EGL_NV_device_cuda)
 };
 
 std::vector<Device> enumerateDevices(std::string* note) {
@@ -90,6 +92,7 @@ std::vector<Device> enumerateDevices(std::string* note) {
   handles.resize(std::size_t(count));
   std::vector<Device> devices;
   for (EGLDeviceEXT h : handles) {
+    int index = int(devices.size());
     const char* ext = eglQueryDeviceStringEXT(h, EGL_EXTENSIONS);
     std::string drm, vendor;
     if (hasExtension(ext, "EGL_EXT_device_drm"))
@@ -100,16 +103,58 @@ std::vector<Device> enumerateDevices(std::string* note) {
     bool nvidia =
         hasExtension(ext, "EGL_NV_device_cuda") || vendor.find("NVIDIA") != std::string::npos;
     if (nvidia && vendor.empty()) vendor = "NVIDIA";
+    int cuda = -1;
+    EGLAttrib value = 0;
+    if (hasExtension(ext, "EGL_NV_device_cuda") &&
+        eglQueryDeviceAttribEXT(h, EGL_CUDA_DEVICE_NV, &value))
+      cuda = int(value);
     int score = software ? 0 : nvidia ? 3 : !drm.empty() ? 2 : 1;
-    std::string label = "EGL device " + (software      ? std::string("software")
-                                         : drm.empty() ? "?"
-                                                       : drm);
+    std::string label = "EGL device " + std::to_string(index) + " " +
+                        (software      ? std::string("software")
+                         : drm.empty() ? "?"
+                                       : drm);
     if (!vendor.empty()) label += " (" + vendor + ")";
-    devices.push_back({h, label, score});
+    if (cuda >= 0) label += " CUDA " + std::to_string(cuda);
+    devices.push_back({h, label, score, index, cuda});
   }
   std::stable_sort(devices.begin(), devices.end(),
                    [](const Device& a, const Device& b) { return a.score > b.score; });
   return devices;
+}
+
+std::string listDevices(const std::vector<Device>& devices) {
+  std::string s;
+  for (const Device& d : devices) s += "\n    " + d.label;
+  return s.empty() ? std::string(" none") : s;
+}
+
+// The device CSM_EGL_DEVICE names: a number is the CUDA device index where the driver reports
+// one for every device that is not software (nvidia-smi and CUDA_VISIBLE_DEVICES count so),
+// else the place in EGL's order; anything else is matched against the devices' labels (the
+// DRM file, the vendor). Empty with `error` set when nothing matches.
+std::vector<Device> chooseDevice(const std::vector<Device>& devices, const std::string& want,
+                                 std::string* error) {
+  char* end = nullptr;
+  long number = std::strtol(want.c_str(), &end, 10);
+  const bool isNumber = !want.empty() && end && *end == '\0';
+  std::vector<Device> chosen;
+  if (isNumber) {
+    bool cudaOrder = false;
+    for (const Device& d : devices) cudaOrder = cudaOrder || d.cuda >= 0;
+    for (const Device& d : devices)
+      if ((cudaOrder ? d.cuda : d.index) == number) chosen.push_back(d);
+    if (chosen.empty())
+      *error = "CSM_EGL_DEVICE=" + want + ": no EGL device has " +
+               (cudaOrder ? "that CUDA index" : "that index") +
+               "; the devices are:" + listDevices(devices);
+  } else {
+    for (const Device& d : devices)
+      if (d.label.find(want) != std::string::npos) chosen.push_back(d);
+    if (chosen.empty())
+      *error = "CSM_EGL_DEVICE=" + want +
+               ": no EGL device's name contains it; the devices are:" + listDevices(devices);
+  }
+  return chosen;
 }
 
 struct Made {
@@ -249,17 +294,50 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(const Options& options,
     return true;
   };
 
+  std::string wantDevice;
+  if (const char* env = std::getenv("CSM_EGL_DEVICE"); env && *env) wantDevice = env;
+  if (!wantDevice.empty()) {
+    if (only.empty()) {
+      only = "device";
+    } else if (only != "device") {
+      if (error) *error = "CSM_EGL_DEVICE is set but CSM_EGL_PLATFORM=" + only + " is not device";
+      return nullptr;
+    }
+  }
+
   std::vector<Device> devices;
+  // NVIDIA's driver names enumeration and query together as EGL_EXT_device_base.
   bool deviceSupported = platformBase && hasExtension(client, "EGL_EXT_platform_device") &&
-                         hasExtension(client, "EGL_EXT_device_enumeration");
+                         (hasExtension(client, "EGL_EXT_device_enumeration") ||
+                          hasExtension(client, "EGL_EXT_device_base"));
   if (allowed("device")) {
     if (deviceSupported) {
       std::string note;
       devices = enumerateDevices(&note);
       if (devices.empty()) notes.push_back("EGL device: " + note);
     } else {
-      notes.push_back("EGL device: no EGL_EXT_platform_device / EGL_EXT_device_enumeration");
+      notes.push_back(
+          "EGL device: no EGL_EXT_platform_device / EGL_EXT_device_enumeration (client "
+          "extensions: " +
+          std::string(client ? client : "none") + ")");
     }
+  }
+  if (!wantDevice.empty()) {
+    // The named device or nothing: never another one quietly.
+    std::string why;
+    devices = chooseDevice(devices, wantDevice, &why);
+    if (devices.empty()) {
+      if (error) *error = why;
+      return nullptr;
+    }
+    for (const Device& d : devices)
+      if (attempt(d.label, eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, d.handle, nullptr)))
+        return result;
+    if (error) {
+      *error = "CSM_EGL_DEVICE=" + wantDevice + ": no OpenGL 4.3 core context on it:\n";
+      for (const std::string& n : notes) *error += "  - " + n + "\n";
+    }
+    return nullptr;
   }
   auto tryDevices = [&](bool software) {
     for (const Device& d : devices)
@@ -272,8 +350,9 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(const Options& options,
   if (allowed("device") && tryDevices(false)) return result;
   if (allowed("surfaceless")) {
     if (platformBase && hasExtension(client, "EGL_MESA_platform_surfaceless")) {
-      if (attempt("EGL surfaceless (Mesa)", eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA,
-                                                                     EGL_DEFAULT_DISPLAY, nullptr)))
+      if (attempt("EGL surfaceless platform",
+                  eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
+                                           nullptr)))
         return result;
     } else {
       notes.push_back("EGL surfaceless: no EGL_MESA_platform_surfaceless");

@@ -22,7 +22,7 @@ class Context {
   const std::string& renderer() const { return renderer_; }
   const std::string& version() const { return version_; }
   // How the context was made, e.g. "EGL device /dev/dri/renderD128 (NVIDIA)",
-  // "EGL surfaceless (Mesa)", "GLFW window".
+  // "EGL surfaceless platform", "GLFW window".
   const std::string& platform() const { return platform_; }
 
  protected:
@@ -43,7 +43,11 @@ class Context {
 //  3. software devices of EGL_EXT_platform_device;
 //  4. EGL_DEFAULT_DISPLAY.
 // CSM_EGL_PLATFORM=device|surfaceless|default in the environment allows only that path
-// (device then includes software devices). Draw into a Framebuffer: there is no default one.
+// (device then includes software devices). CSM_EGL_DEVICE=N|NAME takes that device of path 1
+// or 3 and no other: N is the CUDA device index where the driver reports one (NVIDIA's, as
+// nvidia-smi numbers them), else the place in EGL's order; NAME is matched against the labels
+// ("/dev/dri/renderD129", "NVIDIA"); a device that does not exist is an error listing those
+// that do. Draw into a Framebuffer: there is no default one.
 class HeadlessContext final : public Context {
  public:
   struct Options {

@@ -78,6 +78,7 @@ bool Shader::compile() {
   if (length > 0) glGetShaderInfoLog(id_, length, nullptr, info.data());
   while (!info.empty() && (info.back() == '\0' || info.back() == '\n')) info.pop_back();
   info = nameSourceStrings(info, fileNames_);
+  if (saysNothing(info)) info.clear();
 
   std::string header = "shader \"" + name_ + "\" (" + stageName(stage_) + ")";
   if (!ok) {
@@ -112,6 +113,22 @@ const char* Shader::stageName(GLenum stage) {
   }
 }
 
+bool saysNothing(const std::string& infoLog) {
+  // NVIDIA's log of a clean compile: "Compute info\n------------\n" and nothing else.
+  std::size_t pos = 0;
+  while (pos < infoLog.size()) {
+    std::size_t end = infoLog.find('\n', pos);
+    if (end == std::string::npos) end = infoLog.size();
+    const std::string line = infoLog.substr(pos, end - pos);
+    const bool rule = line.find_first_not_of("- \r") == std::string::npos;
+    const bool heading = line.size() > 5 && line.compare(line.size() - 5, 5, " info") == 0 &&
+                         line.find(' ') == line.size() - 5;
+    if (!rule && !heading) return false;
+    pos = end + 1;
+  }
+  return true;
+}
+
 std::string nameSourceStrings(const std::string& infoLog, const std::vector<std::string>& names) {
   if (names.empty()) return infoLog;
   auto digitsEnd = [](const std::string& s, std::size_t i) {
@@ -135,9 +152,12 @@ std::string nameSourceStrings(const std::string& infoLog, const std::vector<std:
       if (lineEnd > sourceEnd + 1 && lineEnd - sourceEnd < 10) {
         long l = std::stol(line.substr(sourceEnd + 1, lineEnd - sourceEnd - 1));
         std::size_t file = std::size_t(l / kLinesPerFile);
+        // Always "name:line", the form editors jump to: NVIDIA's "N(L)" loses its brackets.
+        std::size_t rest = lineEnd;
+        if (line[sourceEnd] == '(' && rest < line.size() && line[rest] == ')') ++rest;
         if (file < names.size())
-          line = line.substr(0, start) + names[file] + line[sourceEnd] +
-                 std::to_string(l % kLinesPerFile) + line.substr(lineEnd);
+          line = line.substr(0, start) + names[file] + ':' + std::to_string(l % kLinesPerFile) +
+                 line.substr(rest);
       }
     }
     out += line;

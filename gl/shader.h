@@ -56,8 +56,13 @@ class Shader {
 inline constexpr int kLinesPerFile = 100000;
 
 // Rewrites "N:L" (Mesa, AMD, Intel) and "N(L)" (NVIDIA) at the start of info-log lines into
-// "names[k]:line" / "names[k](line)", with k = L / kLinesPerFile and line = L % kLinesPerFile.
+// "names[k]:line", with k = L / kLinesPerFile and line = L % kLinesPerFile: one form whatever
+// the driver, for editors and for tests that look for "file:line".
 // Exposed for tests.
+// Whether a compile's info log holds nothing but headings and rules (NVIDIA's "Compute info"
+// over a line of dashes after a clean compile): not a warning. Exposed for tests.
+bool saysNothing(const std::string& infoLog);
+
 std::string nameSourceStrings(const std::string& infoLog, const std::vector<std::string>& names);
 
 }  // namespace csm::gl

@@ -3,7 +3,7 @@
 # between UI frames (mean and 95th percentile), and the simulation's speed (its frame time,
 # and the wall time the run took to simulate FRAMES frames), for the default preset and the
 # paper's Fig. 1, per binary, the binaries alternated in one run.
-#   [FIG1_FRAMES=N] scripts/bench_window.sh [FRAMES] BIN...
+#   [FIG1_FRAMES=N] [PRESETS="default ..."] scripts/bench_window.sh [FRAMES] BIN...
 # FIG1_FRAMES: frames for Fig. 1 (default FRAMES; its frames cost seconds each on llvmpipe).
 # --exit-after FRAMES: the window runs until FRAMES frames are simulated (a build from before
 # the simulation thread ran one simulated frame per UI frame).
@@ -21,7 +21,7 @@ echo "Load before: $(uptime | sed 's/.*load average: //')"
 echo
 echo "| preset | binary | sim frames | wall (s) | wall / sim frame (ms) | sim step (ms) | UI frames | ui mean (ms) | ui p95 (ms) |"
 echo "|---|---|---|---|---|---|---|---|---|"
-for preset in default paper_fig1_straight; do
+for preset in ${PRESETS:-default paper_fig1_straight}; do
   n=$frames
   [ "$preset" != paper_fig1_straight ] || n=${FIG1_FRAMES:-$frames}
   for bin in "$@"; do

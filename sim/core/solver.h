@@ -32,6 +32,8 @@ class Solver {
  public:
   virtual ~Solver() = default;
   virtual std::string_view name() const = 0;
+  // How it runs, where it has a choice (the GPU solver: its kernel path); empty otherwise.
+  virtual std::string variant() const { return {}; }
 
   // Rebuilds everything from a groom: positions at rest under `head`, zero velocities.
   virtual void reset(const Groom& groom, const Config& config, const Pose& head) = 0;

@@ -8,7 +8,7 @@
 namespace csm::gpu {
 
 bool ContactSolve::build(std::string* error) {
-  return apply_.build("sim/contact_apply.comp", CSM_STRAND_GROUP, {}, error) &&
+  return apply_.build("sim/contact_apply.comp", CSM_PARTICLE_GROUP, {}, error) &&
          solve_[0].build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {}, error) &&
          solve_[1].build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {{"CSM_SPLIT_VIEWS", ""}},
                          error);
@@ -28,13 +28,13 @@ void ContactSolve::bind() const {
   correction_.bindBase(GL_SHADER_STORAGE_BUFFER, CSM_BIND_CORRECTION);
 }
 
-void ContactSolve::run(unsigned substep, int iterations, uint32_t strands, bool splitViews) {
+void ContactSolve::run(unsigned substep, int iterations, bool splitViews) {
   if (segments_ == 0) return;
   ComputePass& solve = solve_[splitViews];
   for (int k = 1; k < iterations; ++k) {
     solve.runSubstep(uint32_t(particles_), substep);
     gl::memoryBarrier(kPassBarrier);
-    apply_.runSubstep(strands, substep);
+    apply_.runSubstep(uint32_t(particles_), substep);
     gl::memoryBarrier(kPassBarrier);
   }
   solve.runSubstep(uint32_t(particles_), substep);

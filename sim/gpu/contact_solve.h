@@ -24,9 +24,9 @@ class ContactSolve {
   // The corrections at CSM_BIND_CORRECTION.
   void bind() const;
   // One substep's corrections (the timer's stage is the caller's): `iterations` solves, each but
-  // the last applied to the positions and velocities of the `strands` here, the last left for
-  // the strain-limit sweep. `splitViews`: the lists run past their first view.
-  void run(unsigned substep, int iterations, uint32_t strands, bool splitViews);
+  // the last applied to the particles' positions and velocities here, the last left for the
+  // strain-limit sweep. `splitViews`: the lists run past their first view.
+  void run(unsigned substep, int iterations, bool splitViews);
 
  private:
   size_t particles_ = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,6 +12,7 @@
 #include "gl/debug.h"
 #include "gl/draw.h"
 #include "sim/gpu/buffer_fill.h"
+#include "sim/gpu/strand_groups.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_model.h"
 #include "sim/base/state_bytes.h"
@@ -25,15 +27,43 @@ constexpr int kMaxNStep = 8;
 
 }  // namespace
 
-GpuSolver::GpuSolver(bool cpuClock)
-    : timer_(cpuClock), samples_([this](const uint32_t* counters) {
+const char* gpuKernelsName(GpuKernels k) {
+  return k == GpuKernels::PerParticle ? "per particle" : "per strand";
+}
+
+GpuSolver::GpuSolver(bool cpuClock, GpuKernels kernels)
+    : kernels_(kernels), timer_(cpuClock), samples_([this](const uint32_t* counters) {
         sampledContacts_ = gpu::contactStatsOf(counters);
       }) {}
 
 std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
-  std::unique_ptr<GpuSolver> solver(new GpuSolver(gl::queryCaps().software));
+  const bool software = gl::queryCaps().software;
+  GpuKernels kernels = software ? GpuKernels::PerStrand : GpuKernels::PerParticle;
+  if (const char* env = std::getenv("CSM_GPU_KERNELS"); env && *env) {
+    const std::string want = env;
+    if (want == "strand") {
+      kernels = GpuKernels::PerStrand;
+    } else if (want == "particle") {
+      kernels = GpuKernels::PerParticle;
+    } else {
+      if (error) *error = "CSM_GPU_KERNELS=" + want + " is not one of strand, particle";
+      return nullptr;
+    }
+  }
+  std::unique_ptr<GpuSolver> solver(new GpuSolver(software, kernels));
   if (!solver->build(32, error)) return nullptr;
   return solver;
+}
+
+bool GpuSolver::setKernels(GpuKernels kernels, std::string* error) {
+  kernels_ = kernels;
+  std::string why;
+  if (!build(std::max(32, hair_.longestStrand), &why)) {
+    if (error) *error = why;
+    failure_ = why;
+    return false;
+  }
+  return true;
 }
 
 GpuSolver::~GpuSolver() = default;
@@ -46,24 +76,48 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
                " particles: the GPU solver takes at most " + std::to_string(kMaxStrandParticles);
     return false;
   }
-  if (builtMaxN_ == 0) {
-    if (!passes_.predict.build("sim/predict.comp", CSM_PARTICLE_GROUP, {}, error) ||
-        !passes_.strainLimit[0].build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
-        !passes_.strainLimit[1].build("sim/strain_limit.comp", CSM_STRAND_GROUP,
-                                      {{"CSM_HEAD_FIELD", ""}}, error) ||
-        !passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, {}, error) ||
+  // Each path's passes are built when it is first used (a driver may warn about the other's).
+  if (!builtCommon_) {
+    if (!passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, {}, error) ||
         !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, {}, error) ||
         !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, {}, error) ||
         !contactSearch_.build(error, contactSolve_))
       return false;
+    builtCommon_ = true;
   }
-  if (maxN != builtMaxN_) {
+  if (kernels_ == GpuKernels::PerStrand && builtMaxN_ == 0) {
+    if (!passes_.predict.build("sim/predict.comp", CSM_PARTICLE_GROUP, {}, error) ||
+        !passes_.strainLimit[0].build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
+        !passes_.strainLimit[1].build("sim/strain_limit.comp", CSM_STRAND_GROUP,
+                                      {{"CSM_HEAD_FIELD", ""}}, error))
+      return false;
+  }
+  if (kernels_ == GpuKernels::PerStrand && maxN != builtMaxN_) {
     // The per-strand prefix arrays are private arrays sized by the longest strand.
     if (!passes_.shapeMatch.build("sim/shape_match.comp", CSM_STRAND_GROUP,
                                   {{"MAX_N", std::to_string(maxN)}}, error))
       return false;
     builtMaxN_ = maxN;
+  }
+  if (kernels_ == GpuKernels::PerParticle && maxN != builtParticleMaxN_) {
+    // Shared arrays of one group's particles; the scans take log2(MAX_N) rounds.
+    const uint32_t group = gpu::groupParticlesFor(maxN);
+    const std::vector<gl::Define> defines = {{"MAX_N", std::to_string(maxN)},
+                                             {"CSM_GROUP_PARTICLES", std::to_string(group)}};
+    std::vector<gl::Define> sweep = defines, sweepField = defines;
+    sweep.push_back({"CSM_SWEEP", ""});
+    sweepField.push_back({"CSM_SWEEP", ""});
+    sweepField.push_back({"CSM_HEAD_FIELD", ""});
+    std::vector<gl::Define> field = defines;
+    field.push_back({"CSM_HEAD_FIELD", ""});
+    if (!passes_.strandStep.build("sim/strand_step.comp", group, defines, error) ||
+        !passes_.strandStepSweep[0].build("sim/strand_step.comp", group, sweep, error) ||
+        !passes_.strandStepSweep[1].build("sim/strand_step.comp", group, sweepField, error) ||
+        !passes_.strandStrain[0].build("sim/strand_strain.comp", group, defines, error) ||
+        !passes_.strandStrain[1].build("sim/strand_strain.comp", group, field, error))
+      return false;
+    builtParticleMaxN_ = maxN;
   }
   return true;
 }
@@ -360,7 +414,27 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     passes_.volumeField.runIndirect(contactSearch_.dispatch(), CSM_DISPATCH_VOLUME_FIELD);
     gl::memoryBarrier(gpu::kPassBarrier);
   }
-  for (int k = 0; k < substeps; ++k) {
+  const int head = uploadedField_ ? 1 : 0;
+  for (int k = 0; k < substeps && kernels_ == GpuKernels::PerParticle; ++k) {
+    // Predict, shape matching and integration in one pass; the sweep in it too, or after the
+    // contacts.
+    if (contacts && listsBefore(k, substeps, config_.collision.lists)) listAgain();
+    const uint32_t groups = hair_.groups, items = groups * hair_.groupParticles;
+    timer_.stage(gpu::kShapeMatching);
+    (contacts ? passes_.strandStep : passes_.strandStepSweep[head])
+        .set("groups", groups)
+        .runSubstep(items, unsigned(k));
+    gl::memoryBarrier(gpu::kPassBarrier);
+    if (contacts) {
+      timer_.stage(gpu::kContacts);
+      contactSolve_.run(unsigned(k), config_.collision.iterations, contactSearch_.splitViews());
+      timer_.stage(gpu::kStrainLimiting);
+      passes_.strandStrain[head].set("groups", groups).runSubstep(items, unsigned(k));
+      gl::memoryBarrier(gpu::kPassBarrier);
+    }
+    time_ += h;
+  }
+  for (int k = 0; k < substeps && kernels_ == GpuKernels::PerStrand; ++k) {
     if (contacts && listsBefore(k, substeps, config_.collision.lists)) listAgain();
     timer_.stage(gpu::kIntegrate);
     passes_.predict.runSubstep(particles, unsigned(k));
@@ -370,11 +444,10 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     gl::memoryBarrier(gpu::kPassBarrier);
     if (contacts) {
       timer_.stage(gpu::kContacts);
-      contactSolve_.run(unsigned(k), config_.collision.iterations, strands,
-                        contactSearch_.splitViews());
+      contactSolve_.run(unsigned(k), config_.collision.iterations, contactSearch_.splitViews());
     }
     timer_.stage(gpu::kStrainLimiting);
-    passes_.strainLimit[uploadedField_ ? 1 : 0].runSubstep(strands, unsigned(k));
+    passes_.strainLimit[head].runSubstep(strands, unsigned(k));
     gl::memoryBarrier(gpu::kPassBarrier);
     time_ += h;
   }

@@ -2,12 +2,13 @@
 // (shaders/sim/), the same math in the same order as CpuSolver, in float. Everything stays
 // on the GPU; nothing is read back inside a frame.
 //
-// The pieces: StrandBuffers (the hair's state and layout), three typed passes per step
-// (predict.comp per particle; shape_match.comp per strand: region sums, rotations, goals,
-// integration; strain_limit.comp per strand), ContactSearch (hair-hair contacts once per frame
+// The pieces: StrandBuffers (the hair's state and layout), the passes of a step (GpuKernels:
+// per strand, predict.comp, shape_match.comp and strain_limit.comp; per particle, strand_step.comp
+// and, with strand contacts, strand_strain.comp), ContactSearch (hair-hair contacts once per frame
 // when collision.mode is full, acting during the next frame), SampleRing (the measures,
 // fenced and read a few frames late) and StageTimer. The regions and the number of steps come
-// from sim/solver/stiffness.h, as for CpuSolver. 3 dispatches per step + 11 per frame.
+// from sim/solver/stiffness.h, as for CpuSolver. 3 dispatches per step (1 per particle without
+// strand contacts) + 11 per frame.
 #pragma once
 
 #include <memory>
@@ -33,6 +34,16 @@
 
 namespace csm {
 
+// Which passes step the hair. PerStrand: one invocation a strand (predict.comp per particle,
+// then shape_match.comp and strain_limit.comp per strand), each invocation's sums in private
+// arrays: what a CPU rasterizer (llvmpipe) runs fastest, its SIMD lanes each a strand. PerParticle:
+// one invocation a particle, whole strands to a work group (strand_step.comp, strand_strain.comp):
+// sums as scans in shared memory, the strain limit's sweep over the strand held there, predict,
+// shape matching and (without strand contacts) the strain limit in one pass; what a GPU runs
+// fastest (a strand's loads contiguous, every lane busy, no private arrays in local memory).
+enum class GpuKernels { PerStrand, PerParticle };
+const char* gpuKernelsName(GpuKernels k);
+
 class GpuSolver final : public Solver {
  public:
   // Needs a current GL 4.3 context; compiles the shaders. Null, with the compiler's log in
@@ -44,6 +55,7 @@ class GpuSolver final : public Solver {
   ~GpuSolver() override;
 
   std::string_view name() const override { return "gpu"; }
+  std::string variant() const override { return gpuKernelsName(kernels_); }
   std::string failure() const override { return failure_; }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
@@ -76,6 +88,12 @@ class GpuSolver final : public Solver {
   std::optional<FrameSample> takeSample(bool wait = false) override;
   void dropSamples() override { samples_.drop(); }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
+
+  // The passes in use: chosen at create() by the context (PerStrand on a software renderer,
+  // PerParticle on a GPU); CSM_GPU_KERNELS=strand|particle in the environment overrides, and so
+  // does setKernels (tests, benchmarks), which builds what the choice needs.
+  GpuKernels kernels() const { return kernels_; }
+  bool setKernels(GpuKernels kernels, std::string* error = nullptr);
 
   // --- For tests and tools (these read back at once). ---
   // The measures of the last candidate list (reading them changes nothing: the grid grows as
@@ -113,7 +131,7 @@ class GpuSolver final : public Solver {
   GridStats gridStats();
 
  private:
-  explicit GpuSolver(bool cpuClock);
+  GpuSolver(bool cpuClock, GpuKernels kernels);
   bool build(int maxStrandSize, std::string* error);
   void uploadRegions();
   void resetVolume();
@@ -137,7 +155,10 @@ class GpuSolver final : public Solver {
   Pose head_;
   HairState state_;  // the layout the regions are built from
   Regions regions_;
-  int builtMaxN_ = 0;
+  bool builtCommon_ = false;   // the passes both paths use
+  int builtMaxN_ = 0;          // the per-strand passes', 0 until built
+  int builtParticleMaxN_ = 0;  // the per-particle passes', 0 until built
+  GpuKernels kernels_ = GpuKernels::PerStrand;
   std::string failure_;  // set by reset when the groom's strands cannot be simulated
   gpu::SimParams params_{};
 
@@ -146,6 +167,9 @@ class GpuSolver final : public Solver {
     // For the head's spheres and for its distance field (llvmpipe runs both sides of a
     // branch: each build runs only its own head's push).
     gpu::ComputePass strainLimit[2];
+    // The per-particle path: the step without the sweep (strand contacts), with it (per head),
+    // and the sweep alone after the contacts (per head).
+    gpu::ComputePass strandStep, strandStepSweep[2], strandStrain[2];
   } passes_;
   gpu::StrandBuffers hair_;
   gpu::ContactSearch contactSearch_;  // strand contacts: the search

@@ -5,6 +5,7 @@
 
 #include "sim/solver/contacts.h"
 #include "sim/gpu/buffer_fill.h"
+#include "sim/gpu/strand_groups.h"
 #include "shaders/sim/bindings.glsl"
 
 namespace csm::gpu {
@@ -39,6 +40,10 @@ void StrandBuffers::upload(const HairState& st, const glm::dquat& head) {
   fill(particleStrand, st.particleStrand);
   fill(predicted, st.position);
   fill(strandOrder, order);
+  groupParticles = groupParticlesFor(longestStrand);
+  const std::vector<uint32_t> groupStarts = packStrandGroups(st.strandFirst, groupParticles);
+  groups = uint32_t(groupStarts.size() - 1);
+  fill(groupFirst, groupStarts);
   fill(rotation, std::vector<glm::vec4>(particles, glm::vec4(head.x, head.y, head.z, head.w)));
   view(positionTex, position, GL_RGBA32F);
   view(velocityTex, velocity, GL_RGBA32F);
@@ -76,6 +81,7 @@ void StrandBuffers::bind() const {
   rotation.bindBase(ssbo, CSM_BIND_ROTATION);
   strandOrder.bindBase(ssbo, CSM_BIND_STRAND_ORDER);
   strandStiffness.bindBase(ssbo, CSM_BIND_STRAND_STIFFNESS);
+  groupFirst.bindBase(ssbo, CSM_BIND_STRAND_GROUPS);
   positionTex.bind(CSM_TEX_POSITION);
   velocityTex.bind(CSM_TEX_VELOCITY);
   restTex.bind(CSM_TEX_REST);

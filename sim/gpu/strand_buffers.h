@@ -26,13 +26,15 @@ struct StrandBuffers {
 
   size_t particles = 0, strands = 0;
   uint32_t segments = 0;
-  int longestStrand = 0;     // particles
+  int longestStrand = 0;  // particles
+  // The per-particle passes' work groups: their size and count (groupFirst has one more entry).
+  uint32_t groupParticles = 0, groups = 0;
   double meanSegment = 0.0;  // mean rest length of a segment (m)
 
   gl::Buffer rest{gl::NoCreate}, position{gl::NoCreate}, velocity{gl::NoCreate},
       predicted{gl::NoCreate}, rotation{gl::NoCreate}, strandFirst{gl::NoCreate},
       particleStrand{gl::NoCreate}, strandOrder{gl::NoCreate}, region{gl::NoCreate},
-      strandStiffness{gl::NoCreate}, inverseMass{gl::NoCreate};
+      strandStiffness{gl::NoCreate}, inverseMass{gl::NoCreate}, groupFirst{gl::NoCreate};
   // texelFetch views for reads that differ per invocation (see gl/buffer_texture.h).
   gl::BufferTexture positionTex{gl::NoCreate}, velocityTex{gl::NoCreate}, restTex{gl::NoCreate},
       predictedTex{gl::NoCreate}, regionTex{gl::NoCreate}, inverseMassTex{gl::NoCreate};

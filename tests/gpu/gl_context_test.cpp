@@ -71,7 +71,7 @@ TEST_CASE("GL: CSM_EGL_PLATFORM picks or rejects a path", "[gl][context]") {
       if (context) {
         CHECK(context->version().find("4.") != std::string::npos);
         if (std::string(path) == "surfaceless")
-          CHECK(context->platform() == "EGL surfaceless (Mesa)");
+          CHECK(context->platform() == "EGL surfaceless platform");
         if (std::string(path) == "device") CHECK(context->platform().rfind("EGL device", 0) == 0);
       } else {
         CHECK(error.find("libegl-mesa0") != std::string::npos);

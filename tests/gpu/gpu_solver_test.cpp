@@ -330,9 +330,10 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
         CHECK(onGpu.crossingsClose == onCpu.crossingsClose);
         CHECK(std::abs(double(onGpu.penetrations) - double(onCpu.penetrations)) <= 2.0);
         // The first bin holds pairs at their rest distance, which float and double put either
-        // side of it.
+        // side of it. Within 3 in the others: a GPU's compiler fuses multiply-adds where
+        // llvmpipe rounds each (an H100, driver 580: 3 apart in one bin, jacobi, 3 iterations).
         for (int k = 1; k < kDepthBins; ++k)
-          CHECK(std::abs(double(onGpu.depth[k]) - double(onCpu.depth[k])) <= 2.0);
+          CHECK(std::abs(double(onGpu.depth[k]) - double(onCpu.depth[k])) <= 3.0);
       } else {
         later[0] += double(onCpu.candidates);
         later[1] += double(onGpu.candidates);
@@ -565,11 +566,14 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
   const char* names[] = {"integrate", "shape_matching", "strain_limiting",
                          "grid",      "contacts",       "volume"};
   // Strand contacts, no volume: every stage but the volume's did work and took time; the
-  // volume's took none.
+  // volume's took none. The per-particle path predicts inside shape matching's pass.
+  const bool fused = gpu->kernels() == GpuKernels::PerParticle;
   for (size_t k = 0; k < 6; ++k) {
     INFO(stages[k].name << " " << stages[k].ms << " ms");
     CHECK(stages[k].name == names[k]);
-    if (k < 5)
+    if (k == 0 && fused)
+      CHECK(stages[k].ms == 0.0);
+    else if (k < 5)
       CHECK(stages[k].ms > 0.0);
     else
       CHECK(stages[k].ms == 0.0);
