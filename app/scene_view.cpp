@@ -1,6 +1,8 @@
 #include "app/scene_view.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -50,9 +52,15 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
                                   ? DrawQuality::Interactive
                                   : DrawQuality::Full;
   const Key key{frame.serial, version_, size.width, size.height, quality};
+  // Interactive quality draws a smaller image, scaled up to the window.
+  const DrawAmount amount =
+      quality == DrawQuality::Interactive ? interactiveAmount(look.render) : DrawAmount{};
+  const float scale = std::clamp(amount.resolution, 0.05f, 1.0f);
+  const int width = std::max(16, int(std::lround(float(size.width) * scale)));
+  const int height = std::max(16, int(std::lround(float(size.height) * scale)));
 
-  if (color_.id() == 0 || color_.width() != size.width || color_.height() != size.height) {
-    color_ = gl::Texture::create2D(GL_RGBA8, size.width, size.height);
+  if (color_.id() == 0 || color_.width() != width || color_.height() != height) {
+    color_ = gl::Texture::create2D(GL_RGBA8, width, height);
     fbo_ = gl::Framebuffer();
     fbo_.attach(GL_COLOR_ATTACHMENT0, color_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
     drawn_ = Key{};
@@ -67,10 +75,10 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
       view.head = frame.head.get();
       view.headPose = frame.headPose;
       view.positionBuffer = positions(frame);
-      view.width = size.width;
-      view.height = size.height;
+      view.width = width;
+      view.height = height;
       view.targetFramebuffer = fbo_.id();
-      if (quality == DrawQuality::Interactive) view.amount = interactiveAmount(look.render);
+      view.amount = amount;
       renderer_->render(view);
       out.scene = true;
       out.stages = renderer_->stageTimes();
@@ -83,7 +91,8 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
     lastQuality_ = quality;
     ++scenesDrawn_;
   }
-  fbo_.blitTo(0, {0, 0, size.width, size.height}, {0, 0, size.width, size.height});
+  fbo_.blitTo(0, {0, 0, width, height}, {0, 0, size.width, size.height}, GL_COLOR_BUFFER_BIT,
+              width == size.width && height == size.height ? GL_NEAREST : GL_LINEAR);
   gl::Framebuffer::bindDefault();
   return out;
 }

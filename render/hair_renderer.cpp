@@ -351,7 +351,7 @@ void HairRenderer::render(const FrameView& frame) {
     shadow.headShadowTarget().bind();
     gl::applyDrawState({.depthTest = true, .cull = gl::Cull::Front});
     p.headDepth.use();
-    head_.draw();
+    head_.draw(amount.fullHead);
 
     // Opacity layers: every hair fragment counts, so no depth test; additive blending.
     shadow.opacityTarget().bind();
@@ -376,7 +376,7 @@ void HairRenderer::render(const FrameView& frame) {
   gl::drawArrays(GL_TRIANGLES, 0, 3);
   gl::applyDrawState({.depthTest = true, .cull = gl::Cull::Back});
   p.head.use();
-  head_.draw();
+  head_.draw(amount.fullHead);
 
   // Hair: ribbons, both faces (a strip alternates its winding).
   clock_.begin("hair");
@@ -412,6 +412,8 @@ DrawAmount interactiveAmount(const RenderConfig& render) {
   a.subdivision = render.interactiveSubdivision;
   a.samples = render.interactiveSamples;
   a.shadowMapSize = render.interactiveShadowMapSize;
+  a.fullHead = false;
+  a.resolution = render.interactiveResolution;
   return a;
 }
 

@@ -61,6 +61,9 @@ void HeadMesh::update(const HeadModel& model, const Pose& head) {
       std::vector<glm::vec3> positions(m.positions);
       for (glm::vec3& p : positions) p -= glm::vec3(kMannequinScalpCentre);
       mannequinGpu_ = upload(positions, m.normals, m.indices);
+      SurfaceMesh coarse =
+          coarserMesh(SurfaceMesh{positions, m.normals, m.indices}, kCoarseTriangles);
+      coarseGpu_ = upload(coarse.positions, coarse.normals, coarse.indices);
       uploaded_ = surface;
     }
     data.emplace_back(glm::vec3(head.apply(kMannequinScalpCentre)), 1.0f);
@@ -76,9 +79,9 @@ void HeadMesh::bind() const {
   placementBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kHeadSpheres);
 }
 
-void HeadMesh::draw() const {
+void HeadMesh::draw(bool full) const {
   if (placements_ == 0) return;
-  const Mesh& m = mannequin_ ? mannequinGpu_ : sphere_;
+  const Mesh& m = !mannequin_ ? sphere_ : full ? mannequinGpu_ : coarseGpu_;
   m.vao.bind();
   gl::drawElements(GL_TRIANGLES, m.indexCount, placements_);
 }

@@ -20,7 +20,10 @@ class HeadMesh {
   // else the scene's spheres, at the head's pose.
   void update(const HeadModel& model, const Pose& head);
   void bind() const;  // the placements' SSBO
-  void draw() const;
+  // The head mesh, or with `full` false its coarser version (a mesh of more than
+  // kCoarseTriangles: the mannequin's 180,000 cost llvmpipe ~40 ms a frame, twice with shadows).
+  void draw(bool full = true) const;
+  static constexpr size_t kCoarseTriangles = 30000;
   int sphereCount() const { return placements_; }
   bool isMannequin() const { return mannequin_; }
 
@@ -33,7 +36,7 @@ class HeadMesh {
   static Mesh upload(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
                      const std::vector<uint32_t>& indices);
 
-  Mesh sphere_, mannequinGpu_;
+  Mesh sphere_, mannequinGpu_, coarseGpu_;
   gl::Buffer placementBuffer_{gl::NoCreate};
   int placements_ = 0;
   bool mannequin_ = false;

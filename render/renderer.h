@@ -22,10 +22,12 @@ namespace csm {
 // How much of the look to draw. Full for captures and a still view; the viewer's interactive
 // quality (RenderConfig::interactive*) while the camera moves or the hair simulates.
 struct DrawAmount {
-  float strands = 1.0f;   // share of the drawn strands: follow hairs go first, then guides
-  int subdivision = 0;    // spline segments per simulated segment; 0: render.subdivision
-  int samples = 0;        // MSAA samples; 0: render.samples
-  int shadowMapSize = 0;  // 0: render.shadow_map_size
+  float strands = 1.0f;     // share of the drawn strands: follow hairs go first, then guides
+  int subdivision = 0;      // spline segments per simulated segment; 0: render.subdivision
+  int samples = 0;          // MSAA samples; 0: render.samples
+  int shadowMapSize = 0;    // 0: render.shadow_map_size
+  bool fullHead = true;     // the head's mesh in full, else its coarser one (HeadMesh)
+  float resolution = 1.0f;  // of the target's width and height (the viewer scales it up)
   bool operator==(const DrawAmount&) const = default;
 };
 // The interactive amount a look asks for (full when render.interactive is off).

@@ -32,12 +32,14 @@ struct RenderConfig {
   int samples = 4;  // multisampling
   // Interactive quality, while the camera moves or the hair simulates (the viewer; captures
   // and a still view are drawn in full): a share of the strands, follow hairs first, wider
-  // to keep the coverage; a plainer curve; fewer samples; a smaller shadow map.
+  // to keep the coverage; a plainer curve; fewer samples; a smaller shadow map; a smaller
+  // image, scaled up to the window.
   bool interactive = true;
   float interactiveAmount = 0.3f;
   int interactiveSubdivision = 1;
   int interactiveSamples = 1;
   int interactiveShadowMapSize = 256;
+  float interactiveResolution = 0.5f;  // of the window's width and height
 };
 
 struct CameraConfig {

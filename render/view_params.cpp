@@ -117,6 +117,12 @@ std::vector<Param<ViewConfig>> build() {
             &ViewConfig::render, &RenderConfig::interactiveShadowMapSize, 64, 4096,
             "Interactive quality: resolution of the deep opacity maps.", Effect::Render)
           .onlyWhen(interactiveQuality),
+      param("render.interactive_resolution", "Resolution", "Rendering|Interactive",
+            &ViewConfig::render, &RenderConfig::interactiveResolution, 0.25, 1.0,
+            "Interactive quality: the image drawn, a share of the window's width and height, "
+            "scaled up to the window (a software renderer's time goes with the pixels).",
+            Effect::Render)
+          .onlyWhen(interactiveQuality),
       param("camera.target", "Target", "Camera", &ViewConfig::camera, &CameraConfig::target, -10,
             10, "Point the camera looks at (m).", Effect::Render),
       param("camera.distance", "Distance", "Camera", &ViewConfig::camera, &CameraConfig::distance,

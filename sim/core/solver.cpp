@@ -23,6 +23,36 @@ void Solver::saveState(SolverState& out) {
   w.putVector(v);
 }
 
+namespace {
+
+// A copy read when it was made (a solver whose state is in memory).
+class ReadFrameCopy final : public FrameCopy {
+ public:
+  ReadFrameCopy(std::vector<glm::vec3> positions, SolverState state, bool withState)
+      : positions_(std::move(positions)), state_(std::move(state)), withState_(withState) {}
+  bool ready() const override { return true; }
+  void read(std::vector<glm::vec3>& positions, SolverState* state) override {
+    positions = positions_;
+    if (state && withState_) *state = state_;
+  }
+
+ private:
+  std::vector<glm::vec3> positions_;
+  SolverState state_;
+  bool withState_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameCopy> Solver::copyFrame(bool withState) {
+  std::vector<glm::vec4> x;
+  readPositions(x);
+  SolverState state;
+  if (withState) saveState(state);
+  return std::make_unique<ReadFrameCopy>(std::vector<glm::vec3>(x.begin(), x.end()),
+                                         std::move(state), withState);
+}
+
 bool Solver::restoreState(const SolverState& in, std::string* error) {
   StateReader r(in.bytes);
   std::vector<glm::vec4> x, v;

@@ -28,6 +28,19 @@ struct SolverState {
   std::vector<std::byte> bytes;
 };
 
+// A copy of the frame a solver is at, made where its state lives and read once it has arrived
+// (Solver::copyFrame): the GPU solver copies into a staging buffer behind a fence, so nothing
+// waits for the GPU until read(), and read() only when the GPU has not got there yet.
+class FrameCopy {
+ public:
+  virtual ~FrameCopy() = default;
+  // Whether read() would return without waiting.
+  virtual bool ready() const = 0;
+  // The positions (xyz a particle) and, when the copy was asked with the state, the solver's
+  // state as saveState would have written it then (into `state` when given).
+  virtual void read(std::vector<glm::vec3>& positions, SolverState* state) = 0;
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -77,6 +90,10 @@ class Solver {
   // scene (another particle count).
   virtual void saveState(SolverState& out);
   virtual bool restoreState(const SolverState& in, std::string* error);
+  // The frame as it stands, for a reader that can take it a few frames later (the viewer's
+  // recording): the positions, and with `withState` what saveState saves. This default reads
+  // back at once.
+  virtual std::unique_ptr<FrameCopy> copyFrame(bool withState);
   // Moves the whole hair rigidly by `by` (positions, velocities and whatever rotations the
   // solver keeps), and the head where the last frame left it, as if the hair were fixed to the
   // head: what a head that jumps does to it (Simulation::stepFrame). This default moves the

@@ -11,6 +11,7 @@
 #include "gl/caps.h"
 #include "gl/debug.h"
 #include "gl/draw.h"
+#include "gl/fence.h"
 #include "sim/gpu/buffer_fill.h"
 #include "sim/gpu/strand_groups.h"
 #include "sim/head/distance_grid.h"
@@ -528,6 +529,60 @@ void GpuSolver::saveState(SolverState& out) {
   w.putVector(n ? hair_.rotation.download<glm::vec4>(n) : std::vector<glm::vec4>{});
   w.put(time_);
   w.put(head_);
+}
+
+namespace {
+
+class GpuFrameCopy final : public FrameCopy {
+ public:
+  gl::Buffer staging{gl::NoCreate};
+  gl::Fence fence;
+  size_t particles = 0;
+  bool withState = false;
+  double time = 0.0;
+  Pose head;
+
+  bool ready() const override { return fence.passed(); }
+  void read(std::vector<glm::vec3>& positions, SolverState* state) override {
+    fence.wait();
+    const size_t n = particles;
+    const std::vector<glm::vec4> all =
+        n ? staging.download<glm::vec4>(n * (withState ? 3 : 1)) : std::vector<glm::vec4>{};
+    positions.assign(all.begin(), all.begin() + std::ptrdiff_t(n));
+    if (!state || !withState) return;
+    // GpuSolver::saveState's layout.
+    state->bytes.clear();
+    StateWriter w(state->bytes);
+    w.put(n);
+    for (int k = 0; k < 3; ++k)
+      w.putVector(std::vector<glm::vec4>(all.begin() + std::ptrdiff_t(k * n),
+                                         all.begin() + std::ptrdiff_t((k + 1) * n)));
+    w.put(time);
+    w.put(head);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<FrameCopy> GpuSolver::copyFrame(bool withState) {
+  auto copy = std::make_unique<GpuFrameCopy>();
+  const size_t n = hair_.particles;
+  const GLsizeiptr bytes = GLsizeiptr(n * sizeof(glm::vec4));
+  copy->particles = n;
+  copy->withState = withState;
+  copy->time = time_;
+  copy->head = head_;
+  if (n > 0) {
+    copy->staging = gl::Buffer(bytes * (withState ? 3 : 1), nullptr, GL_STREAM_READ);
+    gl::memoryBarrier(gl::Barrier::BufferUpdate);
+    hair_.position.copyTo(copy->staging, 0, 0, bytes);
+    if (withState) {
+      hair_.velocity.copyTo(copy->staging, 0, bytes, bytes);
+      hair_.rotation.copyTo(copy->staging, 0, 2 * bytes, bytes);
+    }
+  }
+  copy->fence = gl::Fence::insert();
+  return copy;
 }
 
 bool GpuSolver::restoreState(const SolverState& in, std::string* error) {

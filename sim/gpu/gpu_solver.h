@@ -72,6 +72,9 @@ class GpuSolver final : public Solver {
   void carry(const Pose& by) override;
   void saveState(SolverState& out) override;
   bool restoreState(const SolverState& in, std::string* error) override;
+  // Positions (and velocities and rotations with the state) copied on the GPU into a staging
+  // buffer behind a fence: no wait now, none in read() once the fence has passed.
+  std::unique_ptr<FrameCopy> copyFrame(bool withState) override;
   void writeState(const std::vector<glm::vec4>& positions,
                   const std::vector<glm::vec4>& velocities) override;
   unsigned positionBuffer() override { return hair_.position.id(); }

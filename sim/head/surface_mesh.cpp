@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
@@ -101,6 +102,53 @@ SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact) 
         }
       }
   return m;
+}
+
+SurfaceMesh coarserMesh(const SurfaceMesh& m, size_t triangles) {
+  const size_t have = m.indices.size() / 3;
+  if (have <= triangles || triangles == 0 || m.positions.empty()) return m;
+  double edges = 0.0;
+  for (size_t t = 0; t < have; ++t)
+    for (int k = 0; k < 3; ++k)
+      edges += glm::length(m.positions[m.indices[3 * t + k]] -
+                           m.positions[m.indices[3 * t + (k + 1) % 3]]);
+  const double meanEdge = edges / double(3 * have);
+  // Triangles go with the square of the edge: cells that much larger than an edge.
+  const double cell = meanEdge * std::sqrt(double(have) / double(triangles));
+  if (!(cell > 0.0)) return m;
+  struct Cluster {
+    glm::dvec3 position{0.0}, normal{0.0};
+    int count = 0;
+  };
+  std::unordered_map<uint64_t, uint32_t> clusterOf;
+  std::vector<Cluster> clusters;
+  std::vector<uint32_t> remap(m.positions.size());
+  for (size_t i = 0; i < m.positions.size(); ++i) {
+    const glm::dvec3 p(m.positions[i]);
+    auto key = [&](double v) { return uint64_t(int64_t(std::floor(v / cell)) & 0x1fffff); };
+    const uint64_t k = key(p.x) | key(p.y) << 21 | key(p.z) << 42;
+    auto [it, added] = clusterOf.try_emplace(k, uint32_t(clusters.size()));
+    if (added) clusters.emplace_back();
+    Cluster& c = clusters[it->second];
+    c.position += p;
+    if (i < m.normals.size()) c.normal += glm::dvec3(m.normals[i]);
+    ++c.count;
+    remap[i] = it->second;
+  }
+  SurfaceMesh out;
+  out.positions.reserve(clusters.size());
+  out.normals.reserve(clusters.size());
+  for (const Cluster& c : clusters) {
+    out.positions.emplace_back(c.position / double(c.count));
+    const double n = glm::length(c.normal);
+    out.normals.emplace_back(n > 0.0 ? c.normal / n : glm::dvec3(0.0, 1.0, 0.0));
+  }
+  for (size_t t = 0; t < have; ++t) {
+    const uint32_t a = remap[m.indices[3 * t]], b = remap[m.indices[3 * t + 1]],
+                   c = remap[m.indices[3 * t + 2]];
+    if (a != b && b != c && a != c) out.indices.insert(out.indices.end(), {a, b, c});
+  }
+  return out;
 }
 
 size_t openEdges(const SurfaceMesh& m) {

@@ -24,6 +24,12 @@ struct SurfaceMesh {
 // normal; otherwise the grid's.
 SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact = {});
 
+// A coarser mesh of about `triangles` triangles (the mesh itself when it has no more), for
+// drawing at interactive quality: vertices merged by cell of a grid (vertex clustering; cells
+// sized from the mean edge), each cell's vertices at their mean with their normals' mean, the
+// triangles that collapse dropped. The surface moves by at most about a cell.
+SurfaceMesh coarserMesh(const SurfaceMesh& m, size_t triangles);
+
 // Edges of a mesh used other than once in each direction (0 for a closed, consistently
 // oriented surface).
 size_t openEdges(const SurfaceMesh& m);

@@ -31,7 +31,9 @@ void FrameRecording::setBudget(size_t bytes) {
 
 void FrameRecording::clear() {
   frames_.clear();
+  pending_.clear();
   bytes_ = 0;
+  needKey_ = false;
 }
 
 size_t FrameRecording::keyframeCount() const {
@@ -57,30 +59,53 @@ void FrameRecording::trim() {
 }
 
 void FrameRecording::record(Simulation& sim) {
-  if (!frames_.empty() && (sim.generation() != generation_ || sim.frame() != lastFrame() + 1))
-    clear();
-  if (frames_.empty()) {
+  const bool any = !frames_.empty() || !pending_.empty();
+  if (any && (sim.generation() != generation_ || sim.frame() != lastAsked_ + 1)) clear();
+  if (frames_.empty() && pending_.empty()) {
     generation_ = sim.generation();
     start_ = sim.frame();
   }
-  Frame f;
-  f.shown.frame = sim.frame();
-  f.shown.time = sim.time();
-  f.shown.head = sim.headPose();
-  f.shown.positions = positionsOf(sim.solver());
-  auto keep = [&] {
-    auto state = std::make_shared<SimulationState>();
-    sim.save(*state);
-    f.key = std::move(state);
-  };
-  if ((f.shown.frame - start_) % options_.keyframeEvery == 0) keep();
-  // Room first, from the oldest spans; when the newest span alone is too big, start again here.
+  if (needKey_) {
+    // Starting again after the newest span alone outgrew the budget: from a keyframe.
+    start_ = sim.frame();
+    needKey_ = false;
+  }
+  Pending p;
+  p.frame.shown.frame = sim.frame();
+  p.frame.shown.time = sim.time();
+  p.frame.shown.head = sim.headPose();
+  if ((p.frame.shown.frame - start_) % options_.keyframeEvery == 0)
+    p.state = std::make_shared<SimulationState>();
+  p.copy = sim.copyFrame(p.state.get());
+  lastAsked_ = sim.frame();
+  pending_.push_back(std::move(p));
+  collect(false);
+}
+
+void FrameRecording::collect(bool wait) {
+  while (!pending_.empty() && (wait || pending_.front().copy->ready())) {
+    Pending p = std::move(pending_.front());
+    pending_.pop_front();
+    p.copy->read(p.frame.shown.positions, p.state ? &p.state->solver : nullptr);
+    p.frame.key = std::move(p.state);
+    add(std::move(p.frame));
+  }
+}
+
+void FrameRecording::add(Frame f) {
+  // The first frame kept is a keyframe: frames after a start again wait for the next one.
+  if (frames_.empty() && !f.key) return;
+  // Room first, from the oldest spans; when the newest span alone is too big, start again.
   while (bytes_ + f.bytes() > options_.budgetBytes && dropOldestSpan()) {
   }
   if (bytes_ + f.bytes() > options_.budgetBytes) {
-    clear();
-    start_ = f.shown.frame;
-    if (!f.key) keep();
+    frames_.clear();
+    bytes_ = 0;
+    if (!f.key) {
+      // This frame's state was not kept: the next frame asked for is a keyframe.
+      needKey_ = true;
+      return;
+    }
     if (f.bytes() > options_.budgetBytes) {
       ++refused_;
       return;
@@ -96,6 +121,7 @@ const FrameRecording::Shown* FrameRecording::at(long frame) const {
 }
 
 bool FrameRecording::resume(Simulation& sim, long frame, std::string* error, double* mismatch) {
+  flush();
   if (frames_.empty() || frame < firstFrame() || frame > lastFrame()) {
     if (error)
       *error = "frame " + std::to_string(frame) + " is not recorded" +
@@ -124,6 +150,7 @@ bool FrameRecording::resume(Simulation& sim, long frame, std::string* error, dou
     bytes_ -= frames_.back().bytes();
     frames_.pop_back();
   }
+  lastAsked_ = frame;
   return true;
 }
 

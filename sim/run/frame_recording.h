@@ -1,6 +1,11 @@
 // The viewer's timeline: the frames a simulation ran, kept within a memory budget, to show
 // again, step through, export and resume from.
 //
+// Nothing waits for the GPU: record() asks the solver for a copy of the frame (Solver::copyFrame:
+// on the GPU a copy behind a fence) and the frame joins the recording when its copy has arrived,
+// a frame or two later (collect(), called by record(); flush() waits for them all). What the
+// accessors see is the frames arrived.
+//
 // Every recorded frame keeps its positions (xyz a particle: what the renderer and the export
 // need); every keyframeEvery-th frame also the whole SimulationState. Resuming from frame k
 // restores the last keyframe at or before k and steps on to k, which gives the frames as they
@@ -39,6 +44,11 @@ class FrameRecording {
   // Records the frame `sim` is at (after a step, or frame 0 after a reset). A frame that does
   // not follow the last one recorded (a reset, a regrow, a resume elsewhere) starts again.
   void record(Simulation& sim);
+  // Adds the frames whose copies have arrived (without waiting); flush() waits for them all.
+  void collect() { collect(false); }
+  void flush() { collect(true); }
+  // Frames asked for whose copies have not arrived.
+  size_t inFlight() const { return pending_.size(); }
 
   bool empty() const { return frames_.empty(); }
   size_t frameCount() const { return frames_.size(); }
@@ -79,16 +89,28 @@ class FrameRecording {
     std::shared_ptr<const SimulationState> key;  // the whole state on keyframes
     size_t bytes() const;
   };
+  // A frame asked for, its copy on the way.
+  struct Pending {
+    Frame frame;
+    std::shared_ptr<SimulationState> state;  // keyframes: all but the solver part, filled now
+    std::shared_ptr<FrameCopy> copy;
+  };
   // Drops the oldest span (a keyframe and the frames up to the next); false when only one is
   // left.
   bool dropOldestSpan();
   void trim();
+  void collect(bool wait);
+  // Adds an arrived frame within the budget.
+  void add(Frame f);
 
   FrameRecordingOptions options_;
   std::deque<Frame> frames_;
+  std::deque<Pending> pending_;
   size_t bytes_ = 0;
   long generation_ = -1;
   long start_ = 0;  // the frame the recording started at: keyframes every keyframeEvery from it
+  long lastAsked_ = -1;   // the last frame record() asked for
+  bool needKey_ = false;  // the recording starts again: the next frame asked is a keyframe
   long refused_ = 0;
 };
 

@@ -142,7 +142,18 @@ void Simulation::stepFrame() {
   ++frame_;
 }
 
+std::unique_ptr<FrameCopy> Simulation::copyFrame(SimulationState* state) {
+  if (state) {
+    save(*state, false);
+  }
+  return solver_->copyFrame(state != nullptr);
+}
+
 void Simulation::save(SimulationState& out) const {
+  save(out, true);
+}
+
+void Simulation::save(SimulationState& out, bool withSolver) const {
   out.generation = generation_;
   out.frame = frame_;
   out.time = time_;
@@ -151,7 +162,7 @@ void Simulation::save(SimulationState& out) const {
   out.lastUserPose = lastUserPose_;
   out.lastPose = lastPose_;
   out.config = config_;
-  solver_->saveState(out.solver);
+  if (withSolver) solver_->saveState(out.solver);
 }
 
 bool Simulation::restore(const SimulationState& in, std::string* error) {

@@ -56,6 +56,9 @@ class Simulation {
   // between) and then changes nothing.
   void save(SimulationState& out) const;
   bool restore(const SimulationState& in, std::string* error);
+  // The frame as it stands, read later (Solver::copyFrame): with `state`, that is filled now
+  // but for its solver part, which the copy's read() fills.
+  std::unique_ptr<FrameCopy> copyFrame(SimulationState* state);
   // An extra transform of the head on top of the preset's motion (the viewer's drag).
   void setUserPose(const Pose& pose) { userPose_ = pose; }
   const Pose& userPose() const { return userPose_; }
@@ -82,6 +85,7 @@ class Simulation {
   long generation() const { return generation_; }
 
  private:
+  void save(SimulationState& out, bool withSolver) const;
   // Grows the groom for `config` and keeps it; the solver is not touched.
   bool regrow(const Config& config, const std::string& baseDir, std::string* error);
   void boundRoots();

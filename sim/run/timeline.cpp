@@ -24,6 +24,7 @@ void Timeline::setBudget(size_t bytes) {
 }
 
 bool Timeline::show(long frame) {
+  frames_.flush();  // the newest frames may still be on their way
   const bool recorded = frames_.at(frame) || (a_ && a_->at(frame));
   shown_ = frame >= 0 && recorded ? frame : -1;
   return shown_ >= 0;
@@ -53,13 +54,15 @@ bool Timeline::bake(long frames) {
 }
 
 void Timeline::keepAsA(const Simulation& sim) {
+  frames_.flush();
   a_ = std::make_unique<FrameRecording>(frames_);
   aConfig_ = std::make_shared<const Config>(sim.config());
   aGeneration_ = sim.generation();
 }
 
 bool Timeline::exportFrames(const Simulation& sim, const std::string& dir, long first, long last,
-                            std::string* message) const {
+                            std::string* message) {
+  frames_.flush();
   std::string error;
   long written = 0;
   bool ok = io::prepareSequenceDir(dir, &error);

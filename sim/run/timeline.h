@@ -63,7 +63,7 @@ class Timeline {
   // Writes recorded frames first..last as DIR/frame_00001.hair, ... (sim/groom/hair_sequence.h).
   // True with *message saying what was written, or false with why not.
   bool exportFrames(const Simulation& sim, const std::string& dir, long first, long last,
-                    std::string* message) const;
+                    std::string* message);
 
   size_t budget() const { return budget_; }
   bool showing() const { return shown_ >= 0; }

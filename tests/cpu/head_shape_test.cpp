@@ -108,6 +108,35 @@ TEST_CASE("Mannequin: the mesh is closed, outward and on the surface", "[head]")
   CHECK(openEdges(cut) > 0);
 }
 
+TEST_CASE("Mannequin: the coarser mesh for interactive drawing", "[head]") {
+  const SurfaceMesh& full = mannequinMesh();
+  const size_t target = 30000;
+  const SurfaceMesh coarse = coarserMesh(full, target);
+  const size_t triangles = coarse.indices.size() / 3;
+  INFO(full.indices.size() / 3 << " triangles down to " << triangles);
+  CHECK(triangles < full.indices.size() / 3 / 3);
+  CHECK(triangles > target / 3);
+  CHECK(triangles < target * 3 / 2);
+  REQUIRE(coarse.normals.size() == coarse.positions.size());
+  // Every vertex near the surface (within about a cell, ~1 cm), its normal of unit length and
+  // outward; every index in range and no triangle collapsed.
+  double farthest = 0.0;
+  for (size_t i = 0; i < coarse.positions.size(); ++i) {
+    const glm::dvec3 p(coarse.positions[i]);
+    farthest = std::max(farthest, std::abs(mannequinDistance(p)));
+    CHECK(std::abs(glm::length(coarse.normals[i]) - 1.0f) < 1e-4f);
+  }
+  CHECK(farthest < 0.006);
+  for (size_t t = 0; t < triangles; ++t) {
+    const uint32_t a = coarse.indices[3 * t], b = coarse.indices[3 * t + 1],
+                   c = coarse.indices[3 * t + 2];
+    REQUIRE(std::max({a, b, c}) < coarse.positions.size());
+    CHECK((a != b && b != c && a != c));
+  }
+  // A mesh already small enough comes back as it is.
+  CHECK(coarserMesh(coarse, triangles + 1).indices == coarse.indices);
+}
+
 TEST_CASE("Mannequin: a grown groom roots on the scalp and leaves the face open", "[head]") {
   Config c = mannequinScene(3000);
   const Groom g = test::growFor(c);

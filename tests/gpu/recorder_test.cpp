@@ -1,12 +1,14 @@
 // The timeline's recording (sim/run/frame_recording.h) on both solvers (the GPU one on the real GL
 // driver, llvmpipe where there is no GPU): resuming from a recorded frame gives the frames
 // that were recorded after it, bit for bit; the cache keeps within its memory budget.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
+#include "gl/fence.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/run/frame_recording.h"
 #include "sim/run/simulation.h"
@@ -58,6 +60,8 @@ TEST_CASE("FrameRecording: record 120 frames, resume from 60: the frames after i
     recorder.record(sim);
     recorded.push_back(positionsOf(sim));
   }
+  recorder.flush();  // the last frames' copies may still be on their way
+  CHECK(recorder.inFlight() == 0);
   REQUIRE(recorder.firstFrame() == 0);
   REQUIRE(recorder.lastFrame() == 120);
   CHECK(recorder.keyframeCount() == 5);  // 0, 30, 60, 90, 120
@@ -76,6 +80,7 @@ TEST_CASE("FrameRecording: record 120 frames, resume from 60: the frames after i
       recorder.record(sim);
       differ += positionsOf(sim) != recorded[size_t(f)];
     }
+    recorder.flush();
     CHECK(differ == 0);
     CHECK(recorder.lastFrame() == 120);
     CHECK(recorder.firstFrame() == 0);
@@ -109,6 +114,7 @@ TEST_CASE("FrameRecording: the cache never exceeds its memory budget, and every 
     sim.stepFrame();
     probe.record(sim);
   }
+  probe.flush();
   const size_t span = probe.bytes();
   // Room for three and a half spans.
   FrameRecording recorder({span * 7 / 2, 10});
@@ -118,6 +124,8 @@ TEST_CASE("FrameRecording: the cache never exceeds its memory budget, and every 
     recorder.record(sim);
     most = std::max(most, recorder.bytes());
   }
+  recorder.flush();
+  most = std::max(most, recorder.bytes());
   INFO("span " << span << " B, budget " << recorder.options().budgetBytes << " B, most held "
                << most << " B, " << recorder.frameCount() << " frames kept");
   CHECK(most <= recorder.options().budgetBytes);
@@ -142,9 +150,42 @@ TEST_CASE("FrameRecording: the cache never exceeds its memory budget, and every 
   FrameRecording tiny({1024, 10});
   sim.stepFrame();
   tiny.record(sim);
+  tiny.flush();
   CHECK(tiny.empty());
   CHECK(tiny.bytes() == 0);
   CHECK(tiny.refused() == 1);
+}
+
+TEST_CASE("FrameRecording: on the GPU nothing waits for a frame's copy, keyframes included",
+          "[recorder][gpu]") {
+  Simulation sim(test::gpuSolver());
+  std::string error;
+  Config c = busyScene();
+  c.collision.mode = CollisionMode::Head;  // no candidate search (it reads its counters back)
+  REQUIRE(sim.load(c, ".", &error));
+  FrameRecording recorder({size_t(1) << 30, 10});
+  recorder.record(sim);
+  gl::resetReadbackStats();
+  size_t mostInFlight = 0;
+  for (int f = 1; f <= 40; ++f) {
+    sim.stepFrame();
+    recorder.record(sim);
+    mostInFlight = std::max(mostInFlight, recorder.inFlight());
+  }
+  const gl::ReadbackStats stats = gl::readbackStats();
+  INFO(stats.reads << " reads, " << stats.bytes << " bytes, " << stats.waits << " waits; "
+                   << mostInFlight << " copies in flight at most");
+  // Each copy is read once its fence has passed: no read waited for the GPU.
+  CHECK(stats.waits == 0);
+  // The frames arrive a frame or two late, not all at the end.
+  CHECK(mostInFlight <= 4);
+  CHECK(recorder.lastFrame() >= 40 - long(mostInFlight));
+  recorder.flush();
+  CHECK(recorder.lastFrame() == 40);
+  CHECK(recorder.keyframeCount() == 5);  // 0, 10, 20, 30, 40: their states came the same way
+  double mismatch = -1.0;
+  REQUIRE(recorder.resume(sim, 25, &error, &mismatch));
+  CHECK(mismatch == 0.0);
 }
 
 TEST_CASE("FrameRecording: a regrown groom starts the recording again; its states are refused",
