@@ -1,8 +1,6 @@
 #include "app/scene_view.h"
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -52,15 +50,8 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
                                   ? DrawQuality::Interactive
                                   : DrawQuality::Full;
   const Key key{frame.serial, version_, size.width, size.height, quality};
-  // Interactive quality draws a smaller image, scaled up to the window.
-  const DrawAmount amount =
-      quality == DrawQuality::Interactive ? interactiveAmount(look.render) : DrawAmount{};
-  const float scale = std::clamp(amount.resolution, 0.05f, 1.0f);
-  const int width = std::max(16, int(std::lround(float(size.width) * scale)));
-  const int height = std::max(16, int(std::lround(float(size.height) * scale)));
-
-  if (color_.id() == 0 || color_.width() != width || color_.height() != height) {
-    color_ = gl::Texture::create2D(GL_RGBA8, width, height);
+  if (color_.id() == 0 || color_.width() != size.width || color_.height() != size.height) {
+    color_ = gl::Texture::create2D(GL_RGBA8, size.width, size.height);
     fbo_ = gl::Framebuffer();
     fbo_.attach(GL_COLOR_ATTACHMENT0, color_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
     drawn_ = Key{};
@@ -75,10 +66,10 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
       view.head = frame.head.get();
       view.headPose = frame.headPose;
       view.positionBuffer = positions(frame);
-      view.width = width;
-      view.height = height;
+      view.width = size.width;
+      view.height = size.height;
       view.targetFramebuffer = fbo_.id();
-      view.amount = amount;
+      if (quality == DrawQuality::Interactive) view.amount = interactiveAmount(look.render);
       renderer_->render(view);
       out.scene = true;
       out.stages = renderer_->stageTimes();
@@ -91,8 +82,7 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
     lastQuality_ = quality;
     ++scenesDrawn_;
   }
-  fbo_.blitTo(0, {0, 0, width, height}, {0, 0, size.width, size.height}, GL_COLOR_BUFFER_BIT,
-              width == size.width && height == size.height ? GL_NEAREST : GL_LINEAR);
+  fbo_.blitTo(0, {0, 0, size.width, size.height}, {0, 0, size.width, size.height});
   gl::Framebuffer::bindDefault();
   return out;
 }

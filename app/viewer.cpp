@@ -19,6 +19,7 @@
 #include "app/window.h"
 #include "gl/caps.h"
 #include "gl/debug.h"
+#include "gl/fence.h"
 #include "sim/run/make_solver.h"
 #include "sim/param/sim_params.h"
 #include "sim/run/scene_checks.h"
@@ -622,6 +623,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
     viewer->showPresetErrors(startupErrors, "not loaded; showing the built-in preset instead");
 
   const auto start = Clock::now();
+  gl::resetReadbackStats();
   // --screenshot: of the frame --exit-after names (the first frame without it).
   if (!options.screenshot.empty())
     viewer->requestScreenshot(options.screenshot, std::max(1L, options.exitAfter));
@@ -656,6 +658,9 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
     meta["wall_seconds"] = seconds;
     meta["sim_frames"] = f.frame;
     meta["drawn_strands"] = s.drawnStrands;
+    // What both threads read back from the GPU, and the reads that had to wait for it.
+    const gl::ReadbackStats read = gl::readbackStats();
+    meta["readback"] = {{"reads", read.reads}, {"bytes", read.bytes}, {"waits", read.waits}};
     if (!m.write(options.metrics, meta, &error)) {
       std::fprintf(stderr, "csmhair: %s\n", error.c_str());
       return 1;

@@ -236,7 +236,7 @@ ShadowMaps& HairRenderer::shadowFor(int size) {
 }
 
 void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
-                                  float shadowOpacityScale) {
+                                  float shadowOpacityScale, int drawnWidth, int drawnHeight) {
   const Config& c = *frame.scene;
   const ViewConfig& look = *frame.look;
   const RenderConfig& r = look.render;
@@ -265,12 +265,15 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
   u.tipColor = glm::vec4(srgbToLinear(colors.tip), std::clamp(r.opacity, 0.0f, 1.0f));
   u.specShift =
       glm::vec4(r.specularShift1, r.specularShift2, r.specularExponent1, r.specularExponent2);
-  u.specStrength = glm::vec4(r.specularStrength1, r.specularStrength2, r.strandWidth * widthScale,
-                             std::max(r.layerSpacing, 1e-5f));
+  // A width in the frame's pixels is that many of them, however small the image drawn.
+  const float pixelScale = float(drawnHeight) / float(std::max(frame.height, 1));
+  u.specStrength =
+      glm::vec4(r.specularStrength1, r.specularStrength2, r.strandWidth * widthScale * pixelScale,
+                std::max(r.layerSpacing, 1e-5f));
   u.headColor = glm::vec4(srgbToLinear(r.headColor), r.shadows ? 1.0f : 0.0f);
   u.background = glm::vec4(srgbToLinear(r.background), 1.0f);
-  u.viewport = glm::vec4(float(frame.width), float(frame.height), 1.0f / float(frame.width),
-                         1.0f / float(frame.height));
+  u.viewport = glm::vec4(float(drawnWidth), float(drawnHeight), 1.0f / float(drawnWidth),
+                         1.0f / float(drawnHeight));
   // Orthographic depth is linear: one unit of depth is the whole 2R of the light's box.
   const float size = float(shadow_->size());
   u.lightRange = glm::vec4(2.0f * R, size, 1.0f / size, 2.0f * R / size);
@@ -281,7 +284,7 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
   // A width in metres: pixels per metre at view depth 1 from the projection's vertical scale
   // (1 / tan(fov / 2) for the orbit camera), so a strand narrows with distance as it would.
   const float widthM = std::max(r.strandWidthM, 0.0f);
-  u.width = glm::vec4(widthM * widthScale, 0.5f * proj[1][1] * float(frame.height),
+  u.width = glm::vec4(widthM * widthScale, 0.5f * proj[1][1] * float(drawnHeight),
                       widthM > 0.0f ? widthM : kShadowWidthOfPixelStrands, 0.0f);
   frameUniforms_.setSubData(0, sizeof(u), &u);
 }
@@ -308,11 +311,15 @@ void HairRenderer::render(const FrameView& frame) {
     scalp_ = makeScalpMap(*frame.groom, scalpSpheres(*frame.head));
     scalpKey_ = {frame.groom, frame.generation};
   }
-  FrameTarget& target = targetFor(frame.width, frame.height, samples);
+  // Interactive quality may draw a smaller image; the post pass scales it up to the frame.
+  const float scale = std::clamp(amount.resolution, 0.05f, 1.0f);
+  const int drawnWidth = std::max(16, int(std::lround(float(frame.width) * scale)));
+  const int drawnHeight = std::max(16, int(std::lround(float(frame.height) * scale)));
+  FrameTarget& target = targetFor(drawnWidth, drawnHeight, samples);
   target_ = &target;
   // The programs for the samples the driver made, which may be more than asked for.
   std::string log;
-  const Programs* programs = programsFor(target.samples(), &log);
+  Programs* programs = programsFor(target.samples(), &log);
   if (!programs) {
     gl::logMessage(gl::LogLevel::Error, "HairRenderer: " + log);
     return;
@@ -322,7 +329,7 @@ void HairRenderer::render(const FrameView& frame) {
 
   const Selection drawn = select(geometry_->guides(), c.hairstyle.followCount, amount.strands);
   drawnStrands_ = frame.positionBuffer != 0 ? drawn.guides * std::size_t(drawn.instances) : 0;
-  updateUniforms(frame, drawn.widthScale, drawn.opacityScale);
+  updateUniforms(frame, drawn.widthScale, drawn.opacityScale, drawnWidth, drawnHeight);
 
   // The solver may have written the positions from a compute shader.
   gl::memoryBarrier(gl::Barrier::Storage);
@@ -330,7 +337,7 @@ void HairRenderer::render(const FrameView& frame) {
   gl::bindStorageBuffer(bindings::kPositions, frame.positionBuffer);
   geometry_->bind();
   head_.bind();
-  const Programs& p = *programs;
+  Programs& p = *programs;
   auto drawLines = [&] {
     if (drawnStrands_ > 0) geometry_->drawLines(drawn.guides, drawn.instances);
   };
@@ -362,7 +369,7 @@ void HairRenderer::render(const FrameView& frame) {
   }
 
   // Head: the backdrop, then the spheres, into the frame.
-  gl::setViewport(0, 0, frame.width, frame.height);
+  gl::setViewport(0, 0, drawnWidth, drawnHeight);
   target.framebuffer().bind();
   clock_.begin("head");
   target.framebuffer().clearDepth(1.0f);
@@ -391,6 +398,9 @@ void HairRenderer::render(const FrameView& frame) {
   gl::setViewport(0, 0, frame.width, frame.height);
   target.color().bind(bindings::kResolvedUnit);
   p.post.use();
+  p.post.setUniform("uDrawn", glm::ivec2(drawnWidth, drawnHeight));
+  p.post.setUniform("uScale", glm::vec2(float(drawnWidth) / float(frame.width),
+                                        float(drawnHeight) / float(frame.height)));
   emptyVao_.bind();
   gl::drawArrays(GL_TRIANGLES, 0, 3);
   clock_.endFrame();

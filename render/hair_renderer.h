@@ -78,7 +78,10 @@ class HairRenderer final : public Renderer {
   FrameTarget& targetFor(int width, int height, int samples);
   StrandGeometry& geometryFor(int subdivision);
   ShadowMaps& shadowFor(int size);
-  void updateUniforms(const FrameView& frame, float widthScale, float shadowOpacityScale);
+  // `drawnWidth` x `drawnHeight`: the image the passes draw (the frame's size times
+  // DrawAmount::resolution), whose pixels set the strands' widths.
+  void updateUniforms(const FrameView& frame, float widthScale, float shadowOpacityScale,
+                      int drawnWidth, int drawnHeight);
 
   std::map<int, std::unique_ptr<Programs>> programs_;  // by sample count
   int maxSamples_ = 1;

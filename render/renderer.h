@@ -27,7 +27,7 @@ struct DrawAmount {
   int samples = 0;          // MSAA samples; 0: render.samples
   int shadowMapSize = 0;    // 0: render.shadow_map_size
   bool fullHead = true;     // the head's mesh in full, else its coarser one (HeadMesh)
-  float resolution = 1.0f;  // of the target's width and height (the viewer scales it up)
+  float resolution = 1.0f;  // of the target's width and height: drawn smaller, scaled up
   bool operator==(const DrawAmount&) const = default;
 };
 // The interactive amount a look asks for (full when render.interactive is off).

@@ -21,6 +21,10 @@
   27  // uint per work group + 1 of the per-particle passes: the first particle of each
       // (sim/gpu/strand_groups.h, shaders/sim/strand_group.glsl)
 #define CSM_BIND_PARAMS 8        // SimParams + one Substep per substep
+// The same buffer as a uniform block (binding point of GL_UNIFORM_BUFFER), for the passes built
+// with CSM_PARAMS_UNIFORM (on a GPU: a uniform block's reads, the same for every invocation,
+// come from the constant cache).
+#define CSM_UNIFORM_PARAMS 3  // (the renderer's frame block is at 0: render/bindings.h)
 #define CSM_BIND_REGION \
   22  // vec4 per particle: its region (sim/solver/stiffness.h): x per-region
       // mass, y 1 / J (0: no extent), z first (negative: that many

@@ -15,10 +15,19 @@ struct Substep {
   CSM_SUBSTEP(CSM_MEMBER)
 };
 
+#ifdef CSM_PARAMS_UNIFORM
+// std140 lays these structs out as std430 does (no arrays of scalars in them, every struct a
+// multiple of 16 bytes); the buffer is allocated whole (GpuSolver::writeParams).
+layout(std140, binding = CSM_UNIFORM_PARAMS) uniform Params {
+  SimParams P;
+  Substep S[CSM_MAX_SUBSTEPS];
+};
+#else
 layout(std430, binding = CSM_BIND_PARAMS) readonly buffer Params {
   SimParams P;
   Substep S[];
 };
+#endif
 
 // Items beyond 65535 work groups are dispatched as a 2D grid of groups (the GL 4.3 minimum
 // for gl_NumWorkGroups.x); this flattens it back. A macro: gl_WorkGroupSize exists only

@@ -4,10 +4,7 @@
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
-// Read through texel fetches: on llvmpipe a vector gather instead of a loop over the lanes.
-layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
-layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
-layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
+#include "sim/particle_reads.glsl"
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
 layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
   uint particleStrand[];

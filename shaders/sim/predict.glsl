@@ -3,7 +3,7 @@
 // follow the head; free particles get gravity and wind drag, and move to x* = x + h (v + h f / m).
 // The velocity itself is not written: integration (shape matching's last step) recomputes it
 // from the positions, as the CPU solver does (its twin: CpuSolver's predict step,
-// sim/solver/cpu_solver.cpp). The including pass declares posTex, velTex, restTex,
+// sim/solver/cpu_solver.cpp). The including pass includes particle_reads.glsl and declares
 // strandStiffness, volumeFieldTex and volumeSumsTex.
 #include "sim/wind.glsl"
 
@@ -38,17 +38,17 @@ vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
 
 // x* of particle i of the strand [a, b) whose first `pinned` particles the head holds.
 vec3 predictParticle(uint i, uint a, uint b, int pinned, Substep st) {
-  vec4 r = texelFetch(restTex, int(i));
+  vec4 r = readRest(i);
   if (int(i - a) < pinned) return (st.head * vec4(r.xyz, 1.0)).xyz;
   float h = st.h;
-  vec3 x = texelFetch(posTex, int(i)).xyz;
-  vec3 v = texelFetch(velTex, int(i)).xyz;
+  vec3 x = readPosition(i).xyz;
+  vec3 v = readVelocity(i).xyz;
   vec3 acc = P.gravity;
   if (P.windOn != 0u) {
     // Drag acts on the wind across the strand, not along it; implicit in the velocity
     // (c / (1 + h c) instead of c), as CpuSolver::windDrag.
-    vec3 d = texelFetch(posTex, int(min(i + 1u, b - 1u))).xyz -
-             texelFetch(posTex, int(max(i, a + 1u) - 1u)).xyz;
+    vec3 d = readPosition(min(i + 1u, b - 1u)).xyz -
+             readPosition(max(i, a + 1u) - 1u).xyz;
     float len = length(d);
     vec3 t = len > 1e-12 ? d / len : vec3(0.0);
     vec3 rel = windVelocity(x, st.stepStart) - v;

@@ -81,6 +81,10 @@
   F(mat4, head) F(mat4, headDelta)                                                               \
   F(float, stepStart) F(float, h) F(float, twistStep) F(float, velocityKept)
 
+// Substeps a frame may hold (sim.max_substeps at most): the size of the uniform block's array
+// (common.glsl, CSM_PARAMS_UNIFORM).
+#define CSM_MAX_SUBSTEPS 256
+
 // A field of the list as a struct member (both languages).
 #define CSM_MEMBER(type, name) type name;
 

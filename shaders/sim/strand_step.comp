@@ -12,10 +12,7 @@
 // it, hence its goal; then x = x* + alpha (g - x*), v = (x - x_old) / h.
 #include "sim/common.glsl"
 
-layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
-layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
-layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
-layout(binding = CSM_TEX_REGION) uniform samplerBuffer regionTex;
+#include "sim/particle_reads.glsl"
 layout(binding = CSM_TEX_VOLUME_FIELD) uniform samplerBuffer volumeFieldTex;
 layout(binding = CSM_TEX_VOLUME_SUMS) uniform isamplerBuffer volumeSumsTex;
 layout(std430, binding = CSM_BIND_POSITION) writeonly buffer Position { vec4 pos[]; };
@@ -45,11 +42,11 @@ void main() {
   vec4 stiff = strandStiffness[o.s];
   int pinned = int(stiff.z);
   vec3 xp = o.live ? predictParticle(o.p, o.a, o.a + uint(o.n), pinned, st) : vec3(0.0);
-  vec4 region = o.live ? texelFetch(regionTex, int(o.p)) : vec4(0.0);
+  vec4 region = o.live ? readRegion(o.p) : vec4(0.0);
   // A slot past the group's end reads nothing (a fetch out of range is undefined).
-  vec3 rest = o.live ? texelFetch(restTex, int(o.p)).xyz : vec3(0.0);
-  vec3 rest0 = o.live ? texelFetch(restTex, int(o.a)).xyz : vec3(0.0);
-  vec3 restNext = o.live ? texelFetch(restTex, int(o.a) + min(1, o.n - 1)).xyz : vec3(0.0);
+  vec3 rest = o.live ? readRest(o.p).xyz : vec3(0.0);
+  vec3 rest0 = o.live ? readRest(o.a).xyz : vec3(0.0);
+  vec3 restNext = o.live ? readRest(int(o.a) + min(1, o.n - 1)).xyz : vec3(0.0);
 
   // The root's x*, to every slot of its strand.
   shA[lid] = vec4(xp, 0.0);
@@ -93,8 +90,8 @@ void main() {
     vec3 cRest = sumRest / M;
     mat3 A = sumA - outerProduct(M * c, cRest);
     // The twist axis: the region's rest chord (ghosts continue the root segment).
-    vec3 chord = texelFetch(restTex, int(o.a) + hi).xyz -
-                 (ghosts > 0 ? rest0 - float(ghosts) * d : texelFetch(restTex, int(o.a) + lo).xyz);
+    vec3 chord = readRest(int(o.a) + hi).xyz -
+                 (ghosts > 0 ? rest0 - float(ghosts) * d : readRest(int(o.a) + lo).xyz);
     float chordLength = length(chord);
     vec3 axis = chordLength > 0.0 ? chord / chordLength : vec3(0.0);
     int iterations = max(1, P.rotationIterations);
@@ -127,7 +124,7 @@ void main() {
   float alpha = P.stiffnessModel == CSM_STIFFNESS_CALIBRATED ? min(1.0, stiff.x * h * h) : P.alpha;
   bool fixed_ = o.j < pinned;
   vec3 x = fixed_ ? xp : xp + alpha * (goal - xp);
-  vec3 v = o.live ? (x - texelFetch(posTex, int(o.p)).xyz) / h : vec3(0.0);
+  vec3 v = o.live ? (x - readPosition(o.p).xyz) / h : vec3(0.0);
   if (!fixed_) v *= st.velocityKept;
 
 #ifdef CSM_SWEEP

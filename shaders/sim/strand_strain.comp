@@ -6,7 +6,7 @@
 // particle back.
 #include "sim/common.glsl"
 
-layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
+#include "sim/particle_reads.glsl"
 layout(std430, binding = CSM_BIND_POSITION) buffer Position { vec4 pos[]; };
 layout(std430, binding = CSM_BIND_VELOCITY) buffer Velocity { vec4 vel[]; };
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
@@ -35,7 +35,7 @@ void main() {
   }
   shA[lid] = o.live ? pos[o.p] : vec4(0.0);
   shB[lid] = o.live ? vel[o.p] : vec4(0.0);
-  shC[lid] = o.live ? texelFetch(restTex, int(o.p)) : vec4(0.0);
+  shC[lid] = o.live ? readRest(o.p) : vec4(0.0);
   shD[lid] = c;
   barrier();
   sweepStrands(o, substep);

@@ -32,13 +32,38 @@ const char* gpuKernelsName(GpuKernels k) {
   return k == GpuKernels::PerParticle ? "per particle" : "per strand";
 }
 
-GpuSolver::GpuSolver(bool cpuClock, GpuKernels kernels)
-    : kernels_(kernels), timer_(cpuClock), samples_([this](const uint32_t* counters) {
-        sampledContacts_ = gpu::contactStatsOf(counters);
-      }) {}
+GpuSolver::GpuSolver(bool cpuClock, GpuKernels kernels, Reads reads)
+    : kernels_(kernels),
+      reads_(reads),
+      timer_(cpuClock),
+      samples_(
+          [this](const uint32_t* counters) { sampledContacts_ = gpu::contactStatsOf(counters); }) {}
+
+std::vector<gl::Define> GpuSolver::withReads(std::vector<gl::Define> defines) const {
+  if (reads_.uniformParams) defines.push_back({"CSM_PARAMS_UNIFORM", ""});
+  if (reads_.storage) defines.push_back({"CSM_STORAGE_READS", ""});
+  return defines;
+}
 
 std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
-  const bool software = gl::queryCaps().software;
+  const gl::Caps caps = gl::queryCaps();
+  const bool software = caps.software;
+  Reads reads;
+  const size_t paramBlock = sizeof(gpu::SimParams) + CSM_MAX_SUBSTEPS * sizeof(gpu::Substep);
+  reads.uniformParams = !software && size_t(caps.maxUniformBlockSize) >= paramBlock;
+  reads.storage = !software;
+  if (const char* env = std::getenv("CSM_GPU_READS"); env && *env) {
+    const std::string want = env;
+    if (want == "texture") {
+      reads = Reads{};
+    } else if (want == "storage") {
+      reads.storage = true;
+      reads.uniformParams = size_t(caps.maxUniformBlockSize) >= paramBlock;
+    } else {
+      if (error) *error = "CSM_GPU_READS=" + want + " is not one of texture, storage";
+      return nullptr;
+    }
+  }
   GpuKernels kernels = software ? GpuKernels::PerStrand : GpuKernels::PerParticle;
   if (const char* env = std::getenv("CSM_GPU_KERNELS"); env && *env) {
     const std::string want = env;
@@ -51,7 +76,7 @@ std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
       return nullptr;
     }
   }
-  std::unique_ptr<GpuSolver> solver(new GpuSolver(software, kernels));
+  std::unique_ptr<GpuSolver> solver(new GpuSolver(software, kernels, reads));
   if (!solver->build(32, error)) return nullptr;
   return solver;
 }
@@ -79,33 +104,37 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
   }
   // Each path's passes are built when it is first used (a driver may warn about the other's).
   if (!builtCommon_) {
-    if (!passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, {}, error) ||
-        !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, {}, error) ||
-        !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, {}, error) ||
-        !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, {}, error) ||
+    if (!passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, withReads({}), error) ||
+        !passes_.carry.build("sim/carry.comp", CSM_PARTICLE_GROUP, {}, error) ||
+        !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, withReads({}),
+                                   error) ||
+        !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, withReads({}), error) ||
+        !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, withReads({}),
+                                   error) ||
         !contactSearch_.build(error, contactSolve_))
       return false;
     builtCommon_ = true;
   }
   if (kernels_ == GpuKernels::PerStrand && builtMaxN_ == 0) {
-    if (!passes_.predict.build("sim/predict.comp", CSM_PARTICLE_GROUP, {}, error) ||
-        !passes_.strainLimit[0].build("sim/strain_limit.comp", CSM_STRAND_GROUP, {}, error) ||
+    if (!passes_.predict.build("sim/predict.comp", CSM_PARTICLE_GROUP, withReads({}), error) ||
+        !passes_.strainLimit[0].build("sim/strain_limit.comp", CSM_STRAND_GROUP, withReads({}),
+                                      error) ||
         !passes_.strainLimit[1].build("sim/strain_limit.comp", CSM_STRAND_GROUP,
-                                      {{"CSM_HEAD_FIELD", ""}}, error))
+                                      withReads({{"CSM_HEAD_FIELD", ""}}), error))
       return false;
   }
   if (kernels_ == GpuKernels::PerStrand && maxN != builtMaxN_) {
     // The per-strand prefix arrays are private arrays sized by the longest strand.
     if (!passes_.shapeMatch.build("sim/shape_match.comp", CSM_STRAND_GROUP,
-                                  {{"MAX_N", std::to_string(maxN)}}, error))
+                                  withReads({{"MAX_N", std::to_string(maxN)}}), error))
       return false;
     builtMaxN_ = maxN;
   }
   if (kernels_ == GpuKernels::PerParticle && maxN != builtParticleMaxN_) {
     // Shared arrays of one group's particles; the scans take log2(MAX_N) rounds.
     const uint32_t group = gpu::groupParticlesFor(maxN);
-    const std::vector<gl::Define> defines = {{"MAX_N", std::to_string(maxN)},
-                                             {"CSM_GROUP_PARTICLES", std::to_string(group)}};
+    const std::vector<gl::Define> defines = withReads(
+        {{"MAX_N", std::to_string(maxN)}, {"CSM_GROUP_PARTICLES", std::to_string(group)}});
     std::vector<gl::Define> sweep = defines, sweepField = defines;
     sweep.push_back({"CSM_SWEEP", ""});
     sweepField.push_back({"CSM_SWEEP", ""});
@@ -355,7 +384,15 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
       spheres.emplace_back(sp.center, sp.radius);
     t += h;  // as CpuSolver advances its clock, step by step
   }
-  paramsBuffer_.upload(blob);
+  if (reads_.uniformParams) {
+    // A uniform block is read whole: the buffer holds CSM_MAX_SUBSTEPS steps, used or not.
+    const size_t whole = sizeof(gpu::SimParams) + CSM_MAX_SUBSTEPS * sizeof(gpu::Substep);
+    if (size_t(paramsBuffer_.size()) < whole)
+      paramsBuffer_.setData(GLsizeiptr(whole), nullptr, GL_DYNAMIC_DRAW);
+    paramsBuffer_.setSubData(0, GLsizeiptr(blob.size()), blob.data());
+  } else {
+    paramsBuffer_.upload(blob);
+  }
   gpu::fill(spheres_, spheres);
 }
 
@@ -365,6 +402,7 @@ void GpuSolver::bindAll() {
   contactSearch_.bind();
   contactSolve_.bind();
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
+  if (reads_.uniformParams) paramsBuffer_.bindBase(GL_UNIFORM_BUFFER, CSM_UNIFORM_PARAMS);
   volumeSums_.bindBase(ssbo, CSM_BIND_VOLUME_SUMS);
   volumeLength_.bindBase(ssbo, CSM_BIND_VOLUME_LENGTH);
   volumeField_.bindBase(ssbo, CSM_BIND_VOLUME_FIELD);
@@ -614,15 +652,16 @@ bool GpuSolver::restoreState(const SolverState& in, std::string* error) {
 
 void GpuSolver::carry(const Pose& by) {
   if (hair_.particles == 0) return;
-  Solver::carry(by);
-  // Each region's rotation turns with the hair (the warm start of its next extraction).
-  std::vector<glm::vec4> q = hair_.rotation.download<glm::vec4>(hair_.particles);
-  for (glm::vec4& r : q) {
-    const glm::dquat turned = glm::normalize(
-        by.rotation * glm::dquat(double(r.w), double(r.x), double(r.y), double(r.z)));
-    r = glm::vec4(float(turned.x), float(turned.y), float(turned.z), float(turned.w));
-  }
-  hair_.rotation.upload(q);
+  // Positions, velocities and each region's rotation (the warm start of its next extraction)
+  // turn with the hair, on the GPU (carry.comp).
+  const glm::dquat q = glm::normalize(by.rotation);
+  hair_.bind();
+  gl::memoryBarrier(gpu::kPassBarrier);
+  passes_.carry.set("turn", glm::vec4(float(q.x), float(q.y), float(q.z), float(q.w)))
+      .set("shift", glm::vec3(by.translation))
+      .set("count", uint32_t(hair_.particles))
+      .run(uint32_t(hair_.particles));
+  gl::memoryBarrier(gl::Barrier::All);
   head_ = compose(by, head_);
 }
 

@@ -134,7 +134,15 @@ class GpuSolver final : public Solver {
   GridStats gridStats();
 
  private:
-  GpuSolver(bool cpuClock, GpuKernels kernels);
+  // How the step's passes read: on a GPU the parameters from a uniform block and the particles
+  // through storage blocks; on a software renderer from storage and texel fetches.
+  struct Reads {
+    bool uniformParams = false;  // CSM_PARAMS_UNIFORM
+    bool storage = false;        // CSM_STORAGE_READS
+  };
+  GpuSolver(bool cpuClock, GpuKernels kernels, Reads reads);
+  // `defines` and those of reads_.
+  std::vector<gl::Define> withReads(std::vector<gl::Define> defines) const;
   bool build(int maxStrandSize, std::string* error);
   void uploadRegions();
   void resetVolume();
@@ -162,11 +170,12 @@ class GpuSolver final : public Solver {
   int builtMaxN_ = 0;          // the per-strand passes', 0 until built
   int builtParticleMaxN_ = 0;  // the per-particle passes', 0 until built
   GpuKernels kernels_ = GpuKernels::PerStrand;
+  Reads reads_;
   std::string failure_;  // set by reset when the groom's strands cannot be simulated
   gpu::SimParams params_{};
 
   struct Passes {
-    gpu::ComputePass predict, shapeMatch, measure, volumeSplat, volumeDispatch, volumeField;
+    gpu::ComputePass predict, shapeMatch, measure, volumeSplat, volumeDispatch, volumeField, carry;
     // For the head's spheres and for its distance field (llvmpipe runs both sides of a
     // branch: each build runs only its own head's push).
     gpu::ComputePass strainLimit[2];

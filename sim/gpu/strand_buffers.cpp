@@ -82,6 +82,9 @@ void StrandBuffers::bind() const {
   strandOrder.bindBase(ssbo, CSM_BIND_STRAND_ORDER);
   strandStiffness.bindBase(ssbo, CSM_BIND_STRAND_STIFFNESS);
   groupFirst.bindBase(ssbo, CSM_BIND_STRAND_GROUPS);
+  // Read as storage too by the passes built with CSM_STORAGE_READS (particle_reads.glsl).
+  rest.bindBase(ssbo, CSM_BIND_REST);
+  region.bindBase(ssbo, CSM_BIND_REGION);
   positionTex.bind(CSM_TEX_POSITION);
   velocityTex.bind(CSM_TEX_VELOCITY);
   restTex.bind(CSM_TEX_REST);

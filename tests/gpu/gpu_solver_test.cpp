@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "gl/fence.h"
 #include "gl/shader_source.h"
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/cpu_solver.h"
@@ -614,15 +615,21 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
 
 TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][solver]") {
   test::glContext();
-  auto program = gl::buildProgram("predict", {{GL_COMPUTE_SHADER, "sim/predict.comp"}});
+  // As a storage block (std430), and as the uniform block a GPU reads (std140).
+  const bool uniform = GENERATE(false, true);
+  INFO((uniform ? "uniform block" : "storage block"));
+  const GLenum face = uniform ? GL_UNIFORM : GL_BUFFER_VARIABLE;
+  std::vector<gl::Define> defines;
+  if (uniform) defines.push_back({"CSM_PARAMS_UNIFORM", ""});
+  auto program = gl::buildProgram("predict", {{GL_COMPUTE_SHADER, "sim/predict.comp"}}, defines);
   REQUIRE(program);
   auto offset = [&](const char* name) {
-    const GLuint index = glGetProgramResourceIndex(program->id(), GL_BUFFER_VARIABLE, name);
+    const GLuint index = glGetProgramResourceIndex(program->id(), face, name);
     INFO(name);
     REQUIRE(index != GL_INVALID_INDEX);
     const GLenum prop = GL_OFFSET;
     GLint value = -1;
-    glGetProgramResourceiv(program->id(), GL_BUFFER_VARIABLE, index, 1, &prop, 1, nullptr, &value);
+    glGetProgramResourceiv(program->id(), face, index, 1, &prop, 1, nullptr, &value);
     return size_t(value);
   };
   using gpu::SimParams;
@@ -632,7 +639,7 @@ TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][so
   size_t checked = 0;
   const auto check = [&](const std::string& name, size_t expected) {
     INFO(name);
-    const GLuint index = glGetProgramResourceIndex(program->id(), GL_BUFFER_VARIABLE, name.c_str());
+    const GLuint index = glGetProgramResourceIndex(program->id(), face, name.c_str());
     if (index == GL_INVALID_INDEX && name.find(".unused") != std::string::npos) return;
     CHECK(offset(name.c_str()) == expected);
     ++checked;
@@ -645,12 +652,18 @@ TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][so
   CSM_SUBSTEP(CSM_CHECK_SUBSTEP)
 #undef CSM_CHECK_SUBSTEP
   CHECK(checked >= 50);
-  const GLenum strideProp = GL_TOP_LEVEL_ARRAY_STRIDE;
-  GLint stride = 0;
-  glGetProgramResourceiv(program->id(), GL_BUFFER_VARIABLE,
-                         glGetProgramResourceIndex(program->id(), GL_BUFFER_VARIABLE, "S[0].h"), 1,
-                         &strideProp, 1, nullptr, &stride);
-  CHECK(size_t(stride) == sizeof(Substep));
+  if (uniform) {
+    // An array of structs in a uniform block lists each element's members.
+    CHECK(offset("S[1].h") - offset("S[0].h") == sizeof(Substep));
+    CHECK(offset("S[255].h") == sizeof(SimParams) + 255 * sizeof(Substep) + offsetof(Substep, h));
+  } else {
+    const GLenum strideProp = GL_TOP_LEVEL_ARRAY_STRIDE;
+    GLint stride = 0;
+    glGetProgramResourceiv(program->id(), face,
+                           glGetProgramResourceIndex(program->id(), face, "S[0].h"), 1, &strideProp,
+                           1, nullptr, &stride);
+    CHECK(size_t(stride) == sizeof(Substep));
+  }
 }
 
 TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measures read back",
@@ -768,4 +781,38 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
                                 << "starts " << start3 << ", where it ends " << end3);
   CHECK(std::abs(end3 - start3) > 0.02 * start3);
   CHECK(double(third->contacts.penetrations) == Approx(start3).epsilon(0.01));
+}
+
+TEST_CASE("GPU solver: carry turns and moves the hair on the GPU, reading nothing back",
+          "[gpu][solver][jump]") {
+  auto gpu = test::gpuSolver();
+  Config c = smallScene(40);
+  const Groom g = grow(c);
+  gpu->reset(g, c, Pose{});
+  for (int f = 0; f < 3; ++f) gpu->stepFrame(Pose{}, Pose{});
+  std::vector<glm::vec4> x0, v0, x1, v1;
+  gpu->readPositions(x0);
+  gpu->readVelocities(v0);
+  const Pose by = rotationAbout(glm::dvec3(0.01, 0.02, -0.03), glm::dvec3(0.3, 1.0, 0.2), 90.0);
+  gl::resetReadbackStats();
+  gpu->carry(by);
+  gpu->finish();
+  CHECK(gl::readbackStats().reads == 0);
+  CHECK(gl::readbackStats().waits == 0);
+  gpu->readPositions(x1);
+  gpu->readVelocities(v1);
+  REQUIRE(x1.size() == x0.size());
+  double worst = 0.0;
+  for (size_t i = 0; i < x0.size(); ++i) {
+    const glm::dvec3 x = by.apply(glm::dvec3(glm::vec3(x0[i])));
+    const glm::dvec3 v = by.rotation * glm::dvec3(glm::vec3(v0[i]));
+    worst = std::max(worst, glm::length(glm::dvec3(glm::vec3(x1[i])) - x));
+    worst = std::max(worst, glm::length(glm::dvec3(glm::vec3(v1[i])) - v));
+  }
+  INFO("largest difference from the turn in double " << worst);
+  CHECK(worst < 1e-6);  // float's rounding of a turn, at most a few ulps of a position
+  // The hair steps on from there with nothing flung (the rotations turned with it).
+  gpu->stepFrame(by, by);
+  gpu->readVelocities(v1);
+  for (const glm::vec4& v : v1) REQUIRE(glm::length(glm::vec3(v)) < 5.0f);
 }
