@@ -109,10 +109,12 @@ std::vector<Device> enumerateDevices(std::string* note) {
         eglQueryDeviceAttribEXT(h, EGL_CUDA_DEVICE_NV, &value))
       cuda = int(value);
     int score = software ? 0 : nvidia ? 3 : !drm.empty() ? 2 : 1;
-    std::string label = "EGL device " + std::to_string(index) + " " +
-                        (software      ? std::string("software")
-                         : drm.empty() ? "?"
-                                       : drm);
+    // "EGL device 1 /dev/dri/renderD129 (NVIDIA) CUDA 0"; a device with no DRM file (a GPU
+    // passed into a virtual machine) has none to show.
+    std::string label = "EGL device " + std::to_string(index) +
+                        (software      ? std::string(" software")
+                         : drm.empty() ? ""
+                                       : " " + drm);
     if (!vendor.empty()) label += " (" + vendor + ")";
     if (cuda >= 0) label += " CUDA " + std::to_string(cuda);
     devices.push_back({h, label, score, index, cuda});

@@ -21,7 +21,7 @@ class Context {
   // GL_RENDERER and GL_VERSION, read when the context was made.
   const std::string& renderer() const { return renderer_; }
   const std::string& version() const { return version_; }
-  // How the context was made, e.g. "EGL device /dev/dri/renderD128 (NVIDIA)",
+  // How the context was made, e.g. "EGL device 1 /dev/dri/renderD128 (NVIDIA) CUDA 0",
   // "EGL surfaceless platform", "GLFW window".
   const std::string& platform() const { return platform_; }
 
