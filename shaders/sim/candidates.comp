@@ -42,10 +42,15 @@
 
 layout(local_size_x = CSM_CONTACT_GROUP) in;
 
-layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
-layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
+#include "sim/particle_reads.glsl"
 layout(binding = CSM_TEX_ENTRIES) uniform usamplerBuffer entryTex;
+#ifdef CSM_STORAGE_READS
+layout(std430, binding = CSM_BIND_GRID_START) readonly buffer GridStartIn { uint gridStartIn[]; };
+#define readGridStart(i) gridStartIn[uint(i)]
+#else
 layout(binding = CSM_TEX_GRID_START) uniform usamplerBuffer gridStartTex;
+#define readGridStart(i) texelFetch(gridStartTex, int(i)).x
+#endif
 
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
 layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
@@ -65,8 +70,8 @@ const uint kChunk = 128u;    // candidates per phase-1 bit mask (a uvec4)
 shared uint groupContacts, groupPenetrations, groupCandidates;
 shared uint groupDepth[CSM_DEPTH_BINS];
 
-vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
-vec3 fetchRest(uint i) { return texelFetch(restTex, int(i)).xyz; }
+vec3 fetchPos(uint i) { return readPosition(i).xyz; }
+vec3 fetchRest(uint i) { return readRest(i).xyz; }
 
 // Index of the lowest set bit of a 128-bit mask (not zero), and clears it.
 uint popLowest(inout uvec4 mask) {
@@ -100,7 +105,7 @@ void main() {
   uint pairsHere = 0u, penetrationsHere = 0u, candidatesHere = 0u;
   float deepest = 0.0;
   bool cut = false;  // the loops ended early (the driver's loop limit)
-  uint total = texelFetch(gridStartTex, int(P.bucketMask + 1u)).x;
+  uint total = readGridStart(P.bucketMask + 1u);
   if (e < total && total <= P.entryCapacity) {
     uvec4 me = texelFetch(entryTex, int(e));
     uint key = me.x, a = me.y;
@@ -111,7 +116,7 @@ void main() {
     uint sFirst = strandFirst[strandA], sLast = strandFirst[strandA + 1u] - 1u;
     float r = P.radius, twoR = 2.0 * r;
     float reach = P.candidateDistance;  // 2r + margin
-    uint hi = texelFetch(gridStartTex, int(bucketOf(key) + 1u)).x;
+    uint hi = readGridStart(bucketOf(key) + 1u);
     uint base = e + 1u;
     for (; base < hi; base += kChunk) {
       uint n = min(kChunk, hi - base);

@@ -16,9 +16,7 @@
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
-layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
-layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
-layout(binding = CSM_TEX_INVERSE_MASS) uniform samplerBuffer inverseMassTex;
+#include "sim/particle_reads.glsl"
 
 #include "sim/candidate_views.glsl"
 layout(std430, binding = CSM_BIND_CANDIDATE_RANGE) readonly buffer CandidateRange {
@@ -42,11 +40,11 @@ const float kLever = CSM_CONTACT_LEVER;
 const float kFullWeight = 1e-6;
 
 
-vec3 fetchPos(uint i) { return texelFetch(posTex, int(i)).xyz; }
-vec3 fetchVel(uint i) { return texelFetch(velTex, int(i)).xyz; }
+vec3 fetchPos(uint i) { return readPosition(i).xyz; }
+vec3 fetchVel(uint i) { return readVelocity(i).xyz; }
 // Inverse masses of segment i's two particles (0 for those the head holds).
 vec2 inverseMasses(uint i) {
-  return vec2(texelFetch(inverseMassTex, int(i)).x, texelFetch(inverseMassTex, int(i + 1u)).x);
+  return vec2(readInverseMass(i), readInverseMass(i + 1u));
 }
 
 void main() {

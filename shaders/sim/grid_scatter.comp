@@ -10,7 +10,7 @@
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
-layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
+#include "sim/particle_reads.glsl"
 
 layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
   uint particleStrand[];
@@ -22,7 +22,7 @@ layout(binding = CSM_IMAGE_ENTRIES, rgba32ui) writeonly uniform uimageBuffer ent
 void main() {
   uint i = globalIndex();
   if (i + 1u >= P.particles || particleStrand[i] != particleStrand[i + 1u]) return;
-  vec3 p0 = texelFetch(posTex, int(i)).xyz, p1 = texelFetch(posTex, int(i + 1u)).xyz;
+  vec3 p0 = readPosition(i).xyz, p1 = readPosition(i + 1u).xyz;
   ivec3 lo, hi;
   if (!segmentCells(p0, p1, lo, hi)) return;
   for (int z = lo.z; z <= hi.z; ++z)

@@ -1,5 +1,6 @@
-// Per-particle reads of the step's passes (predict.glsl, strand_step.comp, strand_strain.comp):
-// the positions and velocities the frame starts from, the rest shape and the regions. Texel
+// Per-particle reads of the step's passes (predict.glsl, strand_step.comp, strand_strain.comp)
+// and the strand contacts' (grid_count, grid_scatter, candidates, contact_solve): positions,
+// velocities, the rest shape, the regions, the contacts' inverse masses. Texel
 // fetches of buffer textures by default (llvmpipe runs a texel fetch as one vector gather and a
 // storage load as a loop over its SIMD lanes); with CSM_STORAGE_READS (a GPU: plain loads, one
 // path through the caches) read-only storage blocks over the same buffers. The including pass
@@ -15,6 +16,10 @@ layout(std430, binding = CSM_BIND_REGION) readonly buffer RegionIn { vec4 region
 #define readVelocity(i) velocityIn[uint(i)]
 #define readRest(i) restIn[uint(i)]
 #define readRegion(i) regionIn[uint(i)]
+layout(std430, binding = CSM_BIND_INVERSE_MASS) readonly buffer InverseMassIn {
+  float inverseMassIn[];
+};
+#define readInverseMass(i) inverseMassIn[uint(i)]
 #else
 layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
@@ -24,4 +29,6 @@ layout(binding = CSM_TEX_REGION) uniform samplerBuffer regionTex;
 #define readVelocity(i) texelFetch(velTex, int(i))
 #define readRest(i) texelFetch(restTex, int(i))
 #define readRegion(i) texelFetch(regionTex, int(i))
+layout(binding = CSM_TEX_INVERSE_MASS) uniform samplerBuffer inverseMassTex;
+#define readInverseMass(i) texelFetch(inverseMassTex, int(i)).x
 #endif

@@ -34,8 +34,10 @@ constexpr uint32_t kMaxSegmentCells = CSM_MAX_SEGMENT_CELLS;
 
 }  // namespace
 
-bool ContactSearch::build(std::string* error, ContactSolve& solve) {
+bool ContactSearch::build(std::string* error, ContactSolve& solve,
+                          const std::vector<gl::Define>& device) {
   solve_ = &solve;
+  device_ = device;
   // What one buffer texture may hold here (llvmpipe and NVIDIA: 2^27 texels; GL 4.3 guarantees
   // 2^16): the buffers that grow with the hair are read and written through such views (a
   // view past it is read and written as the implementation pleases).
@@ -44,22 +46,27 @@ bool ContactSearch::build(std::string* error, ContactSolve& solve) {
                       uint64_t(std::max<GLint>(caps.textureBufferOffsetAlignment, 1)));
   searchCounters_ = gl::Buffer();
   searchCounters_.setData(kSearchCounters * sizeof(uint32_t), nullptr, GL_STREAM_READ);
-  return passes_.count.build("sim/grid_count.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.scanBlocks.build("sim/scan_blocks.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.scanSums.build("sim/scan_sums.comp", CSM_SCAN_GROUP, {}, error) &&
-         passes_.scanAdd.build("sim/scan_add.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.scatter.build("sim/grid_scatter.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         passes_.dispatchSize.build("sim/dispatch_size.comp", 1, {}, error) &&
-         passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, {}, error) &&
-         passes_.order.build("sim/segment_order.comp", CSM_PARTICLE_GROUP, {}, error) &&
+  return passes_.count.build("sim/grid_count.comp", CSM_PARTICLE_GROUP, with({}), error) &&
+         passes_.scanBlocks.build("sim/scan_blocks.comp", CSM_PARTICLE_GROUP, with({}), error) &&
+         passes_.scanSums.build("sim/scan_sums.comp", CSM_SCAN_GROUP, with({}), error) &&
+         passes_.scanAdd.build("sim/scan_add.comp", CSM_PARTICLE_GROUP, with({}), error) &&
+         passes_.scatter.build("sim/grid_scatter.comp", CSM_PARTICLE_GROUP, with({}), error) &&
+         passes_.dispatchSize.build("sim/dispatch_size.comp", 1, with({}), error) &&
+         passes_.candidates.build("sim/candidates.comp", CSM_CONTACT_GROUP, with({}), error) &&
+         passes_.order.build("sim/segment_order.comp", CSM_PARTICLE_GROUP, with({}), error) &&
          buildSplit(passes_.pairScatter, "sim/pair_scatter.comp", error) &&
-         buildSplit(passes_.lists, "sim/candidate_lists.comp", error) && solve.build(error) &&
-         setListSplit();
+         buildSplit(passes_.lists, "sim/candidate_lists.comp", error) &&
+         solve.build(error, device) && setListSplit();
 }
 
 bool ContactSearch::buildSplit(ComputePass (&pass)[2], const char* path, std::string* error) {
-  return pass[0].build(path, CSM_PARTICLE_GROUP, {}, error) &&
-         pass[1].build(path, CSM_PARTICLE_GROUP, {{"CSM_SPLIT_VIEWS", ""}}, error);
+  return pass[0].build(path, CSM_PARTICLE_GROUP, with({}), error) &&
+         pass[1].build(path, CSM_PARTICLE_GROUP, with({{"CSM_SPLIT_VIEWS", ""}}), error);
+}
+
+std::vector<gl::Define> ContactSearch::with(std::vector<gl::Define> defines) const {
+  defines.insert(defines.end(), device_.begin(), device_.end());
+  return defines;
 }
 
 bool ContactSearch::setListSplit() {

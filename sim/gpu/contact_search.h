@@ -46,7 +46,8 @@ ContactStats contactStatsOf(const uint32_t* counters);
 class ContactSearch {
  public:
   // Builds the passes; the lists' second view starts where `solve`'s does too.
-  bool build(std::string* error, ContactSolve& solve);
+  // `device`: defines every pass is built with too (GpuSolver's reads: CSM_STORAGE_READS).
+  bool build(std::string* error, ContactSolve& solve, const std::vector<gl::Define>& device = {});
   // Sizes the grid for `segments` segments over `particles` particles, mean rest length
   // `meanSegment` (m); clears the counters and lists. reserveFor then sizes the entries.
   void reset(size_t particles, uint32_t segments, double meanSegment);
@@ -127,7 +128,9 @@ class ContactSearch {
   // The passes' uniform for where the lists' second view starts; true.
   bool setListSplit();
   // Both builds of a pass that reads or writes the sides or the lists.
-  static bool buildSplit(ComputePass (&pass)[2], const char* path, std::string* error);
+  bool buildSplit(ComputePass (&pass)[2], const char* path, std::string* error);
+  // `defines` and the device's.
+  std::vector<gl::Define> with(std::vector<gl::Define> defines) const;
   // Sizes dispatch slot `slot` (CSM_DISPATCH_*) for the items counter `counter` holds (at
   // most `capacity`), in groups of `groupSize`.
   void dispatchFor(uint32_t counter, uint32_t capacity, uint32_t groupSize, uint32_t slot);
@@ -161,7 +164,8 @@ class ContactSearch {
       segmentBase_{gl::NoCreate}, segmentScanBlocks_{gl::NoCreate}, pairList_{gl::NoCreate},
       pairSides_{gl::NoCreate}, candidateRange_{gl::NoCreate}, dispatch_{gl::NoCreate},
       searchCounters_{gl::NoCreate}, segmentOrder_{gl::NoCreate};
-  gl::Fence searchEnd_;  // after the copy to searchCounters_
+  std::vector<gl::Define> device_;  // added to every pass's defines
+  gl::Fence searchEnd_;             // after the copy to searchCounters_
   gl::Buffer candidates_[2] = {gl::Buffer(gl::NoCreate), gl::Buffer(gl::NoCreate)};
   // Views of the buffers that grow with the hair: texelFetch (entries) and image load / store
   // (CSM_IMAGE_*).

@@ -7,11 +7,12 @@
 
 namespace csm::gpu {
 
-bool ContactSolve::build(std::string* error) {
-  return apply_.build("sim/contact_apply.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         solve_[0].build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {}, error) &&
-         solve_[1].build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, {{"CSM_SPLIT_VIEWS", ""}},
-                         error);
+bool ContactSolve::build(std::string* error, const std::vector<gl::Define>& device) {
+  std::vector<gl::Define> split = device;
+  split.push_back({"CSM_SPLIT_VIEWS", ""});
+  return apply_.build("sim/contact_apply.comp", CSM_PARTICLE_GROUP, device, error) &&
+         solve_[0].build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, device, error) &&
+         solve_[1].build("sim/contact_solve.comp", CSM_PARTICLE_GROUP, split, error);
 }
 
 void ContactSolve::setListSplit(uint32_t split) {

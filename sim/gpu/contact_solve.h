@@ -16,7 +16,8 @@ namespace csm::gpu {
 
 class ContactSolve {
  public:
-  bool build(std::string* error);
+  // `device`: defines every pass is built with too (CSM_STORAGE_READS).
+  bool build(std::string* error, const std::vector<gl::Define>& device = {});
   // The texel where the lists' second view starts (ContactCapacity::listSplit).
   void setListSplit(uint32_t split);
   // Sizes the corrections for `particles` particles, zeroed.

@@ -111,7 +111,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
         !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, withReads({}), error) ||
         !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, withReads({}),
                                    error) ||
-        !contactSearch_.build(error, contactSolve_))
+        !contactSearch_.build(error, contactSolve_, withReads({})))
       return false;
     builtCommon_ = true;
   }

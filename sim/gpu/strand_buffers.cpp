@@ -85,6 +85,7 @@ void StrandBuffers::bind() const {
   // Read as storage too by the passes built with CSM_STORAGE_READS (particle_reads.glsl).
   rest.bindBase(ssbo, CSM_BIND_REST);
   region.bindBase(ssbo, CSM_BIND_REGION);
+  inverseMass.bindBase(ssbo, CSM_BIND_INVERSE_MASS);
   positionTex.bind(CSM_TEX_POSITION);
   velocityTex.bind(CSM_TEX_VELOCITY);
   restTex.bind(CSM_TEX_REST);
