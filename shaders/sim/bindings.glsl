@@ -3,7 +3,7 @@
 // Each pass declares the blocks it uses; the numbers are unique so that every buffer stays
 // bound at its own point for the whole frame. GL 4.3 guarantees 8 blocks per compute shader
 // (no pass here declares more) but only 8 binding points; every driver we run on has more
-// than the 28 used here, 0-27 (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
+// than the 30 used here, 0-29 (llvmpipe 80, NVIDIA 96, AMD and Intel 32 or more).
 #ifndef CSM_SIM_BINDINGS_GLSL
 #define CSM_SIM_BINDINGS_GLSL
 
@@ -17,6 +17,8 @@
 #define CSM_BIND_PREDICTED 5     // vec4: x* of the current step
 #define CSM_BIND_ROTATION 6      // vec4: quaternion (xyz, w) of each particle's region, warm start
 #define CSM_BIND_STRAND_ORDER 7  // uint: strands by length, for the per-strand passes
+#define CSM_BIND_HEAD_FIELD 28  // vec4 per node of the head's distance field (CSM_STORAGE_READS)
+#define CSM_BIND_VOLUME_REST 29  // float per node of the volume: the rest groom's fraction (ditto)
 #define CSM_BIND_STRAND_GROUPS \
   27  // uint per work group + 1 of the per-particle passes: the first particle of each
       // (sim/gpu/strand_groups.h, shaders/sim/strand_group.glsl)

@@ -311,9 +311,13 @@ int volumeNodes() { return int(P.volumeDims.x * P.volumeDims.y * P.volumeDims.z)
 // a cleared 0: the second as the highest node + 1, the first as the dimension less the lowest
 // node (so an untouched grid gives an empty box). Outside it every node's field is 0, as on
 // the CPU, and is neither computed nor read.
-ivec3 volumeBox(isamplerBuffer sums, out ivec3 low, out ivec3 high) {
+ivec3 volumeBoxOf(ivec4 first, ivec4 second, out ivec3 low, out ivec3 high) {
   ivec3 dims = ivec3(P.volumeDims);
-  low = max(dims - texelFetch(sums, volumeNodes()).xyz - 1, ivec3(0));
-  high = min(texelFetch(sums, volumeNodes() + 1).xyz, dims - 1);
+  low = max(dims - first.xyz - 1, ivec3(0));
+  high = min(second.xyz, dims - 1);
   return max(high - low + 1, ivec3(0));
+}
+ivec3 volumeBox(isamplerBuffer sums, out ivec3 low, out ivec3 high) {
+  return volumeBoxOf(texelFetch(sums, volumeNodes()), texelFetch(sums, volumeNodes() + 1), low,
+                     high);
 }

@@ -1,7 +1,13 @@
 // The head's distance field (sim/head/distance_grid.h): a vec4 per node, the gradient (xyz) and the
 // distance (w), read by trilinear interpolation in the head's frame. The float twin of
 // DistanceGrid::sample.
+#ifdef CSM_STORAGE_READS
+layout(std430, binding = CSM_BIND_HEAD_FIELD) readonly buffer HeadFieldIn { vec4 headFieldIn[]; };
+#define headFieldNode(i) headFieldIn[uint(i)]
+#else
 layout(binding = CSM_TEX_HEAD_FIELD) uniform samplerBuffer headFieldTex;
+#define headFieldNode(i) texelFetch(headFieldTex, i)
+#endif
 
 bool headIsField() {
   return P.headIsField != 0u;
@@ -18,14 +24,14 @@ vec4 headFieldSample(vec3 p) {
   vec3 t = inside - vec3(c);
   int base = c.x + dims.x * (c.y + dims.y * c.z);
   int dy = dims.x, dz = dims.x * dims.y;
-  vec4 v = mix(mix(mix(texelFetch(headFieldTex, base), texelFetch(headFieldTex, base + 1), t.x),
-                   mix(texelFetch(headFieldTex, base + dy), texelFetch(headFieldTex, base + dy + 1),
+  vec4 v = mix(mix(mix(headFieldNode(base), headFieldNode(base + 1), t.x),
+                   mix(headFieldNode(base + dy), headFieldNode(base + dy + 1),
                        t.x),
                    t.y),
-               mix(mix(texelFetch(headFieldTex, base + dz),
-                       texelFetch(headFieldTex, base + dz + 1), t.x),
-                   mix(texelFetch(headFieldTex, base + dz + dy),
-                       texelFetch(headFieldTex, base + dz + dy + 1), t.x),
+               mix(mix(headFieldNode(base + dz),
+                       headFieldNode(base + dz + 1), t.x),
+                   mix(headFieldNode(base + dz + dy),
+                       headFieldNode(base + dz + dy + 1), t.x),
                    t.y),
                t.z);
   v.w += beyond;

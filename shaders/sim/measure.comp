@@ -10,9 +10,7 @@
 
 layout(local_size_x = CSM_MEASURE_GROUP) in;
 
-layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
-layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
-layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
+#include "sim/particle_reads.glsl"
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
 layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStrand {
   uint particleStrand[];
@@ -54,8 +52,8 @@ void main() {
   if (i < P.particles) {
     uint s = particleStrand[i];
     uint a = strandFirst[s], b = strandFirst[s + 1u];
-    vec3 x = texelFetch(posTex, int(i)).xyz;
-    vec3 v = texelFetch(velTex, int(i)).xyz;
+    vec3 x = readPosition(int(i)).xyz;
+    vec3 v = readVelocity(int(i)).xyz;
     if (!finite3(x) || !finite3(v)) {
       nonFinite = 1u;
     } else {
@@ -71,8 +69,8 @@ void main() {
           }
         }
       if (i + 1u < b) {
-        float rest = length(texelFetch(restTex, int(i) + 1).xyz - texelFetch(restTex, int(i)).xyz);
-        vec3 next = texelFetch(posTex, int(i) + 1).xyz;
+        float rest = length(readRest(int(i) + 1).xyz - readRest(int(i)).xyz);
+        vec3 next = readPosition(int(i) + 1).xyz;
         if (rest > 0.0 && finite3(next)) {
           // Less what float positions cannot resolve: floatBlur in sim/solver/accuracy.cpp.
           float blur = 1.1920929e-7 * (maxAbs(x) + maxAbs(next));  // 2^-23

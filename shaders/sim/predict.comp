@@ -14,8 +14,6 @@ layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffn
   vec4 strandStiffness[];
 };
 
-layout(binding = CSM_TEX_VOLUME_FIELD) uniform samplerBuffer volumeFieldTex;
-layout(binding = CSM_TEX_VOLUME_SUMS) uniform isamplerBuffer volumeSumsTex;
 
 uniform uint substep;
 

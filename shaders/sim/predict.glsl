@@ -4,8 +4,24 @@
 // The velocity itself is not written: integration (shape matching's last step) recomputes it
 // from the positions, as the CPU solver does (its twin: CpuSolver's predict step,
 // sim/solver/cpu_solver.cpp). The including pass includes particle_reads.glsl and declares
-// strandStiffness, volumeFieldTex and volumeSumsTex.
+// strandStiffness.
 #include "sim/wind.glsl"
+
+// The volume's nodes (volume_field.comp) and the box the splat reached (volumeBox).
+#ifdef CSM_STORAGE_READS
+layout(std430, binding = CSM_BIND_VOLUME_FIELD) readonly buffer VolumeFieldIn {
+  vec4 volumeFieldIn[];
+};
+layout(std430, binding = CSM_BIND_VOLUME_SUMS) readonly buffer VolumeSumsIn { ivec4 volumeSumsIn[]; };
+#define readVolumeField(k) volumeFieldIn[uint(k)]
+#define readVolumeBox(low, high) \
+  volumeBoxOf(volumeSumsIn[volumeNodes()], volumeSumsIn[volumeNodes() + 1], low, high)
+#else
+layout(binding = CSM_TEX_VOLUME_FIELD) uniform samplerBuffer volumeFieldTex;
+layout(binding = CSM_TEX_VOLUME_SUMS) uniform isamplerBuffer volumeSumsTex;
+#define readVolumeField(k) texelFetch(volumeFieldTex, int(k))
+#define readVolumeBox(low, high) volumeBox(volumeSumsTex, low, high)
+#endif
 
 // The volume mode (csm::VolumeGrid::velocityChange): toward the hair's mean velocity here, and
 // down the gradient of the volume fraction over what is allowed, both interpolated from the
@@ -16,7 +32,7 @@ vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
   volumeLocate((P.volumeToHead * vec4(xWorld, 1.0)).xyz, base, f);
   // Nodes outside the box the splat reached hold 0 (volume_field.comp leaves them).
   ivec3 low, high;
-  volumeBox(volumeSumsTex, low, high);
+  readVolumeBox(low, high);
   vec4 sums = vec4(0.0);
   vec3 gradient = vec3(0.0);
   for (int c = 0; c < 8; ++c) {
@@ -26,7 +42,7 @@ vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
     ivec3 n = base + d;
     bool inBox = all(greaterThanEqual(n, low)) && all(lessThanEqual(n, high));
     int k = 2 * int(volumeNode(n));
-    vec4 s = texelFetch(volumeFieldTex, k), g = texelFetch(volumeFieldTex, k + 1);
+    vec4 s = readVolumeField(k), g = readVolumeField(k + 1);
     sums += w * (inBox ? s : vec4(0.0));
     gradient += w * (inBox ? g.xyz : vec3(0.0));
   }

@@ -13,8 +13,6 @@
 #include "sim/common.glsl"
 
 #include "sim/particle_reads.glsl"
-layout(binding = CSM_TEX_VOLUME_FIELD) uniform samplerBuffer volumeFieldTex;
-layout(binding = CSM_TEX_VOLUME_SUMS) uniform isamplerBuffer volumeSumsTex;
 layout(std430, binding = CSM_BIND_POSITION) writeonly buffer Position { vec4 pos[]; };
 layout(std430, binding = CSM_BIND_VELOCITY) writeonly buffer Velocity { vec4 vel[]; };
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };

@@ -12,21 +12,32 @@
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
+#ifdef CSM_STORAGE_READS
+layout(std430, binding = CSM_BIND_VOLUME_SUMS) readonly buffer VolumeSumsIn { ivec4 sumsIn[]; };
+layout(std430, binding = CSM_BIND_VOLUME_REST) readonly buffer VolumeRestIn {
+  float restFractionIn[];
+};
+#define readSums(node) sumsIn[uint(node)]
+#define readRestFraction(node) restFractionIn[uint(node)]
+#else
 layout(binding = CSM_TEX_VOLUME_SUMS) uniform isamplerBuffer sumsTex;
 layout(binding = CSM_TEX_VOLUME_REST) uniform samplerBuffer restFractionTex;
+#define readSums(node) texelFetch(sumsTex, int(node))
+#define readRestFraction(node) texelFetch(restFractionTex, int(node)).x
+#endif
 layout(std430, binding = CSM_BIND_VOLUME_FIELD) writeonly buffer VolumeField {
   vec4 volumeField[];
 };
 
 float excessAt(uint node) {
-  float allowed = max(P.volumeAllowed, texelFetch(restFractionTex, int(node)).x);
-  return max(0.0, float(texelFetch(sumsTex, int(node)).x) * P.volumePerUnit - allowed);
+  float allowed = max(P.volumeAllowed, readRestFraction(node));
+  return max(0.0, float(readSums(node).x) * P.volumePerUnit - allowed);
 }
 
 void main() {
   ivec3 dims = ivec3(P.volumeDims);
   ivec3 low, high;
-  ivec3 box = volumeBox(sumsTex, low, high);
+  ivec3 box = volumeBoxOf(readSums(volumeNodes()), readSums(volumeNodes() + 1), low, high);
   uint k = globalIndex();
   if (k >= uint(box.x * box.y * box.z)) return;
   ivec3 n = low + ivec3(k % uint(box.x), (k / uint(box.x)) % uint(box.y), k / uint(box.x * box.y));
@@ -39,7 +50,7 @@ void main() {
     gradient[axis] = (excessAt(volumeNode(above)) - excessAt(volumeNode(below))) /
                      (float(above[axis] - below[axis]) * P.volumeCell);
   }
-  ivec4 sums = texelFetch(sumsTex, int(node));
+  ivec4 sums = readSums(node);
   volumeField[2u * node] = vec4(vec3(sums.yzw), float(sums.x));
   volumeField[2u * node + 1u] = vec4(gradient, 0.0);
 }

@@ -8,8 +8,7 @@
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
 
-layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
-layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
+#include "sim/particle_reads.glsl"
 layout(std430, binding = CSM_BIND_VOLUME_LENGTH) readonly buffer VolumeLength {
   float particleLength[];
 };
@@ -25,10 +24,10 @@ void main() {
     reachedHigh[lid] = 0;
   }
   barrier();
-  vec3 x = i < P.particles ? texelFetch(posTex, int(i)).xyz : vec3(0.0);
+  vec3 x = i < P.particles ? readPosition(int(i)).xyz : vec3(0.0);
   bool splats = i < P.particles && !any(isnan(x)) && !any(isinf(x));
   if (splats) {
-    vec3 v = texelFetch(velTex, int(i)).xyz;
+    vec3 v = readVelocity(int(i)).xyz;
     ivec3 base;
     vec3 f;
     volumeLocate((P.volumeToHead * vec4(x, 1.0)).xyz, base, f);

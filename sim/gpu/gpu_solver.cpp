@@ -410,6 +410,8 @@ void GpuSolver::bindAll() {
   volumeRestTex_.bind(CSM_TEX_VOLUME_REST);
   volumeFieldTex_.bind(CSM_TEX_VOLUME_FIELD);
   headFieldTex_.bind(CSM_TEX_HEAD_FIELD);
+  headField_.bindBase(ssbo, CSM_BIND_HEAD_FIELD);
+  volumeRest_.bindBase(ssbo, CSM_BIND_VOLUME_REST);
   spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
   measure_.bindBase(ssbo, CSM_BIND_MEASURE);
 }
