@@ -50,6 +50,7 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
                                   ? DrawQuality::Interactive
                                   : DrawQuality::Full;
   const Key key{frame.serial, version_, size.width, size.height, quality};
+
   if (color_.id() == 0 || color_.width() != size.width || color_.height() != size.height) {
     color_ = gl::Texture::create2D(GL_RGBA8, size.width, size.height);
     fbo_ = gl::Framebuffer();
