@@ -9,6 +9,7 @@
 #include "app/import_progress.h"
 #include "sim/run/frame_driver.h"
 #include "app/metrics.h"
+#include "sim/gpu/pass_profile.h"
 #include "gl/caps.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"
@@ -179,6 +180,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
       if (metrics) recorder.addSample(sample);
     }
   };
+  gpu::pass_profile::clear();  // CSM_PASS_PROFILE: the frames only, not the set-up
   long simulated = 0;
   long exported = 0;  // frames written by --export-hair-sequence
   for (long f = 0; f < frames; ++f) {
@@ -249,6 +251,10 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     takeSamples();
     if (driver.stopped()) nanStop();
   }
+  const std::string passes = gpu::pass_profile::table(simulated);
+  if (!passes.empty())
+    std::fprintf(stderr, "csmhair: CSM_PASS_PROFILE, %ld frames, each pass between two waits:\n%s",
+                 simulated, passes.c_str());
   if (seen.overflows > 0)
     std::fprintf(stderr,
                  "csmhair: warning: the candidate pairs of %llu frames did not fit the solver's "

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <optional>
 
+#include "sim/gpu/pass_profile.h"
+
 namespace csm::gpu {
 
 bool ComputePass::build(const char* path, uint32_t groupSize,
@@ -15,6 +17,7 @@ bool ComputePass::build(const char* path, uint32_t groupSize,
   }
   program_ = std::move(*p);
   groupSize_ = groupSize;
+  path_ = path;
   return true;
 }
 
@@ -22,11 +25,18 @@ void ComputePass::run(uint32_t items) const {
   const uint32_t groups = gl::Program::groupsFor(items, groupSize_);
   if (groups == 0) return;
   const uint32_t x = std::min<uint32_t>(groups, 65535u);
-  program_.dispatch(x, (groups + x - 1) / x);
+  if (pass_profile::enabled())
+    pass_profile::timed(path_, [&] { program_.dispatch(x, (groups + x - 1) / x); });
+  else
+    program_.dispatch(x, (groups + x - 1) / x);
 }
 
 void ComputePass::runIndirect(const gl::Buffer& args, uint32_t slot) const {
-  program_.dispatchIndirect(args.id(), GLintptr(slot) * 4 * sizeof(GLuint));
+  const GLintptr offset = GLintptr(slot) * 4 * sizeof(GLuint);
+  if (pass_profile::enabled())
+    pass_profile::timed(path_, [&] { program_.dispatchIndirect(args.id(), offset); });
+  else
+    program_.dispatchIndirect(args.id(), offset);
 }
 
 void ComputePass::runSubstep(uint32_t items, unsigned substep) {

@@ -45,6 +45,7 @@ class ComputePass {
  private:
   gl::Program program_{gl::NoCreate};
   uint32_t groupSize_ = 1;
+  std::string path_;  // shaders/<path_>, for the pass profile (sim/gpu/pass_profile.h)
 };
 
 }  // namespace csm::gpu

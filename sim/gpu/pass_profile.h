@@ -1,0 +1,35 @@
+// Where a GPU frame goes, pass by pass, for profiling (CSM_PASS_PROFILE=1 in the environment):
+// every dispatch of a ComputePass waits for the GPU before and after it (glFinish), and its
+// wall time adds to its shader's row; `csmhair --headless` prints the table as it ends. The
+// waits make the frame slower and each pass's time its own (llvmpipe runs a dispatch inside the
+// call anyway). Off, it costs one branch a dispatch.
+#pragma once
+
+#include <string>
+
+namespace csm::gpu::pass_profile {
+
+bool enabled();
+// Runs `dispatch` between two waits, timed as a run of `path`'s pass.
+template <class F>
+void timed(const std::string& path, F&& dispatch);
+void add(const std::string& path, double ms);
+// Forgets what was timed (the set-up before the frames).
+void clear();
+// The table, ms a frame over `frames` frames and runs a frame, slowest first; empty when
+// nothing was timed.
+std::string table(long frames);
+
+void finish();
+double nowMs();
+
+template <class F>
+void timed(const std::string& path, F&& dispatch) {
+  finish();
+  const double t0 = nowMs();
+  dispatch();
+  finish();
+  add(path, nowMs() - t0);
+}
+
+}  // namespace csm::gpu::pass_profile
