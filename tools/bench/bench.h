@@ -97,6 +97,9 @@ void runScaling(const Options& o);
 void runSceneChoices(const Options& o);
 void runWindow(const Options& o);
 void runRecording(const Options& o);
+// How far hair moves between searches, in the head's frame, and what a kept list would need
+// (tools/bench/motion.cpp).
+void runMotion(const Options& o);
 // A 5 M point groom's import: time by stage and peak memory (tools/bench/import.cpp).
 void runImport(const Options& o);
 // The torture map and the soak (tools/bench/torture.cpp, sim/verify/torture.h).

@@ -27,7 +27,7 @@ using namespace csm::bench;
 
 const char* kSections[] = {"methods", "stability",     "resolution", "region_sums",
                            "scaling", "scene_choices", "window",     "recording",
-                           "torture", "soak",          "import"};
+                           "torture", "soak",          "import",     "motion"};
 
 void usage(FILE* f) {
   std::fprintf(f,
@@ -40,7 +40,8 @@ void usage(FILE* f) {
                "  --only SECTION   run only this section (repeatable): methods, stability,\n"
                "                   resolution, region_sums, scaling, scene_choices, window,\n"
                "                   recording,\n"
-               "                   torture, soak, import (these three run only when named)\n"
+               "                   torture, soak, import, motion (these four run only when\n"
+               "                   named)\n"
                "  --threads N      workers for accuracy runs (default 2; timings run alone)\n"
                "  --no-charts      write CSV only; do not run scripts/charts.py\n"
                "  --help           this text\n");
@@ -175,6 +176,7 @@ int main(int argc, char** argv) {
   if (named("torture")) section("torture", runTortureMap);
   if (named("soak")) section("soak", runSoakSection);
   if (named("import")) section("import", runImport);
+  if (named("motion")) section("motion", runMotion);
   meta["seconds"] = seconds;
   meta["seconds_total"] = std::chrono::duration<double>(Clock::now() - start).count();
   {
