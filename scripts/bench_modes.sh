@@ -6,7 +6,8 @@
 # Defaults: paper_fig1_straight, 4 frames, 1000 3000 10000 30000 100000 strands.
 # MODES (default "off head strands") and SOLVERS (default "gpu") pick a subset; a mode
 # written MODE:N runs with N contact iterations a substep (collision.iterations), as its own
-# row and line ("strands:4").
+# row and line ("strands:4"); MODE@MODEL picks collision.contact_model ("strands@penalty": the
+# paper's penalty forces).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$1
@@ -25,8 +26,10 @@ echo "Load before: $(uptime | sed 's/.*load average: //'); $(nproc) cores, $(lsc
 for solver in ${SOLVERS:-gpu}; do
   for n in $counts; do
     for mode in ${MODES:-off head strands}; do
-      sets=(--set "collision.mode=${mode%%:*}" --set "hairstyle.strands=$n")
+      base=${mode%%:*}
+      sets=(--set "collision.mode=${base%%@*}" --set "hairstyle.strands=$n")
       [[ $mode == *:* ]] && sets+=(--set "collision.iterations=${mode#*:}")
+      [[ $base == *@* ]] && sets+=(--set "collision.contact_model=${base#*@}")
       if ! "$bin" "$root/presets/$preset.json" --headless --frames "$frames" --no-render --quiet \
         --solver "$solver" "${sets[@]}" --metrics "$tmp/m.json" >"$tmp/log" 2>&1; then
         echo "bench_modes.sh: $solver $mode $n strands failed:" >&2

@@ -366,13 +366,17 @@ def window_chart(coefficients, sags, out):
 
 MODE_STYLE = {"off": ("#7f7f7f", "v"), "head": ("#1f77b4", "o"), "strands": ("#9467bd", "P"),
               "volume": ("#2ca02c", "s"), "volume+strands": ("#d62728", "D"),
-              "strands:4": ("#e377c2", "X")}
+              "strands:4": ("#e377c2", "X"), "strands@penalty": ("#bcbd22", "^"),
+              "volume+strands@penalty": ("#ff7f0e", "<")}
 
 
 def mode_label(mode):
     """A bench_modes.sh mode as the legend says it: MODE:N is MODE with N contact
-    iterations a substep."""
+    iterations a substep, MODE@MODEL with that contact model (the paper's penalty)."""
     name, _, iterations = mode.partition(":")
+    name, _, model = name.partition("@")
+    if model:
+        name = f"{name}, {model}" + (" (the paper's)" if model == "penalty" else "")
     return f"{name}, {iterations} iterations" if iterations else name
 
 

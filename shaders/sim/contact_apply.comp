@@ -3,6 +3,9 @@
 // segments sent (contact_solve.comp), its velocity by that over h. The last iteration's
 // corrections are applied by the strain limit's sweep instead (strain_limit.comp,
 // strand_strain.comp). The held particles were sent nothing (their inverse mass is 0).
+// CSM_PENALTY: the penalty model's changes of velocity (contact_penalty.comp), where the substep
+// ends: the sum of what both segments sent is added to the velocity, as
+// csm::applyPenalty does.
 #include "sim/common.glsl"
 
 layout(local_size_x = CSM_PARTICLE_GROUP) in;
@@ -25,10 +28,14 @@ void main() {
   if (p == a) return;
   vec4 c = correction[2u * (p - 1u) + 1u];
   if (p + 1u < b) c += correction[2u * p];
+#ifdef CSM_PENALTY
+  vel[p].xyz += c.xyz;
+#else
   if (c.w > 0.0) {
     vec3 moved = c.xyz / c.w;
     float h = S[substep].h;
     pos[p].xyz += moved;
     vel[p].xyz += moved / h;
   }
+#endif
 }

@@ -36,9 +36,10 @@
 //   alpha (the paper's), strainLimit (epsilon), radius (hair radius r, m), headFriction
 //   candidateDistance (2r + margin, m), compliance (m/N), friction, sweepSolve (1: collision.solve
 //     sweep, 0: jacobi)
-//   dftl, windDrag (1/s)
+//   dftl, windDrag (1/s), penaltyStiffness (1/s^2), penaltyDamping (1/s)
 //   stiffnessModel (CSM_STIFFNESS_*), rotationIterations, headSpheres (count)
-//   strainLimiting, headCollision, windOn, strandContacts (this frame): 0 or 1
+//   strainLimiting, headCollision, windOn, strandContacts (this frame's constraints, which the
+//     strain limit's sweep applies; 0 with the penalty model): 0 or 1
 //   particles, strands, segments
 //   bucketMask (buckets - 1), entryCapacity, pairListCapacity, listHalf (this frame's half of the
 //     candidate range: 0 or 1)
@@ -58,7 +59,7 @@
   F(float, gusts) F(float, gustFrequency) F(float, turbulence) F(float, turbulenceScale)         \
   F(float, alpha) F(float, strainLimit) F(float, radius) F(float, headFriction)                  \
   F(float, candidateDistance) F(float, compliance) F(float, friction) F(float, sweepSolve)       \
-  F(float, dftl) F(float, windDrag) F(float, unused1) F(float, unused2)                          \
+  F(float, dftl) F(float, windDrag) F(float, penaltyStiffness) F(float, penaltyDamping)         \
   F(int, unused3) F(int, stiffnessModel) F(int, rotationIterations) F(int, headSpheres)          \
   F(uint, strainLimiting) F(uint, headCollision) F(uint, windOn) F(uint, strandContacts)         \
   F(uint, particles) F(uint, strands) F(uint, segments) F(uint, unused4)                         \

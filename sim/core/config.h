@@ -43,6 +43,10 @@ enum class HeadShape : int { Sdf = 0, Spheres = 1 };
 // order, each from where the ones before it left the segment; jacobi moves it by the mean of
 // what its pairs ask from where the iteration began.
 enum class ContactSolve : int { Sweep = 0, Jacobi = 1 };
+// What a strand contact is (sim/solver/contacts.h): a position constraint each substep
+// (constraints), or the paper's penalty force, k (d0 - d) along the normal with normal damping
+// and friction, which the next substep's prediction feels (penalty).
+enum class ContactModel : int { Constraints = 0, Penalty = 1 };
 // Where the generator parts the hair: none (it falls from the crown all round), down the middle,
 // or on the head's left (+x) or right (-x).
 enum class Parting : int { None = 0, Centre = 1, Left = 2, Right = 3 };
@@ -139,6 +143,11 @@ struct CollisionConfig {
   float compliance = 0.0f;  // m/N: 0 = hard contacts
   int iterations = 1;       // iterations of the strand contacts per substep
   ContactSolve solve = ContactSolve::Sweep;
+  ContactModel model = ContactModel::Constraints;
+  // The penalty model: acceleration per metre of overlap (1/s^2: a stiffness per unit mass) and
+  // per m/s of approach (1/s). Explicit: stable while h sqrt(k n) < 2 for n contacts an end.
+  float penaltyStiffness = 20000.0f;
+  float penaltyDamping = 20.0f;
   // Candidate lists a frame (at most its substeps): the first where the frame starts, the
   // others spread over its substeps (listsBefore in sim/solver/contacts.h), each a search's cost.
   int lists = 1;

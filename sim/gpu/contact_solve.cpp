@@ -8,6 +8,8 @@
 namespace csm::gpu {
 
 bool ContactSolve::build(std::string* error, const std::vector<gl::Define>& device) {
+  device_ = device;
+  penaltyBuilt_ = false;
   std::vector<gl::Define> split = device;
   split.push_back({"CSM_SPLIT_VIEWS", ""});
   return apply_.build("sim/contact_apply.comp", CSM_PARTICLE_GROUP, device, error) &&
@@ -16,7 +18,30 @@ bool ContactSolve::build(std::string* error, const std::vector<gl::Define>& devi
 }
 
 void ContactSolve::setListSplit(uint32_t split) {
+  listSplit_ = split;
   solve_[1].set("listSplit", split);
+  if (penaltyBuilt_) penalty_[1].set("listSplit", split);
+}
+
+bool ContactSolve::buildPenalty(std::string* error) {
+  if (penaltyBuilt_) return true;
+  std::vector<gl::Define> split = device_, apply = device_;
+  split.push_back({"CSM_SPLIT_VIEWS", ""});
+  apply.push_back({"CSM_PENALTY", ""});
+  penaltyBuilt_ =
+      applyPenalty_.build("sim/contact_apply.comp", CSM_PARTICLE_GROUP, apply, error) &&
+      penalty_[0].build("sim/contact_penalty.comp", CSM_PARTICLE_GROUP, device_, error) &&
+      penalty_[1].build("sim/contact_penalty.comp", CSM_PARTICLE_GROUP, split, error);
+  if (penaltyBuilt_) penalty_[1].set("listSplit", listSplit_);
+  return penaltyBuilt_;
+}
+
+void ContactSolve::runPenalty(unsigned substep, bool splitViews) {
+  if (segments_ == 0 || !penaltyBuilt_) return;
+  penalty_[splitViews].runSubstep(uint32_t(particles_), substep);
+  gl::memoryBarrier(kPassBarrier);
+  applyPenalty_.runSubstep(uint32_t(particles_), substep);
+  gl::memoryBarrier(kPassBarrier);
 }
 
 void ContactSolve::reset(size_t particles, uint32_t segments) {

@@ -149,6 +149,8 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
       return false;
     builtParticleMaxN_ = maxN;
   }
+  if (config_.collision.model == ContactModel::Penalty && !contactSolve_.buildPenalty(error))
+    return false;
   return true;
 }
 
@@ -201,6 +203,11 @@ void GpuSolver::setConfig(const Config& config) {
   const bool listed = listsCandidates();
   config_ = config;
   shape_ = headModel_.update(config_).collider();
+  if (config_.collision.model == ContactModel::Penalty && failure_.empty() &&
+      !contactSolve_.buildPenalty(&failure_)) {
+    if (failure_.empty()) failure_ = "the GPU solver's penalty contact shaders did not build";
+    gl::logMessage(gl::LogLevel::Error, failure_);
+  }
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) resetVolume();
   if (shape_.field != uploadedField_) uploadHeadField();
@@ -325,7 +332,10 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.strainLimiting = sim.strainLimiting;
   p.headCollision = collidesWithHead(col.mode);
   p.windOn = wind.strength > 0.0f && wind.drag > 0.0f;
-  p.strandContacts = strandContacts(col.mode);
+  // The strain limit's sweep applies the constraints' corrections; penalties go to velocities.
+  p.strandContacts = strandContacts(col.mode) && col.model == ContactModel::Constraints;
+  p.penaltyStiffness = col.penaltyStiffness;
+  p.penaltyDamping = col.penaltyDamping;
   p.particles = hair_.particles;
   p.strands = hair_.strands;
   p.segments = hair_.segments;
@@ -432,6 +442,10 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     return;
   }
   const bool contacts = strandContacts(config_.collision.mode);
+  // Constraints solved every substep, whose last corrections the strain limit applies; or the
+  // paper's penalty forces where each substep ends (collision.contact_model).
+  const bool penalty = contacts && config_.collision.model == ContactModel::Penalty;
+  const bool constraints = contacts && !penalty;
   // Measuring contacts with hair-hair off, the grid keeps the last sample's list (crossings).
   if (contacts || !measureContacts_) contactSearch_.beginFrame(contacts);
   writeParams(poses, before);
@@ -462,11 +476,15 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     if (contacts && listsBefore(k, substeps, config_.collision.lists)) listAgain();
     const uint32_t groups = hair_.groups, items = groups * hair_.groupParticles;
     timer_.stage(gpu::kShapeMatching);
-    (contacts ? passes_.strandStep : passes_.strandStepSweep[head])
+    (constraints ? passes_.strandStep : passes_.strandStepSweep[head])
         .set("groups", groups)
         .runSubstep(items, unsigned(k));
     gl::memoryBarrier(gpu::kPassBarrier);
-    if (contacts) {
+    if (penalty) {
+      timer_.stage(gpu::kContacts);
+      contactSolve_.runPenalty(unsigned(k), contactSearch_.splitViews());
+    }
+    if (constraints) {
       timer_.stage(gpu::kContacts);
       contactSolve_.run(unsigned(k), config_.collision.iterations, contactSearch_.splitViews());
       timer_.stage(gpu::kStrainLimiting);
@@ -483,13 +501,17 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
     timer_.stage(gpu::kShapeMatching);
     passes_.shapeMatch.runSubstep(strands, unsigned(k));
     gl::memoryBarrier(gpu::kPassBarrier);
-    if (contacts) {
+    if (constraints) {
       timer_.stage(gpu::kContacts);
       contactSolve_.run(unsigned(k), config_.collision.iterations, contactSearch_.splitViews());
     }
     timer_.stage(gpu::kStrainLimiting);
     passes_.strainLimit[head].runSubstep(strands, unsigned(k));
     gl::memoryBarrier(gpu::kPassBarrier);
+    if (penalty) {
+      timer_.stage(gpu::kContacts);
+      contactSolve_.runPenalty(unsigned(k), contactSearch_.splitViews());
+    }
     time_ += h;
   }
   timer_.endStage();

@@ -26,6 +26,10 @@ bool strandMode(const Config& c) {
   return strandContacts(c.collision.mode);
 }
 
+bool penaltyModel(const Config& c) {
+  return strandMode(c) && c.collision.model == ContactModel::Penalty;
+}
+
 std::vector<Param<Config>> build() {
   return {
       param("hairstyle.file", "Groom file", "Hairstyle", &Config::hairstyle, &HairstyleConfig::file,
@@ -297,6 +301,27 @@ std::vector<Param<Config>> build() {
             Effect::Live)
           .choices({"sweep", "jacobi"})
           .onlyWhen(strandMode),
+      param("collision.contact_model", "Contact model", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::model, 0, 0,
+            "Strand contacts: constraints hold each pair at its contact distance every substep "
+            "(XPBD); penalty is the paper's model: a force k (d0 - d) along the normal, damped, "
+            "with friction, felt from the next substep on (cheaper, and it lets dense hair "
+            "through: docs/BENCHMARKS.md).",
+            Effect::Live)
+          .choices({"constraints", "penalty"})
+          .onlyWhen(strandMode),
+      param("collision.penalty_stiffness", "Penalty stiffness", "Simulation|Collision",
+            &Config::collision, &CollisionConfig::penaltyStiffness, 1.0, 1e7,
+            "Penalty contacts: acceleration per metre of overlap (1/s^2). Explicit: past about "
+            "(2 / h)^2 over the contacts an end has, the hair shakes.",
+            Effect::Live)
+          .logScale()
+          .onlyWhen(penaltyModel),
+      param("collision.penalty_damping", "Penalty damping", "Simulation|Collision",
+            &Config::collision, &CollisionConfig::penaltyDamping, 0.0, 1000.0,
+            "Penalty contacts: acceleration per m/s of approach along the normal (1/s).",
+            Effect::Live)
+          .onlyWhen(penaltyModel),
       param("collision.lists", "Contact lists a frame", "Simulation|Collision", &Config::collision,
             &CollisionConfig::lists, 1, 16,
             "Strand contacts: candidate searches a frame (at most its substeps), the first as "

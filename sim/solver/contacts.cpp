@@ -258,4 +258,63 @@ void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,
   });
 }
 
+void penaltyVelocities(const ContactCandidates& c, std::span<const glm::dvec3> x,
+                       std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
+                       const ContactSettings& settings, std::vector<glm::dvec4>& correction) {
+  const size_t n = x.size();
+  correction.assign(2 * n, glm::dvec4(0.0));
+  if (c.start.size() != n + 1) return;
+  const double k = settings.penaltyStiffness, damping = settings.penaltyDamping;
+  const double mu = settings.friction;
+  parallelFor(n, 512, [&](size_t first, size_t last) {
+    for (size_t i = first; i < last; ++i) {
+      const uint32_t a = uint32_t(i);
+      glm::dvec3 dv0(0.0), dv1(0.0);
+      for (uint32_t j = c.start[i]; j < c.start[i + 1]; ++j) {
+        const uint32_t b = c.other[j];
+        // The pair as both of its segments see it: the lower index first (s on it).
+        const bool lower = a < b;
+        const uint32_t p = lower ? a : b, q = lower ? b : a;
+        double s, t;
+        const double d = std::sqrt(closestSegmentPoints(x[p], x[p + 1], x[q], x[q + 1], s, t));
+        double separation;
+        const glm::dvec3 nrm =
+            contactNormal(x[p], x[p + 1], x[q], x[q + 1], s, t, d, c.side[j], separation);
+        const double depth = c.distance[j] - separation;
+        if (!(depth > 0.0) || std::isinf(depth)) continue;
+        const glm::dvec3 rel = glm::mix(v[p], v[p + 1], s) - glm::mix(v[q], v[q + 1], t);
+        const double approach = glm::dot(rel, nrm);  // negative when closing
+        const double push = h * (k * depth - damping * approach);
+        if (!(push > 0.0)) continue;  // a penalty never pulls
+        const glm::dvec3 slide = rel - approach * nrm;
+        const double slideLen = glm::length(slide);
+        const double taken = std::min(0.5 * slideLen, mu * push);
+        glm::dvec3 dv = push * nrm;
+        if (slideLen > 1e-15) dv -= slide * (taken / slideLen);
+        if (!lower) dv = -dv;
+        const double g0 = lower ? 1 - s : 1 - t, g1 = lower ? s : t;
+        if (invMass[a] > 0.0) dv0 += g0 * dv;
+        if (invMass[a + 1] > 0.0) dv1 += g1 * dv;
+      }
+      correction[2 * i] = glm::dvec4(dv0, 0.0);
+      correction[2 * i + 1] = glm::dvec4(dv1, 0.0);
+    }
+  });
+}
+
+void applyPenalty(std::span<const glm::dvec4> correction, std::span<const uint32_t> first,
+                  std::span<glm::dvec3> v) {
+  if (correction.size() != 2 * v.size()) return;
+  const size_t strands = first.empty() ? 0 : first.size() - 1;
+  parallelFor(strands, 64, [&](size_t s0, size_t s1) {
+    for (size_t s = s0; s < s1; ++s)
+      for (uint32_t i = first[s]; i < first[s + 1]; ++i) {
+        glm::dvec3 dv(0.0);
+        if (i + 1 < first[s + 1]) dv += glm::dvec3(correction[2 * size_t(i)]);
+        if (i > first[s]) dv += glm::dvec3(correction[2 * size_t(i - 1) + 1]);
+        v[i] += dv;
+      }
+  });
+}
+
 }  // namespace csm

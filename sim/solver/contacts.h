@@ -80,6 +80,8 @@ inline bool contactMeasuresChanged(const CollisionConfig& a, const CollisionConf
 struct ContactSettings {
   double radius = 0.001, margin = 0.001, compliance = 0.0, friction = 0.3;
   ContactSolve solve = ContactSolve::Sweep;  // collision.solve
+  // The penalty model (collision.contact_model = penalty): 1/s^2 and 1/s.
+  double penaltyStiffness = 20000.0, penaltyDamping = 20.0;
 };
 
 // The candidates of positions x (rest: the same particles in the head frame, for rest
@@ -108,6 +110,23 @@ void applyCorrections(std::span<const glm::dvec4> correction, std::span<const ui
 void solveContacts(const ContactCandidates& candidates, std::span<const glm::dvec3> x,
                    std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
                    const ContactSettings& settings, std::vector<glm::dvec4>& correction);
+
+// The paper's penalty model (collision.contact_model = penalty), one substep of length h: each
+// of segment i's candidates closer than its contact distance d0 asks for an acceleration
+// k (d0 - separation) along the contact normal, less c times the approach speed along it (never
+// a pull), and Coulomb friction against the contact points' relative sliding, up to mu times
+// the normal change of velocity and half the sliding; each end of the segment takes its
+// barycentric share (the held ones none). correction[2i] is the change of velocity of
+// particle i, correction[2i+1] that of particle i+1 (w 0): applyPenalty adds them to the
+// velocities after the strain limit, so the next substep's prediction feels them, as the
+// paper's force from the last collision pass does. x and v where the substep ends.
+void penaltyVelocities(const ContactCandidates& candidates, std::span<const glm::dvec3> x,
+                       std::span<const glm::dvec3> v, std::span<const double> invMass, double h,
+                       const ContactSettings& settings, std::vector<glm::dvec4>& correction);
+// Adds to each particle of the strands [first[s], first[s+1]) what its two segments sent
+// (penaltyVelocities): the forces of its contacts add up.
+void applyPenalty(std::span<const glm::dvec4> correction, std::span<const uint32_t> first,
+                  std::span<glm::dvec3> v);
 
 // What particle i of the strand [first, end) moves by: the mean of what its segments sent.
 inline glm::dvec3 particleCorrection(std::span<const glm::dvec4> correction, uint32_t i,

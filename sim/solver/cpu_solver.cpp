@@ -374,7 +374,8 @@ void CpuSolver::listAgain() {
 
 ContactSettings CpuSolver::contactSettings() const {
   const CollisionConfig& c = config_.collision;
-  return {c.radius, c.margin, c.compliance, c.friction, c.solve};
+  return {c.radius, c.margin,           c.compliance,    c.friction,
+          c.solve,  c.penaltyStiffness, c.penaltyDamping};
 }
 
 void CpuSolver::step(double h, const Pose& head) {
@@ -391,7 +392,8 @@ void CpuSolver::step(double h, const Pose& head) {
   integrate(h);
   stages_[0].ms += msSince(t0);
   t0 = Clock::now();
-  if (strandContacts(config_.collision.mode) && !candidates_.start.empty()) {
+  const bool penalty = config_.collision.model == ContactModel::Penalty;
+  if (strandContacts(config_.collision.mode) && !candidates_.start.empty() && !penalty) {
     // All but the last iteration move the particles here; the last one's corrections are
     // applied by the strain-limit sweep.
     for (int k = 1; k < config_.collision.iterations; ++k) {
@@ -406,6 +408,14 @@ void CpuSolver::step(double h, const Pose& head) {
   }
   limitStrain(h, spheres, head, before);
   stages_[2].ms += msSince(t0);
+  if (strandContacts(config_.collision.mode) && !candidates_.start.empty() && penalty) {
+    // The paper's penalty forces where the substep ends, felt by the next one's prediction.
+    t0 = Clock::now();
+    penaltyVelocities(candidates_, x_, v_, invMass_, h, contactSettings(), correction_);
+    applyPenalty(correction_, first_, v_);
+    correction_.clear();
+    stages_[3].ms += msSince(t0);
+  }
   time_ += h;
   head_ = head;
 }

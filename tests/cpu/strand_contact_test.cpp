@@ -55,6 +55,22 @@ std::vector<glm::dvec4> solveStill(const ContactCandidates& c, const std::vector
   return correction;
 }
 
+// Two segments of two strands crossing as an X, listed 2.5 mm apart (r = 1 mm: contact
+// distance 2r = 2 mm), then the upper one moved down to 1.5 mm: 0.5 mm inside.
+struct CrossedPair {
+  ContactCandidates candidates;
+  std::vector<glm::dvec3> x;
+};
+CrossedPair crossedPair(const ContactSettings& settings) {
+  const std::vector<glm::dvec3> rest = {
+      {-0.01, 0.0, 0.0}, {0.01, 0.0, 0.0}, {0.0, 0.0025, -0.01}, {0.0, 0.0025, 0.01}};
+  const std::vector<uint32_t> strand = {0, 0, 1, 1};
+  ContactStats stats;
+  CrossedPair out{findCandidates(rest, rest, strand, settings, {}, stats), rest};
+  out.x[2].y = out.x[3].y = 0.0015;
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("a strand dropped across another stays on top for 2 s") {
@@ -445,4 +461,92 @@ TEST_CASE("lists within the frame: where they come, and what they measure") {
   CHECK(four.depth == one.depth);
   CHECK(one.crossings == 0);  // no list before the first
   CHECK(four.crossings >= one.crossings);
+}
+
+TEST_CASE("the penalty model pushes an overlapping pair apart by h k depth, damped, never pulls") {
+  // The crossed pair 0.5 mm inside: each end takes half (closest points at the middles); the
+  // upper segment is pushed up (+y), the lower down.
+  const std::vector<uint32_t> first = {0, 2, 4};
+  ContactSettings settings = millimetreContacts();
+  settings.penaltyStiffness = 1e4;
+  settings.penaltyDamping = 50.0;
+  settings.friction = 0.0;
+  auto [c, x] = crossedPair(settings);
+  REQUIRE(c.start[1] - c.start[0] == 1);
+  const std::vector<double> invMass = {1.0, 1.0, 1.0, 1.0};
+  const double h = 1.0 / 240.0;
+  std::vector<glm::dvec4> dv;
+  std::vector<glm::dvec3> v(4, glm::dvec3(0.0));
+  penaltyVelocities(c, x, v, invMass, h, settings, dv);
+  const double push = h * 1e4 * 0.0005;  // 0.0208 m/s for the pair, half to each end
+  CHECK(dv[0].y == Approx(-0.5 * push));
+  CHECK(dv[1].y == Approx(-0.5 * push));
+  CHECK(dv[4].y == Approx(0.5 * push));
+  CHECK(dv[5].y == Approx(0.5 * push));
+  CHECK(std::abs(dv[0].x) + std::abs(dv[0].z) < 1e-12);
+  std::vector<glm::dvec3> w = v;
+  applyPenalty(dv, first, w);
+  CHECK(w[3].y == Approx(0.5 * push));  // particle 3: segment 2's second end
+  CHECK(w[1].y == Approx(-0.5 * push));
+
+  // Closing at 0.1 m/s: the damping adds 50 x 0.1 m/s^2.
+  v[2].y = v[3].y = -0.1;
+  penaltyVelocities(c, x, v, invMass, h, settings, dv);
+  CHECK(dv[4].y == Approx(0.5 * h * (1e4 * 0.0005 + 50.0 * 0.1)));
+  // Parting fast enough, no pull.
+  v[2].y = v[3].y = 1.0;
+  penaltyVelocities(c, x, v, invMass, h, settings, dv);
+  CHECK(dv[4] == glm::dvec4(0.0));
+  // Apart: nothing.
+  v.assign(4, glm::dvec3(0.0));
+  x[2].y = x[3].y = 0.0021;
+  penaltyVelocities(c, x, v, invMass, h, settings, dv);
+  for (const glm::dvec4& d : dv) CHECK(d == glm::dvec4(0.0));
+  // A held end takes none.
+  x[2].y = x[3].y = 0.0015;
+  const std::vector<double> held = {0.0, 1.0, 1.0, 1.0};
+  penaltyVelocities(c, x, v, held, h, settings, dv);
+  CHECK(dv[0] == glm::dvec4(0.0));
+  CHECK(dv[1].y == Approx(-0.5 * push));
+}
+
+TEST_CASE("penalty friction takes at most mu times the push, and at most half the sliding") {
+  ContactSettings settings = millimetreContacts();
+  settings.penaltyStiffness = 1e4;
+  settings.penaltyDamping = 0.0;
+  settings.friction = 0.5;
+  const auto [c, x] = crossedPair(settings);
+  const std::vector<double> invMass(4, 1.0);
+  const double h = 1.0 / 240.0, push = h * 1e4 * 0.0005;
+  std::vector<glm::dvec4> dv;
+  // The upper segment slides along z at 1 m/s: friction mu x push against it.
+  std::vector<glm::dvec3> v(4, glm::dvec3(0.0));
+  v[2].z = v[3].z = 1.0;
+  penaltyVelocities(c, x, v, invMass, h, settings, dv);
+  CHECK(dv[4].z == Approx(-0.5 * 0.5 * push));
+  CHECK(dv[0].z == Approx(0.5 * 0.5 * push));
+  // Sliding slower than that: half of it each side, so the pair stops sliding.
+  v[2].z = v[3].z = 0.004;
+  penaltyVelocities(c, x, v, invMass, h, settings, dv);
+  CHECK(dv[4].z == Approx(-0.5 * 0.5 * 0.004));
+  CHECK(dv[0].z == Approx(0.5 * 0.5 * 0.004));
+}
+
+TEST_CASE("penalty contacts slow a strand dropped across another; constraints hold it") {
+  Config c = test::drapeConfig();
+  auto run = [&](CollisionMode mode, ContactModel model) {
+    c.collision.mode = mode;
+    c.collision.model = model;
+    CpuSolver solver;
+    solver.reset(test::drapeGroom(), c, Pose{});
+    for (int f = 0; f < 30; ++f) solver.stepFrame(Pose{}, Pose{});
+    return test::measureDrape(positions(solver));
+  };
+  const test::Drape penalty = run(CollisionMode::Strands, ContactModel::Penalty);
+  const test::Drape held = run(CollisionMode::Strands, ContactModel::Constraints);
+  const test::Drape off = run(CollisionMode::Head, ContactModel::Constraints);
+  INFO("heights after 0.5 s (mm): penalty " << penalty.height * 1e3 << ", constraints "
+                                            << held.height * 1e3 << ", none " << off.height * 1e3);
+  CHECK(held.height > penalty.height);
+  CHECK(penalty.height > off.height);
 }

@@ -351,6 +351,74 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
   }
 }
 
+TEST_CASE("GPU and CPU solvers agree with the penalty model; GPU runs are bit-identical",
+          "[gpu][solver][contacts]") {
+  // collision.contact_model = penalty (contact_penalty.comp, csm::penaltyVelocities): as with
+  // the constraints above, every particle within the tolerance over the first two frames and
+  // the same candidates; past that the same hair in sum. Two GPU runs: the same bytes.
+  Config c = smallScene(300);
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.model = ContactModel::Penalty;
+  c.wind.strength = 3.0f;
+  const Groom g = grow(c);
+  auto gpu = test::gpuSolver(), again = test::gpuSolver();
+  CpuSolver cpu;
+  cpu.reset(g, c, Pose{});
+  gpu->reset(g, c, Pose{});
+  again->reset(g, c, Pose{});
+  double later[2] = {0.0, 0.0};
+  uint64_t penetrations = 0;
+  for (int f = 0; f < 25; ++f) {
+    cpu.stepFrame(Pose{}, Pose{});
+    gpu->stepFrame(Pose{}, Pose{});
+    again->stepFrame(Pose{}, Pose{});
+    const ContactStats onCpu = cpu.contactStats(), onGpu = gpu->readContactStats();
+    INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates);
+    penetrations += onGpu.penetrations;
+    if (f < 2) {
+      std::vector<glm::vec4> x;
+      gpu->readPositions(x);
+      const Difference d = difference(x, cpu.positions(), tolerance(20));
+      INFO("max " << d.max << " m, rms " << d.rms << " m");
+      CHECK(d.over == 0);
+      CHECK(onGpu.candidates == onCpu.candidates);
+    } else {
+      later[0] += double(onCpu.candidates);
+      later[1] += double(onGpu.candidates);
+    }
+  }
+  INFO("frames 2-24: candidates CPU " << later[0] << " GPU " << later[1]);
+  CHECK(later[0] > 0.0);
+  CHECK(std::abs(later[1] - later[0]) < 0.03 * later[0]);
+  CHECK(penetrations > 0);  // the penalty acts on pairs inside their contact distance
+  std::vector<glm::vec4> x, y;
+  gpu->readPositions(x);
+  again->readPositions(y);
+  CHECK(x == y);
+}
+
+TEST_CASE("GPU: the penalty model slows a strand dropped across another", "[gpu][contacts]") {
+  // As on the CPU reference: constraints hold it, penalties slow it, nothing lets it fall.
+  auto height = [](CollisionMode mode, ContactModel model) {
+    Config c = test::drapeConfig();
+    c.collision.mode = mode;
+    c.collision.model = model;
+    auto gpu = test::gpuSolver();
+    gpu->reset(test::drapeGroom(), c, Pose{});
+    for (int f = 0; f < 30; ++f) gpu->stepFrame(Pose{}, Pose{});
+    std::vector<glm::vec4> x;
+    gpu->readPositions(x);
+    return test::measureDrape(x).height;
+  };
+  const double penalty = height(CollisionMode::Strands, ContactModel::Penalty);
+  const double held = height(CollisionMode::Strands, ContactModel::Constraints);
+  const double off = height(CollisionMode::Head, ContactModel::Constraints);
+  INFO("heights after 0.5 s (mm): penalty " << penalty * 1e3 << ", constraints " << held * 1e3
+                                            << ", none " << off * 1e3);
+  CHECK(held > penalty);
+  CHECK(penalty > off);
+}
+
 TEST_CASE("GPU: a strand dropped across another stays on top for 2 s", "[gpu][contacts]") {
   for (CollisionMode mode : {CollisionMode::Strands, CollisionMode::Head}) {
     Config c = test::drapeConfig();
