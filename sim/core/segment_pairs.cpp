@@ -152,18 +152,39 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
   for (size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].c != entries[i - 1].c) runs.push_back(i);
   runs.push_back(entries.size());
+  // Each segment's padded box, once: a pair whose boxes do not overlap is farther apart than
+  // maxDistance along some axis (each box is padded by half of it), so its closest points are
+  // never computed (in dense hair most pairs of a cell).
+  std::vector<glm::dvec3> low(n), high(n);
+  for (uint32_t i : segments) {
+    low[i] = lower(i);
+    high[i] = upper(i);
+  }
   std::vector<std::vector<SegmentPair>> found(coreCount());
   parallelChunks(runs.size() - 1, 256, [&](size_t first, size_t last, size_t chunk) {
     std::vector<SegmentPair>& mine = found[chunk];
     for (size_t r = first; r < last; ++r) {
       const size_t begin = runs[r], end = runs[r + 1];
-      for (size_t i = begin; i < end; ++i)
-        for (size_t j = i + 1; j < end; ++j) {
-          const uint32_t a = entries[i].seg, b = entries[j].seg;
+      // The cell's entries by their boxes' lowest x (then index: a fixed order), so each one
+      // meets only those that start before its box ends along x (sort and sweep).
+      std::sort(entries.begin() + ptrdiff_t(begin), entries.begin() + ptrdiff_t(end),
+                [&](const Entry& l, const Entry& r) {
+                  return low[l.seg].x != low[r.seg].x ? low[l.seg].x < low[r.seg].x : l.seg < r.seg;
+                });
+      for (size_t i = begin; i < end; ++i) {
+        const uint32_t a = entries[i].seg;
+        const glm::dvec3 la = low[a], ha = high[a];
+        for (size_t j = i + 1; j < end && low[entries[j].seg].x <= ha.x; ++j) {
+          const uint32_t b = entries[j].seg;
+          const glm::dvec3& lb = low[b];
+          const glm::dvec3& hb = high[b];
+          if (ha.y < lb.y || hb.y < la.y || ha.z < lb.z || hb.z < la.z) continue;
           if (!mayTouch(strand, a, b)) continue;
-          if (cellOf(glm::max(lower(a), lower(b))) != entries[begin].c) continue;
-          testPair(x, a, b, maxDistance, mine);
+          if (cellOf(glm::max(la, lb)) != entries[begin].c) continue;
+          // Lower index first, as the pairs are listed and every solver evaluates them.
+          testPair(x, std::min(a, b), std::max(a, b), maxDistance, mine);
         }
+      }
     }
   });
   for (const auto& part : found) out.insert(out.end(), part.begin(), part.end());

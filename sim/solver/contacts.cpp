@@ -70,17 +70,25 @@ ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const 
   const size_t n = x.size();
   out.start.assign(n + 1, 0);
   out.flags.reserve(pairs.size());
+  // Each pair's contact distance and flags, independent of the others: pairs the groom put
+  // closer than 2r keep their rest distance (rest is in the head frame, which moves rigidly).
   std::vector<double> contactDistance(pairs.size());
+  std::vector<uint32_t> pairFlagsOf(pairs.size());
+  parallelFor(pairs.size(), 1024, [&](size_t first, size_t last) {
+    for (size_t k = first; k < last; ++k) {
+      const SegmentPair& p = pairs[k];
+      double s, t;
+      const double restD =
+          std::sqrt(closestSegmentPoints(rest[p.a], rest[p.a + 1], rest[p.b], rest[p.b + 1], s, t));
+      contactDistance[k] = std::min(twoR, restD);
+      pairFlagsOf[k] =
+          pairFlags(x[p.a], x[p.a + 1], x[p.b], x[p.b + 1], p.s, p.t, p.distance, twoR);
+    }
+  });
   size_t seen = 0;  // merge with the previous list, both sorted by (a, b)
   for (size_t k = 0; k < pairs.size(); ++k) {
     const SegmentPair& p = pairs[k];
-    // Pairs the groom put closer than 2r keep their rest distance (rest is in the head frame,
-    // which moves rigidly).
-    double s, t;
-    const double restD =
-        std::sqrt(closestSegmentPoints(rest[p.a], rest[p.a + 1], rest[p.b], rest[p.b + 1], s, t));
-    const double d0 = std::min(twoR, restD);
-    contactDistance[k] = d0;
+    const double d0 = contactDistance[k];
     if (p.distance < twoR) ++stats.contacts;
     if (p.distance < d0) {
       const double depth = (d0 - p.distance) / r;
@@ -88,8 +96,7 @@ ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const 
       stats.maxDepth = std::max(stats.maxDepth, float(depth));
     }
     if (p.distance < r) ++stats.penetrations;
-    const uint32_t f =
-        pairFlags(x[p.a], x[p.a + 1], x[p.b], x[p.b + 1], p.s, p.t, p.distance, twoR);
+    const uint32_t f = pairFlagsOf[k];
     const uint64_t key = (uint64_t(p.a) << 32) | p.b;
     out.flags.emplace_back(key, f);
     while (seen < previous.flags.size() && previous.flags[seen].first < key) ++seen;
