@@ -105,9 +105,15 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
   std::vector<double> sorted = lengths;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const double cell = std::max(2.0 * maxDistance, 0.5 * sorted[sorted.size() / 2]);
+  // Each segment's box padded by half the contact distance, once: a pair whose boxes do not
+  // overlap is farther apart than maxDistance along some axis, so its closest points are never
+  // computed (in dense hair most pairs of a cell).
   const double pad = 0.5 * maxDistance;
-  auto lower = [&](uint32_t i) { return glm::min(x[i], x[i + 1]) - pad; };
-  auto upper = [&](uint32_t i) { return glm::max(x[i], x[i + 1]) + pad; };
+  std::vector<glm::dvec3> low(n), high(n);
+  for (uint32_t i : segments) {
+    low[i] = glm::min(x[i], x[i + 1]) - pad;
+    high[i] = glm::max(x[i], x[i + 1]) + pad;
+  }
   auto cellOf = [&](const glm::dvec3& p) {
     return glm::i64vec3(std::floor(p.x / cell), std::floor(p.y / cell), std::floor(p.z / cell));
   };
@@ -118,8 +124,8 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
   {
     size_t kept = 0;
     for (uint32_t i : segments) {
-      const glm::dvec3 span = (upper(i) - lower(i)) / cell;
-      const glm::dvec3 at = glm::abs(lower(i)) / cell;
+      const glm::dvec3 span = (high[i] - low[i]) / cell;
+      const glm::dvec3 at = glm::abs(low[i]) / cell;
       if (std::max({span.x, span.y, span.z}) > kMaxCellsPerAxis ||
           std::max({at.x, at.y, at.z}) > 1e15) {
         if (oversize) ++*oversize;
@@ -136,7 +142,7 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
   std::vector<Entry> entries;
   entries.reserve(segments.size() * 4);
   for (uint32_t i : segments) {
-    const glm::i64vec3 lo = cellOf(lower(i)), hi = cellOf(upper(i));
+    const glm::i64vec3 lo = cellOf(low[i]), hi = cellOf(high[i]);
     for (int64_t cx = lo.x; cx <= hi.x; ++cx)
       for (int64_t cy = lo.y; cy <= hi.y; ++cy)
         for (int64_t cz = lo.z; cz <= hi.z; ++cz) entries.push_back({{cx, cy, cz}, i});
@@ -152,14 +158,6 @@ std::vector<SegmentPair> findContactsGrid(std::span<const glm::dvec3> x,
   for (size_t i = 0; i < entries.size(); ++i)
     if (i == 0 || entries[i].c != entries[i - 1].c) runs.push_back(i);
   runs.push_back(entries.size());
-  // Each segment's padded box, once: a pair whose boxes do not overlap is farther apart than
-  // maxDistance along some axis (each box is padded by half of it), so its closest points are
-  // never computed (in dense hair most pairs of a cell).
-  std::vector<glm::dvec3> low(n), high(n);
-  for (uint32_t i : segments) {
-    low[i] = lower(i);
-    high[i] = upper(i);
-  }
   std::vector<std::vector<SegmentPair>> found(coreCount());
   parallelChunks(runs.size() - 1, 256, [&](size_t first, size_t last, size_t chunk) {
     std::vector<SegmentPair>& mine = found[chunk];

@@ -25,18 +25,12 @@ void ComputePass::run(uint32_t items) const {
   const uint32_t groups = gl::Program::groupsFor(items, groupSize_);
   if (groups == 0) return;
   const uint32_t x = std::min<uint32_t>(groups, 65535u);
-  if (pass_profile::enabled())
-    pass_profile::timed(path_, [&] { program_.dispatch(x, (groups + x - 1) / x); });
-  else
-    program_.dispatch(x, (groups + x - 1) / x);
+  pass_profile::run(path_, [&] { program_.dispatch(x, (groups + x - 1) / x); });
 }
 
 void ComputePass::runIndirect(const gl::Buffer& args, uint32_t slot) const {
-  const GLintptr offset = GLintptr(slot) * 4 * sizeof(GLuint);
-  if (pass_profile::enabled())
-    pass_profile::timed(path_, [&] { program_.dispatchIndirect(args.id(), offset); });
-  else
-    program_.dispatchIndirect(args.id(), offset);
+  pass_profile::run(
+      path_, [&] { program_.dispatchIndirect(args.id(), GLintptr(slot) * 4 * sizeof(GLuint)); });
 }
 
 void ComputePass::runSubstep(uint32_t items, unsigned substep) {

@@ -25,6 +25,10 @@ namespace {
 
 // Strand lengths are rounded up to this step for MAX_N, so a regrown groom rarely recompiles.
 constexpr int kMaxNStep = 8;
+// The parameter block read as a uniform block: the frame's parameters and CSM_MAX_SUBSTEPS
+// steps, the size the shaders declare (common.glsl), used or not.
+constexpr size_t kParamBlockBytes =
+    sizeof(gpu::SimParams) + CSM_MAX_SUBSTEPS * sizeof(gpu::Substep);
 
 }  // namespace
 
@@ -49,8 +53,7 @@ std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
   const gl::Caps caps = gl::queryCaps();
   const bool software = caps.software;
   Reads reads;
-  const size_t paramBlock = sizeof(gpu::SimParams) + CSM_MAX_SUBSTEPS * sizeof(gpu::Substep);
-  reads.uniformParams = !software && size_t(caps.maxUniformBlockSize) >= paramBlock;
+  reads.uniformParams = !software && size_t(caps.maxUniformBlockSize) >= kParamBlockBytes;
   reads.storage = !software;
   if (const char* env = std::getenv("CSM_GPU_READS"); env && *env) {
     const std::string want = env;
@@ -58,7 +61,7 @@ std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
       reads = Reads{};
     } else if (want == "storage") {
       reads.storage = true;
-      reads.uniformParams = size_t(caps.maxUniformBlockSize) >= paramBlock;
+      reads.uniformParams = size_t(caps.maxUniformBlockSize) >= kParamBlockBytes;
     } else {
       if (error) *error = "CSM_GPU_READS=" + want + " is not one of texture, storage";
       return nullptr;
@@ -396,9 +399,8 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   }
   if (reads_.uniformParams) {
     // A uniform block is read whole: the buffer holds CSM_MAX_SUBSTEPS steps, used or not.
-    const size_t whole = sizeof(gpu::SimParams) + CSM_MAX_SUBSTEPS * sizeof(gpu::Substep);
-    if (size_t(paramsBuffer_.size()) < whole)
-      paramsBuffer_.setData(GLsizeiptr(whole), nullptr, GL_DYNAMIC_DRAW);
+    if (size_t(paramsBuffer_.size()) < kParamBlockBytes)
+      paramsBuffer_.setData(GLsizeiptr(kParamBlockBytes), nullptr, GL_DYNAMIC_DRAW);
     paramsBuffer_.setSubData(0, GLsizeiptr(blob.size()), blob.data());
   } else {
     paramsBuffer_.upload(blob);
@@ -581,16 +583,32 @@ void GpuSolver::writeState(const std::vector<glm::vec4>& positions,
   hair_.velocity.upload(v);
 }
 
+namespace {
+
+// The GPU solver's state (saveState, and a frame copy's): the particle count, the positions,
+// velocities and rotations the passes step, as the GPU holds them (float, bit for bit), the
+// time and the head. restoreState reads it.
+void writeGpuState(std::vector<std::byte>& bytes, const std::vector<glm::vec4>& position,
+                   const std::vector<glm::vec4>& velocity, const std::vector<glm::vec4>& rotation,
+                   double time, const Pose& head) {
+  StateWriter w(bytes);
+  w.put(position.size());
+  w.putVector(position);
+  w.putVector(velocity);
+  w.putVector(rotation);
+  w.put(time);
+  w.put(head);
+}
+
+}  // namespace
+
 void GpuSolver::saveState(SolverState& out) {
-  // The state the passes step, as the GPU holds it (float, bit for bit).
   const size_t n = hair_.particles;
-  StateWriter w(out.bytes);
-  w.put(n);
-  w.putVector(n ? hair_.position.download<glm::vec4>(n) : std::vector<glm::vec4>{});
-  w.putVector(n ? hair_.velocity.download<glm::vec4>(n) : std::vector<glm::vec4>{});
-  w.putVector(n ? hair_.rotation.download<glm::vec4>(n) : std::vector<glm::vec4>{});
-  w.put(time_);
-  w.put(head_);
+  auto all = [n](const gl::Buffer& b) {
+    return n ? b.download<glm::vec4>(n) : std::vector<glm::vec4>{};
+  };
+  writeGpuState(out.bytes, all(hair_.position), all(hair_.velocity), all(hair_.rotation), time_,
+                head_);
 }
 
 namespace {
@@ -612,15 +630,11 @@ class GpuFrameCopy final : public FrameCopy {
         n ? staging.download<glm::vec4>(n * (withState ? 3 : 1)) : std::vector<glm::vec4>{};
     positions.assign(all.begin(), all.begin() + std::ptrdiff_t(n));
     if (!state || !withState) return;
-    // GpuSolver::saveState's layout.
-    state->bytes.clear();
-    StateWriter w(state->bytes);
-    w.put(n);
-    for (int k = 0; k < 3; ++k)
-      w.putVector(std::vector<glm::vec4>(all.begin() + std::ptrdiff_t(k * n),
-                                         all.begin() + std::ptrdiff_t((k + 1) * n)));
-    w.put(time);
-    w.put(head);
+    auto part = [&](size_t k) {
+      return std::vector<glm::vec4>(all.begin() + std::ptrdiff_t(k * n),
+                                    all.begin() + std::ptrdiff_t((k + 1) * n));
+    };
+    writeGpuState(state->bytes, part(0), part(1), part(2), time, head);
   }
 };
 

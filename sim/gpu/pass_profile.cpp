@@ -31,6 +31,12 @@ bool enabled() {
   return on;
 }
 
+void clear() {
+  rows().clear();
+}
+
+namespace detail {
+
 void finish() {
   gl::finish();
 }
@@ -46,9 +52,7 @@ void add(const std::string& path, double ms) {
   ++r.runs;
 }
 
-void clear() {
-  rows().clear();
-}
+}  // namespace detail
 
 std::string table(long frames) {
   if (rows().empty() || frames <= 0) return {};

@@ -10,26 +10,32 @@
 namespace csm::gpu::pass_profile {
 
 bool enabled();
-// Runs `dispatch` between two waits, timed as a run of `path`'s pass.
+// Runs `dispatch`: profiling, between two waits, its time added to `path`'s row.
 template <class F>
-void timed(const std::string& path, F&& dispatch);
-void add(const std::string& path, double ms);
+void run(const std::string& path, F&& dispatch);
 // Forgets what was timed (the set-up before the frames).
 void clear();
 // The table, ms a frame over `frames` frames and runs a frame, slowest first; empty when
 // nothing was timed.
 std::string table(long frames);
 
+namespace detail {
 void finish();
 double nowMs();
+void add(const std::string& path, double ms);
+}  // namespace detail
 
 template <class F>
-void timed(const std::string& path, F&& dispatch) {
-  finish();
-  const double t0 = nowMs();
+void run(const std::string& path, F&& dispatch) {
+  if (!enabled()) {
+    dispatch();
+    return;
+  }
+  detail::finish();
+  const double t0 = detail::nowMs();
   dispatch();
-  finish();
-  add(path, nowMs() - t0);
+  detail::finish();
+  detail::add(path, detail::nowMs() - t0);
 }
 
 }  // namespace csm::gpu::pass_profile
