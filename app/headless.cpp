@@ -166,7 +166,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     target = std::make_unique<CaptureTarget>(options.width, options.height);
     if (!options.quiet)
       std::fprintf(stderr, "csmhair: rendering %zu strands (%zu simulated) at %dx%d on %s%s%s\n",
-                   drawnStrandCount(sim.solver().strandCount(), sim.config()),
+                   drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render),
                    sim.solver().strandCount(), options.width, options.height,
                    context->renderer().c_str(), options.outDir.empty() ? "" : " into ",
                    options.outDir.c_str());
@@ -317,7 +317,8 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
     meta["mode"] = "headless";
     meta["head_carried_frames"] = sim.carriedFrames();
     if (renderer) {
-      meta["drawn_strands"] = drawnStrandCount(sim.solver().strandCount(), c);
+      meta["drawn_strands"] =
+          drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render);
       meta["render_size"] = {options.width, options.height};
       meta["render_samples"] = renderer->samples();
       meta["gl_renderer"] = context->renderer();

@@ -12,7 +12,6 @@
 namespace csm {
 namespace {
 
-constexpr float kPanelWidth = 410.0f;
 const ImVec4 kRed{1.0f, 0.35f, 0.3f, 1.0f};
 const ImVec4 kYellow{1.0f, 0.8f, 0.3f, 1.0f};
 
@@ -290,10 +289,8 @@ ParamEdit paramWidget(const PresetParam& p, Preset& config) {
   return edit.changed || edit.finished ? ParamEdit::Apply : ParamEdit::None;
 }
 
-void drawParameterPanel(Viewer& viewer, PanelState& state) {
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(vp->WorkPos, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, vp->WorkSize.y), ImGuiCond_FirstUseEver);
+void drawParameterPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place) {
+  if (place) setNextWindowRect(layout.parameters);
   if (!ImGui::Begin("Parameters")) {
     ImGui::End();
     return;
@@ -312,9 +309,12 @@ void drawParameterPanel(Viewer& viewer, PanelState& state) {
   ImGui::End();
 }
 
-void drawBanners(Viewer& viewer) {
+void drawBanners(Viewer& viewer, const PanelLayout& layout) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  const ImVec2 topCentre(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + 8.0f);
+  // Over the hair, between the panels: centred on the part of the window they leave free.
+  const float centreX = vp->WorkPos.x + layout.view.x + layout.view.width * 0.5f;
+  const ImVec2 topCentre(centreX, vp->WorkPos.y + layout.view.y + 8.0f);
+  const float wrap = std::max(200.0f, std::min(vp->WorkSize.x * 0.45f, layout.view.width - 40.0f));
   const ImGuiWindowFlags bannerFlags = ImGuiWindowFlags_NoDecoration |
                                        ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                                        ImGuiWindowFlags_NoSavedSettings |
@@ -325,7 +325,7 @@ void drawBanners(Viewer& viewer) {
     ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.7f, 0.05f, 0.05f, 0.95f));
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 1.0f, 1.0f, 1.0f));
     if (ImGui::Begin(id, nullptr, bannerFlags)) {
-      ImGui::PushTextWrapPos(vp->WorkSize.x * 0.45f);
+      ImGui::PushTextWrapPos(wrap);
       ImGui::TextUnformatted(text.c_str());
       ImGui::PopTextWrapPos();
       y += ImGui::GetWindowHeight() + 6.0f;
@@ -360,12 +360,13 @@ void drawBanners(Viewer& viewer) {
     const double age =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - m.when).count();
     if (age < (m.level == MessageLevel::Info ? 3.0 : 8.0)) {
+      // At the bottom of the free part, above the Timeline.
       ImGui::SetNextWindowPos(
-          ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y - 12.0f),
+          ImVec2(centreX, vp->WorkPos.y + layout.view.y + layout.view.height - 12.0f),
           ImGuiCond_Always, ImVec2(0.5f, 1.0f));
       ImGui::SetNextWindowBgAlpha(0.85f);
       if (ImGui::Begin("##notice", nullptr, bannerFlags)) {
-        ImGui::PushTextWrapPos(vp->WorkSize.x * 0.45f);
+        ImGui::PushTextWrapPos(wrap);
         ImGui::PushStyleColor(ImGuiCol_Text, m.level == MessageLevel::Error ? kRed
                                              : m.level == MessageLevel::Warning
                                                  ? kYellow
@@ -380,7 +381,7 @@ void drawBanners(Viewer& viewer) {
 
   if (!viewer.presetErrors().empty()) {
     ImGui::SetNextWindowPos(
-        ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.3f),
+        ImVec2(centreX, vp->WorkPos.y + layout.view.y + layout.view.height * 0.3f),
         ImGuiCond_Appearing, ImVec2(0.5f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(std::min(720.0f, vp->WorkSize.x * 0.6f), 0.0f),
                              ImGuiCond_Appearing);
@@ -412,12 +413,57 @@ void drawBanners(Viewer& viewer) {
   }
 }
 
+PanelLayout panelLayout(float width, float height, float fontSize) {
+  // Dear ImGui's default style: a title bar is the font plus 2 x 3 pixels of frame padding, a
+  // row of widgets the font plus 10 (padding and item spacing), a row of text the font plus 4;
+  // windows are padded by 8 on each side. The widths were chosen for the 15-pixel font.
+  const float scale = fontSize / 15.0f;
+  const float titleBar = fontSize + 6.0f;
+  const float widgetRow = fontSize + 10.0f, textRow = fontSize + 4.0f;
+  // The Timeline's six rows of widgets: its slider, play, record and bake, cache, export, A/B.
+  const float timeline = std::min(titleBar + 12.0f + 6.0f * widgetRow, 0.35f * height);
+  // Parameters as wide as its labels and widgets need (410 at the 15-pixel font), Stats as
+  // its lines (380), less on narrow windows. Help's shortcuts (one row each, and a line) need
+  // 525 unwrapped: it opens unfolded only where its column can be that wide and has room for
+  // it and Stats with every line Stats can show above the Timeline.
+  const float left = std::min(410.0f * scale, 0.32f * width);
+  const float helpOpen = float(shortcuts().size() + 1) * textRow + titleBar + 20.0f;
+  const float statsTall = 32.0f * textRow + titleBar + 16.0f;
+  const float column = height - timeline;
+
+  PanelLayout l;
+  l.helpOpen = 0.30f * width >= 525.0f * scale && column >= helpOpen + statsTall;
+  const float right = std::min(l.helpOpen ? 540.0f * scale : 380.0f * scale, 0.30f * width);
+  l.parameters = {0.0f, 0.0f, left, height};
+  l.timeline = {left, height - timeline, width - left, timeline};
+  l.help = {width - right, 0.0f, right, l.helpOpen ? helpOpen : titleBar};
+  l.stats = {width - right, l.help.height, right, std::max(0.0f, column - l.help.height)};
+  l.view = {left, 0.0f, std::max(0.0f, width - left - right), column};
+  return l;
+}
+
+void setNextWindowRect(const PanelRect& r) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + r.x, vp->WorkPos.y + r.y));
+  ImGui::SetNextWindowSize(ImVec2(r.width, r.height));
+}
+
 void drawPanels(Viewer& viewer, PanelState& state) {
-  drawParameterPanel(viewer, state);
-  if (state.showStats) drawStatsPanel(viewer, state);
-  if (state.showTimeline) drawTimelinePanel(viewer, state);
-  if (state.showHelp) drawHelpPanel(state);
-  drawBanners(viewer);
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const PanelLayout layout = panelLayout(vp->WorkSize.x, vp->WorkSize.y, ImGui::GetFontSize());
+  // Laid out on the first frame and again when the window's size changes (a window manager
+  // may resize it after it opens), not while it is minimised.
+  const bool place = vp->WorkSize.x > 0.0f && vp->WorkSize.y > 0.0f &&
+                     (vp->WorkSize.x != state.layoutWidth || vp->WorkSize.y != state.layoutHeight);
+  if (place) {
+    state.layoutWidth = vp->WorkSize.x;
+    state.layoutHeight = vp->WorkSize.y;
+  }
+  drawParameterPanel(viewer, state, layout, place);
+  if (state.showStats) drawStatsPanel(viewer, state, layout, place);
+  if (state.showTimeline) drawTimelinePanel(viewer, state, layout, place);
+  if (state.showHelp) drawHelpPanel(state, layout, place);
+  drawBanners(viewer, layout);
 }
 
 }  // namespace csm

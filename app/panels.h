@@ -19,6 +19,7 @@ struct PanelState {
   bool showHelp = true;
   bool showStats = true;
   bool showTimeline = true;
+  float layoutWidth = 0, layoutHeight = 0;  // the work area the panels were last laid out for
   float bakeSeconds = 2.0f;
   int cacheMb = 512;
   char exportDir[256] = "hair_sequence";
@@ -27,6 +28,24 @@ struct PanelState {
   std::vector<std::filesystem::path> presetDirs, presetFiles;
   double presetsScannedAt = -1e9;  // ImGui time of the last scan of the preset folders
 };
+
+// A rectangle of the work area (the window less any menu bar), in pixels from its top-left.
+struct PanelRect {
+  float x = 0, y = 0, width = 0, height = 0;
+};
+
+// Where the panels open, tiled so that none covers another: Parameters down the left side,
+// the Timeline along the bottom to its right, Help (folded to its title bar unless there is
+// room for it) and Stats in a column on the right above the Timeline, and the rest, in the
+// middle, left to the hair (`view`: the banners go there). Pure, from the work area's size
+// and the font's size in pixels (15: the viewer's font; heights are counted in rows of it).
+struct PanelLayout {
+  PanelRect parameters, stats, help, timeline, view;
+  bool helpOpen = false;  // help unfolded: its rectangle holds the shortcuts, not the title bar
+};
+PanelLayout panelLayout(float width, float height, float fontSize = 15.0f);
+// The next window's position and size, always, from a rectangle of the main viewport's work area.
+void setNextWindowRect(const PanelRect& r);
 
 // The parameter table as a tree of groups, in the table's order.
 struct ParamGroup {
@@ -48,12 +67,14 @@ ParamEdit paramWidget(const PresetParam& p, Preset& preset);
 // Viewer::applyConfig (or the viewer's other actions).
 void drawPanels(Viewer& viewer, PanelState& state);
 
-void drawParameterPanel(Viewer& viewer, PanelState& state);
 void drawPresetSection(Viewer& viewer, PanelState& state);
-void drawStatsPanel(Viewer& viewer, PanelState& state);
-void drawTimelinePanel(Viewer& viewer, PanelState& state);
-void drawHelpPanel(PanelState& state);
-void drawBanners(Viewer& viewer);
+// Each panel's rectangle is applied when `place` (the first frame and after the window's size
+// changed); the user moves and resizes them in between.
+void drawParameterPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place);
+void drawStatsPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place);
+void drawTimelinePanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place);
+void drawHelpPanel(PanelState& state, const PanelLayout& layout, bool place);
+void drawBanners(Viewer& viewer, const PanelLayout& layout);
 
 // Keys and mouse actions, for the help panel (and the README).
 struct Shortcut {

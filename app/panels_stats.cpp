@@ -1,5 +1,6 @@
 // The Stats and Help panels.
 #include <algorithm>
+#include <cfloat>
 #include <cstdio>
 
 #include <imgui.h>
@@ -10,8 +11,6 @@
 
 namespace csm {
 namespace {
-
-constexpr float kStatsWidth = 380.0f;
 
 void stageRows(const char* what, const std::vector<StageTime>& stages) {
   for (const StageTime& s : stages) {
@@ -59,12 +58,14 @@ const std::vector<Shortcut>& shortcuts() {
   return list;
 }
 
-void drawStatsPanel(Viewer& viewer, PanelState& state) {
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x - kStatsWidth, vp->WorkPos.y),
-                          ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(kStatsWidth, 0.0f), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Stats", &state.showStats, ImGuiWindowFlags_AlwaysAutoResize)) {
+void drawStatsPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place) {
+  // As tall as its lines, up to its place above the Timeline (then it scrolls), and as wide as
+  // its column: lines longer than that scroll sideways.
+  if (place) setNextWindowRect(layout.stats);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(layout.stats.width, 0.0f),
+                                      ImVec2(layout.stats.width, layout.stats.height));
+  if (!ImGui::Begin("Stats", &state.showStats,
+                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }
@@ -174,24 +175,28 @@ void drawStatsPanel(Viewer& viewer, PanelState& state) {
   ImGui::End();
 }
 
-void drawHelpPanel(PanelState& state) {
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(
-      ImVec2(vp->WorkPos.x + vp->WorkSize.x - 8.0f, vp->WorkPos.y + vp->WorkSize.y - 8.0f),
-      ImGuiCond_FirstUseEver, ImVec2(1.0f, 1.0f));
-  // Folded on small windows, where it would cover the Stats panel; its title stays.
-  ImGui::SetNextWindowCollapsed(vp->WorkSize.y < 850.0f, ImGuiCond_FirstUseEver);
+void drawHelpPanel(PanelState& state, const PanelLayout& layout, bool place) {
+  // Above Stats, as wide as their column (the actions wrap to it); folded to its title bar
+  // unless the window has room for it and Stats both, so that it covers nothing.
+  if (place) {
+    setNextWindowRect(layout.help);
+    ImGui::SetNextWindowCollapsed(!layout.helpOpen, ImGuiCond_Always);
+  }
+  ImGui::SetNextWindowSizeConstraints(ImVec2(layout.help.width, 0.0f),
+                                      ImVec2(layout.help.width, FLT_MAX));
   if (!ImGui::Begin("Help (F1)", &state.showHelp, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;
   }
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
     for (const Shortcut& k : shortcuts()) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(k.keys);
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(k.action);
+      ImGui::TextWrapped("%s", k.action);
     }
     ImGui::EndTable();
   }

@@ -12,13 +12,9 @@
 
 namespace csm {
 
-void drawTimelinePanel(Viewer& viewer, PanelState& state) {
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  // Along the bottom, between the Parameters and the Help panels; its height fits its rows.
-  ImGui::SetNextWindowPos(
-      ImVec2(vp->WorkPos.x + 0.55f * vp->WorkSize.x, vp->WorkPos.y + vp->WorkSize.y - 30.0f),
-      ImGuiCond_FirstUseEver, ImVec2(0.5f, 1.0f));
-  ImGui::SetNextWindowSize(ImVec2(0.45f * vp->WorkSize.x, 0.0f), ImGuiCond_FirstUseEver);
+void drawTimelinePanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place) {
+  // Along the bottom, right of the Parameters panel; its six rows fit its height.
+  if (place) setNextWindowRect(layout.timeline);
   if (!ImGui::Begin("Timeline", &state.showTimeline)) {
     ImGui::End();
     return;

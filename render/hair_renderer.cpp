@@ -37,19 +37,19 @@ struct FrameUniforms {
   glm::vec4 background;
   glm::vec4 viewport;
   glm::vec4 lightRange;
-  glm::vec4 follow;
+  glm::vec4 children;
+  glm::vec4 children2;
   glm::ivec4 counts;
   glm::ivec4 counts2;
   glm::vec4 width;
 };
-static_assert(sizeof(FrameUniforms) == 3 * 64 + 15 * 16);
+static_assert(sizeof(FrameUniforms) == 3 * 64 + 16 * 16);
 
-// How far apart follow hairs get at the tip, relative to the root: clumps open up toward the
-// ends (AMD TressFX's "tip separation" does the same).
-constexpr float kFollowTipSpread = 1.0f;
 // A share of the strands is drawn wider by 1/sqrt(share), up to this: most of the coverage
 // without turning the hair into straws.
 constexpr float kMaxWidthScale = 2.0f;
+// Children drawn into the deep opacity maps per guide, each standing for children / this many.
+constexpr int kShadowChildren = 2;
 // The width (m) a strand drawn render.strand_width pixels wide stands for in the shadow maps,
 // where a width in pixels means nothing: a texel's side of the default preset's 1,024-texel
 // map, so that preset's shadows are as dark as when every fragment counted in full. With
@@ -69,6 +69,17 @@ std::vector<gl::Define> sharedDefines(int samples) {
           d("HEAD_SHADOW_UNIT", bindings::kHeadShadowUnit),
           d("RESOLVED_UNIT", bindings::kResolvedUnit),
           d("SCALP_UNIT", bindings::kScalpUnit),
+          d("SPLINE_FIRST_BINDING", bindings::kSplineFirst),
+          d("POINT_STRAND_BINDING", bindings::kPointStrand),
+          d("GUIDE_LINKS_BINDING", bindings::kGuideLinks),
+          d("GUIDE_POINTS_BINDING", bindings::kGuidePoints),
+          d("GUIDE_TANGENTS_BINDING", bindings::kGuideTangents),
+          d("GUIDE_FRAMES_BINDING", bindings::kGuideFrames),
+          d("GUIDE_SHADE_BINDING", bindings::kGuideShade),
+          d("CHILD_POINTS_BINDING", bindings::kChildPoints),
+          d("CHILD_COLORS_BINDING", bindings::kChildColors),
+          d("CHILD_FIRST_BINDING", bindings::kChildFirst),
+          d("CHILD_STRAND_BINDING", bindings::kChildStrand),
           d("SAMPLES", samples)};
 }
 
@@ -82,22 +93,23 @@ glm::vec3 srgbToLinear(const glm::vec3& c) {
   return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b)};
 }
 
-// What a DrawAmount comes to for a groom: guides drawn, strands per guide, and how much wider
-// and more opaque (in the shadow maps) each is drawn to stand for the ones left out.
+// What a DrawAmount comes to for a groom: guides drawn, strands per guide (the guide and
+// its first instances - 1 children), and how much wider and more opaque (in the shadow maps)
+// each is drawn to stand for the ones left out.
 struct Selection {
   std::size_t guides = 0;
   int instances = 1;
   float widthScale = 1.0f, opacityScale = 1.0f;
 };
 
-Selection select(std::size_t guides, int followCount, float share) {
+Selection select(std::size_t guides, int children, float share) {
   Selection s;
-  const int perGuide = 1 + std::max(followCount, 0);
+  const int perGuide = 1 + std::max(children, 0);
   share = std::clamp(share, 0.0f, 1.0f);
   const double all = double(guides) * perGuide;
   const double wanted = std::max(1.0, std::round(double(share) * all));
   if (wanted >= double(guides)) {
-    // Follow hairs go first: whole guides with fewer of their followers.
+    // Children go first: whole guides with fewer of their children.
     s.guides = guides;
     s.instances =
         std::clamp(int(std::floor(wanted / double(std::max<std::size_t>(guides, 1)))), 1, perGuide);
@@ -112,18 +124,36 @@ Selection select(std::size_t guides, int followCount, float share) {
   return s;
 }
 
+// One invocation per item, in work groups of 64 (hair_compute.glsl), over two dimensions
+// where one would pass the 65,535 groups a dimension may have.
+void dispatchOver(const gl::Program& program, std::size_t items) {
+  const std::size_t groups = (items + 63) / 64;
+  if (groups == 0) return;
+  const std::size_t wide = std::min<std::size_t>(groups, 65535);
+  program.dispatch(GLuint(wide), GLuint((groups + wide - 1) / wide));
+}
+
 }  // namespace
 
 struct HairRenderer::Programs {
-  gl::Program hairDepth{gl::NoCreate}, hairOpacity{gl::NoCreate}, hair{gl::NoCreate};
+  gl::Program points{gl::NoCreate}, children{gl::NoCreate}, shade{gl::NoCreate},
+      childShade{gl::NoCreate};
+  gl::Program hairDepth{gl::NoCreate}, hairOpacity{gl::NoCreate}, childOpacity{gl::NoCreate},
+      hair{gl::NoCreate}, thinHair{gl::NoCreate}, childHair{gl::NoCreate};
   gl::Program headDepth{gl::NoCreate}, head{gl::NoCreate};
   gl::Program background{gl::NoCreate}, post{gl::NoCreate};
 
-  // All seven, or none (with the compiler's log).
+  // All fourteen, or none (with the compiler's log).
   static std::unique_ptr<Programs> build(int samples, std::string* log) {
     const std::vector<gl::Define> defines = sharedDefines(samples);
     std::vector<gl::Define> shadowDefines = defines;
     shadowDefines.push_back({"SHADOW_PASS", ""});
+    std::vector<gl::Define> childDefines = defines;
+    childDefines.push_back({"CHILD_LINES", ""});
+    std::vector<gl::Define> thinDefines = defines;
+    thinDefines.push_back({"GUIDE_LINES", ""});
+    std::vector<gl::Define> childShadowDefines = shadowDefines;
+    childShadowDefines.push_back({"CHILD_LINES", ""});
     auto p = std::make_unique<Programs>();
     std::string all;
     bool ok = true;
@@ -138,10 +168,28 @@ struct HairRenderer::Programs {
       else
         ok = false;
     };
+    auto compute = [&](gl::Program& out, const char* name, const char* source) {
+      std::string l;
+      std::optional<gl::Program> made =
+          gl::buildProgram(name, {{GL_COMPUTE_SHADER, source}}, defines, &l);
+      if (!l.empty()) all += l + "\n";
+      if (made)
+        out = std::move(*made);
+      else
+        ok = false;
+    };
+    compute(p->points, "hair points", "render/hair_points.comp");
+    compute(p->children, "hair children", "render/hair_children.comp");
+    compute(p->shade, "hair shade", "render/hair_shade.comp");
+    compute(p->childShade, "child shade", "render/hair_child_shade.comp");
     one(p->hairDepth, "hair depth", "render/hair.vert", "render/depth_only.frag", shadowDefines);
     one(p->hairOpacity, "hair opacity", "render/hair.vert", "render/hair_opacity.frag",
         shadowDefines);
+    one(p->childOpacity, "child opacity", "render/hair.vert", "render/hair_opacity.frag",
+        childShadowDefines);
     one(p->hair, "hair", "render/hair.vert", "render/hair.frag", defines);
+    one(p->thinHair, "thin hair", "render/hair.vert", "render/hair.frag", thinDefines);
+    one(p->childHair, "child hair", "render/hair.vert", "render/hair.frag", childDefines);
     one(p->headDepth, "head depth", "render/head.vert", "render/depth_only.frag", shadowDefines);
     one(p->head, "head", "render/head.vert", "render/head.frag", defines);
     one(p->background, "background", "render/fullscreen.vert", "render/background.frag", defines);
@@ -235,9 +283,9 @@ ShadowMaps& HairRenderer::shadowFor(int size) {
   return *m;
 }
 
-void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
-                                  float shadowOpacityScale, int drawnWidth, int drawnHeight) {
-  const Config& c = *frame.scene;
+void HairRenderer::updateUniforms(const FrameView& frame, int children, int drawnChildren,
+                                  float widthScale, float shadowOpacityScale, int drawnWidth,
+                                  int drawnHeight) {
   const ViewConfig& look = *frame.look;
   const RenderConfig& r = look.render;
   const float aspect = float(frame.width) / float(std::max(frame.height, 1));
@@ -277,10 +325,16 @@ void HairRenderer::updateUniforms(const FrameView& frame, float widthScale,
   // Orthographic depth is linear: one unit of depth is the whole 2R of the light's box.
   const float size = float(shadow_->size());
   u.lightRange = glm::vec4(2.0f * R, size, 1.0f / size, 2.0f * R / size);
-  u.follow = glm::vec4(c.hairstyle.followSpread, kFollowTipSpread, shadowOpacityScale, 0.0f);
-  u.counts = glm::ivec4(geometry_->subdivision(), std::max(c.hairstyle.followCount, 0),
-                        geometry_->pointBits(), geometry_->strandFlags());
-  u.counts2 = glm::ivec4(geometry_->shadowSubdivision(), head_.sphereCount(), 0, 0);
+  u.children = glm::vec4(r.childRadius > 0.0f ? r.childRadius : geometry_->rootSpacing(),
+                         std::clamp(r.childClump, 0.0f, 1.0f), shadowOpacityScale,
+                         std::max(r.childNoise, 0.0f));
+  const int shadowChildren = std::max(std::min(drawnChildren, kShadowChildren), 1);
+  u.children2 =
+      glm::vec4(std::clamp(r.childLength, 0.0f, 0.9f), std::clamp(r.childInterpolation, 0.0f, 1.0f),
+                float(drawnChildren) / float(shadowChildren), 0.0f);
+  u.counts = glm::ivec4(geometry_->subdivision(), children, geometry_->childStride(),
+                        geometry_->strandFlags());
+  u.counts2 = glm::ivec4(int(geometry_->splinePoints()), head_.sphereCount(), 0, 0);
   // A width in metres: pixels per metre at view depth 1 from the projection's vertical scale
   // (1 / tan(fov / 2) for the orbit camera), so a strand narrows with distance as it would.
   const float widthM = std::max(r.strandWidthM, 0.0f);
@@ -293,7 +347,6 @@ void HairRenderer::render(const FrameView& frame) {
   if (!frame.scene || !frame.look || !frame.groom || !frame.head || frame.width <= 0 ||
       frame.height <= 0)
     return;
-  const Config& c = *frame.scene;
   const RenderConfig& look = frame.look->render;
   const DrawAmount& amount = frame.amount;
   gl::StateBackup backup;
@@ -327,9 +380,15 @@ void HairRenderer::render(const FrameView& frame) {
   ShadowMaps& shadow = shadowFor(shadowSize);
   head_.update(*frame.head, frame.headPose);
 
-  const Selection drawn = select(geometry_->guides(), c.hairstyle.followCount, amount.strands);
+  // Children as asked for, as many as fit; each strand narrower by sqrt(1 + children), so
+  // 1 + n strands cover sqrt(1 + n) times the guides' area (docs/METHOD.md, section 8).
+  const int children = geometry_->setChildren(look.children);
+  const Selection drawn = select(geometry_->guides(), children, amount.strands);
   drawnStrands_ = frame.positionBuffer != 0 ? drawn.guides * std::size_t(drawn.instances) : 0;
-  updateUniforms(frame, drawn.widthScale, drawn.opacityScale, drawnWidth, drawnHeight);
+  const float childWidth = 1.0f / std::sqrt(float(1 + children));
+  const int drawnChildren = drawnStrands_ > 0 ? drawn.instances - 1 : 0;
+  updateUniforms(frame, children, drawnChildren, drawn.widthScale * childWidth, drawn.opacityScale,
+                 drawnWidth, drawnHeight);
 
   // The solver may have written the positions from a compute shader.
   gl::memoryBarrier(gl::Barrier::Storage);
@@ -338,8 +397,21 @@ void HairRenderer::render(const FrameView& frame) {
   geometry_->bind();
   head_.bind();
   Programs& p = *programs;
-  auto drawLines = [&] {
-    if (drawnStrands_ > 0) geometry_->drawLines(drawn.guides, drawn.instances);
+  if (drawnStrands_ > 0) {
+    clock_.begin("strands");
+    makePoints(p, children);
+  }
+  // The guides' lines, and in the opacity pass a few ranks of children standing for all
+  // (uChildren2.z): the maps are smooth, and children lie within a layer of their guide.
+  // The nearest hair's depth (z0) comes from the guides alone.
+  auto drawLines = [&](gl::Program& guides, gl::Program* childLines) {
+    if (drawnStrands_ == 0) return;
+    guides.use();
+    geometry_->drawGuideLines(drawn.guides);
+    if (childLines && drawnChildren > 0) {
+      childLines->use();
+      geometry_->drawChildren(std::min(drawnChildren, kShadowChildren));
+    }
   };
 
   // Shadow: deep opacity maps and the head's depth, from the light. Each stage's timer
@@ -351,8 +423,7 @@ void HairRenderer::render(const FrameView& frame) {
     gl::setViewport(0, 0, shadow.size(), shadow.size());
     gl::applyDrawState({.depthTest = true});
     shadow.lightDepthTarget().bind();
-    p.hairDepth.use();
-    drawLines();
+    drawLines(p.hairDepth, nullptr);
 
     // The head's back faces: a lit surface never shadows itself.
     shadow.headShadowTarget().bind();
@@ -364,8 +435,7 @@ void HairRenderer::render(const FrameView& frame) {
     shadow.opacityTarget().bind();
     gl::applyDrawState({.blend = gl::Blend::Additive});
     shadow.lightDepth().bind(bindings::kLightDepthUnit);
-    p.hairOpacity.use();
-    drawLines();
+    drawLines(p.hairOpacity, &p.childOpacity);
   }
 
   // Head: the backdrop, then the spheres, into the frame.
@@ -385,11 +455,37 @@ void HairRenderer::render(const FrameView& frame) {
   p.head.use();
   head_.draw(amount.fullHead);
 
-  // Hair: ribbons, both faces (a strip alternates its winding).
+  // Hair: the light at every guide point (and each child's from it), then the guides:
+  // ribbons, both faces (consecutive triangles alternate their winding), or lines where
+  // thinner than a pixel (in pixels: with children, or a width under one; a ribbon is drawn
+  // at least 1.5 pixels wide, a line one).
   clock_.begin("hair");
-  gl::applyDrawState({.depthTest = true});
-  p.hair.use();
-  if (drawnStrands_ > 0) geometry_->drawRibbons(drawn.guides, drawn.instances);
+  if (drawnStrands_ > 0) {
+    dispatchOver(p.shade, geometry_->splinePoints());
+    gl::memoryBarrier(gl::Barrier::Storage);
+    if (drawnChildren > 0) {
+      const std::size_t items = geometry_->childPoints() * std::size_t(children);
+      p.childShade.use();
+      p.childShade.setUniform("uItems", unsigned(items));
+      dispatchOver(p.childShade, items);
+      gl::memoryBarrier(gl::Barrier::Storage);
+    }
+    gl::applyDrawState({.depthTest = true});
+    if (look.strandWidthM <= 0.0f && look.strandWidth * drawn.widthScale * childWidth < 1.0f) {
+      p.thinHair.use();
+      geometry_->drawThinGuides(drawn.guides);
+    } else {
+      p.hair.use();
+      geometry_->drawRibbons(drawn.guides);
+    }
+  }
+  // Children: depth-tested before shading against the head and the guides, no depth writes.
+  if (drawnChildren > 0) {
+    clock_.begin("children");
+    gl::applyDrawState({.depthTest = true, .depthWrite = false});
+    p.childHair.use();
+    geometry_->drawChildren(drawnChildren);
+  }
 
   // Post: tone map each sample, resolve, gamma, into the caller's framebuffer.
   gl::applyDrawState({});
@@ -407,12 +503,24 @@ void HairRenderer::render(const FrameView& frame) {
   gl::maybeCheckErrors("HairRenderer::render");
 }
 
+void HairRenderer::makePoints(Programs& p, int children) {
+  dispatchOver(p.points, geometry_->splinePoints());
+  gl::memoryBarrier(gl::Barrier::Storage);
+  if (children > 0) {
+    const std::size_t items = geometry_->childPoints() * std::size_t(children);
+    p.children.use();
+    p.children.setUniform("uItems", unsigned(items));
+    dispatchOver(p.children, items);
+    gl::memoryBarrier(gl::Barrier::Storage);
+  }
+}
+
 std::vector<StageTime> HairRenderer::stageTimes() {
   return clock_.times();
 }
 
-std::size_t drawnStrandCount(std::size_t simulatedStrands, const Config& config) {
-  return simulatedStrands * std::size_t(1 + std::max(config.hairstyle.followCount, 0));
+std::size_t drawnStrandCount(std::size_t simulatedStrands, const RenderConfig& render) {
+  return simulatedStrands * std::size_t(1 + std::max(render.children, 0));
 }
 
 DrawAmount interactiveAmount(const RenderConfig& render) {

@@ -12,12 +12,12 @@
 //   hair    camera-facing ribbons, Catmull-Rom subdivided, Kajiya-Kay shaded, shadows read
 //           per vertex from the maps, transparency as per-strand sample coverage.
 //   post    tone mapping per sample, resolve, gamma, into the target framebuffer.
-// Every hair pass draws StrandGeometry: each vertex is pulled from the positions SSBO by
-// gl_VertexID (hair_common.glsl); follow hairs are instances of their guide. No compute pass
-// and no intermediate vertex buffer: three draws read the same ~160k particles, and
-// recomputing a spline point (four loads and a few FMAs) is cheaper than writing and
-// re-reading millions of subdivided vertices, which would also cost (followCount + 1) x
-// subdivision x 16 bytes per particle of memory.
+// Every hair pass draws StrandGeometry. Three compute passes a frame write the drawn curves
+// once (hair_common.glsl): every guide's spline points and frames, its render.children
+// children, and, once the deep opacity maps are drawn, the light at every guide point. The
+// three draws then only read them: the shadow passes' lines (guides and children), the
+// guides' ribbons and the children's lines. Children take their guide's light, so shading
+// costs one evaluation per guide point however many children there are.
 #pragma once
 
 #include <cstddef>
@@ -51,7 +51,7 @@ class HairRenderer final : public Renderer {
   std::vector<StageTime> stageTimes() override;
   bool reloadShaders(std::string* log) override;
 
-  // Strands drawn by the last render(): guides drawn times (1 + follow hairs drawn).
+  // Strands drawn by the last render(): guides drawn times (1 + children drawn).
   std::size_t drawnStrands() const { return drawnStrands_; }
   // Per-pass times from glFinish and the CPU clock instead of timer queries. On by default
   // on software rasterizers: llvmpipe's GL_TIME_ELAPSED sees only its rasterizer threads,
@@ -80,8 +80,11 @@ class HairRenderer final : public Renderer {
   ShadowMaps& shadowFor(int size);
   // `drawnWidth` x `drawnHeight`: the image the passes draw (the frame's size times
   // DrawAmount::resolution), whose pixels set the strands' widths.
-  void updateUniforms(const FrameView& frame, float widthScale, float shadowOpacityScale,
-                      int drawnWidth, int drawnHeight);
+  // `children`: children laid out per guide; `drawnChildren` of them drawn.
+  void updateUniforms(const FrameView& frame, int children, int drawnChildren, float widthScale,
+                      float shadowOpacityScale, int drawnWidth, int drawnHeight);
+  // The compute passes: every guide's spline points, then `children` children per guide.
+  void makePoints(Programs& p, int children);
 
   std::map<int, std::unique_ptr<Programs>> programs_;  // by sample count
   int maxSamples_ = 1;

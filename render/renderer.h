@@ -22,7 +22,7 @@ namespace csm {
 // How much of the look to draw. Full for captures and a still view; the viewer's interactive
 // quality (RenderConfig::interactive*) while the camera moves or the hair simulates.
 struct DrawAmount {
-  float strands = 1.0f;     // share of the drawn strands: follow hairs go first, then guides
+  float strands = 1.0f;     // share of the drawn strands: children go first, then guides
   int subdivision = 0;      // spline segments per simulated segment; 0: render.subdivision
   int samples = 0;          // MSAA samples; 0: render.samples
   int shadowMapSize = 0;    // 0: render.shadow_map_size
@@ -34,7 +34,7 @@ struct DrawAmount {
 DrawAmount interactiveAmount(const RenderConfig& render);
 
 struct FrameView {
-  const Config* scene = nullptr;     // head.spheres, hairstyle.follow_*
+  const Config* scene = nullptr;     // head.spheres
   const ViewConfig* look = nullptr;  // render.*, camera.*, light.*
   const Groom* groom = nullptr;      // topology (strand offsets) and per-strand colours
   long generation = 0;               // changes when the groom is regrown: rebuild topology buffers
@@ -62,8 +62,8 @@ class Renderer {
   virtual bool reloadShaders(std::string* log) = 0;
 };
 
-// Strands on screen for `simulatedStrands` guides: each one plus its hairstyle.follow_count
-// render-only follow hairs. For the stats next to the simulated count.
-std::size_t drawnStrandCount(std::size_t simulatedStrands, const Config& config);
+// Strands on screen for `simulatedStrands` guides: each one plus its render.children
+// children. For the stats next to the simulated count.
+std::size_t drawnStrandCount(std::size_t simulatedStrands, const RenderConfig& render);
 
 }  // namespace csm

@@ -11,7 +11,7 @@
 namespace csm {
 namespace {
 
-constexpr int kSize = 128;
+constexpr int kSize = 128;  // about 4 mm a texel on the mannequin's scalp
 
 // Two passes of a 5x5 box over each layer: roots a few millimetres apart merge into one
 // scalp.
@@ -79,13 +79,25 @@ ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres) 
   }
   blur(count, layers);
   if (groomColours) blur(colour, layers);
+  // Coverage against the typical density of roots where hair grows (the median over texels
+  // holding a tenth of the densest one or more): full inside, fading over the blur's width
+  // (about a centimetre) inside a hairline or a parting, as the hair there thins; none outside.
+  std::vector<float> grown;
+  const float densest = count.empty() ? 0.0f : *std::max_element(count.begin(), count.end());
+  for (float c : count)
+    if (c > 0.1f * densest) grown.push_back(c);
+  float typical = 0.1f;
+  if (!grown.empty()) {
+    std::nth_element(grown.begin(), grown.begin() + std::ptrdiff_t(grown.size() / 2), grown.end());
+    typical = std::max(grown[grown.size() / 2], 1e-3f);
+  }
   ScalpTexels out;
   out.size = kSize;
   out.layers = layers;
   out.rgba.resize(count.size() * 4);
   for (std::size_t i = 0; i < count.size(); ++i) {
-    // One root per ten texels already reads as a covered scalp.
-    const float coverage = std::clamp(count[i] / 0.1f, 0.0f, 1.0f);
+    const float t = std::clamp((count[i] / typical - 0.25f) / 0.5f, 0.0f, 1.0f);
+    const float coverage = t * t * (3.0f - 2.0f * t);
     const glm::vec3 c = groomColours && count[i] > 0.0f ? colour[i] / count[i] : glm::vec3(0.0f);
     out.rgba[i * 4 + 0] = unorm8(c.r);
     out.rgba[i * 4 + 1] = unorm8(c.g);

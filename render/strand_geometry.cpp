@@ -1,11 +1,17 @@
 #include "render/strand_geometry.h"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <string>
+#include <unordered_map>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "gl/debug.h"
@@ -15,12 +21,52 @@
 namespace csm {
 namespace {
 
-constexpr std::uint32_t kRestart = 0xffffffffu;  // GL_PRIMITIVE_RESTART_FIXED_INDEX, uint
+// Duff et al. 2017's basis around a unit vector, as hair_common.glsl's basisAround: the
+// children's frame at the root.
+void basisAround(const glm::vec3& n, glm::vec3& b1, glm::vec3& b2) {
+  const float sgn = n.z >= 0.0f ? 1.0f : -1.0f;
+  const float a = -1.0f / (sgn + n.z);
+  const float b = n.x * n.y * a;
+  b1 = glm::vec3(1.0f + sgn * n.x * n.x * a, sgn * b, -sgn * n.x);
+  b2 = glm::vec3(b, sgn + n.y * n.y * a, -n.y);
+}
 
-int bitsFor(std::uint32_t maxValue) {
-  int bits = 1;
-  while (bits < 32 && (std::uint64_t(1) << bits) <= maxValue) ++bits;
-  return bits;
+// Roots in a uniform grid of cubes `cell` wide, for neighbour queries.
+class RootGrid {
+ public:
+  RootGrid(const std::vector<glm::vec3>& roots, float cell) : roots_(roots), cell_(cell) {
+    for (std::size_t i = 0; i < roots.size(); ++i) cells_[key(cellOf(roots[i]))].push_back(i);
+  }
+  // Calls f(j) for every root within `radius` (<= cell) of p.
+  template <class F>
+  void near(const glm::vec3& p, float radius, F&& f) const {
+    const glm::ivec3 c = cellOf(p);
+    for (int z = -1; z <= 1; ++z)
+      for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+          const auto it = cells_.find(key(c + glm::ivec3(x, y, z)));
+          if (it == cells_.end()) continue;
+          for (std::size_t j : it->second)
+            if (glm::length(roots_[j] - p) <= radius) f(j);
+        }
+  }
+
+ private:
+  glm::ivec3 cellOf(const glm::vec3& p) const { return glm::ivec3(glm::floor(p / cell_)); }
+  static std::uint64_t key(const glm::ivec3& c) {
+    return (std::uint64_t(std::uint32_t(c.x) & 0x1fffff) << 42) |
+           (std::uint64_t(std::uint32_t(c.y) & 0x1fffff) << 21) |
+           std::uint64_t(std::uint32_t(c.z) & 0x1fffff);
+  }
+  const std::vector<glm::vec3>& roots_;
+  float cell_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
+};
+
+float median(std::vector<float> v) {
+  if (v.empty()) return 0.0f;
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  return v[v.size() / 2];
 }
 
 // The drawable strands in an order whose every prefix is an even sample of the head: a
@@ -40,6 +86,76 @@ std::vector<std::uint32_t> drawOrder(const Groom& groom) {
 
 }  // namespace
 
+GuideLinks guideLinks(const Groom& groom) {
+  const std::size_t strands = groom.strandCount();
+  GuideLinks out;
+  out.data.assign(2 * strands, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  std::vector<glm::vec3> roots, dirs;
+  std::vector<std::size_t> strandOf;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (std::size_t s = 0; s < strands; ++s) {
+    out.data[2 * s + 1] = glm::vec4(std::bit_cast<float>(std::uint32_t(s)), 0.0f, 0.0f, 0.0f);
+    if (groom.strandSize(s) < 2) continue;
+    const glm::vec3 r = groom.points[groom.first[s]];
+    const glm::vec3 d = groom.points[groom.first[s] + 1] - r;
+    if (!(glm::length(d) > 0.0f) || !std::isfinite(r.x + r.y + r.z)) continue;
+    roots.push_back(r);
+    dirs.push_back(glm::normalize(d));
+    strandOf.push_back(s);
+    lo = glm::min(lo, r);
+    hi = glm::max(hi, r);
+  }
+  if (roots.size() < 2) return out;
+  // Roots lie on a surface: n of them over about the box's largest face are about
+  // sqrt(area / n) apart. Cells twice that find each root's nearest neighbour.
+  const glm::vec3 e = glm::max(hi - lo, glm::vec3(1e-6f));
+  const float area = std::max({e.x * e.y, e.y * e.z, e.z * e.x});
+  const float guess = std::sqrt(area / float(roots.size()));
+  std::vector<float> nearest(roots.size(), 0.0f);
+  {
+    const RootGrid grid(roots, 2.0f * guess);
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      float best = 2.0f * guess;
+      grid.near(roots[i], 2.0f * guess, [&](std::size_t j) {
+        if (j != i) best = std::min(best, glm::length(roots[j] - roots[i]));
+      });
+      nearest[i] = best;
+    }
+  }
+  out.spacing = std::max(median(nearest), 1e-5f);
+  // The density within three spacings, against its median: about half on an edge.
+  const float radius = 3.0f * out.spacing;
+  const RootGrid grid(roots, radius);
+  std::vector<float> counts(roots.size(), 0.0f);
+  std::vector<glm::vec3> centroids(roots.size(), glm::vec3(0.0f));
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    float best = 2.5f * out.spacing;
+    std::size_t neighbour = i;
+    grid.near(roots[i], radius, [&](std::size_t j) {
+      counts[i] += 1.0f;
+      centroids[i] += roots[j];
+      const float d = glm::length(roots[j] - roots[i]);
+      if (j != i && d < best && glm::dot(dirs[i], dirs[j]) > 0.5f) best = d, neighbour = j;
+    });
+    centroids[i] /= counts[i];
+    out.data[2 * strandOf[i] + 1] =
+        glm::vec4(std::bit_cast<float>(std::uint32_t(strandOf[neighbour])),
+                  glm::length(roots[neighbour] - roots[i]), out.spacing, 0.0f);
+  }
+  const float typical = std::max(median(counts), 1.0f);
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    glm::vec3 b1, b2;
+    basisAround(dirs[i], b1, b2);
+    const glm::vec3 b = glm::cross(dirs[i], b1);
+    glm::vec2 inward(glm::dot(centroids[i] - roots[i], b1), glm::dot(centroids[i] - roots[i], b));
+    const float len = glm::length(inward);
+    inward = len > 1e-9f ? inward / len : glm::vec2(0.0f);
+    out.data[2 * strandOf[i]] =
+        glm::vec4(inward, 0.0f, std::clamp(counts[i] / typical, 0.0f, 1.0f));
+  }
+  return out;
+}
+
 bool StrandGeometry::update(const Groom& groom, long generation, int subdivisionWanted,
                             const std::vector<Sphere>& spheres) {
   const Key key{generation, &groom, groom.strandCount(), groom.pointCount(),
@@ -48,26 +164,12 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
   key_ = key;
 
   const std::size_t strands = groom.strandCount();
-  std::uint32_t maxSegments = 1;
-  for (std::size_t s = 0; s < strands; ++s)
-    maxSegments = std::max(maxSegments, groom.strandSize(s) > 1 ? groom.strandSize(s) - 1 : 1);
-  // The vertex id packs guide, point and side into 32 bits (hair_common.glsl), with all ones
-  // reserved for primitive restart; a groom too big for the subdivision gets less of it.
-  int subdivision = key.subdivision;
-  for (;;) {
-    pointBits_ = bitsFor(maxSegments * std::uint32_t(subdivision));
-    const int guideBits = 31 - pointBits_;
-    if (strands == 0 || guideBits >= 31 || (std::uint64_t(strands) >> guideBits) == 0) break;
-    if (subdivision == 1) break;
-    subdivision = std::max(1, subdivision / 2);
-  }
-  if (subdivision != key.subdivision)
-    gl::logMessage(gl::LogLevel::Warning, "render.subdivision lowered to " +
-                                              std::to_string(subdivision) +
-                                              " so every vertex of this groom has an id");
-  subdivision_ = subdivision;
+  subdivision_ = key.subdivision;
   // The deep opacity maps are smooth by construction: half the subdivision is plenty there.
-  shadowSubdivision_ = std::max(1, (subdivision + 1) / 2);
+  // Children, thinner than a pixel, have a point per particle: their bends are a pixel or
+  // two across, and a software rasterizer pays for every line segment.
+  shadowStride_ = subdivision_ % 2 == 0 ? 2 : 1;
+  childStride_ = subdivision_;
 
   std::vector<glm::vec4> rest(groom.pointCount());
   for (std::size_t i = 0; i < rest.size(); ++i) rest[i] = glm::vec4(groom.points[i], 1.0f);
@@ -100,34 +202,79 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
     dummyAttributes_ = gl::Buffer(GLsizeiptr(sizeof(one)), &one, GL_STATIC_DRAW);
   }
 
+  // Spline points: (n - 1) subdivision + 1 per strand of n >= 2 particles.
+  splineFirstHost_.assign(strands + 1, 0);
+  std::vector<std::uint32_t> pointStrand;
+  for (std::size_t s = 0; s < strands; ++s) {
+    const std::uint32_t n = groom.strandSize(s);
+    const std::uint32_t points = n >= 2 ? (n - 1) * std::uint32_t(subdivision_) + 1 : 0;
+    splineFirstHost_[s + 1] = splineFirstHost_[s] + points;
+    pointStrand.insert(pointStrand.end(), points, std::uint32_t(s));
+  }
+  splinePoints_ = pointStrand.size();
+  if (pointStrand.empty()) pointStrand.push_back(0);
+  // A child's points: every childStride_-th spline point ((n - 1) subdivision is a multiple).
+  childFirstHost_.assign(strands + 1, 0);
+  std::vector<std::uint32_t> childStrand;
+  for (std::size_t s = 0; s < strands; ++s) {
+    const std::uint32_t points = splineFirstHost_[s + 1] - splineFirstHost_[s];
+    const std::uint32_t own = points > 0 ? (points - 1) / std::uint32_t(childStride_) + 1 : 0;
+    childFirstHost_[s + 1] = childFirstHost_[s] + own;
+    childStrand.insert(childStrand.end(), own, std::uint32_t(s));
+  }
+  childRun_ = childStrand.size();
+  if (childStrand.empty()) childStrand.push_back(0);
+  childFirst_ = gl::Buffer(childFirstHost_, GL_STATIC_DRAW);
+  childStrand_ = gl::Buffer(childStrand, GL_STATIC_DRAW);
+  splineFirst_ = gl::Buffer(splineFirstHost_, GL_STATIC_DRAW);
+  pointStrand_ = gl::Buffer(pointStrand, GL_STATIC_DRAW);
+  links_ = guideLinks(groom);
+  if (links_.data.empty()) links_.data.assign(2, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  guideLinks_ = gl::Buffer(links_.data, GL_STATIC_DRAW);
+  const GLsizeiptr pointBytes = GLsizeiptr(std::max<std::size_t>(splinePoints_, 1) * 16);
+  guidePoints_ = gl::Buffer(pointBytes, nullptr, GL_DYNAMIC_COPY);
+  guideTangents_ = gl::Buffer(pointBytes, nullptr, GL_DYNAMIC_COPY);
+  guideFrames_ = gl::Buffer(pointBytes, nullptr, GL_DYNAMIC_COPY);
+  guideShade_ = gl::Buffer(2 * pointBytes, nullptr, GL_DYNAMIC_COPY);
+
   order_ = drawOrder(groom);
   guides_ = order_.size();
-  std::vector<std::uint32_t> strip, lines;
+  std::vector<std::uint32_t> strip, lines, shadow;
   stripPrefix_.assign(1, 0);
   linePrefix_.assign(1, 0);
+  shadowPrefix_.assign(1, 0);
+  const std::uint32_t stride = std::uint32_t(shadowStride_);
+  // Independent triangles and line segments, not strips with primitive restart: a software
+  // rasterizer (llvmpipe's draw module) runs each restarted strip as a draw of its own,
+  // which cost more than the vertices themselves for children of short strands.
   for (const std::uint32_t s : order_) {
-    const std::uint32_t n = groom.strandSize(s);
-    const std::uint32_t base = s << (pointBits_ + 1);
-    const std::uint32_t points = (n - 1) * std::uint32_t(subdivision_) + 1;
-    for (std::uint32_t p = 0; p < points; ++p) {
-      strip.push_back(base | p << 1);
-      strip.push_back(base | p << 1 | 1u);
+    const std::uint32_t first = splineFirstHost_[s], points = splineFirstHost_[s + 1] - first;
+    for (std::uint32_t p = first; p + 1 < first + points; ++p) {
+      const std::uint32_t a = p << 1, b = (p + 1) << 1;
+      strip.insert(strip.end(), {a, a | 1u, b, b, a | 1u, b | 1u});
+      lines.insert(lines.end(), {p, p + 1});
     }
-    strip.push_back(kRestart);
-    const std::uint32_t shadowPoints = (n - 1) * std::uint32_t(shadowSubdivision_) + 1;
-    for (std::uint32_t p = 0; p < shadowPoints; ++p) lines.push_back(base | p << 1);
-    lines.push_back(kRestart);
+    std::uint32_t last = first;
+    for (std::uint32_t p = stride; p < points; p += stride) {
+      shadow.insert(shadow.end(), {last, first + p});
+      last = first + p;
+    }
+    if (last != first + points - 1) shadow.insert(shadow.end(), {last, first + points - 1});
     stripPrefix_.push_back(strip.size());
     linePrefix_.push_back(lines.size());
+    shadowPrefix_.push_back(shadow.size());
   }
-  if (strip.empty()) strip.push_back(kRestart);
-  if (lines.empty()) lines.push_back(kRestart);
+  for (auto* v : {&strip, &lines, &shadow})
+    if (v->empty()) v->push_back(0);
   stripIndices_ = gl::Buffer(strip, GL_STATIC_DRAW);
   lineIndices_ = gl::Buffer(lines, GL_STATIC_DRAW);
-  if (stripVao_.id() == 0) stripVao_ = gl::VertexArray();
-  if (lineVao_.id() == 0) lineVao_ = gl::VertexArray();
+  shadowIndices_ = gl::Buffer(shadow, GL_STATIC_DRAW);
+  for (gl::VertexArray* vao : {&stripVao_, &lineVao_, &shadowVao_, &childVao_})
+    if (vao->id() == 0) *vao = gl::VertexArray();
   stripVao_.setIndexBuffer(stripIndices_);
   lineVao_.setIndexBuffer(lineIndices_);
+  shadowVao_.setIndexBuffer(shadowIndices_);
+  children_ = -1;
 
   // A sphere in the head's frame that holds the hair wherever it swings: no particle gets
   // further from its root than the strand's length (plus the strain limit's slack).
@@ -157,27 +304,76 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
   return true;
 }
 
+int StrandGeometry::setChildren(int wanted) {
+  const std::size_t perChild = std::max<std::size_t>(childRun_, 1) * 32;
+  const int children = int(std::min<std::size_t>(std::size_t(std::clamp(wanted, 0, 1 << 16)),
+                                                 kMaxChildBytes / perChild));
+  if (children == children_) return children;
+  children_ = children;
+  const std::size_t items = std::max<std::size_t>(childRun_ * std::size_t(children), 1);
+  childPoints_ = gl::Buffer(GLsizeiptr(items * 16), nullptr, GL_DYNAMIC_COPY);
+  childColors_ = gl::Buffer(GLsizeiptr(items * 16), nullptr, GL_DYNAMIC_COPY);
+  // Segments by child rank, then guides in draw order: drawing k children of every guide is
+  // a prefix (a share of the strands drops children before guides).
+  std::vector<std::uint32_t> lines;
+  childPrefix_.assign(1, 0);
+  const std::uint32_t n = std::uint32_t(children);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    for (const std::uint32_t s : order_) {
+      const std::uint32_t first = childFirstHost_[s];
+      const std::uint32_t count = childFirstHost_[s + 1] - first;
+      const std::uint32_t base = first * n + k * count;
+      for (std::uint32_t p = 0; p + 1 < count; ++p)
+        lines.insert(lines.end(), {base + p, base + p + 1});
+    }
+    childPrefix_.push_back(lines.size());
+  }
+  if (lines.empty()) lines.push_back(0);
+  childIndices_ = gl::Buffer(lines, GL_STATIC_DRAW);
+  childVao_.setIndexBuffer(childIndices_);
+  return children;
+}
+
 void StrandGeometry::bind() const {
   restPositions_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kRestPositions);
   strandFirst_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kStrandFirst);
   (strandFlags_ ? strandAttributes_ : dummyAttributes_)
       .bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kStrandAttributes);
+  splineFirst_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kSplineFirst);
+  pointStrand_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kPointStrand);
+  guideLinks_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuideLinks);
+  guidePoints_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuidePoints);
+  guideTangents_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuideTangents);
+  guideFrames_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuideFrames);
+  guideShade_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuideShade);
+  childPoints_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kChildPoints);
+  childColors_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kChildColors);
+  childFirst_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kChildFirst);
+  childStrand_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kChildStrand);
 }
 
 void StrandGeometry::draw(const gl::VertexArray& vao, const std::vector<std::size_t>& prefix,
-                          unsigned mode, std::size_t guides, int instances) const {
-  guides = std::min(guides, guides_);
-  if (guides == 0 || instances <= 0) return;
+                          unsigned mode, std::size_t count) const {
+  count = std::min(count, prefix.size() - 1);
+  if (count == 0 || prefix[count] == 0) return;
   vao.bind();
-  gl::drawElements(GLenum(mode), prefix[guides], GLsizei(instances));
+  gl::drawElements(GLenum(mode), prefix[count]);
 }
 
-void StrandGeometry::drawRibbons(std::size_t guides, int instances) const {
-  draw(stripVao_, stripPrefix_, GL_TRIANGLE_STRIP, guides, instances);
+void StrandGeometry::drawRibbons(std::size_t guides) const {
+  draw(stripVao_, stripPrefix_, GL_TRIANGLES, guides);
 }
 
-void StrandGeometry::drawLines(std::size_t guides, int instances) const {
-  draw(lineVao_, linePrefix_, GL_LINE_STRIP, guides, instances);
+void StrandGeometry::drawThinGuides(std::size_t guides) const {
+  draw(lineVao_, linePrefix_, GL_LINES, guides);
+}
+
+void StrandGeometry::drawGuideLines(std::size_t guides) const {
+  draw(shadowVao_, shadowPrefix_, GL_LINES, guides);
+}
+
+void StrandGeometry::drawChildren(int children) const {
+  if (children > 0) draw(childVao_, childPrefix_, GL_LINES, std::size_t(children));
 }
 
 }  // namespace csm

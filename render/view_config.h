@@ -11,19 +11,29 @@ enum class HairColor : int { Custom = 0, Black, Brown, Blond, Red, Grey };
 
 struct RenderConfig {
   bool shadows = true;
-  float strandWidth = 1.5f;                 // pixels
-  float strandWidthM = 0.0f;                // metres; 0: strandWidth pixels
-  int subdivision = 4;                      // spline segments drawn per simulated segment
+  float strandWidth = 1.5f;   // pixels
+  float strandWidthM = 0.0f;  // metres; 0: strandWidth pixels
+  int subdivision = 4;        // spline segments drawn per simulated segment
+  // Children: hairs drawn around each simulated strand, made on the GPU each frame
+  // (shaders/render/hair_children.comp).
+  int children = 0;
+  float childRadius = 0.0f;                 // from the guide at the root (m); 0: the roots' spacing
+  float childClump = 0.5f;                  // share of that closed at the tip
+  float childNoise = 0.002f;                // wander at the tip (m)
+  float childLength = 0.15f;                // children up to this share shorter than their guide
+  float childInterpolation = 0.5f;          // share of children between two neighbouring guides
   HairColor hairColor = HairColor::Custom;  // custom: rootColor and tipColor
   glm::vec3 rootColor{0.10f, 0.06f, 0.035f};
   glm::vec3 tipColor{0.35f, 0.22f, 0.12f};
   float colorVariation = 0.15f;
   float specularShift1 = -0.08f;  // along the normal, in tangent units (primary, white)
   float specularShift2 = 0.12f;   // secondary, tinted
-  float specularExponent1 = 80.0f;
-  float specularExponent2 = 20.0f;
-  float specularStrength1 = 0.35f;
-  float specularStrength2 = 0.25f;
+  // The primary (white) lobe narrow and faint, the secondary (tinted) one broader: where hair
+  // lies flat a wide white lobe turns brown hair grey.
+  float specularExponent1 = 250.0f;
+  float specularExponent2 = 40.0f;
+  float specularStrength1 = 0.12f;
+  float specularStrength2 = 0.45f;
   float opacity = 0.6f;        // per strand
   float layerSpacing = 0.01f;  // deep opacity map layer spacing, metres
   int shadowMapSize = 1024;
@@ -31,7 +41,7 @@ struct RenderConfig {
   glm::vec3 background{0.55f, 0.60f, 0.66f};
   int samples = 4;  // multisampling
   // Interactive quality, while the camera moves or the hair simulates (the viewer; captures
-  // and a still view are drawn in full): a share of the strands, follow hairs first, wider
+  // and a still view are drawn in full): a share of the strands, children first, wider
   // to keep the coverage; a plainer curve; fewer samples; a smaller shadow map; a smaller
   // image, scaled up to the window.
   bool interactive = true;

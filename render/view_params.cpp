@@ -9,6 +9,9 @@ bool interactiveQuality(const ViewConfig& v) {
 bool widthInPixels(const ViewConfig& v) {
   return v.render.strandWidthM <= 0.0f;
 }
+bool hasChildren(const ViewConfig& v) {
+  return v.render.children > 0;
+}
 bool customHairColor(const ViewConfig& v) {
   return v.render.hairColor == HairColor::Custom;
 }
@@ -32,6 +35,41 @@ std::vector<Param<ViewConfig>> build() {
       param("render.subdivision", "Subdivision", "Rendering", &ViewConfig::render,
             &RenderConfig::subdivision, 1, 16, "Spline segments drawn per simulated segment.",
             Effect::Render),
+      param("render.children", "Children", "Rendering|Children", &ViewConfig::render,
+            &RenderConfig::children, 0, 64,
+            "Hairs drawn around each simulated strand, made on the GPU each frame and not "
+            "simulated. Every strand is drawn narrower by sqrt(1 + children): 1 + n strands "
+            "cover sqrt(1 + n) times the guides' area.",
+            Effect::Render),
+      param("render.child_radius", "Child radius", "Rendering|Children", &ViewConfig::render,
+            &RenderConfig::childRadius, 0.0, 0.05,
+            "Children's distance from their guide at the root (m); 0: the typical distance "
+            "between neighbouring roots.",
+            Effect::Render)
+          .display(1000.0, "mm")
+          .onlyWhen(hasChildren),
+      param("render.child_clump", "Clump", "Rendering|Children", &ViewConfig::render,
+            &RenderConfig::childClump, 0.0, 1.0,
+            "Share of the children's distance from their guide closed at the tip: 1 gathers "
+            "them into a point.",
+            Effect::Render)
+          .onlyWhen(hasChildren),
+      param("render.child_noise", "Child noise", "Rendering|Children", &ViewConfig::render,
+            &RenderConfig::childNoise, 0.0, 0.05,
+            "How far (m) each child wanders from its place at the tip, growing from the root.",
+            Effect::Render)
+          .display(1000.0, "mm")
+          .onlyWhen(hasChildren),
+      param("render.child_length", "Child length variation", "Rendering|Children",
+            &ViewConfig::render, &RenderConfig::childLength, 0.0, 0.9,
+            "Children are up to this share shorter than their guide.", Effect::Render)
+          .onlyWhen(hasChildren),
+      param("render.child_interpolation", "Interpolated children", "Rendering|Children",
+            &ViewConfig::render, &RenderConfig::childInterpolation, 0.0, 1.0,
+            "Share of children lying between their guide and its neighbour, following both "
+            "unless the two part (a parting stays a parting).",
+            Effect::Render)
+          .onlyWhen(hasChildren),
       param("render.hair_color", "Hair colour", "Rendering|Colour", &ViewConfig::render,
             &RenderConfig::hairColor, 0, 0,
             "A natural hair colour, darker at the root: black, brown, blond, red (auburn) or "
@@ -99,7 +137,7 @@ std::vector<Param<ViewConfig>> build() {
             Effect::Render),
       param("render.interactive_amount", "Strands drawn", "Rendering|Interactive",
             &ViewConfig::render, &RenderConfig::interactiveAmount, 0.01, 1.0,
-            "Interactive quality: the share of the strands drawn (follow hairs go first; the "
+            "Interactive quality: the share of the strands drawn (children go first; the "
             "rest are drawn wider to keep the coverage).",
             Effect::Render)
           .onlyWhen(interactiveQuality),

@@ -21,7 +21,7 @@ common=(--headless --quiet --solver "$solver" --frames "$frames" --every "$frame
         --set collision.mode=head --set wind.strength=3 --set head.motion=none)
 "$bin" "$tmp/groom50k.hair" "${common[@]}" --out "$tmp/all" --metrics "$tmp/all.json"
 "$bin" "$tmp/groom50k.hair" "${common[@]}" --set hairstyle.strands=5000 \
-  --set hairstyle.follow_count=9 --out "$tmp/follow" --metrics "$tmp/follow.json"
+  --set render.children=9 --out "$tmp/follow" --metrics "$tmp/follow.json"
 
 mkdir -p "$root/docs/images"
 cp "$(ls "$tmp"/all/frame_*.png | tail -n 1)" "$root/docs/images/follow_all_simulated.png"

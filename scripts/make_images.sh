@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Makes the README's pictures (docs/images) with the headless command, on whatever GL driver
-# is present (Mesa llvmpipe without a GPU): the default preset, the paper's two scenes, an
-# imported groom, and the window under Xvfb.
+# is present (Mesa llvmpipe without a GPU): the default preset, close-ups of its hairline and
+# parting, its children off beside on, the paper's two scenes, an imported groom, the
+# mannequin, and the window under Xvfb.
 #   scripts/make_images.sh [BUILD_DIR]      (default: build)
-# ONLY="fig3 imported" makes just those (default, fig1, fig3, imported, viewer).
+# ONLY="fig3 imported" makes just those (default, hairline, parting, children, mannequin, fig1,
+# fig3, imported, viewer).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-"$root/build"}/app/csmhair
@@ -21,6 +23,31 @@ shot() {  # NAME PRESET FRAMES [ARGS...]: the last frame of a headless run, as N
 }
 cd "$root"
 shot default presets/default.json 90
+# Close-ups of the default preset: the hairline from the front, the parting from above.
+shot hairline presets/default.json 60 --size 960x600 --set camera.pitch=12 --set camera.yaw=-20 \
+  --set camera.distance=0.32 --set camera.target=0,0.04,0.04
+shot parting presets/default.json 60 --size 960x600 --set camera.pitch=60 --set camera.yaw=0 \
+  --set camera.distance=0.36 --set camera.target=0,0.07,0
+# Children off (the 3,000 simulated strands alone) beside on (render.children 6: 21,000).
+if want children; then
+  for n in 0 6; do
+    "$bin" presets/default.json --headless --quiet --frames 60 --every 60 --size 640x540 \
+      --set render.children=$n --set camera.distance=0.55 --out "$tmp/children$n"
+  done
+  /usr/bin/python3 - "$tmp/children0/frame_00001.png" "$tmp/children6/frame_00001.png" \
+    "$out/children.png" <<'PY'
+import sys
+import matplotlib.image as image
+import numpy as np
+a, b = image.imread(sys.argv[1]), image.imread(sys.argv[2])
+image.imsave(sys.argv[3], np.concatenate([a, b], axis=1))
+PY
+  echo "docs/images/children.png"
+fi
+# The mannequin alone, three-quarter view.
+shot mannequin presets/default.json 1 --size 800x800 --set hairstyle.strands=1 --set render.opacity=0.01 \
+  --set camera.yaw=25 --set camera.pitch=0 --set camera.distance=0.42 \
+  --set camera.target=0,-0.03,0
 shot fig1 presets/paper_fig1_straight.json 60 --solver cpu
 shot fig3 presets/paper_fig3_curly.json 40 --set camera.target=0,-0.13,0 \
   --set camera.distance=0.85

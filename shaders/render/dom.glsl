@@ -75,4 +75,19 @@ float headVisibility(vec3 worldPos) {
   vec3 lp = (uLightViewProj * vec4(worldPos, 1.0)).xyz * 0.5 + 0.5;
   return inLightBox(lp) ? texture(uHeadShadow, lp) : 1.0;
 }
+// The same over a disc about three texels wide (eight filtered taps): the head's own shadow
+// on itself, whose edges in the eye sockets, under the nose and the lips would otherwise show
+// the map's texels.
+float headVisibilitySoft(vec3 worldPos) {
+  if (uHeadColor.a < 0.5) return 1.0;
+  vec3 lp = (uLightViewProj * vec4(worldPos, 1.0)).xyz * 0.5 + 0.5;
+  if (!inLightBox(lp)) return 1.0;
+  const vec2 kTaps[8] = vec2[8](vec2(-0.61, 0.25), vec2(0.27, 0.69), vec2(0.78, -0.08),
+                                vec2(-0.18, -0.72), vec2(-1.35, -0.47), vec2(0.52, 1.38),
+                                vec2(1.31, -0.89), vec2(-0.85, 1.12));
+  float sum = 0.0;
+  for (int i = 0; i < 8; ++i)
+    sum += texture(uHeadShadow, lp + vec3(kTaps[i] * 1.1 * uLightRange.z, 0.0));
+  return sum / 8.0;
+}
 #endif  // DOM_GLSL

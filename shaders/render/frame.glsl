@@ -6,7 +6,7 @@
 layout(std140, binding = FRAME_UNIFORMS_BINDING) uniform FrameUniforms {
   mat4 uViewProj;
   mat4 uLightViewProj;  // world -> light clip space (orthographic)
-  mat4 uHeadRotation;   // the head pose's rotation (follow-hair offsets turn with it)
+  mat4 uHeadRotation;   // the head pose's rotation (the strands' frames turn with it)
   vec4 uEye;            // xyz: camera position
   vec4 uLightDir;       // xyz: direction the light travels (unit); w: intensity
   vec4 uLightColor;     // rgb; a: ambient
@@ -20,11 +20,14 @@ layout(std140, binding = FRAME_UNIFORMS_BINDING) uniform FrameUniforms {
   vec4 uViewport;       // width, height, 1/width, 1/height
   vec4 uLightRange;     // x: metres per unit of light depth; y: map size; z: 1/size;
                         // w: a texel's side (m)
-  vec4 uFollow;         // x: follow spread at the root (m); y: extra spread at the tip (x);
-                        // z: opacity scale of the shadow passes (1 / share of strands drawn)
-  ivec4 uCounts;        // x: subdivision; y: follow hairs per guide; z: point bits;
-                        // w: strand flags (1 groom colours, 2 groom thickness)
-  ivec4 uCounts2;       // x: subdivision of the shadow passes; y: head spheres
+  vec4 uChildren;       // x: children's distance from their guide at the root (m); y: clump,
+                        // the share of it closed at the tip; z: opacity scale of the shadow
+                        // passes (1 / share of strands drawn); w: noise (m)
+  vec4 uChildren2;      // x: length variation; y: share of children between two guides;
+                        // z: children each child drawn into the opacity maps stands for
+  ivec4 uCounts;        // x: subdivision; y: children per guide; z: a child's step in its
+                        // guide's spline points; w: strand flags (1 groom colours, 2 thickness)
+  ivec4 uCounts2;       // x: spline points; y: head spheres
   vec4 uWidth;          // x: strand width on screen (m; 0: uSpecStrength.z pixels instead);
                         // y: pixels per metre at view depth 1; z: the width (m) a strand
                         // stands for in the shadow maps

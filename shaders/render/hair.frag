@@ -1,6 +1,13 @@
 // Hair fragments: the colour shaded per vertex (hair.vert), and transparency as coverage.
 #include "render/frame.glsl"
 
+#ifdef CHILD_LINES
+// Children are depth-tested before shading against the head and the guides (drawn first,
+// with depth writes) and write no depth themselves: most of a head's children lie behind
+// its outer layer and cost no shading, and a child's uncovered samples hide nothing.
+layout(early_fragment_tests) in;
+#endif
+
 in vec3 vColor;
 in float vCoverage;
 flat in uint vStrand;

@@ -1,11 +1,14 @@
-// Hair geometry by vertex pulling: every vertex of every pass is computed from the
-// simulation's positions SSBO and gl_VertexID, with no vertex buffer and no CPU copy.
+// The drawn hair, shared by the render's compute passes and its vertex shaders.
 //
-// The index buffers (built once per groom) encode a vertex as
-//   guide << (pointBits + 1) | point << 1 | side
-// where `point` counts the spline points of the strand (subdivision per simulated segment)
-// and `side` is the ribbon edge. Follow hairs are instances of their guide: gl_InstanceID 0
-// is the guide itself, 1..followCount the render-only strands around it.
+// Once a frame, hair_points.comp evaluates every guide (simulated strand) as a Catmull-Rom
+// spline at render.subdivision points per simulated segment: position, tangent and a frame
+// that turns with the strand. hair_children.comp places each guide's render.children
+// children around those points (and the opacity each puts into the shadow maps). Once the
+// deep opacity maps are drawn, hair_shade.comp lights each guide point and
+// hair_child_shade.comp gives each child point its guide point's light, its own colour and
+// its coverage. The vertex shaders then only read: a guide's vertex id is a spline point's
+// index (times two plus the side for a ribbon), a child's its child point's, and a child's
+// vertex reads two vectors.
 #ifndef HAIR_COMMON_GLSL
 #define HAIR_COMMON_GLSL
 #include "render/frame.glsl"
@@ -18,15 +21,25 @@ layout(std430, binding = STRAND_FIRST_BINDING) readonly buffer StrandFirst { uin
 layout(std430, binding = STRAND_ATTRIBUTES_BINDING) readonly buffer StrandAttributes {
   vec4 strandAttributes[];  // rgb: groom colour; a: thickness relative to the groom's mean
 };
-
-struct HairVertex {
-  vec3 position;  // world
-  vec3 tangent;   // world, d position / d parameter (not unit)
-  float s;        // 0 at the root, 1 at the tip
-  uint guide;     // simulated strand
-  uint strand;    // drawn strand: guide * (followCount + 1) + follow
-  float side;     // -1 or +1: which edge of the ribbon
-};
+layout(std430, binding = SPLINE_FIRST_BINDING) readonly buffer SplineFirst { uint splineFirst[]; };
+layout(std430, binding = POINT_STRAND_BINDING) readonly buffer PointStrand { uint pointStrand[]; };
+// Per strand: [2s] xy: the way into the hair from the root in the frame's (normal, binormal),
+// z: 0, w: the hair's density around the root relative to the middle of the scalp (1 inside,
+// about 0.5 on a hairline or parting); [2s + 1] x: the neighbour strand (uint bits), y: the
+// roots' distance (m), z: the typical distance between neighbouring roots (m).
+layout(std430, binding = GUIDE_LINKS_BINDING) readonly buffer GuideLinks { vec4 guideLinks[]; };
+layout(std430, binding = GUIDE_POINTS_BINDING) buffer GuidePoints { vec4 guidePoints[]; };
+layout(std430, binding = GUIDE_TANGENTS_BINDING) buffer GuideTangents { vec4 guideTangents[]; };
+layout(std430, binding = GUIDE_FRAMES_BINDING) buffer GuideFrames { vec4 guideFrames[]; };
+layout(std430, binding = GUIDE_SHADE_BINDING) buffer GuideShade { vec4 guideShade[]; };
+// Per child point: xyz the point, w the opacity share it puts into the shadow maps (< 0: a
+// child thinned away); and its colour (half floats r g, b and coverage), drawn strand id.
+layout(std430, binding = CHILD_POINTS_BINDING) buffer ChildPoints { vec4 childPoints[]; };
+layout(std430, binding = CHILD_COLORS_BINDING) buffer ChildColors { uvec4 childColors[]; };
+// A child has a point every uCounts.z guide spline points: childFirst[s] is the first of
+// strand s's in one child's run, childStrand[q] the strand of run point q.
+layout(std430, binding = CHILD_FIRST_BINDING) readonly buffer ChildFirst { uint childFirst[]; };
+layout(std430, binding = CHILD_STRAND_BINDING) readonly buffer ChildStrand { uint childStrand[]; };
 
 // Uniform Catmull-Rom through p0..p3, evaluated between p1 and p2. Uniform rather than
 // centripetal because strain limiting keeps neighbouring segments within a few percent of
@@ -63,68 +76,84 @@ void basisAround(vec3 n, out vec3 b1, out vec3 b2) {
   b2 = vec3(b, sgn + n.y * n.y * a, -n.y);
 }
 
-// Where follow hair `follow` of guide `guide` sits relative to its guide. At rest it is a
-// random point of the disc of radius follow_spread in the plane normal to the guide's root
-// tangent (fixed by a hash: the same every frame and run), turned with the head, and widening
-// toward the tip by uFollow.y as real clumps do. As the guide bends, the offset turns by the
-// shortest rotation from the guide's rest tangent to its current one at the same point, so a
-// follow hair keeps its place beside the guide's curve instead of sliding along it.
-vec3 followOffset(uint guide, uint follow, uint first, uint n, uint seg, float u, vec3 tangent,
-                  float s) {
-  vec3 restRoot = normalize(restPositions[first + 1u].xyz - restPositions[first].xyz);
-  vec3 b1, b2;
-  basisAround(restRoot, b1, b2);
-  uint h = pcgHash(guide * 977u + follow * 7919u + 17u);
-  float r = uFollow.x * sqrt(hashToUnit(h));
-  float phi = 2.0 * kPi * hashToUnit(pcgHash(h));
-  mat3 headRotation = mat3(uHeadRotation);
-  vec3 d = headRotation * (r * (cos(phi) * b1 + sin(phi) * b2));
-  d *= 1.0 + uFollow.y * s;
+// Drawn strand ids, for per-strand variation and stochastic transparency: the guide's own
+// index, and a hash of guide and child for a child (the same whatever render.children is).
+uint guideStrandId(uint guide) { return guide; }
+uint childStrandId(uint guide, uint child) {
+  return pcgHash(guide * 977u + child * 7919u + 17u) | 0x80000000u;
+}
 
-  vec3 restP, restT;
-  strandSpline(true, first, n, seg, u, restP, restT);
-  vec3 a = normalize(headRotation * restT);
-  vec3 b = normalize(tangent);
-  float c = dot(a, b);
-  // Rodrigues' formula for the rotation taking a to b. It is undefined where the strand has
-  // turned right round (c -> -1); there the rigid offset is blended in instead.
-  if (c > -0.9) {
-    vec3 v = cross(a, b);
-    vec3 rotated = d * c + cross(v, d) + v * (dot(v, d) / (1.0 + c));
-    d = mix(d, rotated, smoothstep(-0.9, -0.5, c));
+// A strand's width relative to the nominal one: the groom's thickness where it has one,
+// thinner toward the tip, as a hair is, and thinner on a hairline or a parting (the density
+// there). Every pass uses it: the width on screen and the opacity put into the shadow maps.
+float strandWidthFactor(uint guide, float s) {
+  float thickness = (uCounts.w & 2) != 0 ? strandAttributes[guide].a : 1.0;
+  float edge = mix(0.5, 1.0, smoothstep(0.45, 0.9, guideLinks[2u * guide].w));
+  return thickness * edge * mix(1.0, 0.5, smoothstep(0.7, 1.0, s));
+}
+
+// The strand's colour before light: root-to-tip gradient, per-strand brightness variation,
+// the groom's colour if it has one.
+vec3 hairAlbedo(uint guide, uint strandId, float s) {
+  vec3 root = uRootColor.rgb, tip = uTipColor.rgb;
+  if ((uCounts.w & 1) != 0) {
+    // A groom colour is the strand's colour; the preset's gradient keeps its darker root.
+    vec3 c = strandAttributes[guide].rgb;
+    float lr = dot(root, vec3(0.3, 0.59, 0.11)), lt = dot(tip, vec3(0.3, 0.59, 0.11));
+    root = c * (lt > 0.0 ? clamp(lr / lt, 0.0, 1.0) : 1.0);
+    tip = c;
   }
-  return d;
+  float variation = 1.0 + uRootColor.a * (2.0 * hashToUnit(pcgHash(strandId)) - 1.0);
+  return mix(root, tip, smoothstep(0.0, 1.0, s)) * variation;
 }
 
-// A strand's width relative to the nominal one: the groom's thickness where it has one, and
-// thinner toward the tip, as a hair is. Every pass uses it: the ribbons' width on screen and
-// the opacity a strand puts into the shadow maps.
-float strandWidthFactor(HairVertex v) {
-  float thickness = (uCounts.w & 2) != 0 ? strandAttributes[v.guide].a : 1.0;
-  return thickness * mix(1.0, 0.5, smoothstep(0.7, 1.0, v.s));
+// Child item j (hair_children.comp's layout): child k of guide g at its child point p is
+// item childFirst(g) * children + k * childCount(g) + p.
+struct ChildItem {
+  uint guide, child, point;  // point: the child's, from its root
+  uint first, count;         // the guide's spline points
+  uint id;                   // drawn strand id
+};
+ChildItem childItem(uint j) {
+  ChildItem c;
+  uint children = uint(uCounts.y);
+  c.guide = childStrand[j / children];
+  uint cFirst = childFirst[c.guide];
+  uint cCount = childFirst[c.guide + 1u] - cFirst;
+  uint local = j - cFirst * children;
+  c.child = local / cCount;
+  c.point = local - c.child * cCount;
+  c.first = splineFirst[c.guide];
+  c.count = splineFirst[c.guide + 1u] - c.first;
+  c.id = childStrandId(c.guide, c.child);
+  return c;
 }
-
-// Decodes the vertex and evaluates its strand. `subdivision` is the pass's spline segments
-// per simulated segment.
-HairVertex hairVertex(int subdivision) {
-  HairVertex v;
-  uint id = uint(gl_VertexID);
-  uint pointBits = uint(uCounts.z);
-  v.side = (id & 1u) == 1u ? 1.0 : -1.0;
-  uint point = (id >> 1u) & ((1u << pointBits) - 1u);
-  v.guide = id >> (pointBits + 1u);
-  uint follow = uint(gl_InstanceID);
-  v.strand = v.guide * uint(uCounts.y + 1) + follow;
-
-  uint first = strandFirst[v.guide];
-  uint n = strandFirst[v.guide + 1u] - first;
-  uint sub = uint(subdivision);
-  uint seg = min(point / sub, n - 2u);
-  float u = float(point - seg * sub) / float(sub);
-  strandSpline(false, first, n, seg, u, v.position, v.tangent);
-  v.s = (float(seg) + u) / float(n - 1u);
-  if (follow > 0u)
-    v.position += followOffset(v.guide, follow, first, n, seg, u, v.tangent, v.s);
-  return v;
+// The guide's spline point (fractional, from its first) that a child's point sits beside:
+// every uCounts.z-th, and a child is up to uChildren2.x shorter than its guide.
+float childGuidePoint(ChildItem c) {
+  return float(c.point * uint(uCounts.z)) *
+         (1.0 - uChildren2.x * hashToUnit(pcgHash(c.id + 1u)));
+}
+// The opacity share a strand puts into the shadow maps per fragment, at a point where its
+// tangent is `tangent` (see hair.vert's SHADOW_PASS).
+float shadowShare(vec3 tangent, uint guide, float s) {
+  // A line one texel wide lights one texel per step along its major axis: per unit of length
+  // it lights max(|dx|, |dy|) / texel texels, where the strand covers width x length. Each
+  // fragment then stands for width / (texel max(|dx|, |dy|)) of its texel, and adding the
+  // strand's opacity times that share makes the opacity per square metre of the light's view
+  // the hair's own, whatever the map's resolution. (An opacity per fragment alone would
+  // darken the shadows by the texel's side: four times at 256 texels as at 1024.) The light
+  // is orthographic, so the tangent's direction in its view is the same in clip space.
+  vec2 d = (uLightViewProj * vec4(tangent, 0.0)).xy;
+  float len = length(d);
+  float major = len > 1e-12 ? max(abs(d.x), abs(d.y)) / len : 1.0;
+  return uWidth.z * strandWidthFactor(guide, s) / (uLightRange.w * major);
+}
+// A strand's width on screen (pixels) at clip-space point `c`: render.strand_width pixels,
+// or render.strand_width_m metres seen from the camera (pixels per metre at depth 1 over
+// the depth, clip w: the view depth in a perspective, 1 in an orthographic view).
+float screenWidth(vec4 c, uint guide, float s) {
+  return strandWidthFactor(guide, s) *
+         (uWidth.x > 0.0 ? uWidth.x * uWidth.y / max(c.w, 1e-6) : uSpecStrength.z);
 }
 #endif  // HAIR_COMMON_GLSL

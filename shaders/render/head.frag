@@ -24,7 +24,7 @@ void main() {
   // Lambert wrapped a little, as skin scatters light past the terminator.
   float wrap = 0.2;
   float diffuse = max((dot(N, L) + wrap) / (1.0 + wrap), 0.0);
-  float visibility = hairTransmittanceSoft(vPosition) * headVisibility(vPosition);
+  float visibility = hairTransmittanceSoft(vPosition) * headVisibilitySoft(vPosition);
   vec3 H = normalize(L + V);
   float spec = 0.04 * pow(max(dot(N, H), 0.0), 40.0);
   // Hemispherical ambient: more from above than from the ground.

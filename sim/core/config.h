@@ -87,9 +87,6 @@ struct HairstyleConfig {
   glm::vec3 importRotation{0.0f};
   glm::vec3 importOffset{0.0f};
   float resampleTolerance = 0.002f;  // metres; 0 keeps the file's points
-  // Render-only strands that follow each simulated one.
-  int followCount = 0;
-  float followSpread = 0.004f;
 };
 
 struct HeadConfig {

@@ -11,9 +11,6 @@ bool paperModel(const Config& c) {
 bool separates(const Config& c) {
   return c.hairstyle.separatePasses > 0;
 }
-bool hasFollowHairs(const Config& c) {
-  return c.hairstyle.followCount > 0;
-}
 bool calibratedModel(const Config& c) {
   return c.sim.stiffnessModel == StiffnessModel::Calibrated;
 }
@@ -138,13 +135,6 @@ std::vector<Param<Config>> build() {
           "Largest distance (m) the resampled strand may stray from the file's curve; 0 keeps the "
           "file's points.",
           Effect::Rebuild),
-      param("hairstyle.follow_count", "Follow hairs", "Hairstyle|Follow", &Config::hairstyle,
-            &HairstyleConfig::followCount, 0, 64,
-            "Render-only strands drawn around each simulated strand.", Effect::Render),
-      param("hairstyle.follow_spread", "Follow spread", "Hairstyle|Follow", &Config::hairstyle,
-            &HairstyleConfig::followSpread, 0.0, 0.05,
-            "Distance (m) of follow hairs from their guide at the root.", Effect::Render)
-          .onlyWhen(hasFollowHairs),
       param("head.mesh", "Head mesh", "Head", &Config::head, &HeadConfig::mesh, 0, 0,
             "A Wavefront OBJ head (metres, head frame: y up, face +z, crown about 0.1 m above the "
             "origin; closed) to collide with and draw when collision.head_shape is sdf; empty = "

@@ -54,34 +54,33 @@ TEST_CASE("every render parameter changes the picture", "[params][render]") {
       if (!sameImage(draw(v, interactive), interactive ? fast : full)) return;
     noEffect.emplace_back(key);
   };
+  // A parameter that does something only on another preset (the children's own settings)
+  // is checked on that one: `base` with the parameter applying, and its picture.
+  Preset withChildren = preset;
+  withChildren.view.render.children = 3;
+  const test::Image childPicture = draw(withChildren, false);
   for (const Param<ViewConfig>& p : viewParams()) {
     if (p.effect != Effect::Render) continue;
+    const bool own = p.applies(preset.view);
+    if (!own) REQUIRE(p.applies(withChildren.view));
+    const Preset& base = own ? preset : withChildren;
     std::vector<Preset> variants;
-    for (const ViewConfig& v : test::paramVariants(p, preset.view)) {
-      Preset changed = preset;
+    for (const ViewConfig& v : test::paramVariants(p, base.view)) {
+      Preset changed = base;
       changed.view = v;
       variants.push_back(changed);
     }
-    check(p.key, variants, p.group == "Rendering|Interactive");
-  }
-  // The follow hairs' own settings on a preset that has follow hairs.
-  Preset withFollow = preset;
-  withFollow.scene.hairstyle.followCount = 3;
-  const test::Image followed = draw(withFollow, false);
-  for (const Param<Config>& p : simParams()) {
-    if (p.effect != Effect::Render) continue;
-    if (!p.applies(preset.scene)) {
-      REQUIRE(p.applies(withFollow.scene));
-      tested.emplace_back(p.key);
-      bool changed = false;
-      for (const Config& c : test::paramVariants(p, withFollow.scene)) {
-        Preset v = withFollow;
-        v.scene = c;
-        changed = changed || !sameImage(draw(v, false), followed);
-      }
-      if (!changed) noEffect.emplace_back(p.key);
+    if (own) {
+      check(p.key, variants, p.group == "Rendering|Interactive");
       continue;
     }
+    tested.emplace_back(p.key);
+    bool changed = false;
+    for (const Preset& v : variants) changed = changed || !sameImage(draw(v, false), childPicture);
+    if (!changed) noEffect.emplace_back(p.key);
+  }
+  for (const Param<Config>& p : simParams()) {
+    if (p.effect != Effect::Render) continue;
     std::vector<Preset> variants;
     for (const Config& c : test::paramVariants(p, preset.scene)) {
       Preset changed = preset;

@@ -541,6 +541,54 @@ TEST_CASE("panels: presets are found from the source tree", "[window][panels]") 
                     [](const fs::path& p) { return p.filename() == "paper_fig1_straight.json"; }));
 }
 
+TEST_CASE("panels: the layout tiles the window, no panel over another, the middle left free",
+          "[window][panels]") {
+  struct Size {
+    float width, height, font;
+  };
+  // The default window (1280x720) and smaller and larger ones, at the viewer's font and at
+  // Dear ImGui's own (13 pixels, where DejaVu Sans is missing); 2560x1440 unfolds Help.
+  const std::vector<Size> sizes = {{1280, 720, 15}, {1600, 900, 15},  {1920, 1080, 15},
+                                   {1024, 640, 15}, {2560, 1440, 15}, {1280, 720, 13},
+                                   {1024, 640, 13}};
+  for (const Size& s : sizes) {
+    INFO(s.width << "x" << s.height << ", font " << s.font);
+    const PanelLayout l = panelLayout(s.width, s.height, s.font);
+    const std::vector<std::pair<const char*, PanelRect>> rects = {{"parameters", l.parameters},
+                                                                  {"stats", l.stats},
+                                                                  {"help", l.help},
+                                                                  {"timeline", l.timeline},
+                                                                  {"view", l.view}};
+    for (const auto& [name, r] : rects) {
+      INFO(name << " at " << r.x << ", " << r.y << ", " << r.width << " x " << r.height);
+      CHECK(r.width > 0.0f);
+      CHECK(r.height > 0.0f);
+      CHECK(r.x >= 0.0f);
+      CHECK(r.y >= 0.0f);
+      CHECK(r.x + r.width <= s.width);
+      CHECK(r.y + r.height <= s.height);
+    }
+    for (size_t i = 0; i < rects.size(); ++i)
+      for (size_t j = 0; j < i; ++j) {
+        const PanelRect &a = rects[i].second, &b = rects[j].second;
+        INFO(rects[i].first << " and " << rects[j].first);
+        const bool apart = a.x + a.width <= b.x || b.x + b.width <= a.x || a.y + a.height <= b.y ||
+                           b.y + b.height <= a.y;
+        CHECK(apart);
+      }
+    // The hair's part: the window's centre, at least a third of its width and half its height.
+    CHECK(l.view.x < 0.5f * s.width);
+    CHECK(l.view.x + l.view.width > 0.5f * s.width);
+    CHECK(l.view.y < 0.5f * s.height);
+    CHECK(l.view.y + l.view.height > 0.5f * s.height);
+    CHECK(l.view.width >= s.width / 3.0f);
+    CHECK(l.view.height >= 0.5f * s.height);
+    // Help's title bar at least; unfolded only where the window is large.
+    CHECK(l.help.height >= s.font + 6.0f);
+    CHECK(l.helpOpen == (s.width >= 2560.0f));
+  }
+}
+
 TEST_CASE("camera control: orbit, zoom and head drag stay in range and keep the pivot",
           "[window][camera]") {
   CameraConfig cam;
@@ -616,7 +664,7 @@ TEST_CASE("window: interactive quality while simulating, full when still and for
   std::unique_ptr<Viewer> v = makeViewer();
   Preset c = defaultPreset();
   c.scene.hairstyle.strands = 400;
-  c.scene.hairstyle.followCount = 3;
+  c.view.render.children = 3;
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
   REQUIRE(v->preset().view.render.interactive);
