@@ -63,7 +63,16 @@ size_t editDistance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
+// Keys that were renamed: the message names the new one.
+std::string movedKey(const std::string& key) {
+  if (key == "hairstyle.follow_count") return "render.children";
+  if (key == "hairstyle.follow_spread") return "render.child_radius";
+  return {};
+}
+
 std::string unknownKeyMessage(const std::string& prefix, const std::string& key) {
+  const std::string moved = movedKey(prefix.empty() ? key : prefix + "." + key);
+  if (!moved.empty()) return "no longer read: it is now " + moved;
   std::vector<std::string> keys = childKeys(prefix);
   std::string msg = "unknown key";
   std::string best;

@@ -49,7 +49,7 @@ static_assert(sizeof(FrameUniforms) == 3 * 64 + 16 * 16);
 // without turning the hair into straws.
 constexpr float kMaxWidthScale = 2.0f;
 // Children drawn into the deep opacity maps per guide, each standing for children / this many.
-constexpr int kShadowChildren = 2;
+constexpr int kShadowChildren = 1;
 // The width (m) a strand drawn render.strand_width pixels wide stands for in the shadow maps,
 // where a width in pixels means nothing: a texel's side of the default preset's 1,024-texel
 // map, so that preset's shadows are as dark as when every fragment counted in full. With
@@ -125,12 +125,16 @@ Selection select(std::size_t guides, int children, float share) {
 }
 
 // One invocation per item, in work groups of 64 (hair_compute.glsl), over two dimensions
-// where one would pass the 65,535 groups a dimension may have.
-void dispatchOver(const gl::Program& program, std::size_t items) {
+// where one would pass the 65,535 groups a dimension may have; the item count in uItems for
+// the passes that have it; what it wrote visible to the passes after it.
+void dispatchOver(gl::Program& program, std::size_t items) {
   const std::size_t groups = (items + 63) / 64;
   if (groups == 0) return;
+  program.use();
+  program.setUniform("uItems", unsigned(items));
   const std::size_t wide = std::min<std::size_t>(groups, 65535);
   program.dispatch(GLuint(wide), GLuint((groups + wide - 1) / wide));
+  gl::memoryBarrier(gl::Barrier::Storage);
 }
 
 }  // namespace
@@ -462,14 +466,8 @@ void HairRenderer::render(const FrameView& frame) {
   clock_.begin("hair");
   if (drawnStrands_ > 0) {
     dispatchOver(p.shade, geometry_->splinePoints());
-    gl::memoryBarrier(gl::Barrier::Storage);
-    if (drawnChildren > 0) {
-      const std::size_t items = geometry_->childPoints() * std::size_t(children);
-      p.childShade.use();
-      p.childShade.setUniform("uItems", unsigned(items));
-      dispatchOver(p.childShade, items);
-      gl::memoryBarrier(gl::Barrier::Storage);
-    }
+    if (drawnChildren > 0)
+      dispatchOver(p.childShade, geometry_->childPoints() * std::size_t(children));
     gl::applyDrawState({.depthTest = true});
     if (look.strandWidthM <= 0.0f && look.strandWidth * drawn.widthScale * childWidth < 1.0f) {
       p.thinHair.use();
@@ -505,14 +503,7 @@ void HairRenderer::render(const FrameView& frame) {
 
 void HairRenderer::makePoints(Programs& p, int children) {
   dispatchOver(p.points, geometry_->splinePoints());
-  gl::memoryBarrier(gl::Barrier::Storage);
-  if (children > 0) {
-    const std::size_t items = geometry_->childPoints() * std::size_t(children);
-    p.children.use();
-    p.children.setUniform("uItems", unsigned(items));
-    dispatchOver(p.children, items);
-    gl::memoryBarrier(gl::Barrier::Storage);
-  }
+  if (children > 0) dispatchOver(p.children, geometry_->childPoints() * std::size_t(children));
 }
 
 std::vector<StageTime> HairRenderer::stageTimes() {

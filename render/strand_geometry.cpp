@@ -252,7 +252,6 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
     for (std::uint32_t p = first; p + 1 < first + points; ++p) {
       const std::uint32_t a = p << 1, b = (p + 1) << 1;
       strip.insert(strip.end(), {a, a | 1u, b, b, a | 1u, b | 1u});
-      lines.insert(lines.end(), {p, p + 1});
     }
     std::uint32_t last = first;
     for (std::uint32_t p = stride; p < points; p += stride) {
@@ -260,6 +259,9 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
       last = first + p;
     }
     if (last != first + points - 1) shadow.insert(shadow.end(), {last, first + points - 1});
+    // Guides thinner than a pixel take the shadow passes' step too: two points a simulated
+    // segment, as a line a pixel wide shows no corners at that.
+    lines.insert(lines.end(), shadow.begin() + std::ptrdiff_t(shadowPrefix_.back()), shadow.end());
     stripPrefix_.push_back(strip.size());
     linePrefix_.push_back(lines.size());
     shadowPrefix_.push_back(shadow.size());

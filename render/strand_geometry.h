@@ -55,7 +55,7 @@ class StrandGeometry {
   // at the shadow passes' step.
   void drawRibbons(std::size_t guides) const;
   void drawGuideLines(std::size_t guides) const;
-  // The same as line segments through every spline point: guides thinner than a pixel.
+  // Guides thinner than a pixel: line segments at the shadow passes' step.
   void drawThinGuides(std::size_t guides) const;
   // The first `children` children of every guide: line segments (the same in the shadow
   // passes and the picture).

@@ -4,7 +4,7 @@
 # hairstyle.follow_count, its presets from OLD_PRESETS) and this build (render.children).
 # The default preset at 1280x720, FRAMES frames; each cell the lowest mean of REPS runs (the
 # machine is shared: the lowest is the least disturbed). Also the simulation's ms a frame,
-# which children must not change.
+# which children must not change. COUNTS: the hairs a guide to run (default "0 4 6 8 16").
 #   scripts/bench_children.sh OLD_BIN NEW_BIN [FRAMES] [REPS]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -20,19 +20,19 @@ run() {  # run LABEL BIN PRESET KEY N
 }
 echo "Load before: $(uptime | sed 's/.*load average: //')"
 for rep in $(seq "$reps"); do
-  for n in 0 4 8 16; do
+  for n in ${COUNTS:-0 4 6 8 16}; do
     run "old$n" "$old" "$old_presets/default.json" "$old_key" "$n"
     run "new$n" "$new" "$root/presets/default.json" render.children "$n"
   done
 done
-/usr/bin/python3 - "$tmp" "$reps" <<'PY'
+/usr/bin/python3 - "$tmp" "$reps" ${COUNTS:-0 4 6 8 16} <<'PY'
 import glob, json, sys
-tmp, reps = sys.argv[1], int(sys.argv[2])
-stages = ["strands", "shadow", "head", "hair", "post"]
+tmp, reps, counts = sys.argv[1], int(sys.argv[2]), [int(n) for n in sys.argv[3:]]
+stages = ["strands", "shadow", "head", "hair", "children", "post"]
 print("| binary | hairs a guide | drawn | render ms | " + " | ".join(stages) + " | sim ms |")
 print("|---|---|---|---|" + "---|" * len(stages) + "---|")
 for label, name in (("old", "before"), ("new", "after")):
-    for n in (0, 4, 8, 16):
+    for n in counts:
         runs = [json.load(open(f)) for f in sorted(glob.glob(f"{tmp}/{label}{n}.*.json"))]
         best = lambda key: min(r["ms"].get(key, 0.0) for r in runs)
         cells = [min(r["ms"]["render_stages"].get(s, 0.0) for r in runs) for s in stages]

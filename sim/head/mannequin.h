@@ -15,8 +15,8 @@ namespace csm {
 double mannequinDistance(const glm::dvec3& p);
 // The mannequin's box and its field sampled at 4 mm.
 const DistanceGrid& mannequinGrid();
-// Its surface: marching tetrahedra on the field sampled at 2.75 mm (finer than mannequinGrid,
-// for the features of the face), vertices on the exact zero level, normals its gradient.
+// Its surface (marching tetrahedra on mannequinGrid, vertices on the exact zero level, normals
+// its gradient).
 const SurfaceMesh& mannequinMesh();
 // Where the scalp is measured from on the mannequin: directions from here name scalp points.
 inline constexpr glm::dvec3 kMannequinScalpCentre{0.0, 0.0, -0.008};

@@ -88,6 +88,9 @@ TEST_CASE("bad presets are refused with the file and the JSON path") {
       parseErrors(R"({"sim": {"stifness_window": 3}})"),
       Catch::Contains("sim.stifness_window: unknown key (did you mean \"stiffness_window\"?)"));
   CHECK_THAT(parseErrors(R"({"sim": {"stifness_window": 3}})"), Catch::Contains("substeps"));
+  // A renamed key says where it went.
+  CHECK_THAT(parseErrors(R"({"hairstyle": {"follow_count": 4}})"),
+             Catch::Contains("hairstyle.follow_count: no longer read: it is now render.children"));
   CHECK_THAT(parseErrors(R"({"collision": {"mode": "sometimes"}})"),
              Catch::Contains("collision.mode: \"sometimes\" is not one of off|head|strands"));
   CHECK_THAT(parseErrors("{\n  \"sim\": {\"dt\": 0.01,,}\n}"), Catch::Contains("bad.json:2:"));

@@ -313,13 +313,14 @@ TEST_CASE(
   INFO("share of the scene area that changes when the hair goes: " << diff);
   CHECK(diff > 0.03);
 
-  // Panels: the title bars of Parameters (top left) and Stats (top right) in ImGui's colours.
+  // Panels: the title bars of Parameters (top left) and Stats (top right, under Help folded
+  // to its title bar: panelLayout) in ImGui's colours.
   const ImGuiStyle& style = ImGui::GetStyle();
   const auto title = rgb8(style.Colors[ImGuiCol_TitleBg]);
   const auto titleActive = rgb8(style.Colors[ImGuiCol_TitleBgActive]);
   auto isTitle = [&](const uint8_t* p) { return near(p, title, 3) || near(p, titleActive, 3); };
   const double left = share(img, 200, 2, 380, 14, isTitle);
-  const double right = share(img, img.width - 120, 2, img.width - 30, 14, isTitle);
+  const double right = share(img, img.width - 120, 26, img.width - 30, 36, isTitle);
   INFO("title bar share: left " << left << ", right " << right);
   CHECK(left > 0.9);
   CHECK(right > 0.9);
