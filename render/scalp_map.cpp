@@ -11,9 +11,11 @@
 namespace csm {
 namespace {
 
-constexpr int kSize = 128;  // about 4 mm a texel on the mannequin's scalp
+constexpr int kSize = 256;  // about 2 mm a texel on the mannequin's scalp
+// Passes of a 5-texel box per axis: about a Gaussian of 2 sqrt(passes) texels (8 mm).
+constexpr int kBlurPasses = 8;
 
-// Two passes of a 5x5 box over each layer: roots a few millimetres apart merge into one
+// kBlurPasses of a 5x5 box over each layer: roots a few millimetres apart merge into one
 // scalp.
 template <class T>
 void blur(std::vector<T>& v, int layers) {
@@ -21,7 +23,7 @@ void blur(std::vector<T>& v, int layers) {
   auto at = [](int l, int y, int x) {
     return (std::size_t(l) * kSize + std::size_t(y)) * kSize + std::size_t(x);
   };
-  for (int pass = 0; pass < 2; ++pass)
+  for (int pass = 0; pass < kBlurPasses; ++pass)
     for (int axis = 0; axis < 2; ++axis) {
       for (int l = 0; l < layers; ++l)
         for (int y = 0; y < kSize; ++y)
@@ -80,8 +82,9 @@ ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres) 
   blur(count, layers);
   if (groomColours) blur(colour, layers);
   // Coverage against the typical density of roots where hair grows (the median over texels
-  // holding a tenth of the densest one or more): full inside, fading over the blur's width
-  // (about a centimetre) inside a hairline or a parting, as the hair there thins; none outside.
+  // holding a tenth of the densest one or more): full inside, none where the density falls
+  // under 0.4 of it, so the first few millimetres inside a hairline or a parting show the
+  // strands over skin, as the hair there thins, and the paint fades in behind them.
   std::vector<float> grown;
   const float densest = count.empty() ? 0.0f : *std::max_element(count.begin(), count.end());
   for (float c : count)
@@ -96,7 +99,7 @@ ScalpTexels scalpTexels(const Groom& groom, const std::vector<Sphere>& spheres) 
   out.layers = layers;
   out.rgba.resize(count.size() * 4);
   for (std::size_t i = 0; i < count.size(); ++i) {
-    const float t = std::clamp((count[i] / typical - 0.25f) / 0.5f, 0.0f, 1.0f);
+    const float t = std::clamp((count[i] / typical - 0.4f) / 0.6f, 0.0f, 1.0f);
     const float coverage = t * t * (3.0f - 2.0f * t);
     const glm::vec3 c = groomColours && count[i] > 0.0f ? colour[i] / count[i] : glm::vec3(0.0f);
     out.rgba[i * 4 + 0] = unorm8(c.r);
