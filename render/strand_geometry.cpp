@@ -14,7 +14,6 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "gl/debug.h"
 #include "gl/draw.h"
 #include "render/bindings.h"
 
