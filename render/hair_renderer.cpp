@@ -288,8 +288,8 @@ ShadowMaps& HairRenderer::shadowFor(int size) {
 }
 
 void HairRenderer::updateUniforms(const FrameView& frame, int children, int drawnChildren,
-                                  float widthScale, float shadowOpacityScale, int drawnWidth,
-                                  int drawnHeight) {
+                                  float widthScale, float childWidth, float shadowOpacityScale,
+                                  int drawnWidth, int drawnHeight) {
   const ViewConfig& look = *frame.look;
   const RenderConfig& r = look.render;
   const float aspect = float(frame.width) / float(std::max(frame.height, 1));
@@ -342,8 +342,10 @@ void HairRenderer::updateUniforms(const FrameView& frame, int children, int draw
   // A width in metres: pixels per metre at view depth 1 from the projection's vertical scale
   // (1 / tan(fov / 2) for the orbit camera), so a strand narrows with distance as it would.
   const float widthM = std::max(r.strandWidthM, 0.0f);
+  // The shadows take each strand's width narrowed as the picture's (children: 1 / sqrt(1 + n)),
+  // not the share's widening, which the opacity scale makes up for.
   u.width = glm::vec4(widthM * widthScale, 0.5f * proj[1][1] * float(drawnHeight),
-                      widthM > 0.0f ? widthM : kShadowWidthOfPixelStrands, 0.0f);
+                      (widthM > 0.0f ? widthM : kShadowWidthOfPixelStrands) * childWidth, 0.0f);
   frameUniforms_.setSubData(0, sizeof(u), &u);
 }
 
@@ -391,8 +393,8 @@ void HairRenderer::render(const FrameView& frame) {
   drawnStrands_ = frame.positionBuffer != 0 ? drawn.guides * std::size_t(drawn.instances) : 0;
   const float childWidth = 1.0f / std::sqrt(float(1 + children));
   const int drawnChildren = drawnStrands_ > 0 ? drawn.instances - 1 : 0;
-  updateUniforms(frame, children, drawnChildren, drawn.widthScale * childWidth, drawn.opacityScale,
-                 drawnWidth, drawnHeight);
+  updateUniforms(frame, children, drawnChildren, drawn.widthScale * childWidth, childWidth,
+                 drawn.opacityScale, drawnWidth, drawnHeight);
 
   // The solver may have written the positions from a compute shader.
   gl::memoryBarrier(gl::Barrier::Storage);
@@ -403,7 +405,7 @@ void HairRenderer::render(const FrameView& frame) {
   Programs& p = *programs;
   if (drawnStrands_ > 0) {
     clock_.begin("strands");
-    makePoints(p, children);
+    makePoints(p, drawnChildren > 0 ? children : 0);
   }
   // The guides' lines, and in the opacity pass a few ranks of children standing for all
   // (uChildren2.z): the maps are smooth, and children lie within a layer of their guide.

@@ -82,7 +82,7 @@ class HairRenderer final : public Renderer {
   // DrawAmount::resolution), whose pixels set the strands' widths.
   // `children`: children laid out per guide; `drawnChildren` of them drawn.
   void updateUniforms(const FrameView& frame, int children, int drawnChildren, float widthScale,
-                      float shadowOpacityScale, int drawnWidth, int drawnHeight);
+                      float childWidth, float shadowOpacityScale, int drawnWidth, int drawnHeight);
   // The compute passes: every guide's spline points, then `children` children per guide.
   void makePoints(Programs& p, int children);
 

@@ -6,7 +6,7 @@
 #include "render/hair_common.glsl"
 #include "render/hair_compute.glsl"
 
-uniform uint uItems;  // spline points x children
+uniform uint uItems;  // a child's points over all guides, times the children
 
 void main() {
   uint j = invocationIndex();

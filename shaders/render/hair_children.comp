@@ -18,7 +18,7 @@
 #include "render/hair_common.glsl"
 #include "render/hair_compute.glsl"
 
-uniform uint uItems;  // spline points x children
+uniform uint uItems;  // a child's points over all guides, times the children
 
 float smoothNoise(float x, uint seed) {
   float i = floor(x);

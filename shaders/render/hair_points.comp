@@ -20,8 +20,11 @@ void main() {
   strandSpline(false, first, n, seg, u, p, dp);
   float s = (float(seg) + u) / float(n - 1u);
 
+  // The root's rest direction (a root segment of zero length, which the solver allows, takes
+  // straight down: a frame of NaN would give every child of the guide NaN points).
+  vec3 root = restPositions[first + 1u].xyz - restPositions[first].xyz;
   vec3 b1, b2;
-  basisAround(normalize(restPositions[first + 1u].xyz - restPositions[first].xyz), b1, b2);
+  basisAround(dot(root, root) > 1e-24 ? normalize(root) : vec3(0.0, -1.0, 0.0), b1, b2);
   mat3 headRotation = mat3(uHeadRotation);
   vec3 normal = headRotation * b1;
   vec3 restP, restT;
@@ -37,7 +40,9 @@ void main() {
     normal = mix(normal, turned, smoothstep(-0.9, -0.5, c));
   }
   normal -= dot(normal, b) * b;
-  normal = dot(normal, normal) > 1e-12 ? normalize(normal) : b1;
+  // Where the strand runs along the frame's normal, any perpendicular will do.
+  vec3 other = abs(b.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 0.0, 1.0);
+  normal = dot(normal, normal) > 1e-12 ? normalize(normal) : normalize(cross(b, other));
 
   guidePoints[i] = vec4(p, s);
   guideTangents[i] = vec4(dp, 0.0);
