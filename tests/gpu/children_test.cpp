@@ -176,8 +176,8 @@ TEST_CASE("Children: the default preset's hair covers the scalp seen from above"
   // a disc of 60 % of the scalp's radius around the crown (the parting included), the share
   // of pixels the hair changes at all against the same frame drawn without strands (whose
   // scalp is painted in the roots' colour where hair grows, so dark hair over it changes a
-  // pixel by little: any change counts). Measured 0.94 with children, 0.96 with the guides
-  // alone drawn wider: thinner strands over the painted scalp change fewer pixels by much.
+  // pixel by little: any change counts). Measured 0.971 with children, 0.968 with the guides
+  // alone (drawn wider).
   Preset c = test::presetConfig("default.json", 3000);
   REQUIRE(c.view.render.children >= 6);
   c.view.camera.target = {0.0f, 0.1f, -0.01f};
@@ -211,6 +211,6 @@ TEST_CASE("Children: the default preset's hair covers the scalp seen from above"
   };
   const double withChildren = coverage(hair), withoutChildren = coverage(guides);
   INFO("crown coverage: guides alone " << withoutChildren << ", with children " << withChildren);
-  CHECK(withChildren > 0.92);
-  CHECK(withoutChildren > 0.92);
+  CHECK(withChildren > 0.95);
+  CHECK(withoutChildren > 0.95);
 }
