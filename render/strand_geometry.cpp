@@ -238,9 +238,8 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
 
   order_ = drawOrder(groom);
   guides_ = order_.size();
-  std::vector<std::uint32_t> strip, lines, shadow;
+  std::vector<std::uint32_t> strip, shadow;
   stripPrefix_.assign(1, 0);
-  linePrefix_.assign(1, 0);
   shadowPrefix_.assign(1, 0);
   const std::uint32_t stride = std::uint32_t(shadowStride_);
   // Independent triangles and line segments, not strips with primitive restart: a software
@@ -258,22 +257,16 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
       last = first + p;
     }
     if (last != first + points - 1) shadow.insert(shadow.end(), {last, first + points - 1});
-    // Guides thinner than a pixel take the shadow passes' step too: two points a simulated
-    // segment, as a line a pixel wide shows no corners at that.
-    lines.insert(lines.end(), shadow.begin() + std::ptrdiff_t(shadowPrefix_.back()), shadow.end());
     stripPrefix_.push_back(strip.size());
-    linePrefix_.push_back(lines.size());
     shadowPrefix_.push_back(shadow.size());
   }
-  for (auto* v : {&strip, &lines, &shadow})
+  for (auto* v : {&strip, &shadow})
     if (v->empty()) v->push_back(0);
   stripIndices_ = gl::Buffer(strip, GL_STATIC_DRAW);
-  lineIndices_ = gl::Buffer(lines, GL_STATIC_DRAW);
   shadowIndices_ = gl::Buffer(shadow, GL_STATIC_DRAW);
-  for (gl::VertexArray* vao : {&stripVao_, &lineVao_, &shadowVao_, &childVao_})
+  for (gl::VertexArray* vao : {&stripVao_, &shadowVao_, &childVao_})
     if (vao->id() == 0) *vao = gl::VertexArray();
   stripVao_.setIndexBuffer(stripIndices_);
-  lineVao_.setIndexBuffer(lineIndices_);
   shadowVao_.setIndexBuffer(shadowIndices_);
   children_ = -1;
 
@@ -366,7 +359,9 @@ void StrandGeometry::drawRibbons(std::size_t guides) const {
 }
 
 void StrandGeometry::drawThinGuides(std::size_t guides) const {
-  draw(lineVao_, linePrefix_, GL_LINES, guides);
+  // The shadow passes' lines: two points a simulated segment, where a line a pixel wide
+  // shows no corners.
+  draw(shadowVao_, shadowPrefix_, GL_LINES, guides);
 }
 
 void StrandGeometry::drawGuideLines(std::size_t guides) const {

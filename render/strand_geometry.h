@@ -101,12 +101,10 @@ class StrandGeometry {
       childFirst_{gl::NoCreate}, childStrand_{gl::NoCreate};
   gl::Buffer guidePoints_{gl::NoCreate}, guideTangents_{gl::NoCreate}, guideFrames_{gl::NoCreate},
       guideShade_{gl::NoCreate}, childPoints_{gl::NoCreate}, childColors_{gl::NoCreate};
-  gl::Buffer stripIndices_{gl::NoCreate}, lineIndices_{gl::NoCreate}, shadowIndices_{gl::NoCreate},
-      childIndices_{gl::NoCreate};
-  gl::VertexArray stripVao_{gl::NoCreate}, lineVao_{gl::NoCreate}, shadowVao_{gl::NoCreate},
-      childVao_{gl::NoCreate};
+  gl::Buffer stripIndices_{gl::NoCreate}, shadowIndices_{gl::NoCreate}, childIndices_{gl::NoCreate};
+  gl::VertexArray stripVao_{gl::NoCreate}, shadowVao_{gl::NoCreate}, childVao_{gl::NoCreate};
   // Index counts of the first k guides, k = 0..guides, and of the first k child ranks.
-  std::vector<std::size_t> stripPrefix_, linePrefix_, shadowPrefix_, childPrefix_;
+  std::vector<std::size_t> stripPrefix_, shadowPrefix_, childPrefix_;
   std::vector<std::uint32_t> order_, splineFirstHost_, childFirstHost_;
   GuideLinks links_;
   std::size_t splinePoints_ = 0, childRun_ = 0;

@@ -20,14 +20,6 @@
 
 uniform uint uItems;  // a child's points over all guides, times the children
 
-float smoothNoise(float x, uint seed) {
-  float i = floor(x);
-  float f = x - i;
-  float a = hashToUnit(pcgHash(seed + uint(int(i) & 0xffff)));
-  float b = hashToUnit(pcgHash(seed + uint(int(i + 1.0) & 0xffff)));
-  return mix(a, b, f * f * (3.0 - 2.0 * f)) * 2.0 - 1.0;
-}
-
 // The guide's curve at fractional spline point `fp` of [first, first + count).
 vec3 guideAt(uint first, uint count, float fp) {
   uint p0 = min(uint(fp), count - 1u);
@@ -80,6 +72,7 @@ void main() {
   vec2 offset = r * vec2(cos(phi), sin(phi));
   offset += hairline.xy * radius * clamp(2.0 * (1.0 - density), 0.0, 1.0);
   offset *= 1.0 - uChildren.y * s;
-  offset += uChildren.w * s * vec2(smoothNoise(4.0 * s, h + 6u), smoothNoise(4.0 * s, h + 7u));
+  vec2 wander = vec2(valueNoise(4.0 * s, h + 6u), valueNoise(4.0 * s, h + 7u));
+  offset += uChildren.w * s * (2.0 * wander - 1.0);
   childPoints[j] = vec4(base + offset.x * N + offset.y * B, shadowShare(T, guide, s));
 }

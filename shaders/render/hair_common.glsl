@@ -76,6 +76,16 @@ void basisAround(vec3 n, out vec3 b1, out vec3 b2) {
   b2 = vec3(b, sgn + n.y * n.y * a, -n.y);
 }
 
+// Smooth 1D value noise in [0, 1] at x, its lattice hashed from `seed`: glints along a
+// strand, a child's wander.
+float valueNoise(float x, uint seed) {
+  float i = floor(x);
+  float f = x - i;
+  float a = hashToUnit(pcgHash(seed + uint(int(i) & 0xffff)));
+  float b = hashToUnit(pcgHash(seed + uint(int(i + 1.0) & 0xffff)));
+  return mix(a, b, f * f * (3.0 - 2.0 * f));
+}
+
 // Drawn strand ids, for per-strand variation and stochastic transparency: the guide's own
 // index, and a hash of guide and child for a child (the same whatever render.children is).
 uint guideStrandId(uint guide) { return guide; }

@@ -17,15 +17,6 @@ float strandSpecular(vec3 T, vec3 H, float exponent) {
   return smoothstep(-1.0, 0.0, th) * pow(sinTH, exponent);
 }
 
-// Smooth 1D value noise along the strand, for the secondary highlight's glints.
-float strandNoise(float x, uint seed) {
-  float i = floor(x);
-  float f = x - i;
-  float a = hashToUnit(pcgHash(seed + uint(int(i) & 0xffff)));
-  float b = hashToUnit(pcgHash(seed + uint(int(i + 1.0) & 0xffff)));
-  return mix(a, b, f * f * (3.0 - 2.0 * f));
-}
-
 void main() {
   uint i = invocationIndex();
   if (i >= uint(uCounts2.x)) return;
@@ -51,7 +42,7 @@ void main() {
   vec3 T1 = normalize(T + (uSpecShift.x + tilt) * N);
   vec3 T2 = normalize(T + (uSpecShift.y + tilt) * N);
   float spec1 = uSpecStrength.x * strandSpecular(T1, H, uSpecShift.z);
-  float glint = 0.4 + 1.2 * strandNoise(s * 24.0, h);
+  float glint = 0.4 + 1.2 * valueNoise(s * 24.0, h);
   float spec2 = uSpecStrength.y * glint * strandSpecular(T2, H, uSpecShift.w);
 
   float light = hairTransmittance(P) * headVisibility(P);
