@@ -20,6 +20,14 @@ double mean(const std::vector<double>& v) {
   return v.empty() ? 0.0 : sum / double(v.size());
 }
 
+// The mean without the first frame, which also pays for what runs once (program builds, the
+// driver's first allocations): what a frame costs once the scene runs. The plain mean when
+// there is only one frame.
+double steadyMean(const std::vector<double>& v) {
+  if (v.size() < 2) return mean(v);
+  return mean(std::vector<double>(v.begin() + 1, v.end()));
+}
+
 }  // namespace
 
 void MetricsLog::addFrame(double simMs, const std::vector<StageTime>& stages) {
@@ -68,7 +76,10 @@ nlohmann::json MetricsLog::toJson(nlohmann::json meta) const {
   j["frames"] = frames();
   // The fastest frame too: on a shared machine other work only ever adds time.
   const double fastest = simMs_.empty() ? 0.0 : *std::min_element(simMs_.begin(), simMs_.end());
-  nlohmann::json ms = {{"sim_mean", simMean()}, {"sim_p95", simP95()}, {"sim_min", fastest}};
+  nlohmann::json ms = {{"sim_mean", simMean()},
+                       {"sim_steady", steadyMean(simMs_)},
+                       {"sim_p95", simP95()},
+                       {"sim_min", fastest}};
   if (!uiMs_.empty()) {
     ms["ui_mean"] = mean(uiMs_);
     ms["ui_p95"] = percentile95(uiMs_);
@@ -79,9 +90,9 @@ nlohmann::json MetricsLog::toJson(nlohmann::json meta) const {
     stages[name] = simMs_.empty() ? 0.0 : sum / simMs_.size();
   ms["stages"] = stages;
   if (!renderMs_.empty()) {
-    double sum = 0.0;
-    for (double v : renderMs_) sum += v;
-    ms["render_mean"] = sum / renderMs_.size();
+    ms["render_mean"] = mean(renderMs_);
+    ms["render_steady"] = steadyMean(renderMs_);
+    ms["render_first"] = renderMs_.front();
     nlohmann::json rs = nlohmann::json::object();
     for (const auto& [name, s] : renderStageSum_) rs[name] = s / renderMs_.size();
     ms["render_stages"] = rs;

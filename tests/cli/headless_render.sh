@@ -37,6 +37,12 @@ m = json.load(open(os.path.join(tmp, "m.json")))
 ms = m["ms"]
 print("render ms", ms["render_mean"], ms["render_stages"], "drawn", m["drawn_strands"])
 assert ms["render_mean"] > 0
+# The first frame (program builds) apart: the mean is the first and the steady frames together.
+assert ms["render_first"] > 0 and ms["render_steady"] > 0
+mean3 = (ms["render_first"] + 2 * ms["render_steady"]) / 3
+assert abs(mean3 - ms["render_mean"]) <= 1e-6 * ms["render_mean"], (mean3, ms)
+sim_mean3 = ms["sim_steady"] * 2 / 3
+assert 0 < sim_mean3 < ms["sim_mean"], ms
 for stage in ["shadow", "head", "hair"]:
     assert ms["render_stages"][stage] >= 0, stage
 assert m["drawn_strands"] == 1500 and m["render_size"] == [320, 180]
