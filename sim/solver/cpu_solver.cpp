@@ -476,10 +476,23 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
       // Root-relative coordinates keep the prefix sums' differences exact enough in float on the
       // GPU; the CPU uses the same formulation so the two compare term by term.
       const glm::dvec3 origin = xPred_[a];
+      // The built-in end (ClampField, sim/solver/stiffness.h): behind the clamp the regions see
+      // the free strand's displacement continued, not the rest shape.
+      const int pinned = regions_.pinned[s];
+      const std::vector<glm::dvec2>& fit = regions_.clampFit;
+      ClampField field;
+      for (int j = pinned; j < n && fit[a + j].x != 0.0; ++j)
+        field.a += fit[a + j].x * (xPred_[a + j] - head.apply(rest_[a + j]));
+      auto behind = [&](int j) { return j < pinned ? field.at(fit[a + j].y) : glm::dvec3(0.0); };
+      const double tau0 = fit[a].y, ghostTau = n > 1 ? fit[a + 1].y - tau0 : 0.0;
+      auto ghostShift = [&](int g) { return toEigen(field.at(tau0 - g * ghostTau)); };
+      // Each particle's coordinates in the sums, root-relative.
+      auto yOf = [&](int j) { return toEigen(xPred_[a + j] + behind(j) - origin); };
+      auto yrOf = [&](int j) { return toEigen(rest_[a + j] - rest_[a]); };
       for (int j = 0; j < n; ++j) {
         const double m = regions_.mass[a + j];
-        const Eigen::Vector3d y = toEigen(xPred_[a + j] - origin);
-        const Eigen::Vector3d yr = toEigen(rest_[a + j] - rest_[a]);
+        const Eigen::Vector3d y = yOf(j);
+        const Eigen::Vector3d yr = yrOf(j);
         prefMassX_[pb + j + 1] = prefMassX_[pb + j] + m * y;
         prefA_[pb + j + 1] = prefA_[pb + j] + m * y * yr.transpose();
       }
@@ -500,6 +513,11 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
             sumX -= s1 * D;
             sumRest -= s1 * d;
             sumA += s2 * D * d.transpose();
+            for (int g = 1; g <= ghosts; ++g) {
+              const Eigen::Vector3d shift = ghostShift(g);
+              sumX += mg * shift;
+              sumA -= (mg * g) * shift * d.transpose();
+            }
           }
         } else {
           M = 0.0;
@@ -508,10 +526,8 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
           sumA.setZero();
           for (int j = -ghosts; j <= l1; ++j) {
             const double m = j < 0 ? mg : regions_.mass[a + j];
-            const Eigen::Vector3d y =
-                j < 0 ? Eigen::Vector3d(j * D) : toEigen(xPred_[a + j] - origin);
-            const Eigen::Vector3d yr =
-                j < 0 ? Eigen::Vector3d(j * d) : toEigen(rest_[a + j] - rest_[a]);
+            const Eigen::Vector3d y = j < 0 ? Eigen::Vector3d(j * D + ghostShift(-j)) : yOf(j);
+            const Eigen::Vector3d yr = j < 0 ? Eigen::Vector3d(j * d) : yrOf(j);
             if (j >= 0 && j < l0) continue;
             M += m;
             sumX += m * y;
@@ -524,8 +540,7 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
         // The twist axis: the region's rest chord (ghosts continue the root segment).
         const int first = lo[a + k];
         const Eigen::Vector3d chord =
-            toEigen(rest_[a + l1] - rest_[a]) -
-            (first >= 0 ? toEigen(rest_[a + first] - rest_[a]) : Eigen::Vector3d(first * d));
+            yrOf(hi[a + k]) - (first >= 0 ? yrOf(first) : Eigen::Vector3d(first * d));
         extractRotation(A, regions_.inertia[a + k], q_[a + k], iterations, chord, twistStep);
         const Eigen::Matrix3d R = q_[a + k].matrix();
         regionC_[a + k] = c;

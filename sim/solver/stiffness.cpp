@@ -24,6 +24,24 @@ glm::dvec3 restOf(const HairState& st, size_t i) {
   return glm::dvec3(st.rest[i].x, st.rest[i].y, st.rest[i].z);
 }
 
+// The clamp's curvature for strand s (ClampField in stiffness.h): fitted to the free particles
+// within one window of the clamp, at least three where the strand has them; least squares of
+// u_j = a tau_j^2, so weight_j = tau_j^2 / sum tau^4.
+void fitClampField(Regions& r, size_t s, uint32_t a, const std::vector<double>& arc,
+                   double clampArc, double windowLength) {
+  const int count = int(arc.size()), pinned = r.pinned[s];
+  int end = pinned;
+  while (end < count && (arc[end] - clampArc <= windowLength * (1.0 + kTie) || end - pinned < 3))
+    ++end;
+  const double scale = end > pinned ? arc[end - 1] - clampArc : 0.0;
+  if (!(scale > 0.0)) return;
+  for (int i = 0; i < count; ++i) r.clampFit[a + i].y = (arc[i] - clampArc) / scale;
+  double sum4 = 0.0;
+  for (int j = pinned; j < end; ++j) sum4 += std::pow(r.clampFit[a + j].y, 4.0);
+  for (int j = pinned; j < end; ++j)
+    r.clampFit[a + j].x = std::pow(r.clampFit[a + j].y, 2.0) / sum4;
+}
+
 }  // namespace
 
 double windowCoefficient(int w) {
@@ -50,6 +68,7 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
   r.window.assign(strands, 0);
   r.pinned.assign(strands, std::max(0, sim.pinned));
   r.ghostMass.assign(strands, 0.0);
+  r.clampFit.assign(n, glm::dvec2(0.0));
   const bool calibrated = sim.stiffnessModel == StiffnessModel::Calibrated;
   const double L = sim.windowLength;
   std::vector<double> arc, seg;
@@ -67,13 +86,16 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
     const double meanSegment = count > 1 ? arc[count - 1] / (count - 1) : 0.0;
     int ghosts = 0;  // the most ghosts a region has
     if (calibrated) {
-      // The held piece by length, rounded to the nearest particle like the windows.
-      int pinned = std::max(0, sim.pinned);
-      if (sim.rootLength > 0.0f)
-        for (int j = 1; j < count; ++j)
-          if (arc[j] - 0.5 * seg[j - 1] <= sim.rootLength * (1.0 + kTie))
-            pinned = std::max(pinned, j + 1);
-      r.pinned[s] = std::min(pinned, count);
+      // The held piece by length: the clamp sits at arc s_c = sim.rootLength (at least the
+      // sim.pinned particles' reach), between particles where it falls there; the particles
+      // up to it follow the head.
+      const int fewest = std::min(std::max(0, sim.pinned), count);
+      const double clampArc = std::max(double(sim.rootLength), fewest > 0 ? arc[fewest - 1] : 0.0);
+      int pinned = fewest;
+      while ((fewest > 0 || sim.rootLength > 0.0f) && pinned < count &&
+             arc[pinned] <= clampArc * (1.0 + kTie))
+        ++pinned;
+      r.pinned[s] = pinned;
       // In region k: the neighbours, and every i whose distance less a quarter of the two
       // facing segments is within L. The distance grows with |i - k|, so each side is a run.
       auto inside = [&](int i, int k) {
@@ -109,6 +131,7 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
       // A ghost carries a whole segment of the root's spacing, shared like an inner
       // particle's among 2w + 1 regions.
       if (ghosts > 0) r.ghostMass[s] = seg[0] / (2.0 * w + 1.0);
+      if (clamped) fitClampField(r, s, a, arc, clampArc, L);
     } else {
       const int w = std::max(1, sim.stiffnessWindow);
       r.window[s] = w;

@@ -19,6 +19,9 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
 #include "sim/core/config.h"
 #include "sim/core/results.h"
 #include "sim/core/hair_state.h"
@@ -64,6 +67,11 @@ struct Regions {
   std::vector<int> window;        // particles per side
   std::vector<int> pinned;        // particles from the root that follow the head
   std::vector<double> ghostMass;  // per-region mass of a ghost (0: the strand has none)
+  // The built-in end (calibrated model, clamped strands; ClampField below): per particle, x its
+  // weight in the clamp's curvature (non-zero for the fit particles, the free ones within a
+  // window of the clamp) and y = tau, its rest arc from the clamp over the fit's reach (negative
+  // behind the clamp).
+  std::vector<glm::dvec2> clampFit;
   double maxRate = 0.0;
   double planRate = 0.0;  // the rate the steps follow (planRate below)
 
@@ -78,6 +86,23 @@ struct Regions {
 // (Rivers & James 2007): each particle's mass is shared equally among the regions that
 // contain it, so the goals exert no net force on a free strand.
 Regions buildRegions(const HairState& state, const SimConfig& sim);
+
+// The clamp is the beam's built-in end: the scalp holds the strand's position and direction at
+// arc s_c (sim.rootLength, at least the pinned particles' reach), between particles where it
+// falls there. Behind it the members of the regions (the held particles and the ghosts) do not
+// sit rigidly on the rest shape: they take the displacement u(tau) = a tau^2 from the
+// head-carried rest shape, the free strand's curvature at the clamp continued behind it, with
+// value and slope zero at the clamp. a = sum over the fit particles of weight_j u_j (least
+// squares, static weights: clampFit.x). Shape matching over whole windows leaves constant
+// curvature alone, so the regions at the root see a beam that goes on: without it they saw the
+// curvature stop at the scalp and turned the strand about the clamp, the more the wider the
+// window (METHOD.md section 4.4). The cubic and quartic terms of the cantilever's shape were
+// tried: continued behind the clamp they flip sign and amplify the free particles' motion, and
+// the strand blew up.
+struct ClampField {
+  glm::dvec3 a{0.0};
+  glm::dvec3 at(double tau) const { return (tau * tau) * a; }
+};
 
 // Sums over the first q ghosts of a strand, each of per-region mass m: with root-relative
 // coordinates ghost j is at -j d (d = rest_1 - rest_0 in the head frame, D = its current world
