@@ -33,8 +33,10 @@
       // ghosts and particles from 0), w last particle of the region
       // (indices within the strand, exact in float)
 #define CSM_BIND_STRAND_STIFFNESS \
-  23  // vec4 per strand: x calibrated rate k (1/s^2), y per-region
-      // mass of a ghost, z pinned particles, w unused
+  23  // vec4 x2 per strand: x calibrated rate k (1/s^2), y per-region
+      // mass of a ghost, z pinned particles, w the clamp's arc from the
+      // root (m); then x the clamp field's fit reach (m, 0: none), y the
+      // end of its fit particles (clamp_field.glsl)
 #define CSM_BIND_MEASURE \
   24                        // uvec4 x2 per CSM_MEASURE_GROUP particles: the measures of the
                             // group (measure.comp), read back behind a fence

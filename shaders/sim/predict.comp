@@ -23,7 +23,7 @@ void main() {
   uint i = globalIndex();
   if (i >= P.particles) return;
   uint s = particleStrand[i];
-  pred[i] = vec4(predictParticle(i, strandFirst[s], strandFirst[s + 1u], int(strandStiffness[s].z),
+  pred[i] = vec4(predictParticle(i, strandFirst[s], strandFirst[s + 1u], int(strandStiffness[2u * s].z),
                                  S[substep]),
                  1.0);
 }

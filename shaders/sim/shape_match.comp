@@ -44,6 +44,10 @@ layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffn
 
 uniform uint substep;
 
+#define readRest(i) texelFetch(restTex, int(i))
+#define CSM_CLAMP_PREDICTED(base, j) texelFetch(predTex, int(base) + (j)).xyz
+#include "sim/clamp_field.glsl"
+
 void main() {
   uint id = globalIndex();
   if (id >= P.strands) return;
@@ -57,11 +61,17 @@ void main() {
   vec3 origin = texelFetch(predTex, int(a)).xyz;
   vec3 rest0 = texelFetch(restTex, int(a)).xyz;
   Substep st = S[substep];
-  vec4 stiff = strandStiffness[s];
+  vec4 stiff = strandStiffness[2u * s];
   // Ghosts behind the root (sim/solver/stiffness.h): -j d at rest, -j D now, root-relative.
   float mg = stiff.y;
   vec3 d = n > 1 ? texelFetch(restTex, int(a) + 1).xyz - rest0 : vec3(0.0);
   vec3 D = mat3(st.head) * d;
+  // The built-in end (clamp_field.glsl): the held particles and the ghosts take the free
+  // strand's curvature at the clamp, continued.
+  vec4 stiffB = strandStiffness[2u * s + 1u];
+  int pinned = int(stiff.z);
+  ClampField field = clampFieldOf(a, a, n, stiff, stiffB, st.head);
+  float arc = 0.0;
 
   // Prefix sums over the strand's particles, weighted by per-region mass: m, m y, m ȳ, m y ȳᵀ
   // (y = x* - x*_root, ȳ = x̄ - x̄_root). Entry j holds the sum over particles [0, j).
@@ -74,8 +84,11 @@ void main() {
   prefA[0] = mat3(0.0);
   for (int j = 0; j < n; ++j) {
     float m = texelFetch(regionTex, int(a) + j).x;
-    vec3 y = texelFetch(predTex, int(a) + j).xyz - origin;
     vec3 yr = texelFetch(restTex, int(a) + j).xyz - rest0;
+    if (j > 0) arc += length(yr - (texelFetch(restTex, int(a) + j - 1).xyz - rest0));
+    vec3 shift = j < pinned && stiffB.x > 0.0 ? clampShift(field, (arc - stiff.w) / stiffB.x)
+                                               : vec3(0.0);
+    vec3 y = texelFetch(predTex, int(a) + j).xyz + shift - origin;
     prefM[j + 1] = prefM[j] + m;
     prefX[j + 1] = prefX[j] + m * y;
     prefRest[j + 1] = prefRest[j] + m * yr;
@@ -105,6 +118,7 @@ void main() {
       sumX -= s1 * D;
       sumRest -= s1 * d;
       sumA += outerProduct(s2 * D, d);
+      addGhostShifts(field, ghosts, mg, d, sumX, sumA);
     }
     vec3 c = sumX / M;
     vec3 cRest = sumRest / M;
@@ -128,7 +142,6 @@ void main() {
   float h = st.h;
   float keep = st.velocityKept;
   float alpha = P.stiffnessModel == CSM_STIFFNESS_CALIBRATED ? min(1.0, stiff.x * h * h) : P.alpha;
-  int pinned = int(stiff.z);
   for (int i = 0; i < n; ++i) {
     uint p = a + uint(i);
     vec4 region = texelFetch(regionTex, int(p));

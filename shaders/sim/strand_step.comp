@@ -32,12 +32,15 @@ uniform uint substep;
 #include "sim/head_push.glsl"
 #endif
 #include "sim/strand_group.glsl"
+// The clamp's field reads x* from the strand's slots in shared memory (base: the root's slot).
+#define CSM_CLAMP_PREDICTED(base, j) shA[(base) + uint(j)].xyz
+#include "sim/clamp_field.glsl"
 
 void main() {
   Slot o = groupSlot();
   uint lid = gl_LocalInvocationID.x;
   Substep st = S[substep];
-  vec4 stiff = strandStiffness[o.s];
+  vec4 stiff = strandStiffness[2u * o.s];
   int pinned = int(stiff.z);
   vec3 xp = o.live ? predictParticle(o.p, o.a, o.a + uint(o.n), pinned, st) : vec3(0.0);
   vec4 region = o.live ? readRegion(o.p) : vec4(0.0);
@@ -50,11 +53,20 @@ void main() {
   shA[lid] = vec4(xp, 0.0);
   barrier();
   vec3 origin = shA[o.root].xyz;
+  // The built-in end (clamp_field.glsl): the held particles and the ghosts of this slot's
+  // region take the free strand's curvature at the clamp, continued.
+  vec4 stiffB = strandStiffness[2u * o.s + 1u];
+  int ghosts = max(0, -int(region.z));
+  bool behind = o.live && o.j < pinned;
+  ClampField field = ClampField(vec3(0.0), 0.0, 0.0);
+  if (o.live && (behind || ghosts > 0))
+    field = clampFieldOf(o.a, o.root, o.n, stiff, stiffB, st.head);
+  vec3 shift = behind ? clampShift(field, clampTauOf(o.a, o.j, stiff, stiffB)) : vec3(0.0);
   barrier();
 
   // Scan 1: m, m y (shA), m ȳ and A's first entry (shB), the rest of A = m y ȳᵀ (shC, shD).
   float m = region.x;
-  vec3 y = xp - origin, yr = rest - rest0;
+  vec3 y = xp + shift - origin, yr = rest - rest0;
   mat3 A1 = outerProduct(m * y, yr);
   vec4 v0 = vec4(m, m * y), v1 = vec4(m * yr, A1[0][0]);
   vec4 v2 = vec4(A1[0][1], A1[0][2], A1[1][0], A1[1][1]);
@@ -63,7 +75,6 @@ void main() {
 
   // This slot's region [lo, hi]: its centroids, A and R (as shape_match.comp's second loop).
   int n = o.n;
-  int ghosts = max(0, -int(region.z));
   int lo = clamp(int(region.z), 0, n - 1), hi = clamp(int(region.w), lo, n - 1);
   vec4 s0 = rangeSumA(o, lo, hi), s1 = rangeSumB(o, lo, hi);
   vec4 s2 = rangeSumC(o, lo, hi), s3 = rangeSumD(o, lo, hi);
@@ -81,6 +92,7 @@ void main() {
     sumX -= g1 * D;
     sumRest -= g1 * d;
     sumA += outerProduct(g2 * D, d);
+    addGhostShifts(field, ghosts, mg, d, sumX, sumA);
   }
   vec3 R0 = vec3(0.0), R1 = vec3(0.0), R2 = vec3(0.0), T = vec3(0.0);
   if (o.live) {

@@ -60,10 +60,14 @@ void StrandBuffers::uploadRegions(const HairState& state, const Regions& regions
                                float(regions.lo[i]), float(regions.hi[i]));
   }
   fill(region, perParticle);
-  std::vector<glm::vec4> perStrand(strandCount);
-  for (size_t s = 0; s < strandCount; ++s)
-    perStrand[s] = glm::vec4(float(regions.rate[s]), float(regions.ghostMass[s]),
-                             float(regions.pinned[s]), 0.0f);
+  // Two per strand (shaders/sim/bindings.glsl, CSM_BIND_STRAND_STIFFNESS).
+  std::vector<glm::vec4> perStrand(2 * strandCount);
+  for (size_t s = 0; s < strandCount; ++s) {
+    perStrand[2 * s] = glm::vec4(float(regions.rate[s]), float(regions.ghostMass[s]),
+                                 float(regions.pinned[s]), float(regions.clampArc[s]));
+    perStrand[2 * s + 1] =
+        glm::vec4(float(regions.fitReach[s]), float(regions.fitEnd[s]), 0.0f, 0.0f);
+  }
   fill(strandStiffness, perStrand);
   view(regionTex, region, GL_RGBA32F);
   const std::vector<double> w = contactInverseMass(state, regions);

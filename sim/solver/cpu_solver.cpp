@@ -483,6 +483,7 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
       ClampField field;
       for (int j = pinned; j < n && fit[a + j].x != 0.0; ++j)
         field.a += fit[a + j].x * (xPred_[a + j] - head.apply(rest_[a + j]));
+      if (n > 1) field.reflect(toGlm(D));
       auto behind = [&](int j) { return j < pinned ? field.at(fit[a + j].y) : glm::dvec3(0.0); };
       const double tau0 = fit[a].y, ghostTau = n > 1 ? fit[a + 1].y - tau0 : 0.0;
       auto ghostShift = [&](int g) { return toEigen(field.at(tau0 - g * ghostTau)); };

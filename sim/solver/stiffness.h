@@ -72,6 +72,9 @@ struct Regions {
   // window of the clamp) and y = tau, its rest arc from the clamp over the fit's reach (negative
   // behind the clamp).
   std::vector<glm::dvec2> clampFit;
+  std::vector<double> clampArc;  // per strand: the clamp's rest arc from the root (m)
+  std::vector<double> fitReach;  // per strand: tau's unit, the last fit particle's arc from it
+  std::vector<int> fitEnd;       // per strand: the fit particles end here (pinned: none)
   double maxRate = 0.0;
   double planRate = 0.0;  // the rate the steps follow (planRate below)
 
@@ -99,9 +102,20 @@ Regions buildRegions(const HairState& state, const SimConfig& sim);
 // window (METHOD.md section 4.4). The cubic and quartic terms of the cantilever's shape were
 // tried: continued behind the clamp they flip sign and amplify the free particles' motion, and
 // the strand blew up.
+//
+// Behind the clamp the field is the fit reflected across the plane normal to the clamp's
+// direction: across the strand it continues evenly (the curvature goes on), along it oddly (a
+// bent strand draws its length in toward the clamp on both sides, as an arc does). Small sag
+// has no component along the strand and is unchanged; a strand bent hard at the clamp (full
+// gravity at a 4 cm window) turns there 39 degrees instead of 49.
 struct ClampField {
   glm::dvec3 a{0.0};
   glm::dvec3 at(double tau) const { return (tau * tau) * a; }
+  // `along`: the clamp's direction in the world (any length).
+  void reflect(const glm::dvec3& along) {
+    const double l2 = along.x * along.x + along.y * along.y + along.z * along.z;
+    if (l2 > 0.0) a -= (2.0 * (a.x * along.x + a.y * along.y + a.z * along.z) / l2) * along;
+  }
 };
 
 // Sums over the first q ghosts of a strand, each of per-region mass m: with root-relative

@@ -96,6 +96,10 @@ TEST_CASE("frame rate: 30, 60 and 120 frames a second with automatic substeps ag
   test::checkFrameRates(makeCpu);
 }
 
+TEST_CASE("window: the clamped strand sags as the beam at every window, no hinge at the clamp") {
+  test::checkWindowIsNotStiffness(makeCpu);
+}
+
 TEST_CASE("resolution: 16, 24 and 32 particles on the same strand sag and swing alike") {
   test::checkResolution(makeCpu);
 }

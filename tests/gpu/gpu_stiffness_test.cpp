@@ -36,6 +36,11 @@ TEST_CASE("GPU stiffness: 16, 24 and 32 particles on the same strand sag and swi
   test::checkResolution(test::gpuSolver);
 }
 
+TEST_CASE("GPU stiffness: the clamped strand sags as the beam at every window, no hinge",
+          "[gpu][stiffness]") {
+  test::checkWindowIsNotStiffness(test::gpuSolver);
+}
+
 TEST_CASE("GPU stiffness: the goals of a free strand keep sum m v", "[gpu][stiffness]") {
   // In float: positions of ~0.3 m round by ~2e-8 m, so a velocity (x - x_old) / h at h = 1/240 s
   // carries ~5e-6 m/s of rounding against the strand's ~0.4 m/s: ~1e-5 per particle, less in
