@@ -126,7 +126,8 @@ inline ClampedShape clampedShape(const SolverMaker& make, float windowLength, do
   const Regions regions = buildRegions(makeHairState(s.groom, s.config.sim, Pose{}), s.config.sim);
   const int p = regions.pinned[0] - 1;
   auto at = [&](int i) { return glm::dvec3(x[i].x, x[i].y, x[i].z); };
-  const glm::dvec3 held = glm::normalize(at(p) - at(p - 1)), free = glm::normalize(at(p + 1) - at(p));
+  const glm::dvec3 held = glm::normalize(at(p) - at(p - 1)),
+                   free = glm::normalize(at(p + 1) - at(p));
   ClampedShape shape;
   shape.sag = double(x.front().y) - double(x.back().y);
   shape.turn = glm::degrees(std::acos(std::clamp(glm::dot(held, free), -1.0, 1.0)));

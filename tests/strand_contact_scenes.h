@@ -34,7 +34,7 @@ inline Config drapeConfig() {
   c.collision.radius = 0.001f;
   c.collision.mode = CollisionMode::Strands;
   c.sim.bendingStiffness = 1e-4f;  // a soft strand that drapes
-  c.sim.rootLength = 0.065f;       // holds the bar and the strand up to 1 cm before the bar
+  c.sim.rootLength = 0.07f;        // holds the bar and the strand up to 1 cm before the bar
   return c;
 }
 

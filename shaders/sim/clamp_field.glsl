@@ -1,5 +1,5 @@
 // The clamp as the beam's built-in end (ClampField in sim/solver/stiffness.h, METHOD.md section
-// 4.4): behind the clamp the regions' members (the held particles and the ghosts) take the
+// 4.3): behind the clamp the regions' members (the held particles and the ghosts) take the
 // displacement u(tau) = a tau^2 from the head-carried rest shape, a fitted by least squares to
 // the free particles' displacements over one window, reflected along the strand. The including pass defines how it reads a
 // particle's x* (CSM_CLAMP_PREDICTED(base, j), j within the strand) and rest (readRest).
@@ -42,8 +42,10 @@ ClampField clampFieldOf(uint first, uint base, int n, vec4 stiffA, vec4 stiffB, 
   return f;
 }
 
-// The displacement behind the clamp at a given tau.
+// The displacement behind the clamp at a given tau, held at its value 1.5 reaches deep
+// (csm::kClampDepth).
 vec3 clampShift(ClampField f, float tau) {
+  tau = max(tau, -1.5);
   return (tau * tau) * f.a;
 }
 

@@ -10,6 +10,8 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
   uint particleStrand[];
 };
 layout(std430, binding = CSM_BIND_PREDICTED) writeonly buffer Predicted { vec4 pred[]; };
+// The velocity that moved each free particle to x* (predict.glsl), for shape_match.comp.
+layout(std430, binding = CSM_BIND_VELOCITY) writeonly buffer Velocity { vec4 vel[]; };
 layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffness {
   vec4 strandStiffness[];
 };
@@ -23,7 +25,11 @@ void main() {
   uint i = globalIndex();
   if (i >= P.particles) return;
   uint s = particleStrand[i];
-  pred[i] = vec4(predictParticle(i, strandFirst[s], strandFirst[s + 1u], int(strandStiffness[2u * s].z),
-                                 S[substep]),
+  int pinned = int(strandStiffness[2u * s].z);
+  vec3 vPred;
+  pred[i] = vec4(predictParticle(i, strandFirst[s], strandFirst[s + 1u], pinned, S[substep], vPred),
                  1.0);
+  // Each invocation has read its own velocity above; a held particle's is left for
+  // shape_match.comp, which takes it from the head's motion.
+  if (int(i - strandFirst[s]) >= pinned) vel[i] = vec4(vPred, 0.0);
 }

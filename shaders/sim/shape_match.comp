@@ -32,6 +32,7 @@ layout(local_size_x = CSM_STRAND_GROUP) in;
 layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
 layout(binding = CSM_TEX_PREDICTED) uniform samplerBuffer predTex;
+layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;  // predict.comp's vPred
 layout(binding = CSM_TEX_REGION) uniform samplerBuffer regionTex;
 layout(std430, binding = CSM_BIND_POSITION) writeonly buffer Position { vec4 pos[]; };
 layout(std430, binding = CSM_BIND_VELOCITY) writeonly buffer Velocity { vec4 vel[]; };
@@ -151,9 +152,11 @@ void main() {
                              float(hi - lo + 1);
     vec3 xp = texelFetch(predTex, int(p)).xyz;
     bool fixed_ = i < pinned;
-    vec3 x = fixed_ ? xp : xp + alpha * (goal - xp);
-    vec3 v = (x - texelFetch(posTex, int(p)).xyz) / h;
-    if (!fixed_) v *= keep;
+    vec3 pull = alpha * (goal - xp);
+    vec3 x = fixed_ ? xp : xp + pull;
+    // The step's velocity from its own displacement (predict.glsl), not from rounded positions.
+    vec3 v = fixed_ ? (x - texelFetch(posTex, int(p)).xyz) / h
+                    : (texelFetch(velTex, int(p)).xyz + pull / h) * keep;
     pos[p] = vec4(x, 1.0);
     vel[p] = vec4(v, 0.0);
   }

@@ -42,7 +42,8 @@ void main() {
   Substep st = S[substep];
   vec4 stiff = strandStiffness[2u * o.s];
   int pinned = int(stiff.z);
-  vec3 xp = o.live ? predictParticle(o.p, o.a, o.a + uint(o.n), pinned, st) : vec3(0.0);
+  vec3 vPred = vec3(0.0);
+  vec3 xp = o.live ? predictParticle(o.p, o.a, o.a + uint(o.n), pinned, st, vPred) : vec3(0.0);
   vec4 region = o.live ? readRegion(o.p) : vec4(0.0);
   // A slot past the group's end reads nothing (a fetch out of range is undefined).
   vec3 rest = o.live ? readRest(o.p).xyz : vec3(0.0);
@@ -133,9 +134,12 @@ void main() {
   float h = st.h;
   float alpha = P.stiffnessModel == CSM_STIFFNESS_CALIBRATED ? min(1.0, stiff.x * h * h) : P.alpha;
   bool fixed_ = o.j < pinned;
-  vec3 x = fixed_ ? xp : xp + alpha * (goal - xp);
-  vec3 v = o.live ? (x - readPosition(o.p).xyz) / h : vec3(0.0);
-  if (!fixed_) v *= st.velocityKept;
+  vec3 pull = alpha * (goal - xp);
+  vec3 x = fixed_ ? xp : xp + pull;
+  // The step's velocity from its own displacement (predict.glsl), not from rounded positions.
+  vec3 v = !o.live ? vec3(0.0)
+           : fixed_ ? (x - readPosition(o.p).xyz) / h
+                    : (vPred + pull / h) * st.velocityKept;
 
 #ifdef CSM_SWEEP
   barrier();  // the scan's slots are read; the sweep's state goes in

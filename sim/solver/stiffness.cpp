@@ -25,14 +25,15 @@ glm::dvec3 restOf(const HairState& st, size_t i) {
 }
 
 // The clamp's curvature for strand s (ClampField in stiffness.h): fitted to the free particles
-// within one window of the clamp, at least three where the strand has them; least squares of
+// within one window (and one held piece) of the clamp, at least three where the strand has
+// them; least squares of
 // u_j = a tau_j^2, so weight_j = tau_j^2 / sum tau^4.
 void fitClampField(Regions& r, size_t s, uint32_t a, const std::vector<double>& arc,
                    double clampArc, double windowLength) {
   const int count = int(arc.size()), pinned = r.pinned[s];
   int end = pinned;
-  while (end < count && (arc[end] - clampArc <= windowLength * (1.0 + kTie) || end - pinned < 3))
-    ++end;
+  const double wanted = std::max(windowLength, clampArc);
+  while (end < count && (arc[end] - clampArc <= wanted * (1.0 + kTie) || end - pinned < 3)) ++end;
   const double scale = end > pinned ? arc[end - 1] - clampArc : 0.0;
   r.clampArc[s] = clampArc;
   if (!(scale > 0.0)) return;

@@ -99,7 +99,7 @@ Regions buildRegions(const HairState& state, const SimConfig& sim);
 // squares, static weights: clampFit.x). Shape matching over whole windows leaves constant
 // curvature alone, so the regions at the root see a beam that goes on: without it they saw the
 // curvature stop at the scalp and turned the strand about the clamp, the more the wider the
-// window (METHOD.md section 4.4). The cubic and quartic terms of the cantilever's shape were
+// window (METHOD.md section 4.3). The cubic and quartic terms of the cantilever's shape were
 // tried: continued behind the clamp they flip sign and amplify the free particles' motion, and
 // the strand blew up.
 //
@@ -108,9 +108,19 @@ Regions buildRegions(const HairState& state, const SimConfig& sim);
 // bent strand draws its length in toward the clamp on both sides, as an arc does). Small sag
 // has no component along the strand and is unchanged; a strand bent hard at the clamp (full
 // gravity at a 4 cm window) turns there 39 degrees instead of 49.
+//
+// The fit reaches at least one window and one held piece past the clamp; behind it the field
+// goes on for 1.5 such reaches and keeps its value deeper (the regions centred on the held
+// particles reach that far). Without that bound a strand of three particles, one of them free,
+// continued its one free particle's displacement 25-fold into its deepest ghost and blew up; at
+// 1.5 the extrapolation at most doubles and a quarter (2 did not hold).
+inline constexpr double kClampDepth = 1.5;
 struct ClampField {
   glm::dvec3 a{0.0};
-  glm::dvec3 at(double tau) const { return (tau * tau) * a; }
+  glm::dvec3 at(double tau) const {
+    tau = tau < -kClampDepth ? -kClampDepth : tau;
+    return (tau * tau) * a;
+  }
   // `along`: the clamp's direction in the world (any length).
   void reflect(const glm::dvec3& along) {
     const double l2 = along.x * along.x + along.y * along.y + along.z * along.z;
