@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Distances between the strand tips of two cyHair files with the same strands, in mm:
-prints "mean / median / max" (sim/groom/cyhair.h has the format)."""
+prints "mean / median / max / RMS" (sim/groom/cyhair.h has the format)."""
 import math
 import struct
 import sys
@@ -26,4 +26,5 @@ a, b = tips(sys.argv[1]), tips(sys.argv[2])
 if len(a) != len(b):
     sys.exit(f"{sys.argv[1]} has {len(a)} strands, {sys.argv[2]} has {len(b)}")
 d = sorted(1000.0 * math.dist(p, q) for p, q in zip(a, b))
-print(f"{sum(d) / len(d):.1f} / {d[len(d) // 2]:.1f} / {d[-1]:.0f}")
+rms = math.sqrt(sum(x * x for x in d) / len(d))
+print(f"{sum(d) / len(d):.1f} / {d[len(d) // 2]:.1f} / {d[-1]:.0f} / {rms:.1f}")

@@ -2,7 +2,7 @@
 # How far each preset's look moves between two builds: every preset run for 2 s by both
 # (CPU solver, 300 strands, head collisions only, so that strands are independent and the
 # comparison is not chaotic), once with the head still and no wind (the hairstyle) and once
-# with the preset's own motion and wind; the tips compared, mean / median / max in mm.
+# with the preset's own motion and wind; the tips compared, mean / median / max / RMS in mm.
 #   scripts/preset_look.sh OLD_BIN NEW_BIN [PRESET.json...]
 # OLD_PRESETS=DIR: the old build reads the preset of the same name from DIR (presets written
 # for a later build can hold keys an older one refuses), e.g. from
@@ -17,7 +17,7 @@ trap 'rm -rf "$tmp"' EXIT
 base=(--headless --no-render --quiet --solver cpu --frames 120 --set hairstyle.strands=300
       --set collision.mode=head)
 still=(--set head.motion=none --set wind.strength=0)
-echo "| preset | still: tips move, mean / median / max (mm) | moving: mean / median / max (mm) |"
+echo "| preset | still: tips move, mean / median / max / RMS (mm) | moving: mean / median / max / RMS (mm) |"
 echo "|---|---|---|"
 for preset in "$@"; do
   row="| $(basename "$preset" .json) |"

@@ -113,8 +113,10 @@ struct SimConfig {
   // (docs/BENCHMARKS.md, "Stiffness").
   float windowLength = 0.04f;        // m
   float bendingStiffness = 3.8e-3f;  // m^4/s^2
-  // Calibrated: the scalp holds the particles within rootLength of rest arc length of the root
-  // (at least `pinned` of them), so the held piece does not shrink with more particles.
+  // Calibrated: the scalp clamps the strand at rootLength of rest arc length from the root (at
+  // least `pinned` particles' reach), between particles where it falls there: a built-in end
+  // that holds position and direction (sim/solver/stiffness.h, ClampField), the same length
+  // whatever the particles.
   float rootLength = 0.02f;  // m
   // Paper: region of particle k is [k-w, k+w]; alpha the pull towards the goals per step.
   int stiffnessWindow = 2;

@@ -202,9 +202,10 @@ std::vector<Param<Config>> build() {
       param(
           "sim.root_length", "Root length", "Simulation", &Config::sim, &SimConfig::rootLength, 0.0,
           0.2,
-          "Calibrated: length of strand from the root that the scalp holds rigidly (m; the panel "
-          "shows cm); at least `pinned` particles. A length, so the held piece stays the same with "
-          "more particles.",
+          "Calibrated: where the scalp clamps the strand, its length from the root (m; the panel "
+          "shows cm); at least `pinned` particles' reach. The clamp holds position and direction "
+          "(a built-in end) and may fall between particles: the held piece is this length "
+          "whatever the particles.",
           Effect::Live)
           .onlyWhen(calibratedModel)
           .display(100.0, "cm"),

@@ -1,18 +1,29 @@
 // The stiffness window of the calibrated model (sim/solver/stiffness.h): the coefficient c_w it is
 // calibrated with, measured on the CPU solver for w = 1..32 beside the table, and what the
 // window length still does to a strand at a fixed bending stiffness.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
+#include "sim/core/hair_state.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/solver/stiffness.h"
 
 namespace csm::bench {
 namespace {
 
-// A 12 cm strand clamped over its first seventh, settled by strong damping: the tip's sag (m).
-double sag(int particles, float windowLength, double gravity) {
+// A 12 cm strand clamped over its first seventh, settled by strong damping: the tip's sag (m)
+// and the turn (degrees) at the last held particle, between the held segment before it and the
+// free one after.
+struct Settled {
+  double sag = 0.0, turn = 0.0;
+};
+Settled settle(int particles, float windowLength, double gravity) {
   Scene s = cantileverScene(particles, kCantileverLength, 1);
   s.config.sim.stiffnessModel = StiffnessModel::Calibrated;
   s.config.sim.windowLength = windowLength;
@@ -23,7 +34,17 @@ double sag(int particles, float windowLength, double gravity) {
   CpuSolver solver;
   SceneRunner run(solver, s);
   run.runTo(3.0);
-  return solver.positions().front().y - solver.positions().back().y;
+  const std::vector<glm::dvec3>& x = solver.positions();
+  const int p =
+      buildRegions(makeHairState(s.groom, s.config.sim, Pose{}), s.config.sim).pinned[0] - 1;
+  Settled out;
+  out.sag = x.front().y - x.back().y;
+  if (p >= 1 && p + 1 < int(x.size())) {
+    const glm::dvec3 held = glm::normalize(x[p] - x[p - 1]);
+    const glm::dvec3 next = glm::normalize(x[p + 1] - x[p]);
+    out.turn = glm::degrees(std::acos(std::clamp(glm::dot(held, next), -1.0, 1.0)));
+  }
+  return out;
 }
 
 }  // namespace
@@ -43,18 +64,20 @@ void runWindow(const Options& o) {
   // steps; near the clamped root and the free tip it still shapes the strand.
   const double B = Config{}.sim.bendingStiffness;
   const double free = kCantileverLength * 6.0 / 7.0;
-  Csv sags({"window_length_m", "particles", "gravity", "sag_mm", "beam_sag_mm"});
+  Csv sags({"window_length_m", "particles", "gravity", "sag_mm", "beam_sag_mm", "clamp_turn_deg"});
   for (double g : {1.0, 9.81})
     for (int particles : {16, 32, 64})
       for (float length : {0.01f, 0.015f, 0.02f, 0.03f, 0.04f, 0.06f}) {
-        const double mm = 1000.0 * sag(particles, length, g);
+        const Settled settled = settle(particles, length, g);
+        const double mm = 1000.0 * settled.sag;
         // Euler-Bernoulli: a clamped beam of the free length under its weight, small sag.
         const double beam = 1000.0 * g * std::pow(free, 4.0) / (8.0 * B);
-        sags.add(double(length)).add(particles).add(g).add(mm).add(beam);
+        sags.add(double(length)).add(particles).add(g).add(mm).add(beam).add(settled.turn);
         sags.endRow();
         std::fprintf(stderr,
-                     "  window %4.1f cm  %2d particles  g %4.2f  sag %6.2f mm (beam %.2f)\n",
-                     100.0 * length, particles, g, mm, beam);
+                     "  window %4.1f cm  %2d particles  g %4.2f  sag %6.2f mm (beam %.2f)  turn at "
+                     "the clamp %5.1f deg\n",
+                     100.0 * length, particles, g, mm, beam, settled.turn);
       }
   sags.write(o.out + "/window_sag.csv");
 }
