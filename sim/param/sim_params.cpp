@@ -199,14 +199,13 @@ std::vector<Param<Config>> build() {
           .logScale()
           .onlyWhen(calibratedModel)
           .display(1.0, "m^4/s^2"),
-      param(
-          "sim.root_length", "Root length", "Simulation", &Config::sim, &SimConfig::rootLength, 0.0,
-          0.2,
-          "Calibrated: where the scalp clamps the strand, its length from the root (m; the panel "
-          "shows cm); at least `pinned` particles' reach. The clamp holds position and direction "
-          "(a built-in end) and may fall between particles: the held piece is this length "
-          "whatever the particles.",
-          Effect::Live)
+      param("sim.root_length", "Root length", "Simulation", &Config::sim, &SimConfig::rootLength,
+            0.0, 0.2,
+            "Calibrated: where the scalp clamps the strand, its length from the root (m; the panel "
+            "shows cm); at least `pinned` particles' reach. The clamp holds position and direction "
+            "(a built-in end) and may fall between particles: the held piece is this length "
+            "whatever the particles.",
+            Effect::Live)
           .onlyWhen(calibratedModel)
           .display(100.0, "cm"),
       param("sim.stiffness_window", "Stiffness window w", "Simulation", &Config::sim,
