@@ -13,7 +13,6 @@
 #include <glm/geometric.hpp>
 
 #include "sim/solver/cpu_solver.h"
-#include "sim/solver/stiffness.h"
 #include "sim/core/hair_state.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/core/pose.h"
@@ -123,14 +122,9 @@ inline ClampedShape clampedShape(const SolverMaker& make, float windowLength, do
   run.runTo(2.0);
   std::vector<glm::vec4> x;
   solver->readPositions(x);
-  const Regions regions = buildRegions(makeHairState(s.groom, s.config.sim, Pose{}), s.config.sim);
-  const int p = regions.pinned[0] - 1;
-  auto at = [&](int i) { return glm::dvec3(x[i].x, x[i].y, x[i].z); };
-  const glm::dvec3 held = glm::normalize(at(p) - at(p - 1)),
-                   free = glm::normalize(at(p + 1) - at(p));
   ClampedShape shape;
   shape.sag = double(x.front().y) - double(x.back().y);
-  shape.turn = glm::degrees(std::acos(std::clamp(glm::dot(held, free), -1.0, 1.0)));
+  shape.turn = clampTurnDegrees(s, x);
   return shape;
 }
 

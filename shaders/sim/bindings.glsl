@@ -8,7 +8,8 @@
 #define CSM_SIM_BINDINGS_GLSL
 
 // The hair state, in HairState's layout (sim/core/hair_state.h).
-#define CSM_BIND_REST 0             // vec4: rest xyz in the head frame, w mass
+#define CSM_BIND_REST 0             // vec4: rest xyz in the head frame, w the clamp field's
+                                    // tau (clamp_field.glsl; the GPU reads no mass from it)
 #define CSM_BIND_POSITION 1         // vec4: world position (the renderer draws from it)
 #define CSM_BIND_VELOCITY 2         // vec4
 #define CSM_BIND_STRAND_FIRST 3     // uint: strand s owns [first[s], first[s+1])
@@ -33,10 +34,9 @@
       // ghosts and particles from 0), w last particle of the region
       // (indices within the strand, exact in float)
 #define CSM_BIND_STRAND_STIFFNESS \
-  23  // vec4 x2 per strand: x calibrated rate k (1/s^2), y per-region
-      // mass of a ghost, z pinned particles, w the clamp's arc from the
-      // root (m); then x the clamp field's fit reach (m, 0: none), y the
-      // end of its fit particles (clamp_field.glsl)
+  23  // vec4 per strand: x calibrated rate k (1/s^2), y per-region
+      // mass of a ghost, z pinned particles, w the end of the clamp
+      // field's fit particles (clamp_field.glsl; none when <= z)
 #define CSM_BIND_MEASURE \
   24                        // uvec4 x2 per CSM_MEASURE_GROUP particles: the measures of the
                             // group (measure.comp), read back behind a fence

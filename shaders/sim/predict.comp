@@ -25,7 +25,7 @@ void main() {
   uint i = globalIndex();
   if (i >= P.particles) return;
   uint s = particleStrand[i];
-  int pinned = int(strandStiffness[2u * s].z);
+  int pinned = int(strandStiffness[s].z);
   vec3 vPred;
   pred[i] = vec4(predictParticle(i, strandFirst[s], strandFirst[s + 1u], pinned, S[substep], vPred),
                  1.0);

@@ -62,17 +62,15 @@ void main() {
   vec3 origin = texelFetch(predTex, int(a)).xyz;
   vec3 rest0 = texelFetch(restTex, int(a)).xyz;
   Substep st = S[substep];
-  vec4 stiff = strandStiffness[2u * s];
+  vec4 stiff = strandStiffness[s];
   // Ghosts behind the root (sim/solver/stiffness.h): -j d at rest, -j D now, root-relative.
   float mg = stiff.y;
   vec3 d = n > 1 ? texelFetch(restTex, int(a) + 1).xyz - rest0 : vec3(0.0);
   vec3 D = mat3(st.head) * d;
   // The built-in end (clamp_field.glsl): the held particles and the ghosts take the free
   // strand's curvature at the clamp, continued.
-  vec4 stiffB = strandStiffness[2u * s + 1u];
   int pinned = int(stiff.z);
-  ClampField field = clampFieldOf(a, a, n, stiff, stiffB, st.head);
-  float arc = 0.0;
+  ClampField field = clampFieldOf(a, a, n, stiff, st.head);
 
   // Prefix sums over the strand's particles, weighted by per-region mass: m, m y, m ȳ, m y ȳᵀ
   // (y = x* - x*_root, ȳ = x̄ - x̄_root). Entry j holds the sum over particles [0, j).
@@ -85,10 +83,9 @@ void main() {
   prefA[0] = mat3(0.0);
   for (int j = 0; j < n; ++j) {
     float m = texelFetch(regionTex, int(a) + j).x;
-    vec3 yr = texelFetch(restTex, int(a) + j).xyz - rest0;
-    if (j > 0) arc += length(yr - (texelFetch(restTex, int(a) + j - 1).xyz - rest0));
-    vec3 shift = j < pinned && stiffB.x > 0.0 ? clampShift(field, (arc - stiff.w) / stiffB.x)
-                                               : vec3(0.0);
+    vec4 r = texelFetch(restTex, int(a) + j);  // w: its tau (clamp_field.glsl)
+    vec3 yr = r.xyz - rest0;
+    vec3 shift = j < pinned ? clampShift(field, r.w) : vec3(0.0);
     vec3 y = texelFetch(predTex, int(a) + j).xyz + shift - origin;
     prefM[j + 1] = prefM[j] + m;
     prefX[j + 1] = prefX[j] + m * y;

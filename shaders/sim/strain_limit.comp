@@ -31,7 +31,7 @@ void main() {
   uint s = strandOrder[id];
   uint a = strandFirst[s];
   int n = int(strandFirst[s + 1u] - a);
-  int pinned = int(strandStiffness[2u * s].z);
+  int pinned = int(strandStiffness[s].z);
   int first = max(1, pinned);
   if (n <= first) return;
 

@@ -103,7 +103,7 @@ vec4 rangeSumD(Slot o, int lo, int hi) {
 // barrier after. As strain_limit.comp's loop, particle for particle.
 void sweepStrands(Slot o, uint substep) {
   if (o.live && o.j == 0) {
-    int pinned = int(strandStiffness[2u * o.s].z);
+    int pinned = int(strandStiffness[o.s].z);
     int first = max(1, pinned);
     if (o.n > first) {
       Substep st = S[substep];

@@ -40,13 +40,14 @@ void main() {
   Slot o = groupSlot();
   uint lid = gl_LocalInvocationID.x;
   Substep st = S[substep];
-  vec4 stiff = strandStiffness[2u * o.s];
+  vec4 stiff = strandStiffness[o.s];
   int pinned = int(stiff.z);
   vec3 vPred = vec3(0.0);
   vec3 xp = o.live ? predictParticle(o.p, o.a, o.a + uint(o.n), pinned, st, vPred) : vec3(0.0);
   vec4 region = o.live ? readRegion(o.p) : vec4(0.0);
   // A slot past the group's end reads nothing (a fetch out of range is undefined).
-  vec3 rest = o.live ? readRest(o.p).xyz : vec3(0.0);
+  vec4 restTau = o.live ? readRest(o.p) : vec4(0.0);  // w: its tau (clamp_field.glsl)
+  vec3 rest = restTau.xyz;
   vec3 rest0 = o.live ? readRest(o.a).xyz : vec3(0.0);
   vec3 restNext = o.live ? readRest(int(o.a) + min(1, o.n - 1)).xyz : vec3(0.0);
 
@@ -56,13 +57,11 @@ void main() {
   vec3 origin = shA[o.root].xyz;
   // The built-in end (clamp_field.glsl): the held particles and the ghosts of this slot's
   // region take the free strand's curvature at the clamp, continued.
-  vec4 stiffB = strandStiffness[2u * o.s + 1u];
   int ghosts = max(0, -int(region.z));
   bool behind = o.live && o.j < pinned;
   ClampField field = ClampField(vec3(0.0), 0.0, 0.0);
-  if (o.live && (behind || ghosts > 0))
-    field = clampFieldOf(o.a, o.root, o.n, stiff, stiffB, st.head);
-  vec3 shift = behind ? clampShift(field, clampTauOf(o.a, o.j, stiff, stiffB)) : vec3(0.0);
+  if (o.live && (behind || ghosts > 0)) field = clampFieldOf(o.a, o.root, o.n, stiff, st.head);
+  vec3 shift = behind ? clampShift(field, restTau.w) : vec3(0.0);
   barrier();
 
   // Scan 1: m, m y (shA), m ȳ and A's first entry (shB), the rest of A = m y ȳᵀ (shC, shD).

@@ -33,7 +33,6 @@ void StrandBuffers::upload(const HairState& st, const glm::dquat& head) {
       restSum += glm::length(glm::dvec3(st.rest[i + 1]) - glm::dvec3(st.rest[i]));
   meanSegment = segments > 0 ? restSum / segments : 0.0;
 
-  fill(rest, st.rest);
   fill(position, st.position);
   fill(velocity, st.velocity);
   fill(strandFirst, st.strandFirst);
@@ -47,7 +46,6 @@ void StrandBuffers::upload(const HairState& st, const glm::dquat& head) {
   fill(rotation, std::vector<glm::vec4>(particles, glm::vec4(head.x, head.y, head.z, head.w)));
   view(positionTex, position, GL_RGBA32F);
   view(velocityTex, velocity, GL_RGBA32F);
-  view(restTex, rest, GL_RGBA32F);
   view(predictedTex, predicted, GL_RGBA32F);
 }
 
@@ -60,14 +58,16 @@ void StrandBuffers::uploadRegions(const HairState& state, const Regions& regions
                                float(regions.lo[i]), float(regions.hi[i]));
   }
   fill(region, perParticle);
-  // Two per strand (shaders/sim/bindings.glsl, CSM_BIND_STRAND_STIFFNESS).
-  std::vector<glm::vec4> perStrand(2 * strandCount);
-  for (size_t s = 0; s < strandCount; ++s) {
-    perStrand[2 * s] = glm::vec4(float(regions.rate[s]), float(regions.ghostMass[s]),
-                                 float(regions.pinned[s]), float(regions.clampArc[s]));
-    perStrand[2 * s + 1] =
-        glm::vec4(float(regions.fitReach[s]), float(regions.fitEnd[s]), 0.0f, 0.0f);
-  }
+  // The rest shape with each particle's clamp tau in w (CSM_BIND_REST), which the regions set.
+  std::vector<glm::vec4> restTau(particleCount);
+  for (size_t i = 0; i < particleCount; ++i)
+    restTau[i] = glm::vec4(glm::vec3(state.rest[i]), float(regions.clampFit[i].y));
+  fill(rest, restTau);
+  view(restTex, rest, GL_RGBA32F);
+  std::vector<glm::vec4> perStrand(strandCount);
+  for (size_t s = 0; s < strandCount; ++s)
+    perStrand[s] = glm::vec4(float(regions.rate[s]), float(regions.ghostMass[s]),
+                             float(regions.pinned[s]), float(regions.fitEnd[s]));
   fill(strandStiffness, perStrand);
   view(regionTex, region, GL_RGBA32F);
   const std::vector<double> w = contactInverseMass(state, regions);

@@ -481,7 +481,7 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
       const int pinned = regions_.pinned[s];
       const std::vector<glm::dvec2>& fit = regions_.clampFit;
       ClampField field;
-      for (int j = pinned; j < n && fit[a + j].x != 0.0; ++j)
+      for (int j = pinned; j < regions_.fitEnd[s]; ++j)
         field.a += fit[a + j].x * (xPred_[a + j] - head.apply(rest_[a + j]));
       if (n > 1) field.reflect(toGlm(D));
       auto behind = [&](int j) { return j < pinned ? field.at(fit[a + j].y) : glm::dvec3(0.0); };

@@ -35,9 +35,7 @@ void fitClampField(Regions& r, size_t s, uint32_t a, const std::vector<double>& 
   const double wanted = std::max(windowLength, clampArc);
   while (end < count && (arc[end] - clampArc <= wanted * (1.0 + kTie) || end - pinned < 3)) ++end;
   const double scale = end > pinned ? arc[end - 1] - clampArc : 0.0;
-  r.clampArc[s] = clampArc;
   if (!(scale > 0.0)) return;
-  r.fitReach[s] = scale;
   r.fitEnd[s] = end;
   for (int i = 0; i < count; ++i) r.clampFit[a + i].y = (arc[i] - clampArc) / scale;
   double sum4 = 0.0;
@@ -73,8 +71,6 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
   r.pinned.assign(strands, std::max(0, sim.pinned));
   r.ghostMass.assign(strands, 0.0);
   r.clampFit.assign(n, glm::dvec2(0.0));
-  r.clampArc.assign(strands, 0.0);
-  r.fitReach.assign(strands, 0.0);
   r.fitEnd.assign(strands, 0);
   const bool calibrated = sim.stiffnessModel == StiffnessModel::Calibrated;
   const double L = sim.windowLength;

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -72,9 +73,7 @@ struct Regions {
   // window of the clamp) and y = tau, its rest arc from the clamp over the fit's reach (negative
   // behind the clamp).
   std::vector<glm::dvec2> clampFit;
-  std::vector<double> clampArc;  // per strand: the clamp's rest arc from the root (m)
-  std::vector<double> fitReach;  // per strand: tau's unit, the last fit particle's arc from it
-  std::vector<int> fitEnd;       // per strand: the fit particles end here (pinned: none)
+  std::vector<int> fitEnd;  // per strand: the fit particles are [pinned, fitEnd) (0: none)
   double maxRate = 0.0;
   double planRate = 0.0;  // the rate the steps follow (planRate below)
 
@@ -123,8 +122,8 @@ struct ClampField {
   }
   // `along`: the clamp's direction in the world (any length).
   void reflect(const glm::dvec3& along) {
-    const double l2 = along.x * along.x + along.y * along.y + along.z * along.z;
-    if (l2 > 0.0) a -= (2.0 * (a.x * along.x + a.y * along.y + a.z * along.z) / l2) * along;
+    const double l2 = glm::dot(along, along);
+    if (l2 > 0.0) a -= (2.0 * glm::dot(a, along) / l2) * along;
   }
 };
 

@@ -4,11 +4,13 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "sim/core/segment_pairs.h"
 #include "sim/core/hair_state.h"
 #include "sim/core/pose.h"
 #include "sim/solver/accuracy.h"
+#include "sim/solver/stiffness.h"
 
 namespace csm {
 namespace {
@@ -129,6 +131,16 @@ Scene cantileverScene(int particles, double length, int strands) {
   c.head.spheres = {{{0.0f, 10.0f, 0.0f}, 0.01f}};  // out of the way
   c.head.fitSpheres = false;
   return s;
+}
+
+double clampTurnDegrees(const Scene& scene, std::span<const glm::vec4> x) {
+  const SimConfig& sim = scene.config.sim;
+  const int p = buildRegions(makeHairState(scene.groom, sim, Pose{}), sim).pinned[0] - 1;
+  const uint32_t end = scene.groom.first[1];
+  if (p < 1 || uint32_t(p) + 1 >= end) return 0.0;
+  const glm::dvec3 held = glm::normalize(d3(x[p]) - d3(x[p - 1]));
+  const glm::dvec3 next = glm::normalize(d3(x[p + 1]) - d3(x[p]));
+  return glm::degrees(std::acos(std::clamp(glm::dot(held, next), -1.0, 1.0)));
 }
 
 EnergyMeter::EnergyMeter(const Groom& groom, const SimConfig& sim) : first_(groom.first) {

@@ -94,6 +94,11 @@ int pinnedForLength(double clampLength, double segmentLength);
 // down and sags. Several strands fan out around the vertical; no head, wind or collisions.
 Scene cantileverScene(int particles, double length, int strands = 1);
 
+// The turn (degrees) of a scene's first strand at its last held particle, between the held
+// segment before it and the free one after (0 when it has no free particle): how far the clamp
+// hinges (METHOD.md section 4.4).
+double clampTurnDegrees(const Scene& scene, std::span<const glm::vec4> x);
+
 // ---- Energy and stability -------------------------------------------------------------------
 
 // Kinetic plus gravitational energy of the strands, with each particle's potential measured

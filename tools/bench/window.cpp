@@ -1,16 +1,14 @@
 // The stiffness window of the calibrated model (sim/solver/stiffness.h): the coefficient c_w it is
 // calibrated with, measured on the CPU solver for w = 1..32 beside the table, and what the
 // window length still does to a strand at a fixed bending stiffness.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
+#include <glm/vec4.hpp>
 
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
-#include "sim/core/hair_state.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/solver/stiffness.h"
 
@@ -34,16 +32,11 @@ Settled settle(int particles, float windowLength, double gravity) {
   CpuSolver solver;
   SceneRunner run(solver, s);
   run.runTo(3.0);
-  const std::vector<glm::dvec3>& x = solver.positions();
-  const int p =
-      buildRegions(makeHairState(s.groom, s.config.sim, Pose{}), s.config.sim).pinned[0] - 1;
+  std::vector<glm::vec4> x;
+  solver.readPositions(x);
   Settled out;
-  out.sag = x.front().y - x.back().y;
-  if (p >= 1 && p + 1 < int(x.size())) {
-    const glm::dvec3 held = glm::normalize(x[p] - x[p - 1]);
-    const glm::dvec3 next = glm::normalize(x[p + 1] - x[p]);
-    out.turn = glm::degrees(std::acos(std::clamp(glm::dot(held, next), -1.0, 1.0)));
-  }
+  out.sag = double(x.front().y) - double(x.back().y);
+  out.turn = clampTurnDegrees(s, x);
   return out;
 }
 
