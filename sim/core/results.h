@@ -82,6 +82,10 @@ struct StiffnessInfo {
   double rateMin = 0.0, rateMax = 0.0;
   size_t strands = 0;
   size_t stifferStrands = 0;  // calibrated strands with k h^2 > 1: run at alpha = 1
+  // Calibrated: B / (g L^3), L the longest free length of a clamped strand (0 without
+  // gravity or such strands): how far the goals oppose gravity (softHairDftl).
+  double bendingNumber = 0.0;
+  double dftl = 0.0;  // the DFTL correction it runs with
 };
 
 struct StageTime {

@@ -241,7 +241,10 @@ std::vector<Param<Config>> build() {
           .logScale(),
       param("sim.dftl", "DFTL correction", "Simulation", &Config::sim, &SimConfig::dftl, 0.0, 1.0,
             "Dynamic follow-the-leader velocity correction after strain limiting (Mueller et al. "
-            "2012); 0 = off, 1 = full.",
+            "2012); 0 = off, 1 = full. Soft hair needs it: where the bending number B / (g L^3) "
+            "of the longest strand is under about 2e-2 the strain-limiting sweep whips the tips "
+            "and gains energy whatever the steps, and the stiffness line below says how much "
+            "correction holds it (0.9 always does).",
             Effect::Live),
       param("sim.rotation_iterations", "Rotation iterations", "Simulation", &Config::sim,
             &SimConfig::rotationIterations, 1, 32,

@@ -1,9 +1,12 @@
 #include "sim/solver/stiffness.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
+#include <Eigen/Dense>
 #include <glm/geometric.hpp>
 
 namespace csm {
@@ -19,6 +22,11 @@ constexpr int kTableSize = int(sizeof kWindowCoefficient / sizeof kWindowCoeffic
 // Ties (a window of exactly w + 1/2 segments) go up, in the regions and in the rate alike:
 // rounding in the arc lengths must not split them.
 constexpr double kTie = 1e-6;
+
+// Strands whose segments are within this share of their mean are spaced evenly (endFactor).
+constexpr double kEvenSpacing = 1e-4;
+// The end factor's range.
+constexpr double kEndFactorRange = 2.0;
 
 glm::dvec3 restOf(const HairState& st, size_t i) {
   return glm::dvec3(st.rest[i].x, st.rest[i].y, st.rest[i].z);
@@ -42,6 +50,102 @@ void fitClampField(Regions& r, size_t s, uint32_t a, const std::vector<double>& 
   for (int j = pinned; j < end; ++j) sum4 += std::pow(r.clampFit[a + j].y, 4.0);
   for (int j = pinned; j < end; ++j)
     r.clampFit[a + j].x = std::pow(r.clampFit[a + j].y, 2.0) / sum4;
+}
+
+}  // namespace
+
+Eigen::MatrixXd linearPull(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc) {
+  const int count = int(arc.size()), pinned = r.pinned[s], free = count - pinned;
+  if (free < 1 || count < 2) return {};
+  // Behind the clamp a member's displacement is tau^2 times the field's a, a fixed row over
+  // the fit particles (ClampField).
+  Eigen::RowVectorXd field = Eigen::RowVectorXd::Zero(free);
+  for (int j = pinned; j < r.fitEnd[s]; ++j) field[j - pinned] = r.clampFit[a + j].x;
+  const double seg0 = arc[1] - arc[0];
+  const double tau0 = r.clampFit[a].y, ghostTau = r.clampFit[a + 1].y - tau0;
+  auto tauOf = [&](int j) {
+    return std::max(j < 0 ? tau0 + j * ghostTau : r.clampFit[a + j].y, -kClampDepth);
+  };
+  auto xOf = [&](int j) { return j < 0 ? j * seg0 : arc[j]; };
+  auto mOf = [&](int j) { return j < 0 ? r.ghostMass[s] : r.mass[a + j]; };
+  // Each region's rigid fit, linearised: a translation ubar and a turn theta about its
+  // centroid, rows over the free particles' displacements across the strand.
+  Eigen::MatrixXd ubar = Eigen::MatrixXd::Zero(count, free), theta = ubar;
+  std::vector<double> xbar(count);
+  for (int k = 0; k < count; ++k) {
+    const int lo = r.lo[a + k], hi = r.hi[a + k];
+    double M = 0.0, X = 0.0;
+    for (int j = lo; j <= hi; ++j) {
+      M += mOf(j);
+      X += mOf(j) * xOf(j);
+    }
+    xbar[k] = X / M;
+    double J = 0.0, fieldU = 0.0, fieldT = 0.0;
+    for (int j = lo; j <= hi; ++j) {
+      const double m = mOf(j), dx = xOf(j) - xbar[k];
+      J += m * dx * dx;
+      if (j >= pinned) {
+        ubar(k, j - pinned) += m / M;
+        theta(k, j - pinned) += m * dx;
+      } else {
+        const double t2 = tauOf(j) * tauOf(j);
+        fieldU += m / M * t2;
+        fieldT += m * dx * t2;
+      }
+    }
+    ubar.row(k) += fieldU * field;
+    theta.row(k) += fieldT * field;
+    theta.row(k) *= J > 0.0 ? 1.0 / J : 0.0;
+  }
+  // Goals average the regions that contain each particle: A = I - P.
+  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(free, free);
+  for (int i = pinned; i < count; ++i) {
+    const int l0 = std::max(0, r.lo[a + i]), l1 = r.hi[a + i];
+    const double share = 1.0 / double(l1 - l0 + 1);
+    for (int k = l0; k <= l1; ++k)
+      A.row(i - pinned) -= share * (ubar.row(k) + (arc[i] - xbar[k]) * theta.row(k));
+  }
+  return A;
+}
+
+double linearTipSag(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc) {
+  const Eigen::MatrixXd A = linearPull(r, s, a, arc);
+  if (A.rows() == 0) return 0.0;
+  const Eigen::VectorXd u = A.partialPivLu().solve(Eigen::VectorXd::Ones(A.rows()));
+  return u[A.rows() - 1];
+}
+
+namespace {
+
+// The end factors of strands spaced evenly, by what sets them: the factor is a ratio of
+// lengths to the fourth power, so it does not depend on the scale.
+using EndKey = std::array<long, 6>;
+using EndFactors = std::map<EndKey, double>;
+
+double endFactor(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc,
+                 double clampArc, EndFactors& cache) {
+  const int count = int(arc.size());
+  const double free = arc[count - 1] - clampArc;
+  const double mean = count > 1 ? arc[count - 1] / (count - 1) : 0.0;
+  const double window = mean * r.window[s];
+  if (count < 3 || !(free >= window) || !(r.rate[s] > 0.0)) return 1.0;
+  bool even = true;
+  for (int j = 0; j + 1 < count && even; ++j)
+    even = std::abs(arc[j + 1] - arc[j] - mean) <= kEvenSpacing * mean;
+  const EndKey key{count,   r.pinned[s], r.fitEnd[s],
+                   r.lo[a], r.window[s], std::lround(clampArc / mean / kEvenSpacing)};
+  if (even) {
+    const auto found = cache.find(key);
+    if (found != cache.end()) return found->second;
+  }
+  // Per unit B and load: the beam's tip sag, and the strand's at k = B / (c_w (w l)^4).
+  const double beam = std::pow(free, 4.0) / 8.0;
+  const double csm =
+      linearTipSag(r, s, a, arc) * windowCoefficient(r.window[s]) * std::pow(window, 4.0);
+  const double f = csm > 0.0 && std::isfinite(csm) ? csm / beam : 1.0;
+  const double kept = std::clamp(f, 1.0 / kEndFactorRange, kEndFactorRange);
+  if (even) cache.emplace(key, kept);
+  return kept;
 }
 
 }  // namespace
@@ -72,9 +176,12 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
   r.ghostMass.assign(strands, 0.0);
   r.clampFit.assign(n, glm::dvec2(0.0));
   r.fitEnd.assign(strands, 0);
+  r.endFactor.assign(strands, 1.0);
+  r.freeLength.assign(strands, 0.0);
   const bool calibrated = sim.stiffnessModel == StiffnessModel::Calibrated;
   const double L = sim.windowLength;
   std::vector<double> arc, seg;
+  EndFactors cache;
   for (size_t s = 0; s < strands; ++s) {
     const uint32_t a = st.strandFirst[s], b = st.strandFirst[s + 1];
     const int count = int(b - a);
@@ -88,12 +195,13 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
     }
     const double meanSegment = count > 1 ? arc[count - 1] / (count - 1) : 0.0;
     int ghosts = 0;  // the most ghosts a region has
+    double clampArc = 0.0;
     if (calibrated) {
       // The held piece by length: the clamp sits at arc s_c = sim.rootLength (at least the
       // sim.pinned particles' reach), between particles where it falls there; the particles
       // up to it follow the head.
       const int fewest = std::min(std::max(0, sim.pinned), count);
-      const double clampArc = std::max(double(sim.rootLength), fewest > 0 ? arc[fewest - 1] : 0.0);
+      clampArc = std::max(double(sim.rootLength), fewest > 0 ? arc[fewest - 1] : 0.0);
       int pinned = fewest;
       while ((fewest > 0 || sim.rootLength > 0.0f) && pinned < count &&
              arc[pinned] <= clampArc * (1.0 + kTie))
@@ -143,11 +251,15 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
         r.hi[a + k] = std::min(count - 1, k + w);
       }
     }
-    r.maxRate = std::max(r.maxRate, r.rate[s]);
     // Each particle carries half of each segment beside it, as makeHairState's masses do.
     for (int i = 0; i < count; ++i) {
       const double carried = std::max(0.5 * ((i > 0 ? seg[i - 1] : 0.0) + seg[i]), 1e-6);
       r.mass[a + i] = carried / double(r.hi[a + i] - std::max(0, r.lo[a + i]) + 1);
+    }
+    if (calibrated && r.fitEnd[s] > 0) {
+      r.freeLength[s] = arc[count - 1] - clampArc;
+      r.endFactor[s] = endFactor(r, s, a, arc, clampArc, cache);
+      r.rate[s] *= r.endFactor[s];
     }
     // J_k, directly: a build-time cost of O(region) per region.
     const glm::dvec3 root = restOf(st, a);
@@ -172,6 +284,7 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
       r.inertia[a + k] = J;
     }
   }
+  for (const double k : r.rate) r.maxRate = std::max(r.maxRate, k);
   r.planRate = planRate(r.rate);
   return r;
 }
@@ -213,6 +326,12 @@ StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim) {
   info.model = sim.stiffnessModel;
   info.plan = planFrame(sim, regions.planRate);
   info.strands = regions.rate.size();
+  info.dftl = sim.dftl;
+  const double g = glm::length(glm::dvec3(sim.gravity));
+  double longest = 0.0;
+  for (const double l : regions.freeLength) longest = std::max(longest, l);
+  if (sim.stiffnessModel == StiffnessModel::Calibrated && g > 0.0 && longest > 0.0)
+    info.bendingNumber = double(sim.bendingStiffness) / (g * longest * longest * longest);
   bool first = true;
   for (size_t s = 0; s < regions.rate.size(); ++s) {
     const double k = regions.rate[s];
@@ -260,21 +379,51 @@ std::string stiffnessText(const StiffnessInfo& info) {
   return s;
 }
 
+double softHairDftl(double bendingNumber, int steps) {
+  // Measured by csmhair-bench --only soft_hair: rows B / (g L^3), columns steps a frame, the least
+  // of 0, 0.25, 0.5, 0.75, 0.9 that keeps the energy within 1.1x of its start.
+  constexpr double kNumber[] = {1e-3, 2e-3, 3e-3, 5e-3, 1e-2, 2e-2};
+  constexpr int kSteps[] = {1, 2, 4, 8, 16, 32};
+  constexpr double kDftl[6][6] = {
+      {0.5, 0.75, 0.75, 0.9, 0.9, 0.9},    {0.25, 0.75, 0.75, 0.75, 0.9, 0.9},
+      {0.25, 0.5, 0.75, 0.75, 0.75, 0.75}, {0.25, 0.25, 0.5, 0.75, 0.75, 0.75},
+      {0.25, 0.0, 0.0, 0.0, 0.25, 0.25},   {0.25, 0.0, 0.0, 0.0, 0.0, 0.0}};
+  // The softer row at or below the number (softer than measured: the softest), the column at
+  // or above the steps (more than measured: the most).
+  int row = 0;
+  while (row + 1 < 6 && kNumber[row + 1] <= bendingNumber) ++row;
+  int column = 0;
+  while (column + 1 < 6 && kSteps[column] < steps) ++column;
+  return kDftl[row][column];
+}
+
 std::string stiffnessWarning(const StiffnessInfo& info) {
   char buf[256];
+  std::string out;
   if (info.plan.capped) {
     std::snprintf(buf, sizeof buf,
                   "the stiffness asks for %d steps per frame but sim.max_substeps is %d: the "
                   "stiffest strands are softer than asked (alpha = 1)",
                   info.plan.wanted, info.plan.substeps);
-    return buf;
+    out = buf;
+  } else if (info.stifferStrands > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "%zu of %zu strands, shorter than the window, are stiffer than %d steps a frame "
+                  "resolve: they run at alpha = 1 (as stiff as the steps allow)",
+                  info.stifferStrands, info.strands, info.plan.substeps);
+    out = buf;
   }
-  if (info.stifferStrands == 0) return {};
-  std::snprintf(buf, sizeof buf,
-                "%zu of %zu strands, shorter than the window, are stiffer than %d steps a frame "
-                "resolve: they run at alpha = 1 (as stiff as the steps allow)",
-                info.stifferStrands, info.strands, info.plan.substeps);
-  return buf;
+  const double wanted =
+      info.bendingNumber > 0.0 ? softHairDftl(info.bendingNumber, info.plan.substeps) : 0.0;
+  if (info.dftl < wanted - 1e-6) {
+    std::snprintf(buf, sizeof buf,
+                  "soft hair: at B / (g L^3) = %.2g (the longest strand) and %d steps a frame "
+                  "the strain-limiting sweep whips the tips and gains energy unless sim.dftl is "
+                  "at least %.2g (it is %.2g); more steps do not help",
+                  info.bendingNumber, info.plan.substeps, wanted, info.dftl);
+    out += out.empty() ? buf : std::string("; ") + buf;
+  }
+  return out;
 }
 
 }  // namespace csm

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -73,7 +74,9 @@ struct Regions {
   // window of the clamp) and y = tau, its rest arc from the clamp over the fit's reach (negative
   // behind the clamp).
   std::vector<glm::dvec2> clampFit;
-  std::vector<int> fitEnd;  // per strand: the fit particles are [pinned, fitEnd) (0: none)
+  std::vector<int> fitEnd;         // per strand: the fit particles are [pinned, fitEnd) (0: none)
+  std::vector<double> endFactor;   // per strand: the ends' factor in its rate (endFactor below)
+  std::vector<double> freeLength;  // per strand: rest arc beyond the clamp (clamped strands)
   double maxRate = 0.0;
   double planRate = 0.0;  // the rate the steps follow (planRate below)
 
@@ -147,6 +150,24 @@ inline double ghostSum2(int q) {
 inline constexpr double kOutlierRate = 16.0;
 double planRate(const std::vector<double>& rates);
 
+// The ends' factor in a clamped strand's rate (calibrated model). c_w is the interior's
+// coefficient; near the clamp and the free tip the regions are continued (ClampField) or
+// clipped, and a strand whose free length is a few windows sags more than the beam of the same B
+// (12 cm clamped over 1.7 cm: +11 % at a 4 cm window, +61 % at 6 cm). buildRegions multiplies
+// each such strand's k by its tip's sag under a uniform load from the goals linearised
+// (linearTipSag), over the Euler-Bernoulli beam's, g L^4 / (8 B): the strand then sags as the
+// beam at every window, and the factor tends to 1 as the strand grows longer than the window.
+// Strands whose free length is under one window keep k (they are nearly rigid, and with one or
+// two free particles the field's extrapolation left no margin for a larger pull); the factor is
+// kept within [1/2, 2]. Evenly spaced strands share the factor by their shape in segments.
+//
+// linearPull: I - P over the free particles of strand s (first particle a, rest arcs `arc`),
+// straightened, P the goals linearised for small displacements across it (each region's rigid
+// fit a translation and a turn; behind the clamp the field's tau^2 a). linearTipSag: the tip's
+// displacement u solving (I - P) u = 1, i.e. the sag under a unit acceleration at k = 1.
+Eigen::MatrixXd linearPull(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc);
+double linearTipSag(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc);
+
 // True when a change from `a` to `b` changes the regions (the solvers rebuild them).
 bool regionsChanged(const SimConfig& a, const SimConfig& b);
 
@@ -176,8 +197,22 @@ StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim);
 
 // "4 steps of 4.17 ms, alpha 0.71-1, 2-3 particles per side" and the like, for logs.
 std::string stiffnessText(const StiffnessInfo& info);
-// The warning when the cap binds, or else when some strands are stiffer than the steps; empty
-// when neither.
+// The DFTL correction (sim.dftl) that calibrated hair needs at `steps` steps a frame, by its
+// bending number B / (g L^3) (StiffnessInfo::bendingNumber). The goals barely act on soft hair,
+// and the strain-limiting sweep, which moves a child and never its parent, whips the tips as
+// plain follow-the-leader does. Measured (csmhair-bench --only soft_hair: four strands of 16
+// particles released horizontally, 2 s; at 25 cm, free 21.7 cm, B / (g L^3) = B / 0.0998): without
+// DFTL the energy grows to 1.4-2.3x its start at every step count from 2 to 32 up to a number
+// of 5e-3 (B = 5e-4), and more steps make it worse (1e-2: 1.0 at 2-4 steps, 1.18 at 32); the
+// same number at 12.5 and 6 cm gives the same picture, so the number, not B, is the rule. This
+// is that map: the least of 0, 0.25, 0.5, 0.75, 0.9 that keeps the energy within 1.1x, for the
+// measured number at or below the hair's and the measured steps at or above `steps` (0.9
+// everywhere holds; tests/cpu/stiffness_test.cpp checks cells of it). At one step the rate is
+// capped (alpha = 1) from 2e-3 on, and 0.25 is needed whatever the number.
+double softHairDftl(double bendingNumber, int steps);
+
+// The warnings that apply, joined by "; ": the cap binds, or else some strands are stiffer than
+// the steps; soft hair with less DFTL than softHairDftl. Empty when none.
 std::string stiffnessWarning(const StiffnessInfo& info);
 
 }  // namespace csm

@@ -96,6 +96,8 @@ void runRegionSums(const Options& o);
 void runScaling(const Options& o);
 void runSceneChoices(const Options& o);
 void runWindow(const Options& o);
+// Soft hair without DFTL: energy over B, the steps a frame and the DFTL correction.
+void runSoftHair(const Options& o);
 void runRecording(const Options& o);
 // How far hair moves between searches, in the head's frame, and what a kept list would need
 // (tools/bench/motion.cpp).

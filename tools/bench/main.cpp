@@ -25,9 +25,9 @@ namespace {
 using namespace csm;
 using namespace csm::bench;
 
-const char* kSections[] = {"methods", "stability",     "resolution", "region_sums",
-                           "scaling", "scene_choices", "window",     "recording",
-                           "torture", "soak",          "import",     "motion"};
+const char* kSections[] = {"methods",       "stability", "resolution", "region_sums", "scaling",
+                           "scene_choices", "window",    "recording",  "torture",     "soak",
+                           "import",        "motion",    "soft_hair"};
 
 void usage(FILE* f) {
   std::fprintf(f,
@@ -40,8 +40,8 @@ void usage(FILE* f) {
                "  --only SECTION   run only this section (repeatable): methods, stability,\n"
                "                   resolution, region_sums, scaling, scene_choices, window,\n"
                "                   recording,\n"
-               "                   torture, soak, import, motion (these four run only when\n"
-               "                   named)\n"
+               "                   torture, soak, import, motion, soft_hair (these five\n"
+               "                   run only when named)\n"
                "  --threads N      workers for accuracy runs (default 2; timings run alone)\n"
                "  --no-charts      write CSV only; do not run scripts/charts.py\n"
                "  --help           this text\n");
@@ -177,6 +177,7 @@ int main(int argc, char** argv) {
   if (named("soak")) section("soak", runSoakSection);
   if (named("import")) section("import", runImport);
   if (named("motion")) section("motion", runMotion);
+  if (named("soft_hair")) section("soft_hair", runSoftHair);
   meta["seconds"] = seconds;
   meta["seconds_total"] = std::chrono::duration<double>(Clock::now() - start).count();
   {

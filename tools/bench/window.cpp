@@ -19,7 +19,7 @@ namespace {
 // and the turn (degrees) at the last held particle, between the held segment before it and the
 // free one after.
 struct Settled {
-  double sag = 0.0, turn = 0.0;
+  double sag = 0.0, turn = 0.0, endFactor = 1.0;
 };
 Settled settle(int particles, float windowLength, double gravity) {
   Scene s = cantileverScene(particles, kCantileverLength, 1);
@@ -37,6 +37,9 @@ Settled settle(int particles, float windowLength, double gravity) {
   Settled out;
   out.sag = double(x.front().y) - double(x.back().y);
   out.turn = clampTurnDegrees(s, x);
+  const HairState st = makeHairState(s.groom, s.config.sim, Pose{});
+  const Regions r = buildRegions(st, s.config.sim);
+  out.endFactor = r.endFactor[0];
   return out;
 }
 
@@ -57,7 +60,8 @@ void runWindow(const Options& o) {
   // steps; near the clamped root and the free tip it still shapes the strand.
   const double B = Config{}.sim.bendingStiffness;
   const double free = kCantileverLength * 6.0 / 7.0;
-  Csv sags({"window_length_m", "particles", "gravity", "sag_mm", "beam_sag_mm", "clamp_turn_deg"});
+  Csv sags({"window_length_m", "particles", "gravity", "sag_mm", "beam_sag_mm", "clamp_turn_deg",
+            "end_factor"});
   for (double g : {1.0, 9.81})
     for (int particles : {16, 32, 64})
       for (float length : {0.01f, 0.015f, 0.02f, 0.03f, 0.04f, 0.06f}) {
@@ -65,12 +69,19 @@ void runWindow(const Options& o) {
         const double mm = 1000.0 * settled.sag;
         // Euler-Bernoulli: a clamped beam of the free length under its weight, small sag.
         const double beam = 1000.0 * g * std::pow(free, 4.0) / (8.0 * B);
-        sags.add(double(length)).add(particles).add(g).add(mm).add(beam).add(settled.turn);
+        sags.add(double(length))
+            .add(particles)
+            .add(g)
+            .add(mm)
+            .add(beam)
+            .add(settled.turn)
+            .add(settled.endFactor);
         sags.endRow();
         std::fprintf(stderr,
-                     "  window %4.1f cm  %2d particles  g %4.2f  sag %6.2f mm (beam %.2f)  turn at "
+                     "  window %4.1f cm  %2d particles  g %4.2f  sag %6.2f mm (beam %.2f)  end "
+                     "factor %.3f  turn at "
                      "the clamp %5.1f deg\n",
-                     100.0 * length, particles, g, mm, beam, settled.turn);
+                     100.0 * length, particles, g, mm, beam, settled.endFactor, settled.turn);
       }
   sags.write(o.out + "/window_sag.csv");
 }
