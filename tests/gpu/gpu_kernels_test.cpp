@@ -115,9 +115,10 @@ TEST_CASE("GPU kernels: both paths step the hair alike, each the same twice", "[
     // reach 1 mm and the mean a tenth of the radius (an H100: 0.62 mm and 0.031 mm over 12
     // frames, volume + strands), where without them both stay at rounding's size. On the
     // sculpted mannequin (ears, jaw) a strand that a contact moves lands on another side of
-    // a feature: llvmpipe 1.56 mm and 0.147 mm (strands, distance field).
+    // a feature: llvmpipe 1.56 mm and 0.147 mm (strands, distance field); with the ends'
+    // factor in the rates (stiffer short strands) 3.0 mm and 0.179 mm.
     const bool events = strandContacts(k.mode);
-    CHECK(worst < (events ? 2.5e-3 : 1e-4));
+    CHECK(worst < (events ? 4e-3 : 1e-4));
     CHECK(rms < (events ? 2.5e-4 : 2e-5));
     CHECK(sameTwice == particle.size());
   }
