@@ -379,22 +379,25 @@ std::string stiffnessText(const StiffnessInfo& info) {
   return s;
 }
 
-double softHairDftl(double bendingNumber, int steps) {
-  // Measured by csmhair-bench --only soft_hair: rows B / (g L^3), columns steps a frame, the least
-  // of 0, 0.25, 0.5, 0.75, 0.9 that keeps the energy within 1.1x of its start.
+double softHairDftl(double bendingNumber, int steps, bool capped) {
+  // Measured by csmhair-bench --only soft_hair at 25, 12.5 and 6 cm: rows B / (g L^3), columns
+  // steps a frame, the least of 0, 0.25, 0.5, 0.75, 0.9 that keeps the energy within 1.1x at
+  // every length whose steps were not capped.
   constexpr double kNumber[] = {1e-3, 2e-3, 3e-3, 5e-3, 1e-2, 2e-2};
   constexpr int kSteps[] = {1, 2, 4, 8, 16, 32};
   constexpr double kDftl[6][6] = {
-      {0.5, 0.75, 0.75, 0.9, 0.9, 0.9},    {0.25, 0.75, 0.75, 0.75, 0.9, 0.9},
-      {0.25, 0.5, 0.75, 0.75, 0.75, 0.75}, {0.25, 0.25, 0.5, 0.75, 0.75, 0.75},
-      {0.25, 0.0, 0.0, 0.0, 0.25, 0.25},   {0.25, 0.0, 0.0, 0.0, 0.0, 0.0}};
+      {0.5, 0.75, 0.75, 0.9, 0.9, 0.9},  {0.5, 0.75, 0.75, 0.75, 0.9, 0.9},
+      {0.5, 0.5, 0.75, 0.75, 0.75, 0.9}, {0.5, 0.25, 0.75, 0.75, 0.75, 0.75},
+      {0.0, 0.0, 0.0, 0.0, 0.25, 0.5},   {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
+  // Steps capped (alpha = 1 for the stiffest strands): 0.5 held in every such cell.
+  constexpr double kCapped = 0.5;
   // The softer row at or below the number (softer than measured: the softest), the column at
   // or above the steps (more than measured: the most).
   int row = 0;
   while (row + 1 < 6 && kNumber[row + 1] <= bendingNumber) ++row;
   int column = 0;
   while (column + 1 < 6 && kSteps[column] < steps) ++column;
-  return kDftl[row][column];
+  return std::max(kDftl[row][column], capped ? kCapped : 0.0);
 }
 
 std::string stiffnessWarning(const StiffnessInfo& info) {
@@ -413,8 +416,9 @@ std::string stiffnessWarning(const StiffnessInfo& info) {
                   info.stifferStrands, info.strands, info.plan.substeps);
     out = buf;
   }
-  const double wanted =
-      info.bendingNumber > 0.0 ? softHairDftl(info.bendingNumber, info.plan.substeps) : 0.0;
+  const double wanted = info.bendingNumber > 0.0
+                            ? softHairDftl(info.bendingNumber, info.plan.substeps, info.plan.capped)
+                            : 0.0;
   if (info.dftl < wanted - 1e-6) {
     std::snprintf(buf, sizeof buf,
                   "soft hair: at B / (g L^3) = %.2g (the longest strand) and %d steps a frame "

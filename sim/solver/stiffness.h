@@ -201,15 +201,15 @@ std::string stiffnessText(const StiffnessInfo& info);
 // bending number B / (g L^3) (StiffnessInfo::bendingNumber). The goals barely act on soft hair,
 // and the strain-limiting sweep, which moves a child and never its parent, whips the tips as
 // plain follow-the-leader does. Measured (csmhair-bench --only soft_hair: four strands of 16
-// particles released horizontally, 2 s; at 25 cm, free 21.7 cm, B / (g L^3) = B / 0.0998): without
-// DFTL the energy grows to 1.4-2.3x its start at every step count from 2 to 32 up to a number
-// of 5e-3 (B = 5e-4), and more steps make it worse (1e-2: 1.0 at 2-4 steps, 1.18 at 32); the
-// same number at 12.5 and 6 cm gives the same picture, so the number, not B, is the rule. This
-// is that map: the least of 0, 0.25, 0.5, 0.75, 0.9 that keeps the energy within 1.1x, for the
-// measured number at or below the hair's and the measured steps at or above `steps` (0.9
-// everywhere holds; tests/cpu/stiffness_test.cpp checks cells of it). At one step the rate is
-// capped (alpha = 1) from 2e-3 on, and 0.25 is needed whatever the number.
-double softHairDftl(double bendingNumber, int steps);
+// particles released horizontally, 2 s, at 25, 12.5 and 6 cm with B scaled by the length cubed,
+// i.e. the same numbers; at 25 cm, free 21.4 cm, B / (g L^3) = B / 0.096): without DFTL the
+// energy grows to 1.4-2.3x its start at every step count from 2 to 32 up to a number of 5e-3,
+// and more steps make it worse (1e-2: 1.0 at 4 steps, 1.18-1.26 at 32). This is that map: the
+// least of 0, 0.25, 0.5, 0.75, 0.9 that keeps the energy within 1.1x at all three lengths, for
+// the measured number at or below the hair's and the measured steps at or above `steps`; where
+// the steps are capped (alpha = 1) at least 0.5. 0.9 held in every cell;
+// tests/cpu/stiffness_test.cpp checks cells of it.
+double softHairDftl(double bendingNumber, int steps, bool capped = false);
 
 // The warnings that apply, joined by "; ": the cap binds, or else some strands are stiffer than
 // the steps; soft hair with less DFTL than softHairDftl. Empty when none.

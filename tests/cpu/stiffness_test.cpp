@@ -155,7 +155,7 @@ TEST_CASE("soft hair: the DFTL the rule asks for keeps the energy, and without i
     };
     StiffnessInfo without, with;
     const double gain = run(0.0, &without);
-    const double wanted = softHairDftl(without.bendingNumber, c.steps);
+    const double wanted = softHairDftl(without.bendingNumber, c.steps, without.plan.capped);
     const double kept = run(wanted, &with);
     INFO(c.length * 100 << " cm, B " << c.bending << " (B / (g L^3) " << without.bendingNumber
                         << "), " << c.steps << " steps: energy x" << gain << " without DFTL, x"

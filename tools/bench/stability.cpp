@@ -147,6 +147,7 @@ void runSoftHair(const Options& o) {
     double length, bending, dftl;
     int substeps;
     double number = 0.0;
+    bool capped = false;  // the steps asked for more than the column's: alpha = 1
     StabilityResult result;
   };
   std::vector<Cell> cells;
@@ -172,19 +173,22 @@ void runSoftHair(const Options& o) {
     std::unique_ptr<Solver> solver = s.make();
     c.result = checkStability(*solver, scene, 2.0, 1.0, 1.5);
     c.number = solver->stiffness().bendingNumber;
+    c.capped = solver->stiffness().plan.capped;
   });
-  Csv csv({"length_m", "bending_stiffness", "bending_number", "dftl", "substeps", "blowup",
-           "energy_ratio", "max_strain"});
+  Csv csv({"length_m", "bending_stiffness", "bending_number", "dftl", "substeps", "capped",
+           "blowup", "energy_ratio", "max_strain"});
   for (const Cell& c : cells) {
     csv.add(c.length).add(c.bending * std::pow(c.length / 0.25, 3.0)).add(c.number).add(c.dftl);
-    csv.add(c.substeps).add(blowupName(c.result.blowup));
+    csv.add(c.substeps).add(int(c.capped)).add(blowupName(c.result.blowup));
     csv.add(c.result.energyRatio).add(c.result.maxStrain);
     csv.endRow();
   }
   csv.write(o.out + "/soft_hair.csv");
   for (double l : lengths)
     for (double d : dftl) {
-      std::fprintf(stderr, "  %g cm, DFTL %.2f: energy ratio, steps a frame 1..32\n", 100.0 * l, d);
+      std::fprintf(stderr,
+                   "  %g cm, DFTL %.2f: energy ratio, steps a frame 1..32 (c: capped, alpha = 1)\n",
+                   100.0 * l, d);
       for (double b : bending) {
         double number = 0.0;
         std::string row;
@@ -192,7 +196,8 @@ void runSoftHair(const Options& o) {
           if (c.length == l && c.dftl == d && c.bending == b) {
             number = c.number;
             char cell[16];
-            std::snprintf(cell, sizeof cell, " %5.2f", c.result.energyRatio);
+            std::snprintf(cell, sizeof cell, " %5.2f%s", c.result.energyRatio,
+                          c.capped ? "c" : " ");
             row += cell;
           }
         std::fprintf(stderr, "    B/(gL^3) %.2e:%s\n", number, row.c_str());
