@@ -27,6 +27,8 @@ expect 2 "sim.window_length=2: value 2 is out of range [0.002, 0.1]" -- --headle
 expect 0 "sim.bending_stiffness" -- --list-params
 # A stiffness that asks for more steps than allowed runs, and says so even with --quiet.
 expect 0 "warning: the stiffness asks for" -- --headless --no-render --quiet --solver cpu --frames 1 --set hairstyle.strands=50 --set sim.window_length=0.01 --set sim.max_substeps=4
+# Soft hair without the DFTL it needs runs, and says how much (sim/solver/stiffness.h, softHairDftl).
+expect 0 "gains energy unless sim.dftl is at least 0.9" -- --headless --no-render --quiet --solver cpu --frames 1 --set hairstyle.strands=50 --set sim.bending_stiffness=1e-4 --set sim.substeps=16
 expect 2 "unknown option --frobnicate" -- --frobnicate
 expect 2 "--frames needs" -- --frames -3
 expect 0 "ok" -- --validate "$src"/presets/*.json
