@@ -39,10 +39,10 @@ ClampField clampFieldOf(uint first, uint base, int n, vec4 stiff, mat4 head) {
   return f;
 }
 
-// The displacement behind the clamp at a given tau, held at its value 1.5 reaches deep
-// (csm::kClampDepth).
+// The displacement behind the clamp at a given tau, held at its value CSM_CLAMP_DEPTH reaches
+// deep (csm::kClampDepth).
 vec3 clampShift(ClampField f, float tau) {
-  tau = max(tau, -1.5);
+  tau = max(tau, -float(CSM_CLAMP_DEPTH));
   return (tau * tau) * f.a;
 }
 

@@ -20,6 +20,11 @@
 #define CSM_REACH_SLACK_DOUBLE 1e-6
 #define CSM_REACH_SLACK_FLOAT 1e-5
 
+// ---- The clamp's field -------------------------------------------------------------------------
+// Behind the clamp the field keeps its value deeper than this many fit reaches (tau):
+// sim/solver/stiffness.h (kClampDepth, which says why 1.5) and shaders/sim/clamp_field.glsl.
+#define CSM_CLAMP_DEPTH 1.5
+
 // ---- Stiffness models (StiffnessModel, sim/core/config.h; shaders/sim/shape_match.comp) --------
 #define CSM_STIFFNESS_PAPER 0
 #define CSM_STIFFNESS_CALIBRATED 1

@@ -56,11 +56,19 @@ void main() {
   barrier();
   vec3 origin = shA[o.root].xyz;
   // The built-in end (clamp_field.glsl): the held particles and the ghosts of this slot's
-  // region take the free strand's curvature at the clamp, continued.
+  // region take the free strand's curvature at the clamp, continued. The field is the strand's:
+  // its root's slot fits it once and leaves it in shB and shC, free until the first scan.
+  if (o.live && o.j == 0) {
+    ClampField f = clampFieldOf(o.a, o.root, o.n, stiff, st.head);
+    shB[lid] = vec4(f.a, f.tau0);
+    shC[lid] = vec4(f.tauStep, 0.0, 0.0, 0.0);
+  }
+  barrier();
   int ghosts = max(0, -int(region.z));
   bool behind = o.live && o.j < pinned;
   ClampField field = ClampField(vec3(0.0), 0.0, 0.0);
-  if (o.live && (behind || ghosts > 0)) field = clampFieldOf(o.a, o.root, o.n, stiff, st.head);
+  if (o.live && (behind || ghosts > 0))
+    field = ClampField(shB[o.root].xyz, shB[o.root].w, shC[o.root].x);
   vec3 shift = behind ? clampShift(field, restTau.w) : vec3(0.0);
   barrier();
 

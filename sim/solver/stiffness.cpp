@@ -52,8 +52,8 @@ void fitClampField(Regions& r, size_t s, uint32_t a, const std::vector<double>& 
     r.clampFit[a + j].x = std::pow(r.clampFit[a + j].y, 2.0) / sum4;
 }
 
-}  // namespace
-
+// I - P over the free particles of strand s (first particle a, rest arcs `arc`) straightened, P
+// the goals linearised for small displacements across it (endFactor in stiffness.h).
 Eigen::MatrixXd linearPull(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc) {
   const int count = int(arc.size()), pinned = r.pinned[s], free = count - pinned;
   if (free < 1 || count < 2) return {};
@@ -108,14 +108,13 @@ Eigen::MatrixXd linearPull(const Regions& r, size_t s, uint32_t a, const std::ve
   return A;
 }
 
+// The tip's displacement u solving (I - P) u = 1: the sag under a unit acceleration at k = 1.
 double linearTipSag(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc) {
   const Eigen::MatrixXd A = linearPull(r, s, a, arc);
   if (A.rows() == 0) return 0.0;
   const Eigen::VectorXd u = A.partialPivLu().solve(Eigen::VectorXd::Ones(A.rows()));
   return u[A.rows() - 1];
 }
-
-namespace {
 
 // The end factors of strands spaced evenly, by what sets them: the factor is a ratio of
 // lengths to the fourth power, so it does not depend on the scale.
@@ -177,7 +176,6 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
   r.clampFit.assign(n, glm::dvec2(0.0));
   r.fitEnd.assign(strands, 0);
   r.endFactor.assign(strands, 1.0);
-  r.freeLength.assign(strands, 0.0);
   const bool calibrated = sim.stiffnessModel == StiffnessModel::Calibrated;
   const double L = sim.windowLength;
   std::vector<double> arc, seg;
@@ -257,7 +255,7 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
       r.mass[a + i] = carried / double(r.hi[a + i] - std::max(0, r.lo[a + i]) + 1);
     }
     if (calibrated && r.fitEnd[s] > 0) {
-      r.freeLength[s] = arc[count - 1] - clampArc;
+      r.longestFree = std::max(r.longestFree, arc[count - 1] - clampArc);
       r.endFactor[s] = endFactor(r, s, a, arc, clampArc, cache);
       r.rate[s] *= r.endFactor[s];
     }
@@ -328,8 +326,7 @@ StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim) {
   info.strands = regions.rate.size();
   info.dftl = sim.dftl;
   const double g = glm::length(glm::dvec3(sim.gravity));
-  double longest = 0.0;
-  for (const double l : regions.freeLength) longest = std::max(longest, l);
+  const double longest = regions.longestFree;
   if (sim.stiffnessModel == StiffnessModel::Calibrated && g > 0.0 && longest > 0.0)
     info.bendingNumber = double(sim.bendingStiffness) / (g * longest * longest * longest);
   bool first = true;

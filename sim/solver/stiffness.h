@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "shaders/sim/shared_constants.glsl"
 #include "sim/core/config.h"
 #include "sim/core/results.h"
 #include "sim/core/hair_state.h"
@@ -74,9 +74,9 @@ struct Regions {
   // window of the clamp) and y = tau, its rest arc from the clamp over the fit's reach (negative
   // behind the clamp).
   std::vector<glm::dvec2> clampFit;
-  std::vector<int> fitEnd;         // per strand: the fit particles are [pinned, fitEnd) (0: none)
-  std::vector<double> endFactor;   // per strand: the ends' factor in its rate (endFactor below)
-  std::vector<double> freeLength;  // per strand: rest arc beyond the clamp (clamped strands)
+  std::vector<int> fitEnd;        // per strand: the fit particles are [pinned, fitEnd) (0: none)
+  std::vector<double> endFactor;  // per strand: the ends' factor in its rate (below)
+  double longestFree = 0.0;       // the longest rest arc beyond a clamp (m; 0: no clamped strand)
   double maxRate = 0.0;
   double planRate = 0.0;  // the rate the steps follow (planRate below)
 
@@ -116,7 +116,7 @@ Regions buildRegions(const HairState& state, const SimConfig& sim);
 // particles reach that far). Without that bound a strand of three particles, one of them free,
 // continued its one free particle's displacement 25-fold into its deepest ghost and blew up; at
 // 1.5 the extrapolation at most doubles and a quarter (2 did not hold).
-inline constexpr double kClampDepth = 1.5;
+inline constexpr double kClampDepth = CSM_CLAMP_DEPTH;
 struct ClampField {
   glm::dvec3 a{0.0};
   glm::dvec3 at(double tau) const {
@@ -150,23 +150,18 @@ inline double ghostSum2(int q) {
 inline constexpr double kOutlierRate = 16.0;
 double planRate(const std::vector<double>& rates);
 
-// The ends' factor in a clamped strand's rate (calibrated model). c_w is the interior's
-// coefficient; near the clamp and the free tip the regions are continued (ClampField) or
-// clipped, and a strand whose free length is a few windows sags more than the beam of the same B
-// (12 cm clamped over 1.7 cm: +11 % at a 4 cm window, +61 % at 6 cm). buildRegions multiplies
-// each such strand's k by its tip's sag under a uniform load from the goals linearised
-// (linearTipSag), over the Euler-Bernoulli beam's, g L^4 / (8 B): the strand then sags as the
-// beam at every window, and the factor tends to 1 as the strand grows longer than the window.
-// Strands whose free length is under one window keep k (they are nearly rigid, and with one or
-// two free particles the field's extrapolation left no margin for a larger pull); the factor is
-// kept within [1/2, 2]. Evenly spaced strands share the factor by their shape in segments.
-//
-// linearPull: I - P over the free particles of strand s (first particle a, rest arcs `arc`),
-// straightened, P the goals linearised for small displacements across it (each region's rigid
-// fit a translation and a turn; behind the clamp the field's tau^2 a). linearTipSag: the tip's
-// displacement u solving (I - P) u = 1, i.e. the sag under a unit acceleration at k = 1.
-Eigen::MatrixXd linearPull(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc);
-double linearTipSag(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc);
+// The ends' factor in a clamped strand's rate (calibrated model, Regions::endFactor). c_w is
+// the interior's coefficient; near the clamp and the free tip the regions are continued
+// (ClampField) or clipped, and a strand whose free length is a few windows sags more than the
+// beam of the same B (12 cm clamped over 1.7 cm: +11 % at a 4 cm window, +61 % at 6 cm).
+// buildRegions multiplies each such strand's k by its tip's sag under a uniform load from the
+// goals linearised (I - P over the free particles of the strand straightened, each region's
+// rigid fit a translation and a turn, behind the clamp the field's tau^2 a; (I - P) u = 1 solved
+// for the tip), over the Euler-Bernoulli beam's, g L^4 / (8 B): the strand then sags as the beam
+// at every window, and the factor tends to 1 as the strand grows longer than the window. Strands
+// whose free length is under one window keep k (they are nearly rigid, and with one or two free
+// particles the field's extrapolation left no margin for a larger pull); the factor is kept
+// within [1/2, 2]. Evenly spaced strands share the factor by their shape in segments.
 
 // True when a change from `a` to `b` changes the regions (the solvers rebuild them).
 bool regionsChanged(const SimConfig& a, const SimConfig& b);
