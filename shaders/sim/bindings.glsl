@@ -67,9 +67,10 @@
       // frame's, P.listHalf says which): where each segment's candidates
       // start in CANDIDATES (LAST_CANDIDATES for last frame's), and how
       // many
-#define CSM_BIND_INVERSE_MASS \
-  16  // float per particle: its inverse mass as the strand contacts
-      // see it, 0 when the head holds it (csm::contactInverseMass)
+#define CSM_BIND_PARTICLE_CONSTANTS \
+  16  // vec2 per particle, set with the regions: x its inverse mass as the
+      // strand contacts see it, 0 when the head holds it
+      // (csm::contactInverseMass), y the clamp's pull (csm::Regions::clampPull)
 #define CSM_BIND_SEGMENT_ORDER \
   17  // uint per particle: the segments of each run of CSM_PARTICLE_GROUP by
       // candidate count, most first (segment_order.comp), for the list pass
@@ -95,7 +96,7 @@
 #define CSM_TEX_VOLUME_FIELD 5
 #define CSM_TEX_PREDICTED 6
 #define CSM_TEX_REGION 7
-#define CSM_TEX_INVERSE_MASS 8
+#define CSM_TEX_PARTICLE_CONSTANTS 8
 #define CSM_TEX_VOLUME_SUMS 9
 #define CSM_TEX_VOLUME_REST 10  // float per node: the volume fraction the rest groom fills
 #define CSM_TEX_HEAD_FIELD 11   // vec4 per node of the head's distance field: gradient, distance

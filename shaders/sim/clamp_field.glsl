@@ -46,6 +46,13 @@ vec3 clampShift(ClampField f, float tau) {
   return (tau * tau) * f.a;
 }
 
+// a across the clamp's direction `along` (any length): what the clamp's pull scales
+// (ClampField::across).
+vec3 clampAcross(ClampField f, vec3 along) {
+  float l2 = dot(along, along);
+  return l2 > 0.0 ? f.a - (dot(f.a, along) / l2) * along : f.a;
+}
+
 // Adds the ghosts' shifts to a region's sums: ghost g at tau0 - g tauStep, rest -g d
 // (root-relative), each of per-region mass mg.
 void addGhostShifts(ClampField f, int ghosts, float mg, vec3 d, inout vec3 sumX,

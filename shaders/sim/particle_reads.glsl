@@ -1,6 +1,7 @@
 // Per-particle reads of the step's passes (predict.glsl, strand_step.comp, strand_strain.comp)
 // and the strand contacts' (grid_count, grid_scatter, candidates, contact_solve): positions,
-// velocities, the rest shape, the regions, the contacts' inverse masses. Texel
+// velocities, the rest shape, the regions, the per-particle constants (the contacts' inverse
+// masses, the clamp's pull). Texel
 // fetches of buffer textures by default (llvmpipe runs a texel fetch as one vector gather and a
 // storage load as a loop over its SIMD lanes); with CSM_STORAGE_READS (a GPU: plain loads, one
 // path through the caches) read-only storage blocks over the same buffers. The including pass
@@ -16,10 +17,11 @@ layout(std430, binding = CSM_BIND_REGION) readonly buffer RegionIn { vec4 region
 #define readVelocity(i) velocityIn[uint(i)]
 #define readRest(i) restIn[uint(i)]
 #define readRegion(i) regionIn[uint(i)]
-layout(std430, binding = CSM_BIND_INVERSE_MASS) readonly buffer InverseMassIn {
-  float inverseMassIn[];
+layout(std430, binding = CSM_BIND_PARTICLE_CONSTANTS) readonly buffer ParticleConstantsIn {
+  vec2 particleConstantsIn[];
 };
-#define readInverseMass(i) inverseMassIn[uint(i)]
+#define readInverseMass(i) particleConstantsIn[uint(i)].x
+#define readClampPull(i) particleConstantsIn[uint(i)].y
 #else
 layout(binding = CSM_TEX_POSITION) uniform samplerBuffer posTex;
 layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;
@@ -29,6 +31,7 @@ layout(binding = CSM_TEX_REGION) uniform samplerBuffer regionTex;
 #define readVelocity(i) texelFetch(velTex, int(i))
 #define readRest(i) texelFetch(restTex, int(i))
 #define readRegion(i) texelFetch(regionTex, int(i))
-layout(binding = CSM_TEX_INVERSE_MASS) uniform samplerBuffer inverseMassTex;
-#define readInverseMass(i) texelFetch(inverseMassTex, int(i)).x
+layout(binding = CSM_TEX_PARTICLE_CONSTANTS) uniform samplerBuffer particleConstantsTex;
+#define readInverseMass(i) texelFetch(particleConstantsTex, int(i)).x
+#define readClampPull(i) texelFetch(particleConstantsTex, int(i)).y
 #endif

@@ -34,6 +34,7 @@ layout(binding = CSM_TEX_REST) uniform samplerBuffer restTex;
 layout(binding = CSM_TEX_PREDICTED) uniform samplerBuffer predTex;
 layout(binding = CSM_TEX_VELOCITY) uniform samplerBuffer velTex;  // predict.comp's vPred
 layout(binding = CSM_TEX_REGION) uniform samplerBuffer regionTex;
+layout(binding = CSM_TEX_PARTICLE_CONSTANTS) uniform samplerBuffer constantsTex;  // y: the pull
 layout(std430, binding = CSM_BIND_POSITION) writeonly buffer Position { vec4 pos[]; };
 layout(std430, binding = CSM_BIND_VELOCITY) writeonly buffer Velocity { vec4 vel[]; };
 layout(std430, binding = CSM_BIND_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
@@ -71,6 +72,7 @@ void main() {
   // strand's curvature at the clamp, continued.
   int pinned = int(stiff.z);
   ClampField field = clampFieldOf(a, a, n, stiff, st.head);
+  vec3 across = clampAcross(field, D);
 
   // Prefix sums over the strand's particles, weighted by per-region mass: m, m y, m ȳ, m y ȳᵀ
   // (y = x* - x*_root, ȳ = x̄ - x̄_root). Entry j holds the sum over particles [0, j).
@@ -146,7 +148,8 @@ void main() {
     int lo = clamp(int(region.z), 0, n - 1), hi = clamp(int(region.w), lo, n - 1);
     vec3 yr = texelFetch(restTex, int(p)).xyz - rest0;
     vec3 goal = origin + ((prefR[hi + 1] - prefR[lo]) * yr + (prefT[hi + 1] - prefT[lo])) /
-                             float(hi - lo + 1);
+                             float(hi - lo + 1) +
+                texelFetch(constantsTex, int(p)).y * across;
     vec3 xp = texelFetch(predTex, int(p)).xyz;
     bool fixed_ = i < pinned;
     vec3 pull = alpha * (goal - xp);

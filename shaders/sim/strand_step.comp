@@ -67,7 +67,8 @@ void main() {
   int ghosts = max(0, -int(region.z));
   bool behind = o.live && o.j < pinned;
   ClampField field = ClampField(vec3(0.0), 0.0, 0.0);
-  if (o.live && (behind || ghosts > 0))
+  // Free particles whose region reaches behind the clamp read it too, for the clamp's pull.
+  if (o.live && int(region.z) < pinned)
     field = ClampField(shB[o.root].xyz, shB[o.root].w, shC[o.root].x);
   vec3 shift = behind ? clampShift(field, restTau.w) : vec3(0.0);
   barrier();
@@ -135,7 +136,8 @@ void main() {
   s2 = rangeSumC(o, lo, hi);
   mat3 sumR = mat3(s0.xyz, vec3(s0.w, s1.xy), vec3(s1.zw, s2.x));
   vec3 sumT = s2.yzw;
-  vec3 goal = origin + (sumR * yr + sumT) / float(hi - lo + 1);
+  vec3 goal = origin + (sumR * yr + sumT) / float(hi - lo + 1) +
+              (o.live ? readClampPull(o.p) : 0.0) * clampAcross(field, D);
 
   // Integration (eq. 2-3): x = x* + alpha (g - x*), v = (x - x_old) / h, damped.
   float h = st.h;

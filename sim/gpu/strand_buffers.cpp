@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include <glm/vec2.hpp>
+
 #include "sim/solver/contacts.h"
 #include "sim/gpu/buffer_fill.h"
 #include "sim/gpu/strand_groups.h"
@@ -71,8 +73,12 @@ void StrandBuffers::uploadRegions(const HairState& state, const Regions& regions
   fill(strandStiffness, perStrand);
   view(regionTex, region, GL_RGBA32F);
   const std::vector<double> w = contactInverseMass(state, regions);
-  fill(inverseMass, std::vector<float>(w.begin(), w.end()));
-  view(inverseMassTex, inverseMass, GL_R32F);
+  // Per particle: the contacts' inverse mass, the clamp's pull (CSM_BIND_PARTICLE_CONSTANTS).
+  std::vector<glm::vec2> constants(particleCount);
+  for (size_t i = 0; i < particleCount; ++i)
+    constants[i] = glm::vec2(float(w[i]), float(regions.clampPull[i]));
+  fill(particleConstants, constants);
+  view(particleConstantsTex, particleConstants, GL_RG32F);
 }
 
 void StrandBuffers::bind() const {
@@ -89,13 +95,13 @@ void StrandBuffers::bind() const {
   // Read as storage too by the passes built with CSM_STORAGE_READS (particle_reads.glsl).
   rest.bindBase(ssbo, CSM_BIND_REST);
   region.bindBase(ssbo, CSM_BIND_REGION);
-  inverseMass.bindBase(ssbo, CSM_BIND_INVERSE_MASS);
+  particleConstants.bindBase(ssbo, CSM_BIND_PARTICLE_CONSTANTS);
   positionTex.bind(CSM_TEX_POSITION);
   velocityTex.bind(CSM_TEX_VELOCITY);
   restTex.bind(CSM_TEX_REST);
   predictedTex.bind(CSM_TEX_PREDICTED);
   regionTex.bind(CSM_TEX_REGION);
-  inverseMassTex.bind(CSM_TEX_INVERSE_MASS);
+  particleConstantsTex.bind(CSM_TEX_PARTICLE_CONSTANTS);
 }
 
 }  // namespace csm::gpu

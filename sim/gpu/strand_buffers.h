@@ -34,10 +34,10 @@ struct StrandBuffers {
   gl::Buffer rest{gl::NoCreate}, position{gl::NoCreate}, velocity{gl::NoCreate},
       predicted{gl::NoCreate}, rotation{gl::NoCreate}, strandFirst{gl::NoCreate},
       particleStrand{gl::NoCreate}, strandOrder{gl::NoCreate}, region{gl::NoCreate},
-      strandStiffness{gl::NoCreate}, inverseMass{gl::NoCreate}, groupFirst{gl::NoCreate};
+      strandStiffness{gl::NoCreate}, particleConstants{gl::NoCreate}, groupFirst{gl::NoCreate};
   // texelFetch views for reads that differ per invocation (see gl/buffer_texture.h).
   gl::BufferTexture positionTex{gl::NoCreate}, velocityTex{gl::NoCreate}, restTex{gl::NoCreate},
-      predictedTex{gl::NoCreate}, regionTex{gl::NoCreate}, inverseMassTex{gl::NoCreate};
+      predictedTex{gl::NoCreate}, regionTex{gl::NoCreate}, particleConstantsTex{gl::NoCreate};
 };
 
 }  // namespace csm::gpu

@@ -484,6 +484,7 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
       for (int j = pinned; j < regions_.fitEnd[s]; ++j)
         field.a += fit[a + j].x * (xPred_[a + j] - head.apply(rest_[a + j]));
       if (n > 1) field.reflect(toGlm(D));
+      const glm::dvec3 pull = field.across(toGlm(D));
       auto behind = [&](int j) { return j < pinned ? field.at(fit[a + j].y) : glm::dvec3(0.0); };
       const double tau0 = fit[a].y, ghostTau = n > 1 ? fit[a + 1].y - tau0 : 0.0;
       auto ghostShift = [&](int g) { return toEigen(field.at(tau0 - g * ghostTau)); };
@@ -569,7 +570,8 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
             sumT += regionC_[a + k] - R * regionCRest_[a + k];
           }
         }
-        goal_[a + i] = origin + toGlm((sumR * yr + sumT) / double(l1 - l0 + 1));
+        goal_[a + i] = origin + toGlm((sumR * yr + sumT) / double(l1 - l0 + 1)) +
+                       regions_.clampPull[a + i] * pull;
       }
     }
   });

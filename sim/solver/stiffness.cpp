@@ -97,15 +97,40 @@ Eigen::MatrixXd linearPull(const Regions& r, size_t s, uint32_t a, const std::ve
     theta.row(k) += fieldT * field;
     theta.row(k) *= J > 0.0 ? 1.0 / J : 0.0;
   }
-  // Goals average the regions that contain each particle: A = I - P.
+  // Goals average the regions that contain each particle, plus the clamp's pull: A = I - P.
   Eigen::MatrixXd A = Eigen::MatrixXd::Identity(free, free);
   for (int i = pinned; i < count; ++i) {
     const int l0 = std::max(0, r.lo[a + i]), l1 = r.hi[a + i];
     const double share = 1.0 / double(l1 - l0 + 1);
     for (int k = l0; k <= l1; ++k)
       A.row(i - pinned) -= share * (ubar.row(k) + (arc[i] - xbar[k]) * theta.row(k));
+    A.row(i - pinned) -= r.clampPull[a + i] * field;
   }
   return A;
+}
+
+// The clamp's pull (Regions::clampPull) of strand s: for each free particle whose own region
+// reaches behind the clamp, the beam's residual there over the field's a, both from the
+// cantilever under a uniform load, u(x) = x^2 (6 L^2 - 4 L x + x^2) / 24 (B = q = 1), whose
+// interior residual is c_w (w l)^4. Fills the pulls; the caller has zeroed them.
+void fitClampPull(Regions& r, size_t s, uint32_t a, const std::vector<double>& arc, double clampArc,
+                  double window) {
+  const int count = int(arc.size()), pinned = r.pinned[s], free = count - pinned;
+  const Eigen::MatrixXd A = linearPull(r, s, a, arc);
+  if (A.rows() != free || free < 1) return;
+  const double L = arc[count - 1] - clampArc;
+  Eigen::VectorXd beam(free);
+  for (int i = pinned; i < count; ++i) {
+    const double x = arc[i] - clampArc;
+    beam[i - pinned] = x * x * (6.0 * L * L - 4.0 * L * x + x * x) / 24.0;
+  }
+  double fieldOfBeam = 0.0;
+  for (int j = pinned; j < r.fitEnd[s]; ++j) fieldOfBeam += r.clampFit[a + j].x * beam[j - pinned];
+  if (!(fieldOfBeam > 0.0)) return;
+  const double interior = windowCoefficient(r.window[s]) * std::pow(window, 4.0);
+  const Eigen::VectorXd residual = A * beam;
+  for (int i = pinned; i < count; ++i)
+    if (r.lo[a + i] < pinned) r.clampPull[a + i] = (residual[i - pinned] - interior) / fieldOfBeam;
 }
 
 // The tip's displacement u solving (I - P) u = 1: the sag under a unit acceleration at k = 1.
@@ -116,13 +141,19 @@ double linearTipSag(const Regions& r, size_t s, uint32_t a, const std::vector<do
   return u[A.rows() - 1];
 }
 
-// The end factors of strands spaced evenly, by what sets them: the factor is a ratio of
-// lengths to the fourth power, so it does not depend on the scale.
+// The ends of strands spaced evenly, by what sets them: the pulls are ratios of lengths to the
+// fourth power and the factor a ratio of such, so neither depends on the scale.
 using EndKey = std::array<long, 6>;
-using EndFactors = std::map<EndKey, double>;
+struct EndFit {
+  std::vector<double> pull;  // the clamp's pull of each particle
+  double factor = 1.0;
+};
+using EndFits = std::map<EndKey, EndFit>;
 
-double endFactor(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc,
-                 double clampArc, EndFactors& cache) {
+// The clamp's pull (fitClampPull) and the ends' factor (endFactor in stiffness.h) of strand s,
+// the pulls written to r.clampPull; returns the factor.
+double fitEnds(Regions& r, size_t s, uint32_t a, const std::vector<double>& arc, double clampArc,
+               EndFits& cache) {
   const int count = int(arc.size());
   const double free = arc[count - 1] - clampArc;
   const double mean = count > 1 ? arc[count - 1] / (count - 1) : 0.0;
@@ -135,15 +166,22 @@ double endFactor(const Regions& r, size_t s, uint32_t a, const std::vector<doubl
                    r.lo[a], r.window[s], std::lround(clampArc / mean / kEvenSpacing)};
   if (even) {
     const auto found = cache.find(key);
-    if (found != cache.end()) return found->second;
+    if (found != cache.end()) {
+      std::copy(found->second.pull.begin(), found->second.pull.end(), r.clampPull.begin() + a);
+      return found->second.factor;
+    }
   }
+  fitClampPull(r, s, a, arc, clampArc, window);
   // Per unit B and load: the beam's tip sag, and the strand's at k = B / (c_w (w l)^4).
   const double beam = std::pow(free, 4.0) / 8.0;
   const double csm =
       linearTipSag(r, s, a, arc) * windowCoefficient(r.window[s]) * std::pow(window, 4.0);
   const double f = csm > 0.0 && std::isfinite(csm) ? csm / beam : 1.0;
   const double kept = std::clamp(f, 1.0 / kEndFactorRange, kEndFactorRange);
-  if (even) cache.emplace(key, kept);
+  if (even)
+    cache.emplace(
+        key, EndFit{std::vector<double>(r.clampPull.begin() + a, r.clampPull.begin() + a + count),
+                    kept});
   return kept;
 }
 
@@ -176,10 +214,11 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
   r.clampFit.assign(n, glm::dvec2(0.0));
   r.fitEnd.assign(strands, 0);
   r.endFactor.assign(strands, 1.0);
+  r.clampPull.assign(n, 0.0);
   const bool calibrated = sim.stiffnessModel == StiffnessModel::Calibrated;
   const double L = sim.windowLength;
   std::vector<double> arc, seg;
-  EndFactors cache;
+  EndFits cache;
   for (size_t s = 0; s < strands; ++s) {
     const uint32_t a = st.strandFirst[s], b = st.strandFirst[s + 1];
     const int count = int(b - a);
@@ -256,7 +295,7 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
     }
     if (calibrated && r.fitEnd[s] > 0) {
       r.longestFree = std::max(r.longestFree, arc[count - 1] - clampArc);
-      r.endFactor[s] = endFactor(r, s, a, arc, clampArc, cache);
+      r.endFactor[s] = fitEnds(r, s, a, arc, clampArc, cache);
       r.rate[s] *= r.endFactor[s];
     }
     // J_k, directly: a build-time cost of O(region) per region.
@@ -384,8 +423,8 @@ double softHairDftl(double bendingNumber, int steps, bool capped) {
   constexpr int kSteps[] = {1, 2, 4, 8, 16, 32};
   constexpr double kDftl[6][6] = {
       {0.5, 0.75, 0.75, 0.9, 0.9, 0.9},  {0.5, 0.75, 0.75, 0.75, 0.9, 0.9},
-      {0.5, 0.5, 0.75, 0.75, 0.75, 0.9}, {0.5, 0.25, 0.75, 0.75, 0.75, 0.75},
-      {0.0, 0.0, 0.0, 0.0, 0.25, 0.5},   {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
+      {0.5, 0.5, 0.75, 0.75, 0.75, 0.9}, {0.5, 0.5, 0.75, 0.75, 0.75, 0.75},
+      {0.0, 0.0, 0.0, 0.25, 0.25, 0.5},  {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}};
   // Steps capped (alpha = 1 for the stiffest strands): 0.5 held in every such cell.
   constexpr double kCapped = 0.5;
   // The softer row at or below the number (softer than measured: the softest), the column at

@@ -76,6 +76,7 @@ struct Regions {
   std::vector<glm::dvec2> clampFit;
   std::vector<int> fitEnd;        // per strand: the fit particles are [pinned, fitEnd) (0: none)
   std::vector<double> endFactor;  // per strand: the ends' factor in its rate (below)
+  std::vector<double> clampPull;  // per particle: its goal's share of the field's a (below)
   double longestFree = 0.0;       // the longest rest arc beyond a clamp (m; 0: no clamped strand)
   double maxRate = 0.0;
   double planRate = 0.0;  // the rate the steps follow (planRate below)
@@ -127,6 +128,11 @@ struct ClampField {
   void reflect(const glm::dvec3& along) {
     const double l2 = glm::dot(along, along);
     if (l2 > 0.0) a -= (2.0 * glm::dot(a, along) / l2) * along;
+  }
+  // a across the clamp's direction: what the clamp's pull (Regions::clampPull) scales.
+  glm::dvec3 across(const glm::dvec3& along) const {
+    const double l2 = glm::dot(along, along);
+    return l2 > 0.0 ? a - (glm::dot(a, along) / l2) * along : a;
   }
 };
 

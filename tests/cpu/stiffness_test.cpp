@@ -100,6 +100,36 @@ TEST_CASE("window: the clamped strand sags as the beam at every window, no hinge
   test::checkWindowIsNotStiffness(makeCpu);
 }
 
+TEST_CASE("the clamp's pull: on the free particles whose regions reach behind the clamp only") {
+  for (const float window : {0.02f, 0.06f}) {
+    Scene s = test::clampedStrand(32);
+    s.config.sim.windowLength = window;
+    const HairState st = makeHairState(s.groom, s.config.sim, Pose{});
+    const Regions r = buildRegions(st, s.config.sim);
+    const int pinned = r.pinned[0];
+    REQUIRE(pinned >= 2);
+    int pulled = 0;
+    for (int i = 0; i < 32; ++i) {
+      INFO("window " << window * 100 << " cm, particle " << i << ": region from " << r.lo[i]
+                     << ", pull " << r.clampPull[i]);
+      if (i >= pinned && r.lo[i] < pinned) {
+        // The goals there sit below the beam's shape: the pull lifts them against the load.
+        CHECK(r.clampPull[i] < 0.0);
+        ++pulled;
+      } else {
+        CHECK(r.clampPull[i] == 0.0);
+      }
+    }
+    CHECK(pulled >= 1);
+  }
+  // Nothing held: no clamp, no pull.
+  Scene s = test::clampedStrand(32);
+  s.config.sim.pinned = 0;
+  s.config.sim.rootLength = 0.0f;
+  const Regions r = buildRegions(makeHairState(s.groom, s.config.sim, Pose{}), s.config.sim);
+  for (const double pull : r.clampPull) CHECK(pull == 0.0);
+}
+
 TEST_CASE("resolution: 16, 24 and 32 particles on the same strand sag and swing alike") {
   test::checkResolution(makeCpu);
 }
