@@ -100,6 +100,10 @@ TEST_CASE("window: the clamped strand sags as the beam at every window, no hinge
   test::checkWindowIsNotStiffness(makeCpu);
 }
 
+TEST_CASE("window: a clamped strand bent hard by gravity settles as the elastica") {
+  test::checkLargeDeflection(makeCpu);
+}
+
 TEST_CASE("the clamp's pull: on the free particles whose regions reach behind the clamp only") {
   for (const float window : {0.02f, 0.06f}) {
     Scene s = test::clampedStrand(32);

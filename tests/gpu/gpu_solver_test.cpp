@@ -402,6 +402,7 @@ TEST_CASE("GPU: the penalty model slows a strand dropped across another", "[gpu]
   // As on the CPU reference: constraints hold it, penalties slow it, nothing lets it fall.
   auto height = [](CollisionMode mode, ContactModel model) {
     Config c = test::drapeConfig();
+    c.sim.bendingStiffness = 1e-4f;  // softer: without contacts it falls through within 0.5 s
     c.collision.mode = mode;
     c.collision.model = model;
     auto gpu = test::gpuSolver();
@@ -848,8 +849,12 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   const double start3 = closer(x, r), end3 = closer(x3, r);
   INFO("third frame: measured " << third->contacts.penetrations << ", read back where it "
                                 << "starts " << start3 << ", where it ends " << end3);
-  CHECK(std::abs(end3 - start3) > 0.02 * start3);
-  CHECK(double(third->contacts.penetrations) == Approx(start3).epsilon(0.01));
+  // The two states tell apart beyond the 1 % that float distances allow, and the measure is
+  // the start's.
+  const double measured3 = double(third->contacts.penetrations);
+  CHECK(std::abs(end3 - start3) > 0.01 * start3);
+  CHECK(std::abs(measured3 - start3) < std::abs(measured3 - end3));
+  CHECK(measured3 == Approx(start3).epsilon(0.01));
 }
 
 TEST_CASE("GPU solver: carry turns and moves the hair on the GPU, reading nothing back",

@@ -41,6 +41,11 @@ TEST_CASE("GPU stiffness: the clamped strand sags as the beam at every window, n
   test::checkWindowIsNotStiffness(test::gpuSolver);
 }
 
+TEST_CASE("GPU stiffness: a clamped strand bent hard by gravity settles as the elastica",
+          "[gpu][stiffness]") {
+  test::checkLargeDeflection(test::gpuSolver);
+}
+
 TEST_CASE("GPU stiffness: at 256 steps a frame the float positions follow the CPU's double",
           "[gpu][stiffness]") {
   // A step at 256 a frame moves a particle ~10 um while its float position rounds by ~0.02 um:
