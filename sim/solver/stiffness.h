@@ -204,9 +204,9 @@ std::string stiffnessText(const StiffnessInfo& info);
 // plain follow-the-leader does. Measured (csmhair-bench --only soft_hair: four strands of 16
 // particles released horizontally, 2 s, at 25, 12.5 and 6 cm with B scaled by the length cubed,
 // i.e. the same numbers; at 25 cm, free 21.4 cm, B / (g L^3) = B / 0.096): without DFTL the
-// energy grows to 1.4-2.3x its start at every step count from 2 to 32 up to a number of 5e-3,
-// and more steps make it worse (1e-2: 1.0 at 4 steps, 1.18-1.26 at 32). This is that map: the
-// least of 0, 0.25, 0.5, 0.75, 0.9 that keeps the energy within 1.1x at all three lengths, for
+// energy grows to 1.4-2.2x its start at every step count from 2 to 32 up to a number of 5e-3,
+// and more steps make it worse (1e-2: 1.0-1.05 at 4 steps, 1.23-1.32 at 32). This is that map:
+// the least of 0, 0.25, 0.5, 0.75, 0.9 that keeps the energy within 1.1x at all three lengths, for
 // the measured number at or below the hair's and the measured steps at or above `steps`; where
 // the steps are capped (alpha = 1) at least 0.5. 0.9 held in every cell;
 // tests/cpu/stiffness_test.cpp checks cells of it.
