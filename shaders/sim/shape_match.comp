@@ -148,8 +148,9 @@ void main() {
     int lo = clamp(int(region.z), 0, n - 1), hi = clamp(int(region.w), lo, n - 1);
     vec3 yr = texelFetch(restTex, int(p)).xyz - rest0;
     vec3 goal = origin + ((prefR[hi + 1] - prefR[lo]) * yr + (prefT[hi + 1] - prefT[lo])) /
-                             float(hi - lo + 1) +
-                texelFetch(constantsTex, int(p)).y * across;
+                             float(hi - lo + 1);
+    // The clamp's pull, zero but where the region reaches behind the clamp.
+    if (int(region.z) < pinned) goal += texelFetch(constantsTex, int(p)).y * across;
     vec3 xp = texelFetch(predTex, int(p)).xyz;
     bool fixed_ = i < pinned;
     vec3 pull = alpha * (goal - xp);

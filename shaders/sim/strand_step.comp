@@ -66,10 +66,11 @@ void main() {
   barrier();
   int ghosts = max(0, -int(region.z));
   bool behind = o.live && o.j < pinned;
+  // This slot's region reaches behind the clamp: it reads the field, and a free particle here
+  // has the clamp's pull (csm::Regions::clampPull, zero elsewhere).
+  bool nearClamp = o.live && int(region.z) < pinned;
   ClampField field = ClampField(vec3(0.0), 0.0, 0.0);
-  // Free particles whose region reaches behind the clamp read it too, for the clamp's pull.
-  if (o.live && int(region.z) < pinned)
-    field = ClampField(shB[o.root].xyz, shB[o.root].w, shC[o.root].x);
+  if (nearClamp) field = ClampField(shB[o.root].xyz, shB[o.root].w, shC[o.root].x);
   vec3 shift = behind ? clampShift(field, restTau.w) : vec3(0.0);
   barrier();
 
@@ -136,8 +137,8 @@ void main() {
   s2 = rangeSumC(o, lo, hi);
   mat3 sumR = mat3(s0.xyz, vec3(s0.w, s1.xy), vec3(s1.zw, s2.x));
   vec3 sumT = s2.yzw;
-  vec3 goal = origin + (sumR * yr + sumT) / float(hi - lo + 1) +
-              (o.live ? readClampPull(o.p) : 0.0) * clampAcross(field, D);
+  vec3 goal = origin + (sumR * yr + sumT) / float(hi - lo + 1);
+  if (nearClamp) goal += readClampPull(o.p) * clampAcross(field, D);
 
   // Integration (eq. 2-3): x = x* + alpha (g - x*), v = (x - x_old) / h, damped.
   float h = st.h;

@@ -52,15 +52,22 @@ void fitClampField(Regions& r, size_t s, uint32_t a, const std::vector<double>& 
     r.clampFit[a + j].x = std::pow(r.clampFit[a + j].y, 2.0) / sum4;
 }
 
+// The clamp field's a as a row over the free particles' displacements (ClampField): the fit
+// particles' static weights.
+Eigen::RowVectorXd clampFieldRow(const Regions& r, size_t s, uint32_t a, int free) {
+  Eigen::RowVectorXd field = Eigen::RowVectorXd::Zero(free);
+  for (int j = r.pinned[s]; j < r.fitEnd[s]; ++j) field[j - r.pinned[s]] = r.clampFit[a + j].x;
+  return field;
+}
+
 // I - P over the free particles of strand s (first particle a, rest arcs `arc`) straightened, P
-// the goals linearised for small displacements across it (endFactor in stiffness.h).
+// the region goals linearised for small displacements across it (endFactor in stiffness.h);
+// the clamp's pull is not in it (fitClampPull adds it).
 Eigen::MatrixXd linearPull(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc) {
   const int count = int(arc.size()), pinned = r.pinned[s], free = count - pinned;
   if (free < 1 || count < 2) return {};
-  // Behind the clamp a member's displacement is tau^2 times the field's a, a fixed row over
-  // the fit particles (ClampField).
-  Eigen::RowVectorXd field = Eigen::RowVectorXd::Zero(free);
-  for (int j = pinned; j < r.fitEnd[s]; ++j) field[j - pinned] = r.clampFit[a + j].x;
+  // Behind the clamp a member's displacement is tau^2 times the field's a.
+  const Eigen::RowVectorXd field = clampFieldRow(r, s, a, free);
   const double seg0 = arc[1] - arc[0];
   const double tau0 = r.clampFit[a].y, ghostTau = r.clampFit[a + 1].y - tau0;
   auto tauOf = [&](int j) {
@@ -97,26 +104,25 @@ Eigen::MatrixXd linearPull(const Regions& r, size_t s, uint32_t a, const std::ve
     theta.row(k) += fieldT * field;
     theta.row(k) *= J > 0.0 ? 1.0 / J : 0.0;
   }
-  // Goals average the regions that contain each particle, plus the clamp's pull: A = I - P.
+  // Goals average the regions that contain each particle: A = I - P.
   Eigen::MatrixXd A = Eigen::MatrixXd::Identity(free, free);
   for (int i = pinned; i < count; ++i) {
     const int l0 = std::max(0, r.lo[a + i]), l1 = r.hi[a + i];
     const double share = 1.0 / double(l1 - l0 + 1);
     for (int k = l0; k <= l1; ++k)
       A.row(i - pinned) -= share * (ubar.row(k) + (arc[i] - xbar[k]) * theta.row(k));
-    A.row(i - pinned) -= r.clampPull[a + i] * field;
   }
   return A;
 }
 
-// The clamp's pull (Regions::clampPull) of strand s: for each free particle whose own region
-// reaches behind the clamp, the beam's residual there over the field's a, both from the
-// cantilever under a uniform load, u(x) = x^2 (6 L^2 - 4 L x + x^2) / 24 (B = q = 1), whose
-// interior residual is c_w (w l)^4. Fills the pulls; the caller has zeroed them.
+// The clamp's pull (Regions::clampPull) of strand s, given A = linearPull's I - P: for each free
+// particle whose own region reaches behind the clamp, the beam's residual there over the
+// field's a, both from the cantilever under a uniform load, u(x) = x^2 (6 L^2 - 4 L x + x^2) / 24
+// (B = q = 1), whose interior residual is c_w (w l)^4. Fills the pulls (the caller has zeroed
+// them) and adds them to A: A becomes I - P with the pull.
 void fitClampPull(Regions& r, size_t s, uint32_t a, const std::vector<double>& arc, double clampArc,
-                  double window) {
+                  double window, Eigen::MatrixXd& A) {
   const int count = int(arc.size()), pinned = r.pinned[s], free = count - pinned;
-  const Eigen::MatrixXd A = linearPull(r, s, a, arc);
   if (A.rows() != free || free < 1) return;
   const double L = arc[count - 1] - clampArc;
   Eigen::VectorXd beam(free);
@@ -124,18 +130,22 @@ void fitClampPull(Regions& r, size_t s, uint32_t a, const std::vector<double>& a
     const double x = arc[i] - clampArc;
     beam[i - pinned] = x * x * (6.0 * L * L - 4.0 * L * x + x * x) / 24.0;
   }
+  const Eigen::RowVectorXd field = clampFieldRow(r, s, a, free);
   double fieldOfBeam = 0.0;
-  for (int j = pinned; j < r.fitEnd[s]; ++j) fieldOfBeam += r.clampFit[a + j].x * beam[j - pinned];
+  for (int j = 0; j < free; ++j) fieldOfBeam += field[j] * beam[j];
   if (!(fieldOfBeam > 0.0)) return;
   const double interior = windowCoefficient(r.window[s]) * std::pow(window, 4.0);
   const Eigen::VectorXd residual = A * beam;
-  for (int i = pinned; i < count; ++i)
-    if (r.lo[a + i] < pinned) r.clampPull[a + i] = (residual[i - pinned] - interior) / fieldOfBeam;
+  for (int i = pinned; i < count; ++i) {
+    if (r.lo[a + i] >= pinned) continue;
+    r.clampPull[a + i] = (residual[i - pinned] - interior) / fieldOfBeam;
+    A.row(i - pinned) -= r.clampPull[a + i] * field;
+  }
 }
 
-// The tip's displacement u solving (I - P) u = 1: the sag under a unit acceleration at k = 1.
-double linearTipSag(const Regions& r, size_t s, uint32_t a, const std::vector<double>& arc) {
-  const Eigen::MatrixXd A = linearPull(r, s, a, arc);
+// The tip's displacement u solving A u = 1 (A = I - P): the sag under a unit acceleration at
+// k = 1.
+double linearTipSag(const Eigen::MatrixXd& A) {
   if (A.rows() == 0) return 0.0;
   const Eigen::VectorXd u = A.partialPivLu().solve(Eigen::VectorXd::Ones(A.rows()));
   return u[A.rows() - 1];
@@ -171,11 +181,11 @@ double fitEnds(Regions& r, size_t s, uint32_t a, const std::vector<double>& arc,
       return found->second.factor;
     }
   }
-  fitClampPull(r, s, a, arc, clampArc, window);
+  Eigen::MatrixXd A = linearPull(r, s, a, arc);
+  fitClampPull(r, s, a, arc, clampArc, window, A);
   // Per unit B and load: the beam's tip sag, and the strand's at k = B / (c_w (w l)^4).
   const double beam = std::pow(free, 4.0) / 8.0;
-  const double csm =
-      linearTipSag(r, s, a, arc) * windowCoefficient(r.window[s]) * std::pow(window, 4.0);
+  const double csm = linearTipSag(A) * windowCoefficient(r.window[s]) * std::pow(window, 4.0);
   const double f = csm > 0.0 && std::isfinite(csm) ? csm / beam : 1.0;
   const double kept = std::clamp(f, 1.0 / kEndFactorRange, kEndFactorRange);
   if (even)
