@@ -57,11 +57,14 @@ void main() {
   vec3 origin = shA[o.root].xyz;
   // The built-in end (clamp_field.glsl): the held particles and the ghosts of this slot's
   // region take the free strand's curvature at the clamp, continued. The field is the strand's:
-  // its root's slot fits it once and leaves it in shB and shC, free until the first scan.
+  // its root's slot fits it once and leaves it in shB and shC, free until the first scan, with
+  // its a across the clamp's direction D (what the clamp's pull scales).
+  vec3 d = o.n > 1 ? restNext - rest0 : vec3(0.0);
+  vec3 D = mat3(st.head) * d;
   if (o.live && o.j == 0) {
     ClampField f = clampFieldOf(o.a, o.root, o.n, stiff, st.head);
     shB[lid] = vec4(f.a, f.tau0);
-    shC[lid] = vec4(f.tauStep, 0.0, 0.0, 0.0);
+    shC[lid] = vec4(f.tauStep, clampAcross(f, D));
   }
   barrier();
   int ghosts = max(0, -int(region.z));
@@ -70,7 +73,11 @@ void main() {
   // has the clamp's pull (csm::Regions::clampPull, zero elsewhere).
   bool nearClamp = o.live && int(region.z) < pinned;
   ClampField field = ClampField(vec3(0.0), 0.0, 0.0);
-  if (nearClamp) field = ClampField(shB[o.root].xyz, shB[o.root].w, shC[o.root].x);
+  vec3 across = vec3(0.0);
+  if (nearClamp) {
+    field = ClampField(shB[o.root].xyz, shB[o.root].w, shC[o.root].x);
+    across = shC[o.root].yzw;
+  }
   vec3 shift = behind ? clampShift(field, restTau.w) : vec3(0.0);
   barrier();
 
@@ -92,8 +99,6 @@ void main() {
   vec3 sumX = s0.yzw, sumRest = s1.xyz;
   mat3 sumA = mat3(s1.w, s2.x, s2.y, s2.z, s2.w, s3.x, s3.y, s3.z, s3.w);
   float mg = stiff.y;
-  vec3 d = n > 1 ? restNext - rest0 : vec3(0.0);
-  vec3 D = mat3(st.head) * d;
   if (ghosts > 0) {
     // Arithmetic series over the ghosts (csm::ghostSum1, ghostSum2).
     float q = float(ghosts);
@@ -138,7 +143,7 @@ void main() {
   mat3 sumR = mat3(s0.xyz, vec3(s0.w, s1.xy), vec3(s1.zw, s2.x));
   vec3 sumT = s2.yzw;
   vec3 goal = origin + (sumR * yr + sumT) / float(hi - lo + 1);
-  if (nearClamp) goal += readClampPull(o.p) * clampAcross(field, D);
+  if (nearClamp) goal += readClampPull(o.p) * across;
 
   // Integration (eq. 2-3): x = x* + alpha (g - x*), v = (x - x_old) / h, damped.
   float h = st.h;

@@ -401,8 +401,7 @@ TEST_CASE("GPU and CPU solvers agree with the penalty model; GPU runs are bit-id
 TEST_CASE("GPU: the penalty model slows a strand dropped across another", "[gpu][contacts]") {
   // As on the CPU reference: constraints hold it, penalties slow it, nothing lets it fall.
   auto height = [](CollisionMode mode, ContactModel model) {
-    Config c = test::drapeConfig();
-    c.sim.bendingStiffness = 1e-4f;  // softer: without contacts it falls through within 0.5 s
+    Config c = test::softDrapeConfig();
     c.collision.mode = mode;
     c.collision.model = model;
     auto gpu = test::gpuSolver();
