@@ -110,7 +110,7 @@ struct SimConfig {
   // length of it (at least its neighbours), and bendingStiffness is EI over the linear density
   // (m^4/s^2). The default needs 4 steps of 1/240 s on 2 cm segments, and gives the default
   // hairstyle the look that the paper model's w = 2, alpha = 1 gave it there
-  // (docs/BENCHMARKS.md, "Stiffness").
+  // (docs/BENCHMARKS_HISTORY.md, "Stiffness that means the same at every step").
   float windowLength = 0.04f;        // m
   float bendingStiffness = 3.8e-3f;  // m^4/s^2
   // Calibrated: the scalp clamps the strand at rootLength of rest arc length from the root (at

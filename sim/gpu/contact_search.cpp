@@ -121,7 +121,7 @@ double ContactSearch::cellSize(float reach) const {
   // entries to count and scatter (Fig. 1: 3.4 a segment instead of 5.0) and more candidates
   // to test in each: on llvmpipe three quarters made the search 6-14 % cheaper at 3,000 to
   // 23,000 strands of the paper's scenes (4.6-7.3 pairs a segment), the same at 30,000 of
-  // Fig. 1 (22) and 23 % dearer at 100,000 (75); docs/BENCHMARKS.md.
+  // Fig. 1 (22) and 23 % dearer at 100,000 (75); docs/BENCHMARKS_HISTORY.md.
   return std::max({2.0 * double(reach), cellPerSegment_ * meanSegment_, 1e-6});
 }
 

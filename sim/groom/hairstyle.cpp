@@ -265,8 +265,8 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
 // root to tip, takes back its grown segment lengths, leaves the head, and keeps no particle
 // further than the limit from where it grew. A strand's root stays; its second particle may
 // move (the solver holds the first segment as the separated groom has it): held in place, the
-// roots of strands that others lie across stood through them (docs/BENCHMARKS.md, "Strands
-// pushed apart at rest").
+// roots of strands that others lie across stood through them
+// (docs/BENCHMARKS_HISTORY.md, "Strands pushed apart at rest").
 constexpr double kSeparation = 2.2;
 constexpr int kSweeps = 3;
 // As in the contact solve (sim/solver/contacts.cpp, kLever): near a root, a pair asks the free end

@@ -4,8 +4,8 @@
 // relative to each other, and how many searches a list kept over several frames would need if
 // it may miss nothing: a list made with `skin` more than the frame's candidate distance holds
 // every pair a fresh search would find while no particle has moved more than skin / 2 since
-// (the Verlet list's rule). The lever "lists that live several frames" of docs/BENCHMARKS.md is
-// measured here: --only motion.
+// (the Verlet list's rule). The lever "lists that live several frames" of
+// docs/BENCHMARKS_HISTORY.md is measured here: --only motion.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
