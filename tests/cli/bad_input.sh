@@ -5,7 +5,7 @@ bin=$1
 src=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/expect.sh"
+. "$(dirname "$0")/lib/expect.sh"
 
 printf '{"sim": {"dt": "fast"}}' >"$tmp/type.json"
 printf '{"sim": {"substeps": 0}}' >"$tmp/range.json"

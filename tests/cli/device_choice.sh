@@ -5,7 +5,7 @@
 set -u
 bin=$1
 src=$2
-. "$(dirname "$0")/expect.sh"
+. "$(dirname "$0")/lib/expect.sh"
 
 if "$bin" --info | grep -q "(software)"; then
   expect 1 "--require-gpu: the OpenGL context" -- --headless --no-render --frames 1 --require-gpu \

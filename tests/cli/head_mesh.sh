@@ -5,7 +5,7 @@ set -u
 bin=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/expect.sh"
+. "$(dirname "$0")/lib/expect.sh"
 
 # A UV sphere of radius 0.1 m about the origin (the head's cranium), poles at +-y.
 python3 - "$tmp/head.obj" <<'PY'

@@ -5,7 +5,7 @@
 set -u
 bin=$1
 src=$2
-. "$(dirname "$0")/expect.sh"
+. "$(dirname "$0")/lib/expect.sh"
 
 run=(--headless --no-render --quiet --frames 2 --set hairstyle.strands=40)
 CSM_PASS_PROFILE=1 expect 0 "csmhair: CSM_PASS_PROFILE, 2 frames" -- "${run[@]}"

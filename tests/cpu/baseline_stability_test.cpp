@@ -50,7 +50,7 @@ BaselineParams stiffSprings() {
 
 TEST_CASE(
     "CSM stays bounded at h = 1/240 s where explicit mass-springs of like stiffness "
-    "diverge") {
+    "diverge", "[quick]") {
   const Scene scene = cantilevers(4);  // h = 1/240 s, the default preset's step
 
   auto springs = makeBaseline("ms-explicit", stiffSprings());
@@ -74,14 +74,14 @@ TEST_CASE(
   CHECK(fine.maxStrain < 0.05);
 }
 
-TEST_CASE("implicit mass-springs stay bounded at h = 1/60 s with the same springs") {
+TEST_CASE("implicit mass-springs stay bounded at h = 1/60 s with the same springs", "[quick]") {
   auto springs = makeBaseline("ms-implicit", stiffSprings());
   const StabilityResult r = checkStability(*springs, cantilevers(1), 1.0);
   CHECK(r.blowup == Blowup::None);
   CHECK(r.maxStrain < 0.2);
 }
 
-TEST_CASE("CSM's strain-limiting sweep gains energy at large steps and DFTL removes it") {
+TEST_CASE("CSM's strain-limiting sweep gains energy at large steps and DFTL removes it", "[quick]") {
   // w = 1, h = 1/120 s: the sweep, which never moves a parent for its child, whips the tips.
   Scene scene = cantilevers(2);
   scene.config.sim.stiffnessWindow = 1;
@@ -95,7 +95,7 @@ TEST_CASE("CSM's strain-limiting sweep gains energy at large steps and DFTL remo
   CHECK(fixed.maxStrain <= scene.config.sim.strainLimit + 1e-6);
 }
 
-TEST_CASE("every baseline keeps a strand at rest without forces and its roots on the head") {
+TEST_CASE("every baseline keeps a strand at rest without forces and its roots on the head", "[quick]") {
   // 32 substeps: within the explicit springs' stability limit.
   Scene scene = cantilevers(32);
   scene.config.sim.gravity = glm::vec3(0.0f);
@@ -127,7 +127,7 @@ TEST_CASE("every baseline keeps a strand at rest without forces and its roots on
   }
 }
 
-TEST_CASE("every baseline keeps hair out of the head spheres") {
+TEST_CASE("every baseline keeps hair out of the head spheres", "[quick]") {
   // Strands fall from above onto a sphere.
   Scene s;
   for (int k = 0; k < 5; ++k) {

@@ -8,7 +8,7 @@
 
 using namespace csm;
 
-TEST_CASE("closest points of two segments") {
+TEST_CASE("closest points of two segments", "[quick]") {
   double s, t;
   // Crossing at right angles, 0.1 apart.
   double d2 = closestSegmentPoints({-1, 0, 0}, {1, 0, 0}, {0, -1, 0.1}, {0, 1, 0.1}, s, t);
@@ -25,7 +25,7 @@ TEST_CASE("closest points of two segments") {
   CHECK(t == 0.0);
 }
 
-TEST_CASE("the grid finds exactly the pairs brute force finds") {
+TEST_CASE("the grid finds exactly the pairs brute force finds", "[quick]") {
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> u(-0.05, 0.05);
   std::vector<glm::dvec3> x;
@@ -48,7 +48,7 @@ TEST_CASE("the grid finds exactly the pairs brute force finds") {
   }
 }
 
-TEST_CASE("neighbouring segments of one strand are not contacts") {
+TEST_CASE("neighbouring segments of one strand are not contacts", "[quick]") {
   std::vector<glm::dvec3> x{{0, 0, 0}, {0.001, 0, 0}, {0.002, 0, 0}, {0.003, 0, 0}, {0.004, 0, 0}};
   std::vector<uint32_t> strand(5, 0);
   CHECK(findContactsBruteForce(x, strand, 0.01).size() == 1);  // only segments 0 and 3

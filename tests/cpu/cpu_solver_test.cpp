@@ -40,7 +40,7 @@ Groom variedGroom() {
 
 }  // namespace
 
-TEST_CASE("region sums by prefix differences equal direct sums for every w and length") {
+TEST_CASE("region sums by prefix differences equal direct sums for every w and length", "[quick]") {
   Config c = test::smallScene();
   c.collision.mode = CollisionMode::Off;
   c.wind.strength = 2.0f;
@@ -62,7 +62,7 @@ TEST_CASE("region sums by prefix differences equal direct sums for every w and l
   }
 }
 
-TEST_CASE("with no forces the hair keeps its rest shape") {
+TEST_CASE("with no forces the hair keeps its rest shape", "[quick]") {
   Config c = test::smallScene();
   c.sim.gravity = glm::vec3(0.0f);
   c.collision.mode = CollisionMode::Off;
@@ -74,7 +74,7 @@ TEST_CASE("with no forces the hair keeps its rest shape") {
   CHECK(maxDistance(solver.positions(), rest) < 1e-9);
 }
 
-TEST_CASE("a rigid motion of the head moves settled hair rigidly") {
+TEST_CASE("a rigid motion of the head moves settled hair rigidly", "[quick]") {
   // The step is equivariant under rigid motions: the same scene with the head (and gravity)
   // turned and moved gives the same hair, turned and moved.
   Config c = test::smallScene();
@@ -102,7 +102,7 @@ TEST_CASE("a rigid motion of the head moves settled hair rigidly") {
   CHECK(maxDistance(a.positions(), rest.positions()) > 1e-3);
 }
 
-TEST_CASE("strain after limiting never exceeds epsilon") {
+TEST_CASE("strain after limiting never exceeds epsilon", "[quick]") {
   Config c = test::smallScene(120);
   c.sim.strainLimit = 0.03f;
   c.sim.stiffness = 0.3f;  // soft hair stretches most
@@ -128,7 +128,7 @@ TEST_CASE("strain after limiting never exceeds epsilon") {
   CHECK(worst > 0.5 * c.sim.strainLimit);  // the scene does pull on the hair
 }
 
-TEST_CASE("no particle ends a step inside a head sphere") {
+TEST_CASE("no particle ends a step inside a head sphere", "[quick]") {
   Config c = test::smallScene(150);
   c.collision.mode = CollisionMode::Head;
   c.head.motion = HeadMotion::Nod;
@@ -154,7 +154,7 @@ TEST_CASE("no particle ends a step inside a head sphere") {
   CHECK(inside == 0);
 }
 
-TEST_CASE("without head collisions the same scene does go inside the head") {
+TEST_CASE("without head collisions the same scene does go inside the head", "[quick]") {
   // The previous test can fail: with collisions off, hair falls through the head.
   Config c = test::smallScene(150);
   c.collision.mode = CollisionMode::Off;
@@ -172,7 +172,7 @@ TEST_CASE("without head collisions the same scene does go inside the head") {
   CHECK(inside > 0);
 }
 
-TEST_CASE("the same preset gives bit-identical results twice") {
+TEST_CASE("the same preset gives bit-identical results twice", "[quick]") {
   Config c = test::smallScene(200);
   c.collision.mode = CollisionMode::Strands;
   c.wind.strength = 4.0f;
@@ -225,7 +225,7 @@ TEST_CASE("hair-hair collision keeps strands apart") {
   CHECK(double(with) < 0.6 * double(without));
 }
 
-TEST_CASE("rotation extraction recovers the rotation, also from rank-deficient matrices") {
+TEST_CASE("rotation extraction recovers the rotation, also from rank-deficient matrices", "[quick]") {
   const Eigen::Quaterniond truth(
       Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()));
   Eigen::Matrix3d S;
@@ -244,7 +244,7 @@ TEST_CASE("rotation extraction recovers the rotation, also from rank-deficient m
   CHECK(std::abs(r.norm() - 1.0) < 1e-12);
 }
 
-TEST_CASE("rotation extraction is scale-free: tiny masses track the same rotation per step") {
+TEST_CASE("rotation extraction is scale-free: tiny masses track the same rotation per step", "[quick]") {
   // A region of real hair (5e-6 kg/m, 2 cm segments) has J ~ 1e-11 kg m^2; a unit-bearing
   // regulariser beside it (the old "+ 1e-9") tracked only part of a rotation per iteration.
   const Eigen::Quaterniond truth(

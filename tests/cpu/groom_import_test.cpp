@@ -55,7 +55,7 @@ std::string octahedron() {
 TEST_CASE(
     "Import: a groom of normal strands and three degenerate ones runs at the normal "
     "strands' steps",
-    "[import][stiffness]") {
+    "[import][stiffness][quick]") {
   Config c;
   c.hairstyle.strands = 150;
   c.collision.headShape = HeadShape::Sdf;
@@ -85,7 +85,7 @@ TEST_CASE(
 }
 
 TEST_CASE("Import: roots land on the scalp of every head, and no particle starts inside it",
-          "[import]") {
+          "[import][quick]") {
   TempDir dir;
   Config grownOn;
   grownOn.hairstyle.strands = 120;
@@ -129,7 +129,7 @@ TEST_CASE("Import: roots land on the scalp of every head, and no particle starts
   }
 }
 
-TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import][obj]") {
+TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import][obj][quick]") {
   TempDir dir;
   Config c;
   c.hairstyle.strands = 80;
@@ -176,7 +176,7 @@ TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import
   CHECK(report.turnedStrands == file.strandCount());
 }
 
-TEST_CASE("Import: the flawed groom's 30 frames on the CPU reference", "[import][cpu]") {
+TEST_CASE("Import: the flawed groom's 30 frames on the CPU reference", "[import][cpu][quick]") {
   CpuSolver cpu;
   test::checkImportedRun(cpu, 1e-9);
 }

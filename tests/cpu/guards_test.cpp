@@ -40,7 +40,7 @@ void tangle(std::vector<glm::dvec3>& x, std::vector<uint32_t>& strand) {
 }  // namespace
 
 TEST_CASE("Guard: the CPU grid leaves out non-finite and runaway segments, and counts them",
-          "[guard]") {
+          "[guard][quick]") {
   std::vector<glm::dvec3> x;
   std::vector<uint32_t> strand;
   tangle(x, strand);
@@ -80,7 +80,7 @@ TEST_CASE("Guard: the CPU grid leaves out non-finite and runaway segments, and c
 }
 
 TEST_CASE("Guard: a region's rotation recovers from a NaN warm start and ignores a NaN matrix",
-          "[guard]") {
+          "[guard][quick]") {
   const Eigen::Matrix3d turned =
       Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.0, 1.0, 0.0)).toRotationMatrix();
   const Eigen::Vector3d axis(1.0, 0.0, 0.0);
@@ -100,7 +100,7 @@ TEST_CASE("Guard: a region's rotation recovers from a NaN warm start and ignores
 }
 
 TEST_CASE("Guard: an imported strand longer than the solvers take is refused with its index",
-          "[guard]") {
+          "[guard][quick]") {
   const fs::path dir = fs::temp_directory_path() / "csm_guard_long_strand";
   fs::create_directories(dir);
   Groom g;

@@ -14,7 +14,7 @@
 using namespace csm;
 
 TEST_CASE("Hair sequence: every frame reopens with the solver's points of that frame",
-          "[io][sequence]") {
+          "[io][sequence][quick]") {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "csm_hair_sequence_test";
   std::filesystem::remove_all(dir);

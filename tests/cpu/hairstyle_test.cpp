@@ -13,7 +13,7 @@
 
 using namespace csm;
 
-TEST_CASE("a smaller strand count is a prefix of a larger one") {
+TEST_CASE("a smaller strand count is a prefix of a larger one", "[quick]") {
   Config c = test::smallScene(300);
   c.hairstyle.curlRadius = 0.01f;
   const Groom big = test::growFor(c);
@@ -25,7 +25,7 @@ TEST_CASE("a smaller strand count is a prefix of a larger one") {
   for (size_t i = 0; i < small.pointCount(); ++i) CHECK(small.points[i] == big.points[i]);
 }
 
-TEST_CASE("the generator is deterministic and the seed changes the hair") {
+TEST_CASE("the generator is deterministic and the seed changes the hair", "[quick]") {
   Config c = test::smallScene(50);
   const Groom a = test::growFor(c), b = test::growFor(c);
   CHECK(a.points == b.points);
@@ -34,7 +34,7 @@ TEST_CASE("the generator is deterministic and the seed changes the hair") {
   CHECK(d.points != a.points);
 }
 
-TEST_CASE("particles per strand follow length and curl within the bounds") {
+TEST_CASE("particles per strand follow length and curl within the bounds", "[quick]") {
   Config c = test::smallScene(400);
   c.hairstyle.minParticles = 8;
   c.hairstyle.maxParticles = 25;
@@ -60,7 +60,7 @@ TEST_CASE("particles per strand follow length and curl within the bounds") {
   CHECK(fixed.pointCount() == 16 * fixed.strandCount());
 }
 
-TEST_CASE("roots sit on the scalp and the rest of the strand outside the head") {
+TEST_CASE("roots sit on the scalp and the rest of the strand outside the head", "[quick]") {
   Config c = test::smallScene(500);
   c.hairstyle.curlRadius = 0.015f;
   const Groom g = test::growFor(c);
@@ -78,7 +78,7 @@ TEST_CASE("roots sit on the scalp and the rest of the strand outside the head") 
 // Found by fuzz_cyhair and fuzz_tressfx (tests/fuzz/regressions/): a groom file's points are
 // finite, but the fit to the head could carry them past float's range (and on to NaN in the
 // field's reads and the resampler's casts), or collapse a strand to a point.
-TEST_CASE("a groom the fit carries out of float's range, or collapses, is refused") {
+TEST_CASE("a groom the fit carries out of float's range, or collapses, is refused", "[quick]") {
   Config c;
   c.hairstyle.strands = 10;
   // Roots 1e-37 apart: the automatic fit scales them up to the head (by ~1e36), and the tips,

@@ -132,7 +132,7 @@ std::vector<glm::dvec3> spread(const glm::dvec3& lo, const glm::dvec3& hi, int c
 }  // namespace
 
 TEST_CASE("an OBJ sphere's field: the sign right and the distance the mesh's near the surface",
-          "[head_mesh]") {
+          "[head_mesh][quick]") {
   TempDir dir;
   const SurfaceMesh sphere = icosphere(3);
   const std::string path = dir.write("sphere.obj", objText(sphere));
@@ -173,7 +173,7 @@ TEST_CASE("an OBJ sphere's field: the sign right and the distance the mesh's nea
   CHECK(std::abs(glm::length(snapped) - kRadius) < 0.001);
 }
 
-TEST_CASE("an OBJ cube of quads, its faces turned inwards, gives the cube's field", "[head_mesh]") {
+TEST_CASE("an OBJ cube of quads, its faces turned inwards, gives the cube's field", "[head_mesh][quick]") {
   TempDir dir;
   // Every face reversed: the reader turns the surface outwards.
   std::string text =
@@ -198,7 +198,7 @@ TEST_CASE("an OBJ cube of quads, its faces turned inwards, gives the cube's fiel
   }
 }
 
-TEST_CASE("malformed OBJ heads are refused with the file and the line", "[head_mesh]") {
+TEST_CASE("malformed OBJ heads are refused with the file and the line", "[head_mesh][quick]") {
   TempDir dir;
   auto refusal = [&](const std::string& name, const std::string& text) {
     const std::string path = dir.write(name, text);
@@ -317,7 +317,7 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
 }
 
 TEST_CASE("head.mesh gone when the scene loads: an error naming the file, not the mannequin",
-          "[head_mesh]") {
+          "[head_mesh][quick]") {
   TempDir dir;
   dir.write("sphere.obj", objText(icosphere(2)));
   Config c = Config{};
@@ -342,7 +342,7 @@ TEST_CASE("head.mesh gone when the scene loads: an error naming the file, not th
 // where our checks read on; a face with no area (three vertices on a line) gave the field's
 // nodes on it the face's normal, NaN.
 TEST_CASE("OBJ heads: NUL bytes are refused, and faces with no area keep the field finite",
-          "[head_mesh]") {
+          "[head_mesh][quick]") {
   std::string text = cubeText();
   text.insert(text.find("v 0.05 -0.05 -0.05") + 9, std::string("\0\0 7", 4));
   const io::ObjReadResult nul = io::parseObjMesh(text, "nul.obj");
@@ -370,8 +370,8 @@ TEST_CASE("OBJ heads: NUL bytes are refused, and faces with no area keep the fie
 // ends a line at a lone "\r" too, so "v\r 0.1 0.1 0.1" is no vertex to it; our checks counted
 // one, passed a face that used it, and the faces were indexed past the vertices read. Now our
 // lines are its lines, and a "v" with no coordinates is refused.
-TEST_CASE("OBJ heads: lines end where tinyobjloader ends them ('\\n', '\\r\\n', a lone '\\r')",
-          "[head_mesh]") {
+TEST_CASE("OBJ heads: lines end where tinyobjloader ends them (LF, CR LF, a lone CR)",
+          "[head_mesh][quick]") {
   const std::string text = cubeText();
   std::string split = text;
   split.replace(split.find("v 0.05 -0.05 -0.05"), 2, "v\r");

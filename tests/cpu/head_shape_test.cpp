@@ -43,7 +43,7 @@ Config mannequinScene(int strands) {
 
 }  // namespace
 
-TEST_CASE("Mannequin: the field's sign is right inside and outside", "[head]") {
+TEST_CASE("Mannequin: the field's sign is right inside and outside", "[head][quick]") {
   // Points that are inside a head, neck and shoulders, and points that are not.
   for (const glm::dvec3 p : {glm::dvec3(0, 0.02, 0), glm::dvec3(0, -0.05, 0.03),
                              glm::dvec3(0, -0.16, -0.02), glm::dvec3(0.12, -0.31, 0),
@@ -108,7 +108,7 @@ TEST_CASE("Mannequin: the mesh is closed, outward and on the surface", "[head]")
   CHECK(openEdges(cut) > 0);
 }
 
-TEST_CASE("Mannequin: the coarser mesh for interactive drawing", "[head]") {
+TEST_CASE("Mannequin: the coarser mesh for interactive drawing", "[head][quick]") {
   const SurfaceMesh& full = mannequinMesh();
   const size_t target = 30000;
   const SurfaceMesh coarse = coarserMesh(full, target);
@@ -137,7 +137,7 @@ TEST_CASE("Mannequin: the coarser mesh for interactive drawing", "[head]") {
   CHECK(coarserMesh(coarse, triangles + 1).indices == coarse.indices);
 }
 
-TEST_CASE("Mannequin: a grown groom roots on the scalp and leaves the face open", "[head]") {
+TEST_CASE("Mannequin: a grown groom roots on the scalp and leaves the face open", "[head][quick]") {
   Config c = mannequinScene(3000);
   const Groom g = test::growFor(c);
   REQUIRE(g.strandCount() == 3000);
@@ -172,7 +172,7 @@ TEST_CASE("Mannequin: a grown groom roots on the scalp and leaves the face open"
 }
 
 TEST_CASE("Mannequin: no particle ends a frame inside the head by more than the hair radius",
-          "[head][cpu]") {
+          "[head][cpu][quick]") {
   // The default preset's scene, the head shaking hard, hair blown against the face.
   Config c = mannequinScene(400);
   c.head.motion = HeadMotion::Shake;
@@ -219,7 +219,7 @@ TEST_CASE("Mannequin: no particle ends a frame inside the head by more than the 
   CHECK(freeDeepest < -r);
 }
 
-TEST_CASE("Mannequin: pushOutOfField leaves a point at the radius", "[head]") {
+TEST_CASE("Mannequin: pushOutOfField leaves a point at the radius", "[head][quick]") {
   const DistanceGrid& g = mannequinGrid();
   glm::dvec3 p(0.0, 0.05, 0.0);  // deep inside the cranium
   glm::dvec3 n;
@@ -285,7 +285,7 @@ TEST_CASE("Mannequin: the face stays open once the hair has settled", "[head][cp
 }
 
 TEST_CASE("Hairstyle: hair lies away from its parting and nothing stands up from the crown",
-          "[head]") {
+          "[head][quick]") {
   const DistanceGrid& field = mannequinGrid();
   for (const Parting parting : {Parting::None, Parting::Centre, Parting::Left, Parting::Right}) {
     Config c = mannequinScene(3000);
@@ -322,7 +322,7 @@ TEST_CASE("Hairstyle: hair lies away from its parting and nothing stands up from
   }
 }
 
-TEST_CASE("Hairstyle: a fringe covers the forehead and ends above the eyes", "[head]") {
+TEST_CASE("Hairstyle: a fringe covers the forehead and ends above the eyes", "[head][quick]") {
   Config c = mannequinScene(3000);
   c.hairstyle.parting = Parting::Left;
   c.hairstyle.fringe = true;
@@ -347,7 +347,7 @@ TEST_CASE("Hairstyle: a fringe covers the forehead and ends above the eyes", "[h
 }
 
 TEST_CASE("Mannequin: spheres fitted to it lie inside it and cover the head above the neck",
-          "[head]") {
+          "[head][quick]") {
   const DistanceGrid& g = mannequinGrid();
   const double cell = g.cell;
   const std::vector<Sphere> fitted = fitSpheres(g, 3);
@@ -395,7 +395,7 @@ TEST_CASE("Mannequin: spheres fitted to it lie inside it and cover the head abov
 }
 
 TEST_CASE("head.fit_spheres: the scene collides with and grows hair from the fitted spheres",
-          "[head]") {
+          "[head][quick]") {
   Config c = test::smallScene(300);
   c.collision.headShape = HeadShape::Spheres;
   CHECK(HeadModel::require(c)->spheres() == c.head.spheres);
@@ -416,7 +416,7 @@ TEST_CASE("head.fit_spheres: the scene collides with and grows hair from the fit
 
 // Found by fuzz_cyhair and fuzz_tressfx (tests/fuzz/regressions/*/fit_nan_root_sampled.*): a
 // point that is not finite made the cell index a cast of NaN, read far outside the grid.
-TEST_CASE("Mannequin: the field read at a point that is not finite says so", "[head]") {
+TEST_CASE("Mannequin: the field read at a point that is not finite says so", "[head][quick]") {
   const DistanceGrid& g = mannequinGrid();
   glm::dvec3 gradient;
   CHECK_FALSE(std::isfinite(g.sample(glm::dvec3(NAN, 0.0, 0.0), &gradient)));

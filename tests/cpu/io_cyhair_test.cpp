@@ -90,7 +90,7 @@ std::string errorOf(const CyHairSpec& spec) {
 
 }  // namespace
 
-TEST_CASE("cyHair: every optional array combination reads", "[io][cyhair]") {
+TEST_CASE("cyHair: every optional array combination reads", "[io][cyhair][quick]") {
   for (uint32_t mask = 0; mask < 16; ++mask) {
     const bool withSegments = mask & 1, withThickness = mask & 2, withTransparency = mask & 4,
                withColors = mask & 8;
@@ -137,7 +137,7 @@ TEST_CASE("cyHair: every optional array combination reads", "[io][cyhair]") {
   }
 }
 
-TEST_CASE("cyHair: malformed files give errors that name the byte offset", "[io][cyhair]") {
+TEST_CASE("cyHair: malformed files give errors that name the byte offset", "[io][cyhair][quick]") {
   SECTION("shorter than the header") {
     auto bytes = build(validSpec(true));
     bytes.resize(100);
@@ -286,7 +286,7 @@ TEST_CASE("cyHair: malformed files give errors that name the byte offset", "[io]
   }
 }
 
-TEST_CASE("cyHair: write then read gives the same groom bit for bit", "[io][cyhair]") {
+TEST_CASE("cyHair: write then read gives the same groom bit for bit", "[io][cyhair][quick]") {
   Groom groom;
   uint32_t state = 12345;
   auto next = [&] {
@@ -334,7 +334,7 @@ TEST_CASE("cyHair: write then read gives the same groom bit for bit", "[io][cyha
   }
 }
 
-TEST_CASE("cyHair: the writer refuses grooms it cannot represent", "[io][cyhair]") {
+TEST_CASE("cyHair: the writer refuses grooms it cannot represent", "[io][cyhair][quick]") {
   std::string error;
   Groom groom;
   groom.addStrand({{0, 0, 0}, {0, 1, 0}});

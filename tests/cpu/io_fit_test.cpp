@@ -51,7 +51,7 @@ glm::vec3 rootCentroid(const Groom& g) {
 
 }  // namespace
 
-TEST_CASE("boundingSphere is the smallest enclosing sphere", "[io][fit]") {
+TEST_CASE("boundingSphere is the smallest enclosing sphere", "[io][fit][quick]") {
   CHECK(csm::io::boundingSphere({}).radius == 0.0f);
   const Sphere two = csm::io::boundingSphere({{0, 0, 0}, {2, 0, 0}});
   CHECK(two.radius == Approx(1.0f));
@@ -88,7 +88,7 @@ TEST_CASE("boundingSphere is the smallest enclosing sphere", "[io][fit]") {
   CHECK(onBoundary >= 2);
 }
 
-TEST_CASE("Auto fit scales and places a centimetre groom on the head", "[io][fit]") {
+TEST_CASE("Auto fit scales and places a centimetre groom on the head", "[io][fit][quick]") {
   const Sphere head{{0.0f, 0.02f, 0.0f}, 0.095f};
   Groom groom = centimetreGroom();
   const Groom original = groom;
@@ -133,7 +133,7 @@ TEST_CASE("Auto fit scales and places a centimetre groom on the head", "[io][fit
   }
 }
 
-TEST_CASE("Rotation is Euler XYZ about the world axes, X first", "[io][fit]") {
+TEST_CASE("Rotation is Euler XYZ about the world axes, X first", "[io][fit][quick]") {
   Groom groom;
   groom.addStrand({{0, 1, 0}, {0, 2, 0}});
   FitOptions options;
@@ -144,7 +144,7 @@ TEST_CASE("Rotation is Euler XYZ about the world axes, X first", "[io][fit]") {
   CHECK(glm::length(groom.points[0] - glm::vec3(1, 0, 0)) < 1e-6f);
 }
 
-TEST_CASE("Manual scale and offset without auto fit", "[io][fit]") {
+TEST_CASE("Manual scale and offset without auto fit", "[io][fit][quick]") {
   Groom groom;
   groom.addStrand({{10, 20, 30}, {10, 25, 30}});
   FitOptions options;
@@ -156,7 +156,7 @@ TEST_CASE("Manual scale and offset without auto fit", "[io][fit]") {
   CHECK(glm::length(groom.points[1] - glm::vec3(0.1f, 1.25f, 0.3f)) < 1e-6f);
 }
 
-TEST_CASE("Snapping puts every root on the nearest head sphere surface", "[io][fit]") {
+TEST_CASE("Snapping puts every root on the nearest head sphere surface", "[io][fit][quick]") {
   const std::vector<Sphere> spheres = {{{0, 0, 0}, 0.1f}, {{0, -0.13f, 0.01f}, 0.05f}};
   Groom groom;
   uint32_t state = 3;
@@ -209,7 +209,7 @@ TEST_CASE("Snapping puts every root on the nearest head sphere surface", "[io][f
   CHECK(glm::length(groom.points[groom.first.back() - 2] - glm::vec3(0, 0.1f, 0)) < 1e-6f);
 }
 
-TEST_CASE("Auto fit of a single strand stays finite", "[io][fit]") {
+TEST_CASE("Auto fit of a single strand stays finite", "[io][fit][quick]") {
   Groom groom;
   groom.addStrand({{5, 5, 5}, {5, 4, 5}});
   FitOptions options;

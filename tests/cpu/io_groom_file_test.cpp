@@ -53,7 +53,7 @@ void writeBytes(const std::string& path, const std::vector<std::byte>& bytes) {
 
 }  // namespace
 
-TEST_CASE("Groom files: write, read back through the dispatcher", "[io][groom_file]") {
+TEST_CASE("Groom files: write, read back through the dispatcher", "[io][groom_file][quick]") {
   TempDir dir;
   const std::string path = dir.file("groom.hair");
   const Groom groom = sampleGroom();
@@ -90,7 +90,7 @@ TEST_CASE("Groom files: write, read back through the dispatcher", "[io][groom_fi
   }
 }
 
-TEST_CASE("Groom files: format detection", "[io][groom_file]") {
+TEST_CASE("Groom files: format detection", "[io][groom_file][quick]") {
   const auto hair = csm::io::encodeCyHair(sampleGroom(), nullptr);
   REQUIRE(hair);
   CHECK(csm::io::detectGroomFormat("x.hair", *hair) == GroomFormat::CyHair);

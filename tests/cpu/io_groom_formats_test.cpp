@@ -147,7 +147,7 @@ std::string errorOf(const csm::io::GroomReadResult& r) {
 }  // namespace
 
 TEST_CASE("TressFX 3.x and 4.x files of the same strands read to the same points",
-          "[io][tressfx]") {
+          "[io][tressfx][quick]") {
   const Groom g = sampleStrands();
   const auto three = csm::io::readTressFx(tressFx3(g, 8).bytes, "t3.tfx");
   const auto four = csm::io::readTressFx(tressFx4(g, 8).bytes, "t4.tfx");
@@ -159,7 +159,7 @@ TEST_CASE("TressFX 3.x and 4.x files of the same strands read to the same points
   CHECK(three.groom->color[2] == glm::vec3(0.5f, 0.25f, 0.0f));
 }
 
-TEST_CASE("TressFX 1.x and 2.x text files read, with the 2.x transform", "[io][tressfx]") {
+TEST_CASE("TressFX 1.x and 2.x text files read, with the 2.x transform", "[io][tressfx][quick]") {
   const Groom g = sampleStrands();
   SECTION("1.x: no version line") {
     checkSame(csm::io::readTressFx(bytesOf(tressFxText(g, "")), "t1.tfx"), g);
@@ -227,7 +227,7 @@ TEST_CASE("TressFX 1.x and 2.x text files read, with the 2.x transform", "[io][t
   }
 }
 
-TEST_CASE("TressFX 3.x: every malformed header is refused with its byte", "[io][tressfx]") {
+TEST_CASE("TressFX 3.x: every malformed header is refused with its byte", "[io][tressfx][quick]") {
   const Groom g = sampleStrands();
   Binary f = tressFx3(g, 8);
   auto error = [&] { return errorOf(csm::io::readTressFx(f.bytes, "t.tfx")); };
@@ -283,7 +283,7 @@ TEST_CASE("TressFX 3.x: every malformed header is refused with its byte", "[io][
   }
 }
 
-TEST_CASE("OBJ curves: Blender's edges and polylines read to the same strands", "[io][obj]") {
+TEST_CASE("OBJ curves: Blender's edges and polylines read to the same strands", "[io][obj][quick]") {
   const Groom g = sampleStrands();
   checkSame(csm::io::readObjCurves(bytesOf(objEdges(g)), "edges.obj"), g);
   checkSame(csm::io::readObjCurves(bytesOf(objPolylines(g)), "lines.obj"), g);
@@ -318,7 +318,7 @@ TEST_CASE("OBJ curves: Blender's edges and polylines read to the same strands", 
   }
 }
 
-TEST_CASE("OBJ curves: what cannot be a strand is refused with its line", "[io][obj]") {
+TEST_CASE("OBJ curves: what cannot be a strand is refused with its line", "[io][obj][quick]") {
   const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
   auto error = [](const std::string& t) {
     return errorOf(csm::io::readObjCurves(bytesOf(t), "h.obj"));
@@ -354,7 +354,7 @@ TEST_CASE("OBJ curves: what cannot be a strand is refused with its line", "[io][
 }
 
 TEST_CASE("Groom repair: repeated and near points merge, short strands drop, all counted",
-          "[io][repair]") {
+          "[io][repair][quick]") {
   Groom g;
   g.addStrand({{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, {0, 1, 0}, {0, 2, 0}});  // 2 repeats
   g.addStrand({{5, 0, 0}, {5, 0.001f, 0}});                              // 1 mm long

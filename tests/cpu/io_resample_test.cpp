@@ -45,7 +45,7 @@ std::span<const glm::vec3> strandOf(const Groom& g, size_t s) {
 
 }  // namespace
 
-TEST_CASE("A 200-point straight strand shrinks to the minimum", "[io][resample]") {
+TEST_CASE("A 200-point straight strand shrinks to the minimum", "[io][resample][quick]") {
   Groom groom;
   const auto original = straightStrand(200, 0.3f);
   groom.addStrand(original);
@@ -66,7 +66,7 @@ TEST_CASE("A 200-point straight strand shrinks to the minimum", "[io][resample]"
   CHECK(groom.thickness == std::vector<float>{7e-5f});
 }
 
-TEST_CASE("Curly strands meet the tolerance with the fewest particles", "[io][resample]") {
+TEST_CASE("Curly strands meet the tolerance with the fewest particles", "[io][resample][quick]") {
   const auto original = curlyStrand(200, 0.006f, 2.5f);
   uint32_t previousCount = 0;
   for (const float tolerance : {5e-3f, 2e-3f, 1e-3f}) {
@@ -94,7 +94,7 @@ TEST_CASE("Curly strands meet the tolerance with the fewest particles", "[io][re
   }
 }
 
-TEST_CASE("Strands that cannot meet the tolerance get the maximum", "[io][resample]") {
+TEST_CASE("Strands that cannot meet the tolerance get the maximum", "[io][resample][quick]") {
   Groom groom;
   groom.addStrand(curlyStrand(200, 0.004f, 12.0f));
   const auto stats = csm::io::resampleGroom(groom, ResampleOptions{8, 25, 1e-4f});
@@ -103,7 +103,7 @@ TEST_CASE("Strands that cannot meet the tolerance get the maximum", "[io][resamp
   CHECK(stats.maxDeviation > 1e-4f);
 }
 
-TEST_CASE("Strands within the bounds keep their points; short ones grow", "[io][resample]") {
+TEST_CASE("Strands within the bounds keep their points, short ones grow", "[io][resample]") {
   Groom groom;
   const auto inBounds = curlyStrand(12, 0.01f, 1.0f);
   groom.addStrand(inBounds);
@@ -121,7 +121,7 @@ TEST_CASE("Strands within the bounds keep their points; short ones grow", "[io][
   CHECK(groom.first.back() == groom.points.size());
 }
 
-TEST_CASE("Resample options are clamped to sane bounds", "[io][resample]") {
+TEST_CASE("Resample options are clamped to sane bounds", "[io][resample][quick]") {
   Groom groom;
   groom.addStrand(straightStrand(40, 0.1f));
   csm::io::resampleGroom(groom, ResampleOptions{0, 1, 1e-3f});

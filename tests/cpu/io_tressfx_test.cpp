@@ -83,7 +83,7 @@ std::string errorOf(const std::vector<std::byte>& bytes) {
 
 }  // namespace
 
-TEST_CASE("TressFX: positions only", "[io][tressfx]") {
+TEST_CASE("TressFX: positions only", "[io][tressfx][quick]") {
   const TfxFile f = build(validSpec());
   REQUIRE(f.positionsAt == 160);
   const auto result = readTressFx(f.bytes, "t.tfx");
@@ -100,7 +100,7 @@ TEST_CASE("TressFX: positions only", "[io][tressfx]") {
   CHECK(g.color.empty());
 }
 
-TEST_CASE("TressFX: UVs, thickness and colours", "[io][tressfx]") {
+TEST_CASE("TressFX: UVs, thickness and colours", "[io][tressfx][quick]") {
   TfxSpec spec = validSpec();
   spec.strandUv.assign(2 * 3, 0.5f);
   spec.vertexUv.assign(2 * 12, 0.25f);
@@ -119,7 +119,7 @@ TEST_CASE("TressFX: UVs, thickness and colours", "[io][tressfx]") {
   CHECK(g.color[1].b == 1.0f);  // clamped
 }
 
-TEST_CASE("TressFX: malformed files give errors that name the byte offset", "[io][tressfx]") {
+TEST_CASE("TressFX: malformed files give errors that name the byte offset", "[io][tressfx][quick]") {
   TfxFile f = build(validSpec());
   SECTION("shorter than the header") {
     f.bytes.resize(100);

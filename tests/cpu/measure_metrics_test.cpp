@@ -49,7 +49,7 @@ Scene restScene() {
 
 }  // namespace
 
-TEST_CASE("a strand at rest has zero stretch") {
+TEST_CASE("a strand at rest has zero stretch", "[quick]") {
   const Groom g = straightGroom(2, 10, 0.2);
   const std::vector<glm::vec4> x = asState(g), v(x.size(), glm::vec4(0.0f));
   const Accuracy a = measureAccuracy(x, v, g, restLengths(g), {}, 2);
@@ -58,7 +58,7 @@ TEST_CASE("a strand at rest has zero stretch") {
   CHECK(a.nanCount == 0);
 }
 
-TEST_CASE("a strand stretched by 10% reports 0.1") {
+TEST_CASE("a strand stretched by 10% reports 0.1", "[quick]") {
   const Groom g = straightGroom(2, 10, 0.2);
   const std::vector<glm::vec4> x = asState(g, 1.1), v(x.size(), glm::vec4(0.0f));
   const Accuracy a = measureAccuracy(x, v, g, restLengths(g), {}, 2);
@@ -66,7 +66,7 @@ TEST_CASE("a strand stretched by 10% reports 0.1") {
   CHECK(a.meanStrain == Approx(0.1).margin(1e-5));
 }
 
-TEST_CASE("position error of a state against itself and against a 1 mm shift") {
+TEST_CASE("position error of a state against itself and against a 1 mm shift", "[quick]") {
   const Groom g = straightGroom(2, 8, 0.2);
   const std::vector<glm::vec4> x = asState(g);
   std::vector<glm::vec4> y = x;
@@ -80,7 +80,7 @@ TEST_CASE("position error of a state against itself and against a 1 mm shift") {
   CHECK(shifted.result().maxMm == Approx(1.0).epsilon(1e-4));
 }
 
-TEST_CASE("a strand at rest has zero time-step error, for every solver") {
+TEST_CASE("a strand at rest has zero time-step error, for every solver", "[quick]") {
   const Scene scene = restScene();
   const double times[] = {0.25, 0.5};
   std::vector<SolverMaker> makers = {[] { return std::make_unique<CpuSolver>(); }};
@@ -94,7 +94,7 @@ TEST_CASE("a strand at rest has zero time-step error, for every solver") {
   }
 }
 
-TEST_CASE("time-step error is positive for a swinging strand and shrinks with the step") {
+TEST_CASE("time-step error is positive for a swinging strand and shrinks with the step", "[quick]") {
   Scene scene = restScene();
   scene.config.sim.gravity = glm::vec3(0.0f, -9.81f, 0.0f);
   const double times[] = {0.25, 0.5};
@@ -108,7 +108,7 @@ TEST_CASE("time-step error is positive for a swinging strand and shrinks with th
   CHECK(coarse.maxMm >= coarse.rmsMm);
 }
 
-TEST_CASE("window and pinned counts from lengths") {
+TEST_CASE("window and pinned counts from lengths", "[quick]") {
   CHECK(windowForLength(0.04, 0.02) == 2);
   CHECK(windowForLength(0.04, 0.01) == 4);
   CHECK(windowForLength(0.001, 0.02) == 1);  // never below 1
@@ -121,7 +121,7 @@ TEST_CASE("window and pinned counts from lengths") {
   CHECK(pinnedForLength(0.0, 0.01) == 2);
 }
 
-TEST_CASE("uniform rod pendulum period") {
+TEST_CASE("uniform rod pendulum period", "[quick]") {
   // T = 2 pi sqrt(2L / 3g): L = 0.25 m, g = 9.81.
   CHECK(rodPendulumPeriod(0.25, 9.81) == Approx(2.0 * M_PI * std::sqrt(0.5 / 29.43)));
   CHECK(rodPendulumPeriod(1.5, 9.81) == Approx(2.0 * M_PI * std::sqrt(1.0 / 9.81)));
@@ -130,7 +130,7 @@ TEST_CASE("uniform rod pendulum period") {
         Approx(1.01741).epsilon(1e-4));
 }
 
-TEST_CASE("energy: zero hanging at rest, rho g L^2 / 2 held out horizontally") {
+TEST_CASE("energy: zero hanging at rest, rho g L^2 / 2 held out horizontally", "[quick]") {
   SimConfig sim;
   const double length = 0.2;
   const Groom down = straightGroom(1, 11, length, {0, -1, 0});
@@ -145,7 +145,7 @@ TEST_CASE("energy: zero hanging at rest, rho g L^2 / 2 held out horizontally") {
   CHECK(meterDown(asState(down), v) == Approx(0.5 * sim.density * length).epsilon(1e-5));
 }
 
-TEST_CASE("hair-hair penetrations: segment pairs closer than the hair radius") {
+TEST_CASE("hair-hair penetrations: segment pairs closer than the hair radius", "[quick]") {
   const double r = 0.001;
   Groom g;
   // Two parallel strands 0.5 r apart (crossing into each other) and one 5 r away.
@@ -165,7 +165,7 @@ TEST_CASE("hair-hair penetrations: segment pairs closer than the hair radius") {
   CHECK(closeSegmentPairs(x, g, 0.1 * r) == 0);
 }
 
-TEST_CASE("resampling and sampling a strand") {
+TEST_CASE("resampling and sampling a strand", "[quick]") {
   const std::vector<glm::dvec3> line = {{0, 0, 0}, {0.1, 0, 0}, {0.3, 0, 0}};
   const std::vector<glm::dvec3> r = io::resamplePolyline(line, 4);
   REQUIRE(r.size() == 4);

@@ -8,7 +8,7 @@
 
 using namespace csm;
 
-TEST_CASE("a rigid CSM strand swings with the period of a uniform rod") {
+TEST_CASE("a rigid CSM strand swings with the period of a uniform rod", "[quick]") {
   Scene scene = pendulumScene(16, 0.25, 0.1);
   scene.config.sim.substeps = 8;  // h = 1/480 s
   CpuSolver solver;
@@ -20,7 +20,7 @@ TEST_CASE("a rigid CSM strand swings with the period of a uniform rod") {
   CHECK(std::abs(r.relativeError) < 0.01);
 }
 
-TEST_CASE("the pendulum measure runs every baseline to a finite period") {
+TEST_CASE("the pendulum measure runs every baseline to a finite period", "[quick]") {
   for (const char* name : {"ms-implicit", "pbd", "ftl"}) {
     Scene scene = pendulumScene(16, 0.25, 0.1);
     scene.config.sim.substeps = 4;

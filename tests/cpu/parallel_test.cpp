@@ -9,7 +9,7 @@
 
 using namespace csm;
 
-TEST_CASE("the pool runs every index once and keeps its threads", "[parallel]") {
+TEST_CASE("the pool runs every index once and keeps its threads", "[parallel][quick]") {
   std::vector<int> hits(10000, 0);
   parallelFor(hits.size(), 16, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) ++hits[i];
@@ -25,7 +25,7 @@ TEST_CASE("the pool runs every index once and keeps its threads", "[parallel]") 
   CHECK(poolThreadsStarted() == started);
 }
 
-TEST_CASE("chunks cover the range in order of chunk, nested loops run inline", "[parallel]") {
+TEST_CASE("chunks cover the range in order of chunk, nested loops run inline", "[parallel][quick]") {
   const size_t count = 1000;
   std::vector<size_t> chunkOf(count, size_t(-1));
   std::atomic<int> nested{0};
@@ -39,7 +39,7 @@ TEST_CASE("chunks cover the range in order of chunk, nested loops run inline", "
   CHECK(nested == int(10 * std::min(coreCount(), count)));
 }
 
-TEST_CASE("loops from several threads at once all complete", "[parallel]") {
+TEST_CASE("loops from several threads at once all complete", "[parallel][quick]") {
   std::vector<std::thread> threads;
   std::vector<long> sums(4, 0);
   for (int t = 0; t < 4; ++t)

@@ -37,7 +37,7 @@ std::string parseErrors(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("every parameter's default lies in its range and has a description") {
+TEST_CASE("every parameter's default lies in its range and has a description", "[quick]") {
   const Preset c;
   for (const PresetParam& p : params()) {
     INFO(p.key);
@@ -50,7 +50,7 @@ TEST_CASE("every parameter's default lies in its range and has a description") {
   }
 }
 
-TEST_CASE("every preset in presets/ validates and round-trips through save and load") {
+TEST_CASE("every preset in presets/ validates and round-trips through save and load", "[quick]") {
   const auto files = presetFiles();
   REQUIRE(files.size() >= 5);
   for (const std::string& f : files) {
@@ -72,14 +72,14 @@ TEST_CASE("every preset in presets/ validates and round-trips through save and l
   }
 }
 
-TEST_CASE("the built-in default preset is valid") {
+TEST_CASE("the built-in default preset is valid", "[quick]") {
   Preset c;
   PresetErrors e;
   CHECK(parsePreset(defaultPresetText(), "default", c, e));
   CHECK(e.empty());
 }
 
-TEST_CASE("bad presets are refused with the file and the JSON path") {
+TEST_CASE("bad presets are refused with the file and the JSON path", "[quick]") {
   CHECK_THAT(parseErrors(R"({"sim": {"dt": "fast"}})"),
              Catch::Contains("bad.json: sim.dt: expected a number, got a string"));
   CHECK_THAT(parseErrors(R"({"sim": {"substeps": 1000}})"),
@@ -102,7 +102,7 @@ TEST_CASE("bad presets are refused with the file and the JSON path") {
   CHECK_THAT(parseErrors(R"([1, 2])"), Catch::Contains("top level must be a JSON object"));
 }
 
-TEST_CASE("a strand count the machine cannot hold is refused before allocation") {
+TEST_CASE("a strand count the machine cannot hold is refused before allocation", "[quick]") {
   Config c;
   c.hairstyle.strands = 1000000;
   c.hairstyle.particlesPerStrand = 64;
@@ -114,7 +114,7 @@ TEST_CASE("a strand count the machine cannot hold is refused before allocation")
   CHECK(checkCapacity(c).empty());
 }
 
-TEST_CASE("saving never leaves a truncated preset") {
+TEST_CASE("saving never leaves a truncated preset", "[quick]") {
   const fs::path dir = fs::temp_directory_path() / "csm_atomic";
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -155,7 +155,7 @@ TEST_CASE("saving never leaves a truncated preset") {
   fs::remove_all(dir);
 }
 
-TEST_CASE("command-line values are parsed per type") {
+TEST_CASE("command-line values are parsed per type", "[quick]") {
   Preset c;
   CHECK(paramFromText(*findParam("wind.strength"), c, "3.5") == "");
   CHECK(c.scene.wind.strength == 3.5f);
@@ -172,7 +172,7 @@ TEST_CASE("command-line values are parsed per type") {
   CHECK(c.name == "42");
 }
 
-TEST_CASE("a parameter's type is its field's, and the modules' lists make the preset's") {
+TEST_CASE("a parameter's type is its field's, and the modules' lists make the preset's", "[quick]") {
   // Declared by pointer to member: the row's type comes from the field's C++ type.
   CHECK(findParam("sim.dt")->type == ParamType::Float);
   CHECK(findParam("sim.substeps")->type == ParamType::Int);
@@ -198,7 +198,7 @@ TEST_CASE("a parameter's type is its field's, and the modules' lists make the pr
         paramToJson(*findSimParam("sim.dt"), Config{}).dump());
 }
 
-TEST_CASE("render.hair_color: natural colours by name from JSON and --set, each its own") {
+TEST_CASE("render.hair_color: natural colours by name from JSON and --set, each its own", "[quick]") {
   Preset c;
   CHECK(c.view.render.hairColor == HairColor::Custom);  // presets look as they did
   PresetErrors e;
@@ -249,7 +249,7 @@ TEST_CASE("render.hair_color: natural colours by name from JSON and --set, each 
 
 // Found by fuzz_preset (tests/fuzz/regressions/preset/number_overflow.json): nlohmann throws
 // out_of_range, not parse_error, for a number beyond double's range; it escaped parsePreset.
-TEST_CASE("a number beyond double's range is refused with a message, not thrown") {
+TEST_CASE("a number beyond double's range is refused with a message, not thrown", "[quick]") {
   CHECK_THAT(parseErrors(R"({"sim": {"dt": 1e999}})"),
              Catch::Contains("bad.json: invalid JSON: number overflow parsing '1e999'"));
   CHECK_THAT(parseErrors(R"({"hairstyle": {"strands": -4e400}})"),

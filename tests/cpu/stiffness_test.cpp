@@ -20,7 +20,7 @@ std::unique_ptr<Solver> makeCpu() {
 
 }  // namespace
 
-TEST_CASE("the window coefficient c_w of the calibration is what the solver measures") {
+TEST_CASE("the window coefficient c_w of the calibration is what the solver measures", "[quick]") {
   for (int w = 1; w <= 16; ++w) {
     const double measured = measureWindowCoefficient(w);
     INFO("w = " << w << ": measured " << measured << ", table " << windowCoefficient(w));
@@ -34,7 +34,7 @@ TEST_CASE("the window coefficient c_w of the calibration is what the solver meas
   }
 }
 
-TEST_CASE("substeps follow the stiffest strand, at least sim.substeps, capped by max_substeps") {
+TEST_CASE("substeps follow the stiffest strand, at least sim.substeps, capped by max_substeps", "[quick]") {
   SimConfig sim;
   sim.dt = 1.0f / 60.0f;
   sim.substeps = 2;
@@ -63,7 +63,7 @@ TEST_CASE("substeps follow the stiffest strand, at least sim.substeps, capped by
   CHECK(stepAlpha(sim, 1e12, 1.0) == Approx(0.7));
 }
 
-TEST_CASE("a capped stiffness is said in the solver's stiffness info") {
+TEST_CASE("a capped stiffness is said in the solver's stiffness info", "[quick]") {
   Scene s = test::clampedStrand(24);
   s.config.sim.windowLength = 0.005f;  // w = 1: a rate of ~9e7 /s^2, ~160 steps a frame
   s.config.sim.maxSubsteps = 16;
@@ -84,7 +84,7 @@ TEST_CASE("density: the default scene at 5e-6, 1e-4 and 1e-2 kg/m agrees after 1
   test::checkDensityCancels(makeCpu);
 }
 
-TEST_CASE("substeps: a clamped strand sags the same at 8 to 64 substeps") {
+TEST_CASE("substeps: a clamped strand sags the same at 8 to 64 substeps", "[quick]") {
   test::checkSagAcrossSubsteps(makeCpu);
 }
 
@@ -96,15 +96,15 @@ TEST_CASE("frame rate: 30, 60 and 120 frames a second with automatic substeps ag
   test::checkFrameRates(makeCpu);
 }
 
-TEST_CASE("window: the clamped strand sags as the beam at every window, no hinge at the clamp") {
+TEST_CASE("window: the clamped strand sags as the beam at every window, no hinge at the clamp", "[quick]") {
   test::checkWindowIsNotStiffness(makeCpu);
 }
 
-TEST_CASE("window: a clamped strand bent hard by gravity settles as the elastica") {
+TEST_CASE("window: a clamped strand bent hard by gravity settles as the elastica", "[quick]") {
   test::checkLargeDeflection(makeCpu);
 }
 
-TEST_CASE("the clamp's pull: on the free particles whose regions reach behind the clamp only") {
+TEST_CASE("the clamp's pull: on the free particles whose regions reach behind the clamp only", "[quick]") {
   for (const float window : {0.02f, 0.06f}) {
     Scene s = test::clampedStrand(32);
     s.config.sim.windowLength = window;
@@ -134,11 +134,11 @@ TEST_CASE("the clamp's pull: on the free particles whose regions reach behind th
   for (const double pull : r.clampPull) CHECK(pull == 0.0);
 }
 
-TEST_CASE("resolution: 16, 24 and 32 particles on the same strand sag and swing alike") {
+TEST_CASE("resolution: 16, 24 and 32 particles on the same strand sag and swing alike", "[quick]") {
   test::checkResolution(makeCpu);
 }
 
-TEST_CASE("resolution: the paper model's window in particles does not hold a strand's sag") {
+TEST_CASE("resolution: the paper model's window in particles does not hold a strand's sag", "[quick]") {
   // What the calibrated model fixes: w = 4 particles spans half the length at 32 particles
   // that it spans at 16, and the strand is far softer. (Under a weak gravity, so that neither
   // strand simply hangs.)
@@ -159,7 +159,7 @@ TEST_CASE("resolution: the paper model's window in particles does not hold a str
   CHECK(sag32 > 2.0 * sag16);
 }
 
-TEST_CASE("momentum: the goals of a free strand keep sum m v to 1e-12 per step") {
+TEST_CASE("momentum: the goals of a free strand keep sum m v to 1e-12 per step", "[quick]") {
   test::checkMomentum(makeCpu, 1e-12);
 }
 
@@ -167,7 +167,7 @@ TEST_CASE("momentum: the goals of a free strand keep sum m v to 1e-12 per step")
 // released strands of the stability map gain energy past 1.1x without DFTL and the warning says
 // so, and stay within it at the correction the rule asks for, where the warning is gone; one
 // cell at half the length with B an eighth (the same bending number) likewise.
-TEST_CASE("soft hair: the DFTL the rule asks for keeps the energy, and without it a warning") {
+TEST_CASE("soft hair: the DFTL the rule asks for keeps the energy, and without it a warning", "[quick]") {
   struct Cell {
     double length, bending;
     int steps;

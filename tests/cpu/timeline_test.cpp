@@ -24,7 +24,7 @@ std::unique_ptr<Simulation> loaded(const Config& c) {
 }  // namespace
 
 TEST_CASE("Timeline: records, shows, resumes, bakes, keeps A and exports, with no thread or GL",
-          "[timeline]") {
+          "[timeline][quick]") {
   Config c = test::smallScene(20);
   c.head.motion = HeadMotion::Shake;
   std::unique_ptr<Simulation> sim = loaded(c);

@@ -33,7 +33,7 @@ double paramMax(const char* key) {
 }  // namespace
 
 TEST_CASE("torture map: its far ends are the parameter table's, every mode in every axis",
-          "[torture]") {
+          "[torture][quick]") {
   const std::vector<TortureCell> cells =
       tortureCells(tortureBase(), TortureScope::Corners, kTortureSeconds);
   auto values = [&](const std::string& axis, auto get) {

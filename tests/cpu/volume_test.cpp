@@ -26,7 +26,7 @@ void addStrand(std::vector<glm::dvec3>& x, std::vector<uint32_t>& first, glm::dv
 
 }  // namespace
 
-TEST_CASE("volume grid: the sums hold every particle's length and momentum") {
+TEST_CASE("volume grid: the sums hold every particle's length and momentum", "[quick]") {
   std::vector<glm::dvec3> x;
   std::vector<uint32_t> first{0};
   for (int s = 0; s < 20; ++s)
@@ -55,7 +55,7 @@ TEST_CASE("volume grid: the sums hold every particle's length and momentum") {
   CHECK(glm::length(momentum - expected) <= 2.0 * rounding);
 }
 
-TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-dense places") {
+TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-dense places", "[quick]") {
   // A bundle of 40 parallel strands along x, 5 mm apart in y and z at rest.
   std::vector<glm::dvec3> x;
   std::vector<uint32_t> first{0};
@@ -112,7 +112,7 @@ TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-d
   CHECK(world.y == Approx(push.x).margin(1e-12));
 }
 
-TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is chosen") {
+TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is chosen", "[quick]") {
   Config c;
   c.hairstyle.strands = 200;
   c.collision.mode = CollisionMode::Head;
@@ -144,7 +144,7 @@ TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is 
   CHECK(switched.volumeNodes() == 0);
 }
 
-TEST_CASE("volume mode: with gravity off the rest groom stays still") {
+TEST_CASE("volume mode: with gravity off the rest groom stays still", "[quick]") {
   Config c;
   c.hairstyle.strands = 300;
   c.sim.gravity = glm::vec3(0.0f);
@@ -162,7 +162,7 @@ TEST_CASE("volume mode: with gravity off the rest groom stays still") {
   CHECK(moved < 1e-4);
 }
 
-TEST_CASE("volume mode: hair falling onto itself ends less dense than without it") {
+TEST_CASE("volume mode: hair falling onto itself ends less dense than without it", "[quick]") {
   // Strands grown straight out of the scalp fall under gravity and pile up on the head.
   Config c;
   c.hairstyle.strands = 600;

@@ -17,7 +17,7 @@
 
 using namespace csm;
 
-TEST_CASE("GL: buffer upload and download round trip", "[gl][buffer]") {
+TEST_CASE("GL: buffer upload and download round trip", "[gl][buffer][quick]") {
   test::glContext();
   std::vector<glm::vec4> data(1000);
   for (std::size_t i = 0; i < data.size(); ++i)
@@ -109,7 +109,7 @@ void checkMoveSemantics(Make make, Alive alive) {
 
 }  // namespace
 
-TEST_CASE("GL: moved-from objects do not delete the GL object twice", "[gl][raii]") {
+TEST_CASE("GL: moved-from objects do not delete the GL object twice", "[gl][raii][quick]") {
   test::glContext();
   SECTION("Buffer") {
     checkMoveSemantics<gl::Buffer>([] { return gl::Buffer(64); },

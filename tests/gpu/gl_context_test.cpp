@@ -32,7 +32,7 @@ class ScopedEnv {
 
 }  // namespace
 
-TEST_CASE("GL: the shared headless context is GL 4.3+ core with compute", "[gl][context]") {
+TEST_CASE("GL: the shared headless context is GL 4.3+ core with compute", "[gl][context][quick]") {
   gl::HeadlessContext& context = test::glContext();
   INFO("platform: " << context.platform() << ", renderer: " << context.renderer());
   CHECK_FALSE(context.renderer().empty());
@@ -54,7 +54,7 @@ TEST_CASE("GL: the shared headless context is GL 4.3+ core with compute", "[gl][
   CHECK(caps.khrDebug);
 }
 
-TEST_CASE("GL: CSM_EGL_PLATFORM picks or rejects a path", "[gl][context]") {
+TEST_CASE("GL: CSM_EGL_PLATFORM picks or rejects a path", "[gl][context][quick]") {
   test::glContext();
   SECTION("an unknown value is an error that says so") {
     ScopedEnv env("CSM_EGL_PLATFORM", "vulkan");
@@ -85,7 +85,7 @@ TEST_CASE("GL: CSM_EGL_PLATFORM picks or rejects a path", "[gl][context]") {
   CHECK(glGetString(GL_RENDERER) != nullptr);
 }
 
-TEST_CASE("GL: error checks and KHR_debug output reach the log", "[gl][debug]") {
+TEST_CASE("GL: error checks and KHR_debug output reach the log", "[gl][debug][quick]") {
   test::glContext();
   test::LogCapture log;
   REQUIRE(gl::errorChecksEnabled());

@@ -16,7 +16,7 @@
 
 using namespace csm;
 
-TEST_CASE("GL: a framebuffer with a color texture is cleared and read back", "[gl][framebuffer]") {
+TEST_CASE("GL: a framebuffer with a color texture is cleared and read back", "[gl][framebuffer][quick]") {
   test::glContext();
   const GLsizei w = 37, h = 21;  // odd sizes catch row-alignment mistakes
 
@@ -58,7 +58,7 @@ TEST_CASE("GL: a framebuffer with a color texture is cleared and read back", "[g
   CHECK(gl::checkErrors("framebuffer test"));
 }
 
-TEST_CASE("GL: an incomplete framebuffer says why", "[gl][framebuffer]") {
+TEST_CASE("GL: an incomplete framebuffer says why", "[gl][framebuffer][quick]") {
   test::glContext();
   gl::Framebuffer empty;
   std::string message;
@@ -67,7 +67,7 @@ TEST_CASE("GL: an incomplete framebuffer says why", "[gl][framebuffer]") {
   gl::Framebuffer::bindDefault();
 }
 
-TEST_CASE("GL: 2D array textures attach layered or one layer at a time", "[gl][framebuffer]") {
+TEST_CASE("GL: 2D array textures attach layered or one layer at a time", "[gl][framebuffer][quick]") {
   test::glContext();
   gl::Texture layers = gl::Texture::create2DArray(GL_R32F, 8, 4, 3);
   CHECK(layers.layers() == 3);
@@ -89,7 +89,7 @@ TEST_CASE("GL: 2D array textures attach layered or one layer at a time", "[gl][f
   CHECK(gl::checkErrors("2D array test"));
 }
 
-TEST_CASE("GL: a multisample target resolves by blit", "[gl][framebuffer]") {
+TEST_CASE("GL: a multisample target resolves by blit", "[gl][framebuffer][quick]") {
   test::glContext();
   // OpenGL 4.3 requires GL_MAX_SAMPLES of at least 4 (the spec's table of implementation
   // minimums), and the renderer's MSAA relies on it: a driver with less fails here.
@@ -119,7 +119,7 @@ TEST_CASE("GL: a multisample target resolves by blit", "[gl][framebuffer]") {
   CHECK(gl::checkErrors("multisample test"));
 }
 
-TEST_CASE("GL: an attribute-less draw into a framebuffer", "[gl][framebuffer][draw]") {
+TEST_CASE("GL: an attribute-less draw into a framebuffer", "[gl][framebuffer][draw][quick]") {
   test::glContext();
   std::string log;
   std::optional<gl::Program> program = gl::buildProgram(

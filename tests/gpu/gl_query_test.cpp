@@ -70,7 +70,7 @@ std::uint64_t timedDraws(Painter& painter, int draws) {
 
 }  // namespace
 
-TEST_CASE("GL: a timer query measures the work between its ends", "[gl][query]") {
+TEST_CASE("GL: a timer query measures the work between its ends", "[gl][query][quick]") {
   test::glContext();
   Painter painter;
   const std::uint64_t light = timedDraws(painter, 1), heavy = timedDraws(painter, 64);
@@ -82,7 +82,7 @@ TEST_CASE("GL: a timer query measures the work between its ends", "[gl][query]")
   CHECK(gl::checkErrors("timer query"));
 }
 
-TEST_CASE("GL: StageTimer averages per named stage", "[gl][query]") {
+TEST_CASE("GL: StageTimer averages per named stage", "[gl][query][quick]") {
   test::glContext();
   Painter painter;
   gl::StageTimer timer(3);

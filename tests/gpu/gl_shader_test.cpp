@@ -50,7 +50,7 @@ struct TempShaderDir {
 
 }  // namespace
 
-TEST_CASE("GL: shader files are embedded", "[gl][shader]") {
+TEST_CASE("GL: shader files are embedded", "[gl][shader][quick]") {
   std::vector<std::string> paths = gl::embeddedShaderPaths();
   CHECK(std::is_sorted(paths.begin(), paths.end()));
   CHECK(std::count(paths.begin(), paths.end(), "test/double.comp") == 1);
@@ -64,7 +64,7 @@ TEST_CASE("GL: shader files are embedded", "[gl][shader]") {
 }
 
 #ifdef CSM_SOURCE_DIR
-TEST_CASE("GL: embedded shaders are byte for byte the files under shaders/", "[gl][shader]") {
+TEST_CASE("GL: embedded shaders are byte for byte the files under shaders/", "[gl][shader][quick]") {
   REQUIRE(gl::shaderDirectory().empty());  // else shaderSource reads the disk
   for (const std::string& path : gl::embeddedShaderPaths()) {
     INFO(path);
@@ -76,7 +76,7 @@ TEST_CASE("GL: embedded shaders are byte for byte the files under shaders/", "[g
 }
 #endif
 
-TEST_CASE("GL: a compute shader from shaders/test doubles a buffer", "[gl][shader][compute]") {
+TEST_CASE("GL: a compute shader from shaders/test doubles a buffer", "[gl][shader][compute][quick]") {
   test::glContext();
   std::string log;
   std::optional<gl::Program> program =
@@ -100,7 +100,7 @@ TEST_CASE("GL: a compute shader from shaders/test doubles a buffer", "[gl][shade
   CHECK(gl::checkErrors("compute test"));
 }
 
-TEST_CASE("GL: a shader with a syntax error fails and the log names the file", "[gl][shader]") {
+TEST_CASE("GL: a shader with a syntax error fails and the log names the file", "[gl][shader][quick]") {
   test::glContext();
   test::LogCapture captured;
 
@@ -124,7 +124,7 @@ TEST_CASE("GL: a shader with a syntax error fails and the log names the file", "
   CHECK(captured.errors() >= 1);
 }
 
-TEST_CASE("GL: #include expansion", "[gl][shader][include]") {
+TEST_CASE("GL: #include expansion", "[gl][shader][include][quick]") {
   SECTION("files are numbered for #line, the main file first") {
     std::string error;
     auto expanded = gl::expandIncludes("test/double.comp", &error);
@@ -180,7 +180,7 @@ TEST_CASE("GL: #include expansion", "[gl][shader][include]") {
 }
 
 TEST_CASE("GL: info-log source numbers become file names for each vendor's format",
-          "[gl][shader]") {
+          "[gl][shader][quick]") {
   std::vector<std::string> names{"main.comp", "common.glsl"};
   CHECK(gl::nameSourceStrings("1:100004(12): error: x", names) == "common.glsl:4(12): error: x");
   // The line decides, as Mesa reports some errors with source 0.
@@ -200,7 +200,7 @@ TEST_CASE("GL: info-log source numbers become file names for each vendor's forma
 
 TEST_CASE(
     "GL: shaders load from a directory for hot reload and a failed reload keeps the old program",
-    "[gl][shader][reload]") {
+    "[gl][shader][reload][quick]") {
   test::glContext();
   TempShaderDir dir;
   CHECK(gl::shaderDirectory() == dir.path);

@@ -182,7 +182,7 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
   }
 }
 
-TEST_CASE("GPU lists: each run of segments is taken longest list first", "[gpu][collision]") {
+TEST_CASE("GPU lists: each run of segments is taken longest list first", "[gpu][collision][quick]") {
   // The list pass and the contact solve take the segments of each run of CSM_PARTICLE_GROUP
   // by candidate count, most first, ties by index (segment_order.comp): within a run a
   // permutation, counts non-increasing. Run on a tangle whose lists range from none to
@@ -423,7 +423,7 @@ Groom hangingRows(int perRow) {
 }
 
 TEST_CASE("GPU grid: cells of three quarters of a segment in sparse hair and half in dense",
-          "[gpu][collision]") {
+          "[gpu][collision][quick]") {
   // The cell size changes what the search costs, not what it finds: a reset sizes it from
   // its search of the hair (at most 20 candidate pairs a segment: three quarters of a mean
   // rest segment, else half). Segments 1 cm long, reach 1.5 mm here (3 mm cells at least).
@@ -447,7 +447,7 @@ TEST_CASE("GPU grid: cells of three quarters of a segment in sparse hair and hal
 }
 
 TEST_CASE("GPU grid: a search over the pair list's capacity keeps the list before it",
-          "[gpu][collision]") {
+          "[gpu][collision][quick]") {
   // Row B droops between row A's strands: with a 6 mm margin the candidate pairs go from
   // 12,734 at rest to ~14,700 (llvmpipe). With the buffers capped at 13,500 pairs, a frame
   // whose search needs more keeps each segment's list from the frame before (not an empty
@@ -504,7 +504,7 @@ Groom crowd(int crossing) {
 }
 
 TEST_CASE("GPU lists: a segment lists all of 1500 candidates and none of 2500",
-          "[gpu][collision]") {
+          "[gpu][collision][quick]") {
   // An insertion sort of 1,500 candidates takes ~560,000 loop iterations, past the 65,535 that
   // llvmpipe allows an invocation (it cuts the loops short, silently): the list came out cut
   // short and unsorted. The heapsort takes ~35,000. Over CSM_MAX_CANDIDATES the segment is in
@@ -541,7 +541,7 @@ TEST_CASE("GPU lists: a segment lists all of 1500 candidates and none of 2500",
 }
 
 TEST_CASE("GPU grid: its buffers stay within the cap on what the device's views hold",
-          "[gpu][collision]") {
+          "[gpu][collision][quick]") {
   // A buffer read past what a binding holds is read and written as the driver pleases
   // (llvmpipe's 128 MiB storage blocks, before the lists moved to buffer textures: 30,000
   // strands of Fig. 1 counted different crossings from run to run). Capped at 128 KiB (8,192 pairs
@@ -573,7 +573,7 @@ TEST_CASE("GPU grid: its buffers stay within the cap on what the device's views 
 }
 
 TEST_CASE("GPU grid: a reset or a switch to a strand mode sizes the lists for the hair as it is",
-          "[gpu][collision]") {
+          "[gpu][collision][quick]") {
   // The packed bundle needs ~40 pairs a segment against ~4 grid entries: more than the
   // reserve from the entries holds (its first frame overflowed when that was all). The reset
   // in a strand mode, and a switch to one from head only, search the hair as it stands and
@@ -602,7 +602,7 @@ TEST_CASE("GPU grid: a reset or a switch to a strand mode sizes the lists for th
 }
 
 TEST_CASE("GPU grid: a restored state sizes the lists for the hair it restores",
-          "[gpu][collision]") {
+          "[gpu][collision][quick]") {
   // A solver reset on the bundle's strands 5 cm apart (no pairs: the lists hold the least
   // they reserve) restores the packed bundle's state: the lists are sized for it there, so
   // its first frame fits (it overflowed when a restore left them as they were).
@@ -628,7 +628,7 @@ TEST_CASE("GPU grid: a restored state sizes the lists for the hair it restores",
 }
 
 TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counters",
-          "[gpu][collision]") {
+          "[gpu][collision][quick]") {
   // The packed bundle, its lists capped at reset, overflows its pair list on the first frame.
   // One solver reads every frame's sample at once (as a headless run writing frames does),
   // the other reads nothing (as a viewer whose samples arrive late): both grow as the second
@@ -670,7 +670,7 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
   CHECK(h != a);
 }
 
-TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision]") {
+TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision][quick]") {
   auto gpu = test::gpuSolver();
   Groom g = tangle(200, 0.004, 5);
   const float nan = std::numeric_limits<float>::quiet_NaN();

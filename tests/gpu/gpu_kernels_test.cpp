@@ -37,7 +37,7 @@ std::vector<glm::vec4> run(GpuKernels kernels, const Config& c, const Groom& g, 
 
 }  // namespace
 
-TEST_CASE("GPU kernels: whole strands to a work group, in order, none split", "[gpu][kernels]") {
+TEST_CASE("GPU kernels: whole strands to a work group, in order, none split", "[gpu][kernels][quick]") {
   CHECK(gpu::groupParticlesFor(1) == gpu::kMinGroupParticles);
   CHECK(gpu::groupParticlesFor(128) == 128);
   CHECK(gpu::groupParticlesFor(129) == 256);
@@ -57,7 +57,7 @@ TEST_CASE("GPU kernels: whole strands to a work group, in order, none split", "[
 }
 
 TEST_CASE("GPU kernels: per strand on a software renderer, per particle on a GPU",
-          "[gpu][kernels]") {
+          "[gpu][kernels][quick]") {
   auto gpu = test::gpuSolver();
   const char* forced = std::getenv("CSM_GPU_KERNELS");
   if (forced && std::string(forced) == "particle") {

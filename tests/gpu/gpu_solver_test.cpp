@@ -232,7 +232,7 @@ TEST_CASE("GPU and CPU solvers agree without hair-hair collisions", "[gpu][solve
 }
 
 TEST_CASE("GPU lists: sides and lists past one view's texels are read and written as in one",
-          "[gpu][solver][contacts]") {
+          "[gpu][solver][contacts][quick]") {
   // The sides and the lists are seen through two image views each, the second from
   // listSplit on (a view holds at most GL_MAX_TEXTURE_BUFFER_SIZE texels: 67 M sides on
   // llvmpipe). With views capped a fifth over the pairs the scene lists, its sides (two a
@@ -352,7 +352,7 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
   }
 }
 
-TEST_CASE("GPU and CPU solvers agree with the penalty model; GPU runs are bit-identical",
+TEST_CASE("GPU and CPU solvers agree with the penalty model, GPU runs are bit-identical",
           "[gpu][solver][contacts]") {
   // collision.contact_model = penalty (contact_penalty.comp, csm::penaltyVelocities): as with
   // the constraints above, every particle within the tolerance over the first two frames and
@@ -420,7 +420,7 @@ TEST_CASE("GPU: the penalty model slows a strand dropped across another", "[gpu]
   CHECK(penalty > off);
 }
 
-TEST_CASE("GPU: a strand dropped across another stays on top for 2 s", "[gpu][contacts]") {
+TEST_CASE("GPU: a strand dropped across another stays on top for 2 s", "[gpu][contacts][quick]") {
   for (CollisionMode mode : {CollisionMode::Strands, CollisionMode::Head}) {
     Config c = test::drapeConfig();
     c.collision.mode = mode;
@@ -443,7 +443,7 @@ TEST_CASE("GPU: a strand dropped across another stays on top for 2 s", "[gpu][co
 }
 
 TEST_CASE("GPU: lists within the frame catch a strand that closes in faster than the margin",
-          "[gpu][contacts]") {
+          "[gpu][contacts][quick]") {
   // The thrown scene, as on the CPU reference (tests/cpu/strand_contact_test.cpp): one list
   // a frame lets the strand 0.02 mm from the bar, four hold it at 2r.
   auto closest = [](int lists) {
@@ -540,7 +540,7 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
 }
 
 TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is chosen",
-          "[gpu][solver]") {
+          "[gpu][solver][quick]") {
   Config c;
   c.hairstyle.strands = 200;
   c.collision.mode = CollisionMode::Head;
@@ -609,7 +609,7 @@ TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][sol
   CHECK(speed < 100.0);
 }
 
-TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][solver]") {
+TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][solver][quick]") {
   auto gpu = test::gpuSolver();
   Config c = smallScene(50);
   c.collision.mode = CollisionMode::Strands;
@@ -682,7 +682,7 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
   for (const glm::vec4& p : x) REQUIRE(std::isfinite(p.x + p.y + p.z));
 }
 
-TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][solver]") {
+TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][solver][quick]") {
   test::glContext();
   // As a storage block (std430), and as the uniform block a GPU reads (std140).
   const bool uniform = GENERATE(false, true);
@@ -736,7 +736,7 @@ TEST_CASE("GPU solver: SimParams has the same layout in C++ and GLSL", "[gpu][so
 }
 
 TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measures read back",
-          "[gpu][solver][sample]") {
+          "[gpu][solver][sample][quick]") {
   Config c = smallScene(300);
   c.collision.mode = CollisionMode::Head;
   c.wind.strength = 4.0f;
@@ -789,7 +789,7 @@ TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measure
 }
 
 TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as the CPU does",
-          "[gpu][solver][sample][contacts]") {
+          "[gpu][solver][sample][contacts][quick]") {
   Config c = smallScene(400);
   c.collision.mode = CollisionMode::Head;
   const Groom g = grow(c);
@@ -857,7 +857,7 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
 }
 
 TEST_CASE("GPU solver: carry turns and moves the hair on the GPU, reading nothing back",
-          "[gpu][solver][jump]") {
+          "[gpu][solver][jump][quick]") {
   auto gpu = test::gpuSolver();
   Config c = smallScene(40);
   const Groom g = grow(c);

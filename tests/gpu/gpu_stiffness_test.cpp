@@ -42,7 +42,7 @@ TEST_CASE("GPU stiffness: the clamped strand sags as the beam at every window, n
 }
 
 TEST_CASE("GPU stiffness: a clamped strand bent hard by gravity settles as the elastica",
-          "[gpu][stiffness]") {
+          "[gpu][stiffness][quick]") {
   test::checkLargeDeflection(test::gpuSolver);
 }
 
@@ -63,7 +63,7 @@ TEST_CASE("GPU stiffness: at 256 steps a frame the float positions follow the CP
   CHECK(rms <= 0.002);
 }
 
-TEST_CASE("GPU stiffness: the goals of a free strand keep sum m v", "[gpu][stiffness]") {
+TEST_CASE("GPU stiffness: the goals of a free strand keep sum m v", "[gpu][stiffness][quick]") {
   // In float: positions of ~0.3 m round by ~2e-8 m, so a velocity (x - x_old) / h at h = 1/240 s
   // carries ~5e-6 m/s of rounding against the strand's ~0.4 m/s: ~1e-5 per particle, less in
   // the sum of 24. The per-particle weighting the per-region masses replaced moved the momentum

@@ -192,7 +192,7 @@ TEST_CASE("FrameRecording: on the GPU nothing waits for a frame's copy, keyframe
   CHECK(mismatch == 0.0);
 }
 
-TEST_CASE("FrameRecording: a regrown groom starts the recording again; its states are refused",
+TEST_CASE("FrameRecording: a regrown groom starts the recording again, its states are refused",
           "[recorder]") {
   Simulation sim(std::make_unique<CpuSolver>());
   std::string error;

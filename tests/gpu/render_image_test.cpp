@@ -125,7 +125,7 @@ TEST_CASE("Render: groom colours reach the screen", "[render][image]") {
   CHECK(s.meanRgb[1] > s.meanRgb[2] + 10.0);
 }
 
-TEST_CASE("Render: natural hair colours: black darker than brown, brown than blond; red is red",
+TEST_CASE("Render: natural hair colours: black darker than brown, brown than blond, red is red",
           "[render][image]") {
   test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 1500));
   const test::Image bare = scene.render(320, 180, nullptr, false);
