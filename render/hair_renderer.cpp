@@ -56,31 +56,10 @@ constexpr int kShadowChildren = 1;
 // render.strand_width_m the shadows take that width instead.
 constexpr float kShadowWidthOfPixelStrands = 0.0009f;
 
+// What every render program is built with beyond the files: the sample count. Binding points
+// are no defines: the shaders include render/bindings.glsl, as the C++ does.
 std::vector<gl::Define> sharedDefines(int samples) {
-  auto d = [](const char* name, int v) { return gl::Define{name, std::to_string(v)}; };
-  return {d("FRAME_UNIFORMS_BINDING", bindings::kFrameUniforms),
-          d("POSITIONS_BINDING", bindings::kPositions),
-          d("REST_POSITIONS_BINDING", bindings::kRestPositions),
-          d("STRAND_FIRST_BINDING", bindings::kStrandFirst),
-          d("STRAND_ATTRIBUTES_BINDING", bindings::kStrandAttributes),
-          d("HEAD_SPHERES_BINDING", bindings::kHeadSpheres),
-          d("LIGHT_DEPTH_UNIT", bindings::kLightDepthUnit),
-          d("OPACITY_LAYERS_UNIT", bindings::kOpacityLayersUnit),
-          d("HEAD_SHADOW_UNIT", bindings::kHeadShadowUnit),
-          d("RESOLVED_UNIT", bindings::kResolvedUnit),
-          d("SCALP_UNIT", bindings::kScalpUnit),
-          d("SPLINE_FIRST_BINDING", bindings::kSplineFirst),
-          d("POINT_STRAND_BINDING", bindings::kPointStrand),
-          d("GUIDE_LINKS_BINDING", bindings::kGuideLinks),
-          d("GUIDE_POINTS_BINDING", bindings::kGuidePoints),
-          d("GUIDE_TANGENTS_BINDING", bindings::kGuideTangents),
-          d("GUIDE_FRAMES_BINDING", bindings::kGuideFrames),
-          d("GUIDE_SHADE_BINDING", bindings::kGuideShade),
-          d("CHILD_POINTS_BINDING", bindings::kChildPoints),
-          d("CHILD_COLORS_BINDING", bindings::kChildColors),
-          d("CHILD_FIRST_BINDING", bindings::kChildFirst),
-          d("CHILD_STRAND_BINDING", bindings::kChildStrand),
-          d("SAMPLES", samples)};
+  return {gl::Define{"SAMPLES", std::to_string(samples)}};
 }
 
 // Preset colours are display colours, as a colour picker shows them; lighting needs them

@@ -7,9 +7,9 @@
 #define DOM_GLSL
 #include "render/frame.glsl"
 
-layout(binding = LIGHT_DEPTH_UNIT) uniform sampler2D uLightDepth;
-layout(binding = OPACITY_LAYERS_UNIT) uniform sampler2D uOpacityLayers;
-layout(binding = HEAD_SHADOW_UNIT) uniform sampler2DShadow uHeadShadow;
+layout(binding = CSM_RENDER_LIGHT_DEPTH_UNIT) uniform sampler2D uLightDepth;
+layout(binding = CSM_RENDER_OPACITY_LAYERS_UNIT) uniform sampler2D uOpacityLayers;
+layout(binding = CSM_RENDER_HEAD_SHADOW_UNIT) uniform sampler2DShadow uHeadShadow;
 
 // Opacity in front of a point `t` layer spacings behind z0: piecewise linear through
 // (0, 0), (1, L0), (2, L1), (3, L2) and reaching L3 at 4.

@@ -1,9 +1,10 @@
 // Per-frame values shared by every render pass, one std140 block (render/hair_renderer.cpp
-// FrameUniforms mirrors it field for field). Binding points come in as #defines from
-// render/bindings.h.
+// FrameUniforms mirrors it field for field). Binding points from render/bindings.glsl, which
+// the C++ passes include too (render/bindings.h).
 #ifndef FRAME_GLSL
 #define FRAME_GLSL
-layout(std140, binding = FRAME_UNIFORMS_BINDING) uniform FrameUniforms {
+#include "render/bindings.glsl"
+layout(std140, binding = CSM_RENDER_FRAME_UNIFORMS) uniform FrameUniforms {
   mat4 uViewProj;
   mat4 uLightViewProj;  // world -> light clip space (orthographic)
   mat4 uHeadRotation;   // the head pose's rotation (the strands' frames turn with it)

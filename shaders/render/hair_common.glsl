@@ -13,33 +13,33 @@
 #define HAIR_COMMON_GLSL
 #include "render/frame.glsl"
 
-layout(std430, binding = POSITIONS_BINDING) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = REST_POSITIONS_BINDING) readonly buffer RestPositions {
+layout(std430, binding = CSM_RENDER_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = CSM_RENDER_REST_POSITIONS) readonly buffer RestPositions {
   vec4 restPositions[];
 };
-layout(std430, binding = STRAND_FIRST_BINDING) readonly buffer StrandFirst { uint strandFirst[]; };
-layout(std430, binding = STRAND_ATTRIBUTES_BINDING) readonly buffer StrandAttributes {
+layout(std430, binding = CSM_RENDER_STRAND_FIRST) readonly buffer StrandFirst { uint strandFirst[]; };
+layout(std430, binding = CSM_RENDER_STRAND_ATTRIBUTES) readonly buffer StrandAttributes {
   vec4 strandAttributes[];  // rgb: groom colour; a: thickness relative to the groom's mean
 };
-layout(std430, binding = SPLINE_FIRST_BINDING) readonly buffer SplineFirst { uint splineFirst[]; };
-layout(std430, binding = POINT_STRAND_BINDING) readonly buffer PointStrand { uint pointStrand[]; };
+layout(std430, binding = CSM_RENDER_SPLINE_FIRST) readonly buffer SplineFirst { uint splineFirst[]; };
+layout(std430, binding = CSM_RENDER_POINT_STRAND) readonly buffer PointStrand { uint pointStrand[]; };
 // Per strand: [2s] xy: the way into the hair from the root in the frame's (normal, binormal),
 // z: 0, w: the hair's density around the root relative to the middle of the scalp (1 inside,
 // about 0.5 on a hairline or parting); [2s + 1] x: the neighbour strand (uint bits), y: the
 // roots' distance (m), z: the typical distance between neighbouring roots (m).
-layout(std430, binding = GUIDE_LINKS_BINDING) readonly buffer GuideLinks { vec4 guideLinks[]; };
-layout(std430, binding = GUIDE_POINTS_BINDING) buffer GuidePoints { vec4 guidePoints[]; };
-layout(std430, binding = GUIDE_TANGENTS_BINDING) buffer GuideTangents { vec4 guideTangents[]; };
-layout(std430, binding = GUIDE_FRAMES_BINDING) buffer GuideFrames { vec4 guideFrames[]; };
-layout(std430, binding = GUIDE_SHADE_BINDING) buffer GuideShade { vec4 guideShade[]; };
+layout(std430, binding = CSM_RENDER_GUIDE_LINKS) readonly buffer GuideLinks { vec4 guideLinks[]; };
+layout(std430, binding = CSM_RENDER_GUIDE_POINTS) buffer GuidePoints { vec4 guidePoints[]; };
+layout(std430, binding = CSM_RENDER_GUIDE_TANGENTS) buffer GuideTangents { vec4 guideTangents[]; };
+layout(std430, binding = CSM_RENDER_GUIDE_FRAMES) buffer GuideFrames { vec4 guideFrames[]; };
+layout(std430, binding = CSM_RENDER_GUIDE_SHADE) buffer GuideShade { vec4 guideShade[]; };
 // Per child point: xyz the point, w the opacity share it puts into the shadow maps (< 0: a
 // child thinned away); and its colour (half floats r g, b and coverage), drawn strand id.
-layout(std430, binding = CHILD_POINTS_BINDING) buffer ChildPoints { vec4 childPoints[]; };
-layout(std430, binding = CHILD_COLORS_BINDING) buffer ChildColors { uvec4 childColors[]; };
+layout(std430, binding = CSM_RENDER_CHILD_POINTS) buffer ChildPoints { vec4 childPoints[]; };
+layout(std430, binding = CSM_RENDER_CHILD_COLORS) buffer ChildColors { uvec4 childColors[]; };
 // A child has a point every uCounts.z guide spline points: childFirst[s] is the first of
 // strand s's in one child's run, childStrand[q] the strand of run point q.
-layout(std430, binding = CHILD_FIRST_BINDING) readonly buffer ChildFirst { uint childFirst[]; };
-layout(std430, binding = CHILD_STRAND_BINDING) readonly buffer ChildStrand { uint childStrand[]; };
+layout(std430, binding = CSM_RENDER_CHILD_FIRST) readonly buffer ChildFirst { uint childFirst[]; };
+layout(std430, binding = CSM_RENDER_CHILD_STRAND) readonly buffer ChildStrand { uint childStrand[]; };
 
 // Uniform Catmull-Rom through p0..p3, evaluated between p1 and p2. Uniform rather than
 // centripetal because strain limiting keeps neighbouring segments within a few percent of

@@ -3,7 +3,7 @@
 // behind it, so layer k ends up holding the opacity nearer than z0 + (k+1) spacing.
 #include "render/frame.glsl"
 
-layout(binding = LIGHT_DEPTH_UNIT) uniform sampler2D uLightDepth;
+layout(binding = CSM_RENDER_LIGHT_DEPTH_UNIT) uniform sampler2D uLightDepth;
 in float vOpacity;  // the strand's opacity times the share of the texel it covers (hair.vert)
 out vec4 fragLayers;
 

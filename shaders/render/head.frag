@@ -1,7 +1,7 @@
 // Smooth-shaded head that receives the hair's shadow (the deep opacity maps) and its own.
 #include "render/dom.glsl"
 
-layout(binding = SCALP_UNIT) uniform sampler2DArray uScalp;
+layout(binding = CSM_RENDER_SCALP_UNIT) uniform sampler2DArray uScalp;
 
 in vec3 vPosition;
 in vec3 vNormal;

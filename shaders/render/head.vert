@@ -6,7 +6,7 @@
 
 layout(location = 0) in vec3 aPosition;  // head frame, from the placement's centre
 layout(location = 1) in vec3 aNormal;    // head frame
-layout(std430, binding = HEAD_SPHERES_BINDING) readonly buffer HeadSpheres {
+layout(std430, binding = CSM_RENDER_HEAD_SPHERES) readonly buffer HeadSpheres {
   vec4 spheres[];  // xyz: world centre; w: scale (a sphere's radius)
 };
 

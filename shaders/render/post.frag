@@ -5,9 +5,9 @@
 #include "render/frame.glsl"
 
 #if SAMPLES > 1
-layout(binding = RESOLVED_UNIT) uniform sampler2DMS uFrame;
+layout(binding = CSM_RENDER_RESOLVED_UNIT) uniform sampler2DMS uFrame;
 #else
-layout(binding = RESOLVED_UNIT) uniform sampler2D uFrame;
+layout(binding = CSM_RENDER_RESOLVED_UNIT) uniform sampler2D uFrame;
 #endif
 out vec4 fragColor;
 // The image drawn (its texels) and its size over the output's: below 1 at interactive quality,

@@ -122,9 +122,10 @@ int depthBin(float depthInR) {
   return clamp(int(depthInR * float(CSM_DEPTH_BINS_PER_R)), 0, CSM_DEPTH_BINS - 1);
 }
 
-const uint kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u, kPairSkew = 8u;
-const float kSkewSine = 0.1;
-const float kInside = 1e-6;
+const uint kPairInterior = CSM_PAIR_INTERIOR, kPairNear = CSM_PAIR_NEAR,
+           kPairPositive = CSM_PAIR_POSITIVE, kPairSkew = CSM_PAIR_SKEW;
+const float kSkewSine = CSM_SKEW_SINE;
+const float kInside = CSM_PAIR_INSIDE;
 
 bool interior(float s, float t) {
   return s > kInside && s < 1.0 - kInside && t > kInside && t < 1.0 - kInside;
@@ -287,7 +288,7 @@ uint bucketOf(uint key) {
 
 // --- The volume grid (sim/solver/volume.h, csm::VolumeGrid). ---
 
-const float kVolumeUnit = 16777216.0;  // csm::kVolumeUnit
+const float kVolumeUnit = CSM_VOLUME_UNIT;
 
 // The trilinear cell of head-frame position x: its lowest node and the fractions.
 void volumeLocate(vec3 x, out ivec3 base, out vec3 f) {

@@ -37,7 +37,7 @@ uniform uint substep;
 const float kLever = CSM_CONTACT_LEVER;
 // How far (m) a sweep must move an end to count as one of the particle's segments (csm::
 // kFullWeight).
-const float kFullWeight = 1e-6;
+const float kFullWeight = CSM_FULL_WEIGHT;
 
 
 vec3 fetchPos(uint i) { return readPosition(i).xyz; }

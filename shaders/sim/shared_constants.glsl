@@ -12,6 +12,26 @@
 // (sim/groom/hairstyle.cpp, kSeparationLever).
 #define CSM_CONTACT_LEVER 2.5
 
+// ---- A strand-contact pair's orientation ------------------------------------------------------
+// Its flags (sim/solver/contacts.h pairFlags, shaders/sim/common.glsl): closest points inside both
+// segments, closer than 2r, the sign of the triple product, skew enough (the sine of the
+// segments' angle above CSM_SKEW_SINE) for that sign to say which side each is on. Closest
+// points count as inside a segment further than CSM_PAIR_INSIDE (of its length) from its ends.
+#define CSM_PAIR_INTERIOR 1u
+#define CSM_PAIR_NEAR 2u
+#define CSM_PAIR_POSITIVE 4u
+#define CSM_PAIR_SKEW 8u
+#define CSM_SKEW_SINE 0.1
+#define CSM_PAIR_INSIDE 1e-6
+// How far (m) a sweep must move an end to count as one of the particle's segments:
+// sim/solver/contacts.cpp (kFullWeight, which says why) and shaders/sim/contact_solve.comp.
+#define CSM_FULL_WEIGHT 1e-6
+
+// ---- The volume grid ---------------------------------------------------------------------------
+// Fixed-point units of the grid's sums: 2^-24 m of strand, 2^-24 m^2/s of length times speed
+// (sim/solver/volume.h kVolumeUnit, shaders/sim/common.glsl).
+#define CSM_VOLUME_UNIT 16777216.0
+
 // ---- The head's push within reach --------------------------------------------------------------
 // A particle pushed out of the head counts as within reach of its parent while the segment is no
 // longer than its limit times (1 + this): sim/solver/cpu_solver.cpp in double, where 1e-6 is far

@@ -14,7 +14,7 @@ namespace {
 
 // Closest points strictly inside both segments.
 bool interior(double s, double t) {
-  constexpr double kInside = 1e-6;
+  constexpr double kInside = CSM_PAIR_INSIDE;
   return s > kInside && s < 1.0 - kInside && t > kInside && t < 1.0 - kInside;
 }
 
@@ -167,7 +167,7 @@ constexpr double kLever = CSM_CONTACT_LEVER;  // the GPU pass shares it
 // How far (m) a sweep must move an end to count as one of the particle's segments: less counts
 // for that fraction of one, so a pair that starts to touch does not halve the move that the
 // particle's other segment sends at once (a jump that float and double took apart).
-constexpr double kFullWeight = 1e-6;
+constexpr double kFullWeight = CSM_FULL_WEIGHT;
 }  // namespace
 
 void solveContacts(const ContactCandidates& c, std::span<const glm::dvec3> x,

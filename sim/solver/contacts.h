@@ -25,6 +25,7 @@
 #include "sim/core/results.h"
 #include "sim/core/hair_state.h"
 #include "sim/solver/stiffness.h"
+#include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
 
@@ -33,8 +34,9 @@ namespace csm {
 // is closer than 2r, the sign, and whether the segments are skew enough (the sine of their
 // angle above kSkewSine) for that sign to say which side each is on: a sign change of nearly
 // parallel segments can come from turning, not passing.
-inline constexpr uint32_t kPairInterior = 1u, kPairNear = 2u, kPairPositive = 4u, kPairSkew = 8u;
-inline constexpr double kSkewSine = 0.1;
+inline constexpr uint32_t kPairInterior = CSM_PAIR_INTERIOR, kPairNear = CSM_PAIR_NEAR,
+                          kPairPositive = CSM_PAIR_POSITIVE, kPairSkew = CSM_PAIR_SKEW;
+inline constexpr double kSkewSine = CSM_SKEW_SINE;
 uint32_t pairFlags(const glm::dvec3& a0, const glm::dvec3& a1, const glm::dvec3& b0,
                    const glm::dvec3& b1, double s, double t, double distance, double twoR);
 // The side a listed pair keeps (ContactCandidates::side) from its flags.

@@ -20,11 +20,12 @@
 
 #include "sim/core/config.h"
 #include "sim/core/pose.h"
+#include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
 
 // Fixed-point units of the grid's sums: 2^-24 m of strand, 2^-24 m^2/s of length times speed.
-inline constexpr double kVolumeUnit = 16777216.0;
+inline constexpr double kVolumeUnit = CSM_VOLUME_UNIT;
 
 struct VolumeSettings {
   double friction = 5.0;   // 1/s
