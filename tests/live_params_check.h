@@ -12,6 +12,7 @@
 
 #include "sim/param/sim_params.h"
 #include "sim/run/simulation.h"
+#include "sim/verify/scenes.h"
 #include "tests/param_variants.h"
 
 namespace csm::test {
@@ -20,13 +21,11 @@ namespace csm::test {
 // turbulence, hair-hair contacts and volume, strain limiting, calibrated stiffness asking for more
 // steps than the fewest (so the cap on steps can bind). `paper`: the paper's stiffness model.
 inline Config liveScene(bool paper = false) {
-  Config c;
-  c.hairstyle.strands = 40;
-  c.hairstyle.particlesPerStrand = 0;
-  c.hairstyle.minParticles = 6;
-  c.hairstyle.maxParticles = 12;
-  c.hairstyle.lengthMin = 0.15f;
-  c.hairstyle.lengthMax = 0.25f;
+  Config c = smallSceneConfig({.strands = 40,
+                               .minParticles = 6,
+                               .maxParticles = 12,
+                               .lengthMin = 0.15f,
+                               .lengthMax = 0.25f});
   c.head.motion = HeadMotion::Nod;
   c.head.amplitude = 20.0f;
   c.head.frequency = 1.0f;

@@ -50,7 +50,8 @@ BaselineParams stiffSprings() {
 
 TEST_CASE(
     "CSM stays bounded at h = 1/240 s where explicit mass-springs of like stiffness "
-    "diverge", "[quick]") {
+    "diverge",
+    "[quick]") {
   const Scene scene = cantilevers(4);  // h = 1/240 s, the default preset's step
 
   auto springs = makeBaseline("ms-explicit", stiffSprings());
@@ -81,7 +82,8 @@ TEST_CASE("implicit mass-springs stay bounded at h = 1/60 s with the same spring
   CHECK(r.maxStrain < 0.2);
 }
 
-TEST_CASE("CSM's strain-limiting sweep gains energy at large steps and DFTL removes it", "[quick]") {
+TEST_CASE("CSM's strain-limiting sweep gains energy at large steps and DFTL removes it",
+          "[quick]") {
   // w = 1, h = 1/120 s: the sweep, which never moves a parent for its child, whips the tips.
   Scene scene = cantilevers(2);
   scene.config.sim.stiffnessWindow = 1;
@@ -95,7 +97,8 @@ TEST_CASE("CSM's strain-limiting sweep gains energy at large steps and DFTL remo
   CHECK(fixed.maxStrain <= scene.config.sim.strainLimit + 1e-6);
 }
 
-TEST_CASE("every baseline keeps a strand at rest without forces and its roots on the head", "[quick]") {
+TEST_CASE("every baseline keeps a strand at rest without forces and its roots on the head",
+          "[quick]") {
   // 32 substeps: within the explicit springs' stability limit.
   Scene scene = cantilevers(32);
   scene.config.sim.gravity = glm::vec3(0.0f);

@@ -195,16 +195,7 @@ TEST_CASE("hair-hair collision keeps strands apart") {
   // Two crossing curtains of strands: with full collisions far fewer segment pairs end closer
   // than the hair radius than with head collisions only (about half: hair this thick, 2 mm, lies
   // packed in places).
-  Config c = test::smallScene(600);
-  c.hairstyle.lengthMin = 0.2f;
-  c.hairstyle.lengthMax = 0.3f;
-  c.wind.strength = 3.0f;
-  c.head.motion = HeadMotion::Shake;
-  c.head.amplitude = 40.0f;
-  c.collision.radius = 0.002f;
-  // Hair this thick (r = 2 mm) needs a thicker layer over the scalp than the default's 6 mm,
-  // or the groom lies packed, with pairs closer than r that no solver can undo.
-  c.hairstyle.volume = 0.03f;
+  const Config c = shakenCurtainsConfig();
   const Groom g = test::growFor(c);
   auto penetrations = [&](CollisionMode mode) {
     Config m = c;
@@ -225,7 +216,8 @@ TEST_CASE("hair-hair collision keeps strands apart") {
   CHECK(double(with) < 0.6 * double(without));
 }
 
-TEST_CASE("rotation extraction recovers the rotation, also from rank-deficient matrices", "[quick]") {
+TEST_CASE("rotation extraction recovers the rotation, also from rank-deficient matrices",
+          "[quick]") {
   const Eigen::Quaterniond truth(
       Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()));
   Eigen::Matrix3d S;
@@ -244,7 +236,8 @@ TEST_CASE("rotation extraction recovers the rotation, also from rank-deficient m
   CHECK(std::abs(r.norm() - 1.0) < 1e-12);
 }
 
-TEST_CASE("rotation extraction is scale-free: tiny masses track the same rotation per step", "[quick]") {
+TEST_CASE("rotation extraction is scale-free: tiny masses track the same rotation per step",
+          "[quick]") {
   // A region of real hair (5e-6 kg/m, 2 cm segments) has J ~ 1e-11 kg m^2; a unit-bearing
   // regulariser beside it (the old "+ 1e-9") tracked only part of a rotation per iteration.
   const Eigen::Quaterniond truth(

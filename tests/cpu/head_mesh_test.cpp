@@ -173,7 +173,8 @@ TEST_CASE("an OBJ sphere's field: the sign right and the distance the mesh's nea
   CHECK(std::abs(glm::length(snapped) - kRadius) < 0.001);
 }
 
-TEST_CASE("an OBJ cube of quads, its faces turned inwards, gives the cube's field", "[head_mesh][quick]") {
+TEST_CASE("an OBJ cube of quads, its faces turned inwards, gives the cube's field",
+          "[head_mesh][quick]") {
   TempDir dir;
   // Every face reversed: the reader turns the surface outwards.
   std::string text =

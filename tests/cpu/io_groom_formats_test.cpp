@@ -283,7 +283,8 @@ TEST_CASE("TressFX 3.x: every malformed header is refused with its byte", "[io][
   }
 }
 
-TEST_CASE("OBJ curves: Blender's edges and polylines read to the same strands", "[io][obj][quick]") {
+TEST_CASE("OBJ curves: Blender's edges and polylines read to the same strands",
+          "[io][obj][quick]") {
   const Groom g = sampleStrands();
   checkSame(csm::io::readObjCurves(bytesOf(objEdges(g)), "edges.obj"), g);
   checkSame(csm::io::readObjCurves(bytesOf(objPolylines(g)), "lines.obj"), g);

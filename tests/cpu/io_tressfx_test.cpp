@@ -119,7 +119,8 @@ TEST_CASE("TressFX: UVs, thickness and colours", "[io][tressfx][quick]") {
   CHECK(g.color[1].b == 1.0f);  // clamped
 }
 
-TEST_CASE("TressFX: malformed files give errors that name the byte offset", "[io][tressfx][quick]") {
+TEST_CASE("TressFX: malformed files give errors that name the byte offset",
+          "[io][tressfx][quick]") {
   TfxFile f = build(validSpec());
   SECTION("shorter than the header") {
     f.bytes.resize(100);

@@ -94,7 +94,8 @@ TEST_CASE("a strand at rest has zero time-step error, for every solver", "[quick
   }
 }
 
-TEST_CASE("time-step error is positive for a swinging strand and shrinks with the step", "[quick]") {
+TEST_CASE("time-step error is positive for a swinging strand and shrinks with the step",
+          "[quick]") {
   Scene scene = restScene();
   scene.config.sim.gravity = glm::vec3(0.0f, -9.81f, 0.0f);
   const double times[] = {0.25, 0.5};

@@ -25,7 +25,8 @@ TEST_CASE("the pool runs every index once and keeps its threads", "[parallel][qu
   CHECK(poolThreadsStarted() == started);
 }
 
-TEST_CASE("chunks cover the range in order of chunk, nested loops run inline", "[parallel][quick]") {
+TEST_CASE("chunks cover the range in order of chunk, nested loops run inline",
+          "[parallel][quick]") {
   const size_t count = 1000;
   std::vector<size_t> chunkOf(count, size_t(-1));
   std::atomic<int> nested{0};

@@ -10,7 +10,8 @@
 
 namespace csm {
 
-TEST_CASE("PresetDocument: edits, what differs from the file, the title, and save as", "[preset][quick]") {
+TEST_CASE("PresetDocument: edits, what differs from the file, the title, and save as",
+          "[preset][quick]") {
   PresetDocument doc;
   Preset p = defaultPreset();
   doc.opened(p, "");

@@ -172,7 +172,8 @@ TEST_CASE("command-line values are parsed per type", "[quick]") {
   CHECK(c.name == "42");
 }
 
-TEST_CASE("a parameter's type is its field's, and the modules' lists make the preset's", "[quick]") {
+TEST_CASE("a parameter's type is its field's, and the modules' lists make the preset's",
+          "[quick]") {
   // Declared by pointer to member: the row's type comes from the field's C++ type.
   CHECK(findParam("sim.dt")->type == ParamType::Float);
   CHECK(findParam("sim.substeps")->type == ParamType::Int);
@@ -198,7 +199,8 @@ TEST_CASE("a parameter's type is its field's, and the modules' lists make the pr
         paramToJson(*findSimParam("sim.dt"), Config{}).dump());
 }
 
-TEST_CASE("render.hair_color: natural colours by name from JSON and --set, each its own", "[quick]") {
+TEST_CASE("render.hair_color: natural colours by name from JSON and --set, each its own",
+          "[quick]") {
   Preset c;
   CHECK(c.view.render.hairColor == HairColor::Custom);  // presets look as they did
   PresetErrors e;

@@ -34,7 +34,8 @@ TEST_CASE("the window coefficient c_w of the calibration is what the solver meas
   }
 }
 
-TEST_CASE("substeps follow the stiffest strand, at least sim.substeps, capped by max_substeps", "[quick]") {
+TEST_CASE("substeps follow the stiffest strand, at least sim.substeps, capped by max_substeps",
+          "[quick]") {
   SimConfig sim;
   sim.dt = 1.0f / 60.0f;
   sim.substeps = 2;
@@ -96,7 +97,8 @@ TEST_CASE("frame rate: 30, 60 and 120 frames a second with automatic substeps ag
   test::checkFrameRates(makeCpu);
 }
 
-TEST_CASE("window: the clamped strand sags as the beam at every window, no hinge at the clamp", "[quick]") {
+TEST_CASE("window: the clamped strand sags as the beam at every window, no hinge at the clamp",
+          "[quick]") {
   test::checkWindowIsNotStiffness(makeCpu);
 }
 
@@ -104,7 +106,8 @@ TEST_CASE("window: a clamped strand bent hard by gravity settles as the elastica
   test::checkLargeDeflection(makeCpu);
 }
 
-TEST_CASE("the clamp's pull: on the free particles whose regions reach behind the clamp only", "[quick]") {
+TEST_CASE("the clamp's pull: on the free particles whose regions reach behind the clamp only",
+          "[quick]") {
   for (const float window : {0.02f, 0.06f}) {
     Scene s = test::clampedStrand(32);
     s.config.sim.windowLength = window;
@@ -138,7 +141,8 @@ TEST_CASE("resolution: 16, 24 and 32 particles on the same strand sag and swing 
   test::checkResolution(makeCpu);
 }
 
-TEST_CASE("resolution: the paper model's window in particles does not hold a strand's sag", "[quick]") {
+TEST_CASE("resolution: the paper model's window in particles does not hold a strand's sag",
+          "[quick]") {
   // What the calibrated model fixes: w = 4 particles spans half the length at 32 particles
   // that it spans at 16, and the strand is far softer. (Under a weak gravity, so that neither
   // strand simply hangs.)
@@ -167,7 +171,8 @@ TEST_CASE("momentum: the goals of a free strand keep sum m v to 1e-12 per step",
 // released strands of the stability map gain energy past 1.1x without DFTL and the warning says
 // so, and stay within it at the correction the rule asks for, where the warning is gone; one
 // cell at half the length with B an eighth (the same bending number) likewise.
-TEST_CASE("soft hair: the DFTL the rule asks for keeps the energy, and without it a warning", "[quick]") {
+TEST_CASE("soft hair: the DFTL the rule asks for keeps the energy, and without it a warning",
+          "[quick]") {
   struct Cell {
     double length, bending;
     int steps;

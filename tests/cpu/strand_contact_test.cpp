@@ -147,7 +147,8 @@ TEST_CASE("candidates: both sides listed, rest distance kept, crossings counted"
   (void)second;
 }
 
-TEST_CASE("a skew pair keeps the side it was listed on: one passed through is pushed back", "[quick]") {
+TEST_CASE("a skew pair keeps the side it was listed on: one passed through is pushed back",
+          "[quick]") {
   // Segment 0 along x; segment 2 (another strand) along z 3 mm above it; segment 4 along x,
   // parallel to segment 0, 3 mm below it. r = 1 mm, margin 1.5 mm: both pairs are listed.
   const std::vector<glm::dvec3> rest = {{-0.01, 0.0, 0.0},    {0.01, 0.0, 0.0},
@@ -185,7 +186,8 @@ TEST_CASE("a skew pair keeps the side it was listed on: one passed through is pu
   CHECK(correction[4].y < 0.0);
 }
 
-TEST_CASE("a segment sweeps its list: one deep pair among shallow ones is resolved at once", "[quick]") {
+TEST_CASE("a segment sweeps its list: one deep pair among shallow ones is resolved at once",
+          "[quick]") {
   // Segment 0 along x; three segments of other strands across it along z: one 1 mm inside 2r
   // at its middle, two 0.1 mm inside at 6 mm either side. r = 1 mm, a hard contact, equal
   // masses. Each segment moves its own ends by each pair's share in list order, so segment 0
@@ -232,7 +234,8 @@ TEST_CASE("a segment sweeps its list: one deep pair among shallow ones is resolv
   CHECK(correction[0].y / correction[0].w == Approx(-0.195e-3).epsilon(0.01));
 }
 
-TEST_CASE("a sweep moves no end further than 2.5 times the pair's depth, whatever the lever", "[quick]") {
+TEST_CASE("a sweep moves no end further than 2.5 times the pair's depth, whatever the lever",
+          "[quick]") {
   // Segment 0's first particle is held; a held segment crosses it 2 mm from that end (s = 0.1)
   // 0.5 mm inside 2r. To move the contact point 0.5 mm the free end would move 5 mm (W =
   // s^2): jacobi does, the sweep moves it at most 2.5 times the depth, 1.25 mm.
@@ -284,7 +287,8 @@ TEST_CASE("a listed pair whose other segment is no longer finite moves nothing",
   }
 }
 
-TEST_CASE("with hair-hair off, samples measure contacts only when asked, and then all of them", "[quick]") {
+TEST_CASE("with hair-hair off, samples measure contacts only when asked, and then all of them",
+          "[quick]") {
   Config c;
   c.hairstyle.strands = 400;
   c.collision.mode = CollisionMode::Head;
@@ -387,7 +391,8 @@ TEST_CASE("more contact iterations hold dense hair in the wind apart better") {
   CHECK(four.penetrations < one.penetrations);
 }
 
-TEST_CASE("lists within the frame catch a strand that closes in faster than the margin", "[quick]") {
+TEST_CASE("lists within the frame catch a strand that closes in faster than the margin",
+          "[quick]") {
   // The thrown scene (tests/strand_contact_scenes.h): the strand swings down 2.4 mm in the
   // first frame from 3 mm above the bar, further than the margin (the pair is not listed
   // where the frame starts: 2r + margin is 1.5 mm), back up, and down again. One list a frame
@@ -463,7 +468,8 @@ TEST_CASE("lists within the frame: where they come, and what they measure", "[qu
   CHECK(four.crossings >= one.crossings);
 }
 
-TEST_CASE("the penalty model pushes an overlapping pair apart by h k depth, damped, never pulls", "[quick]") {
+TEST_CASE("the penalty model pushes an overlapping pair apart by h k depth, damped, never pulls",
+          "[quick]") {
   // The crossed pair 0.5 mm inside: each end takes half (closest points at the middles); the
   // upper segment is pushed up (+y), the lower down.
   const std::vector<uint32_t> first = {0, 2, 4};
@@ -510,7 +516,8 @@ TEST_CASE("the penalty model pushes an overlapping pair apart by h k depth, damp
   CHECK(dv[1].y == Approx(-0.5 * push));
 }
 
-TEST_CASE("penalty friction takes at most mu times the push, and at most half the sliding", "[quick]") {
+TEST_CASE("penalty friction takes at most mu times the push, and at most half the sliding",
+          "[quick]") {
   ContactSettings settings = millimetreContacts();
   settings.penaltyStiffness = 1e4;
   settings.penaltyDamping = 0.0;

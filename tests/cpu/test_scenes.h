@@ -9,21 +9,13 @@
 #include "sim/core/groom.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/head/head_model.h"
+#include "sim/verify/scenes.h"
 
 namespace csm::test {
 
 // A few hundred strands of the default hairstyle: quick, but with every feature in play.
 inline Config smallScene(int strands = 60) {
-  Config c;
-  c.hairstyle.strands = strands;
-  c.hairstyle.particlesPerStrand = 0;
-  c.hairstyle.minParticles = 6;
-  c.hairstyle.maxParticles = 14;
-  c.hairstyle.lengthMin = 0.12f;
-  c.hairstyle.lengthMax = 0.25f;
-  c.wind.strength = 0.0f;
-  c.head.motion = HeadMotion::None;
-  return c;
+  return smallSceneConfig({.strands = strands});
 }
 
 inline Groom growFor(const Config& c) {

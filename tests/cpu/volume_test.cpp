@@ -55,7 +55,8 @@ TEST_CASE("volume grid: the sums hold every particle's length and momentum", "[q
   CHECK(glm::length(momentum - expected) <= 2.0 * rounding);
 }
 
-TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-dense places", "[quick]") {
+TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-dense places",
+          "[quick]") {
   // A bundle of 40 parallel strands along x, 5 mm apart in y and z at rest.
   std::vector<glm::dvec3> x;
   std::vector<uint32_t> first{0};
@@ -112,7 +113,8 @@ TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-d
   CHECK(world.y == Approx(push.x).margin(1e-12));
 }
 
-TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is chosen", "[quick]") {
+TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is chosen",
+          "[quick]") {
   Config c;
   c.hairstyle.strands = 200;
   c.collision.mode = CollisionMode::Head;

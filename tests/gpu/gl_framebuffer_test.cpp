@@ -16,7 +16,8 @@
 
 using namespace csm;
 
-TEST_CASE("GL: a framebuffer with a color texture is cleared and read back", "[gl][framebuffer][quick]") {
+TEST_CASE("GL: a framebuffer with a color texture is cleared and read back",
+          "[gl][framebuffer][quick]") {
   test::glContext();
   const GLsizei w = 37, h = 21;  // odd sizes catch row-alignment mistakes
 
@@ -67,7 +68,8 @@ TEST_CASE("GL: an incomplete framebuffer says why", "[gl][framebuffer][quick]") 
   gl::Framebuffer::bindDefault();
 }
 
-TEST_CASE("GL: 2D array textures attach layered or one layer at a time", "[gl][framebuffer][quick]") {
+TEST_CASE("GL: 2D array textures attach layered or one layer at a time",
+          "[gl][framebuffer][quick]") {
   test::glContext();
   gl::Texture layers = gl::Texture::create2DArray(GL_R32F, 8, 4, 3);
   CHECK(layers.layers() == 3);

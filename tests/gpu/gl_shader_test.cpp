@@ -64,7 +64,8 @@ TEST_CASE("GL: shader files are embedded", "[gl][shader][quick]") {
 }
 
 #ifdef CSM_SOURCE_DIR
-TEST_CASE("GL: embedded shaders are byte for byte the files under shaders/", "[gl][shader][quick]") {
+TEST_CASE("GL: embedded shaders are byte for byte the files under shaders/",
+          "[gl][shader][quick]") {
   REQUIRE(gl::shaderDirectory().empty());  // else shaderSource reads the disk
   for (const std::string& path : gl::embeddedShaderPaths()) {
     INFO(path);
@@ -76,7 +77,8 @@ TEST_CASE("GL: embedded shaders are byte for byte the files under shaders/", "[g
 }
 #endif
 
-TEST_CASE("GL: a compute shader from shaders/test doubles a buffer", "[gl][shader][compute][quick]") {
+TEST_CASE("GL: a compute shader from shaders/test doubles a buffer",
+          "[gl][shader][compute][quick]") {
   test::glContext();
   std::string log;
   std::optional<gl::Program> program =
@@ -100,7 +102,8 @@ TEST_CASE("GL: a compute shader from shaders/test doubles a buffer", "[gl][shade
   CHECK(gl::checkErrors("compute test"));
 }
 
-TEST_CASE("GL: a shader with a syntax error fails and the log names the file", "[gl][shader][quick]") {
+TEST_CASE("GL: a shader with a syntax error fails and the log names the file",
+          "[gl][shader][quick]") {
   test::glContext();
   test::LogCapture captured;
 

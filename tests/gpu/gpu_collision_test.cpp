@@ -18,6 +18,7 @@
 #include "sim/gpu/gpu_solver.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/head/head_model.h"
+#include "sim/verify/scenes.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
 #include "tests/gpu/gpu_solver_fixture.h"
@@ -182,7 +183,8 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
   }
 }
 
-TEST_CASE("GPU lists: each run of segments is taken longest list first", "[gpu][collision][quick]") {
+TEST_CASE("GPU lists: each run of segments is taken longest list first",
+          "[gpu][collision][quick]") {
   // The list pass and the contact solve take the segments of each run of CSM_PARTICLE_GROUP
   // by candidate count, most first, ties by index (segment_order.comp): within a run a
   // permutation, counts non-increasing. Run on a tangle whose lists range from none to
@@ -250,18 +252,7 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
   // The CPU test's scene (tests/cpu/cpu_solver_test.cpp): strands shaken through each other.
   // Penetrations are segment pairs closer than the hair radius, counted by brute force on
   // the read-back positions.
-  Config c;
-  c.hairstyle.strands = 600;
-  c.hairstyle.particlesPerStrand = 0;
-  c.hairstyle.minParticles = 6;
-  c.hairstyle.maxParticles = 14;
-  c.hairstyle.lengthMin = 0.2f;
-  c.hairstyle.lengthMax = 0.3f;
-  c.wind.strength = 3.0f;
-  c.head.motion = HeadMotion::Shake;
-  c.head.amplitude = 40.0f;
-  c.collision.radius = 0.002f;
-  c.hairstyle.volume = 0.03f;  // as the CPU test: a layer that holds hair this thick
+  const Config c = shakenCurtainsConfig();
   const Groom g = growHairstyle(c, *HeadModel::require(c));
   const std::vector<uint32_t> strand = strandOf(g);
   auto penetrations = [&](CollisionMode mode, ContactStats* stats) {
@@ -670,7 +661,8 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
   CHECK(h != a);
 }
 
-TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu][collision][quick]") {
+TEST_CASE("GPU grid: positions that are not finite stay out of the grid",
+          "[gpu][collision][quick]") {
   auto gpu = test::gpuSolver();
   Groom g = tangle(200, 0.004, 5);
   const float nan = std::numeric_limits<float>::quiet_NaN();

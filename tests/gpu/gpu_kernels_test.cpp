@@ -37,7 +37,8 @@ std::vector<glm::vec4> run(GpuKernels kernels, const Config& c, const Groom& g, 
 
 }  // namespace
 
-TEST_CASE("GPU kernels: whole strands to a work group, in order, none split", "[gpu][kernels][quick]") {
+TEST_CASE("GPU kernels: whole strands to a work group, in order, none split",
+          "[gpu][kernels][quick]") {
   CHECK(gpu::groupParticlesFor(1) == gpu::kMinGroupParticles);
   CHECK(gpu::groupParticlesFor(128) == 128);
   CHECK(gpu::groupParticlesFor(129) == 256);

@@ -62,7 +62,8 @@ std::vector<glm::dvec3> inHeadFrame(Solver& solver, const Pose& head) {
 
 }  // namespace
 
-TEST_CASE("Guard: a NaN once in the state does not stay in the region rotations", "[guard][gpu][quick]") {
+TEST_CASE("Guard: a NaN once in the state does not stay in the region rotations",
+          "[guard][gpu][quick]") {
   const std::string name = GENERATE(std::string("cpu"), std::string("gpu"));
   INFO("solver " << name);
   std::unique_ptr<Solver> solver = solverNamed(name);
@@ -253,7 +254,8 @@ TEST_CASE("Guard: hair driven through the head comes out within reach of its par
   CHECK(deepest <= 0.001);
 }
 
-TEST_CASE("Guard: a strand longer than the solvers take is refused, not frozen", "[guard][gpu][quick]") {
+TEST_CASE("Guard: a strand longer than the solvers take is refused, not frozen",
+          "[guard][gpu][quick]") {
   test::glContext();
   std::string error;
   std::unique_ptr<GpuSolver> gpu = GpuSolver::create(&error);

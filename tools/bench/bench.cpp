@@ -12,6 +12,7 @@
 #include "app/preset.h"
 #include "sim/run/make_solver.h"
 #include "sim/head/head_model.h"
+#include "sim/verify/scenes.h"
 
 namespace csm::bench {
 
@@ -150,14 +151,13 @@ std::vector<Setting> methodSettings(const Options& o) {
 
 Scene mainScene(const Options& o) {
   Scene s;
+  s.config = smallSceneConfig({.strands = o.quick ? 40 : 120,
+                               .minParticles = 8,
+                               .maxParticles = 16,
+                               .lengthMin = 0.18f,
+                               .lengthMax = 0.26f});
   Config& c = s.config;
-  c.hairstyle.strands = o.quick ? 40 : 120;
-  c.hairstyle.particlesPerStrand = 0;
-  c.hairstyle.minParticles = 8;
-  c.hairstyle.maxParticles = 16;
   c.hairstyle.segmentLength = 0.02f;
-  c.hairstyle.lengthMin = 0.18f;
-  c.hairstyle.lengthMax = 0.26f;
   c.hairstyle.fall = 0.6f;
   c.head.motion = HeadMotion::Nod;
   c.head.amplitude = 12.0f;
