@@ -10,6 +10,7 @@
 #include "app/capture.h"
 #include "app/import_progress.h"
 #include "app/metrics.h"
+#include "app/sim_thread.h"
 #include "gl/caps.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"
@@ -238,18 +239,11 @@ class MetricsOutput {
   bool write(const SceneSetup& scene, const Simulation& sim, const gl::HeadlessContext* context,
              const HairRenderer* renderer) const {
     if (!on()) return true;
-    RunDescription d;
-    d.preset = scene.preset.name;
-    d.source = scene.source;
-    d.config = sim.config();
-    d.stiffness = sim.solver().stiffness();
-    d.strands = sim.solver().strandCount();
-    d.particles = sim.solver().particleCount();
-    d.solver = std::string(sim.solver().name());
-    d.solverVariant = sim.solver().variant();
-    d.groom = sim.groomReport();
-    d.device = options_.solver == "gpu" && context ? context->renderer() : std::string("cpu");
-    nlohmann::json meta = describeRun(d);
+    SimFrame figures;
+    takeFigures(sim, figures);
+    nlohmann::json meta = describeRun(runDescription(
+        scene, figures,
+        options_.solver == "gpu" && context ? context->renderer() : std::string("cpu")));
     meta["mode"] = "headless";
     meta["head_carried_frames"] = sim.carriedFrames();
     if (renderer) {

@@ -72,7 +72,7 @@ void drawStatsPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout
   const ViewerStats& s = viewer.stats();
   const SimFrame& f = viewer.simFrame();
   ImGui::Text("%.1f fps   %.1f ms a frame", s.fps, s.frameMs.mean());
-  ImGui::Text("solver %s, %s", f.solver.c_str(), viewer.window().renderer().c_str());
+  ImGui::Text("solver %s, %s", solverLabel(f).c_str(), viewer.window().renderer().c_str());
   ImGui::Text("t = %.2f s, frame %ld%s", f.time, f.frame,
               viewer.loading()             ? "  (loading)"
               : viewer.controls().paused() ? "  (paused)"

@@ -639,21 +639,11 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
                  "%.1f ms); %ld UI frames, %.1f ms apart on average; %zu strands, %zu particles, "
                  "solver %s, %s\n",
                  f.frame, seconds, f.frame > 0 ? 1000.0 * seconds / double(f.frame) : 0.0, f.stepMs,
-                 viewer->framesDrawn(), s.frameMs.mean(), f.strands, f.particles, f.solver.c_str(),
-                 viewer->window().renderer().c_str());
+                 viewer->framesDrawn(), s.frameMs.mean(), f.strands, f.particles,
+                 solverLabel(f).c_str(), viewer->window().renderer().c_str());
   }
   if (!options.metrics.empty()) {
-    RunDescription d;
-    d.preset = scene.preset.name;
-    d.source = scene.source;
-    d.config = f.config;
-    d.stiffness = f.stiffness;
-    d.strands = f.strands;
-    d.particles = f.particles;
-    d.solver = f.solver;
-    d.groom = f.groomReport;
-    d.device = viewer->window().renderer();
-    nlohmann::json meta = describeRun(d);
+    nlohmann::json meta = describeRun(runDescription(scene, f, viewer->window().renderer()));
     meta["mode"] = "window";
     meta["wall_seconds"] = seconds;
     meta["sim_frames"] = f.frame;
