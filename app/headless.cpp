@@ -17,7 +17,6 @@
 #include "render/position_source.h"
 #include "sim/groom/cyhair.h"
 #include "sim/groom/hair_sequence.h"
-#include "sim/gpu/pass_profile.h"
 #include "sim/run/frame_driver.h"
 #include "sim/run/make_solver.h"
 #include "sim/run/simulation.h"
@@ -464,7 +463,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
 
   RunWarnings warnings;
   bool nan = false;
-  gpu::pass_profile::clear();  // CSM_PASS_PROFILE: the frames only, not the set-up
+  clearPassProfile();  // CSM_PASS_PROFILE: the frames only, not the set-up
   long simulated = 0;
   for (long f = 0; f < frames; ++f) {
     driver.step();
@@ -499,7 +498,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
       nan = true;
     }
   }
-  const std::string passes = gpu::pass_profile::table(simulated);
+  const std::string passes = passProfileTable(simulated);
   if (!passes.empty())
     std::fprintf(stderr, "csmhair: CSM_PASS_PROFILE, %ld frames, each pass between two waits:\n%s",
                  simulated, passes.c_str());

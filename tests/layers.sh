@@ -2,9 +2,9 @@
 # The modules point one way (docs/ARCHITECTURE.md section 2): gl -> sim -> render -> app, tools/
 # beside app, and inside sim/ its layers, bottom to top: base, core, param, head, groom, solver,
 # gpu, run, verify. Fails on an include against that direction (a folder includes only folders
-# below it or itself), on sim/verify in the app or the renderer, on GL outside sim/gpu, on the
-# CPU library of sim/run reaching the GPU solver, and on a CPU test binary that links a GL,
-# window or GUI library.
+# below it or itself), on sim/verify in the app or the renderer, on sim/gpu in the app (it has
+# the solver factory), on GL outside sim/gpu, on the CPU library of sim/run reaching the GPU
+# solver, and on a CPU test binary that links a GL, window or GUI library.
 #   tests/layers.sh SOURCE_DIR CPU_TEST_BINARY
 set -u
 src=$1
@@ -35,6 +35,9 @@ if [ -n "$hits" ]; then echo "FAIL: sim/ sources outside its layers:"; echo "$hi
 # The verification layer is for tests and tools: the program does not include it.
 check app '#include "sim/verify/' "app/ does not include sim/verify"
 check render '#include "sim/verify/' "render/ does not include sim/verify"
+# The app makes its solvers, and reads the GPU one's pass profile, through the solver factory:
+# nothing of sim/gpu's own headers.
+check app '#include "sim/gpu/' "app/ reaches sim/gpu only through sim/run/make_solver.h"
 # sim/run's CPU library needs no GL: only the solver factory (its own library) knows the GPU one.
 hits=$(grep -rnE '#include "sim/gpu/' "$src/sim/run" --include='*.h' --include='*.cpp' | grep -v "^$src/sim/run/make_solver\.")
 if [ -n "$hits" ]; then echo "FAIL: sim/run reaches sim/gpu outside make_solver:"; echo "$hits"; fail=1; else echo "ok: sim/run reaches sim/gpu only in make_solver"; fi
