@@ -4,6 +4,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -37,6 +38,9 @@ class Buffer {
 
   // Reallocates (glBufferData). `usage` is a hint; the last one given is kept for upload().
   void setData(GLsizeiptr size, const void* data, GLenum usage);
+  void setData(GLsizeiptr size, const void* data, BufferUsage usage) {
+    setData(size, data, GLenum(usage));
+  }
   void setData(GLsizeiptr size, const void* data) { setData(size, data, usage_); }
   void setSubData(GLintptr offset, GLsizeiptr size, const void* data);
   // Reads back into `out`. Waits for the GPU. Issues the buffer-update barrier itself, since

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -19,6 +20,9 @@ class Texture {
   Texture& operator=(Texture&& other) noexcept;
 
   static Texture create2D(GLenum internalFormat, GLsizei width, GLsizei height, GLsizei levels = 1);
+  static Texture create2D(TextureFormat format, GLsizei width, GLsizei height, GLsizei levels = 1) {
+    return create2D(GLenum(format), width, height, levels);
+  }
   static Texture create2DArray(GLenum internalFormat, GLsizei width, GLsizei height, GLsizei layers,
                                GLsizei levels = 1);
   static Texture create2DMultisample(GLenum internalFormat, GLsizei width, GLsizei height,

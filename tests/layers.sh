@@ -4,7 +4,8 @@
 # gpu, run, verify. Fails on an include against that direction (a folder includes only folders
 # below it or itself), on sim/verify in the app or the renderer, on sim/gpu in the app (it has
 # the solver factory), on GL outside sim/gpu, on the CPU library of sim/run reaching the GPU
-# solver, and on a CPU test binary that links a GL, window or GUI library.
+# solver, on a GL_ constant in the app, and on a CPU test binary that links a GL, window or GUI
+# library.
 #   tests/layers.sh SOURCE_DIR CPU_TEST_BINARY
 set -u
 src=$1
@@ -48,6 +49,9 @@ if [ -n "$hits" ]; then echo "FAIL: GL outside sim/gpu:"; echo "$hits"; fail=1; 
 # tools/; they call gl/'s wrappers.
 hits=$(grep -rnE '\bgl[A-Z][A-Za-z0-9]*\(' "$src/sim" "$src/render" "$src/app" "$src/tools" --include='*.h' --include='*.cpp')
 if [ -n "$hits" ]; then echo "FAIL: raw GL calls outside gl/:"; echo "$hits"; fail=1; else echo "ok: GL calls only in gl/"; fi
+# GL's constants stay behind gl/ too: the app names formats, attachments and usage with gl/'s
+# typed enums (gl/enums.h).
+check app '\bGL_[A-Z0-9_]+' "app/ names no GL_ constant (gl/enums.h has typed ones)"
 libs=$(ldd "$cpu_tests" | grep -iE 'libepoxy|libEGL|libGL|libOpenGL|libglfw|libimgui|libX11')
 if [ -n "$libs" ]; then
   echo "FAIL: the CPU tests link GL, window or GUI libraries:"; echo "$libs"; fail=1
