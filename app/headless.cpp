@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/capture.h"
+#include "app/frame_view.h"
 #include "app/import_progress.h"
 #include "app/metrics.h"
 #include "app/sim_thread.h"

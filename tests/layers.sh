@@ -2,7 +2,7 @@
 # The modules point one way (docs/ARCHITECTURE.md section 2): gl -> sim -> render -> app, tools/
 # beside app, and inside sim/ its layers, bottom to top: base, core, param, head, groom, solver,
 # gpu, run, verify. Fails on an include against that direction (a folder includes only folders
-# below it or itself), on sim/verify in the app or the renderer, on sim/gpu in the app (it has
+# below it or itself), on sim/verify in the app or the renderer, on sim/run in the renderer, on sim/gpu in the app (it has
 # the solver factory), on GL outside sim/gpu, on the CPU library of sim/run reaching the GPU
 # solver, on a GL_ constant in the app, and on a CPU test binary that links a GL, window or GUI
 # library.
@@ -36,6 +36,9 @@ if [ -n "$hits" ]; then echo "FAIL: sim/ sources outside its layers:"; echo "$hi
 # The verification layer is for tests and tools: the program does not include it.
 check app '#include "sim/verify/' "app/ does not include sim/verify"
 check render '#include "sim/verify/' "render/ does not include sim/verify"
+# The renderer draws a FrameView (render/renderer.h), which the app builds from the Simulation:
+# it knows frames, not simulations.
+check render '#include "sim/run/' "render/ includes nothing of sim/run"
 # The app makes its solvers, and reads the GPU one's pass profile, through the solver factory:
 # nothing of sim/gpu's own headers.
 check app '#include "sim/gpu/' "app/ reaches sim/gpu only through sim/run/make_solver.h"
