@@ -419,12 +419,22 @@ bool Viewer::reloadShaders() {
   return ok;
 }
 
-bool Viewer::vsync() const {
-  return window_->vsync();
-}
-
 void Viewer::setVsync(bool on) {
   window_->setVsync(on);
+}
+
+PanelView Viewer::panelView() const {
+  return PanelView{.frame = *frame_,
+                   .document = doc_,
+                   .stats = stats_,
+                   .messages = messages_,
+                   .presetErrors = presetErrors_,
+                   .presetErrorsNote = presetErrorsNote_,
+                   .scene = *view_,
+                   .import = sim_->importStatus(),
+                   .renderer = window_->renderer(),
+                   .loading = pendingOpen_.has_value(),
+                   .vsync = window_->vsync()};
 }
 
 std::string Viewer::defaultScreenshotName() const {
@@ -551,7 +561,7 @@ void Viewer::runFrame() {
   controls_->advancePlayback();
   handleKeys();
   handleMouse();
-  drawPanels(*this, *panels_);
+  drawPanels(panelView(), *this, *panels_);
   ImGui::Render();
   const bool capture = screenshotDue();
   renderScene(capture);

@@ -2,10 +2,10 @@
 # The modules point one way (docs/ARCHITECTURE.md section 2): gl -> sim -> render -> app, tools/
 # beside app, and inside sim/ its layers, bottom to top: base, core, param, head, groom, solver,
 # gpu, run, verify. Fails on an include against that direction (a folder includes only folders
-# below it or itself), on sim/verify in the app or the renderer, on sim/run in the renderer, on sim/gpu in the app (it has
-# the solver factory), on GL outside sim/gpu, on the CPU library of sim/run reaching the GPU
-# solver, on a GL_ constant in the app, and on a CPU test binary that links a GL, window or GUI
-# library.
+# below it or itself), on sim/verify in the app or the renderer, on sim/run in the renderer, on
+# sim/gpu in the app (it has the solver factory), on GL outside sim/gpu, on the CPU library of
+# sim/run reaching the GPU solver, on the panels including the viewer, on a GL_ constant in the
+# app, and on a CPU test binary that links a GL, window or GUI library.
 #   tests/layers.sh SOURCE_DIR CPU_TEST_BINARY
 set -u
 src=$1
@@ -52,6 +52,9 @@ if [ -n "$hits" ]; then echo "FAIL: GL outside sim/gpu:"; echo "$hits"; fail=1; 
 # tools/; they call gl/'s wrappers.
 hits=$(grep -rnE '\bgl[A-Z][A-Za-z0-9]*\(' "$src/sim" "$src/render" "$src/app" "$src/tools" --include='*.h' --include='*.cpp')
 if [ -n "$hits" ]; then echo "FAIL: raw GL calls outside gl/:"; echo "$hits"; fail=1; else echo "ok: GL calls only in gl/"; fi
+# The panels see the viewer through PanelView and PanelRequests (app/panels.h), not its class.
+hits=$(grep -nE '#include "app/viewer\.h"' "$src"/app/panels*.h "$src"/app/panels*.cpp 2>/dev/null)
+if [ -n "$hits" ]; then echo "FAIL: the panels include the viewer:"; echo "$hits"; fail=1; else echo "ok: the panels do not include app/viewer.h"; fi
 # GL's constants stay behind gl/ too: the app names formats, attachments and usage with gl/'s
 # typed enums (gl/enums.h).
 check app '\bGL_[A-Z0-9_]+' "app/ names no GL_ constant (gl/enums.h has typed ones)"
