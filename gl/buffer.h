@@ -21,6 +21,10 @@ class Buffer {
   template <class T>
   explicit Buffer(const std::vector<T>& data, GLenum usage = GL_DYNAMIC_DRAW)
       : Buffer(GLsizeiptr(data.size() * sizeof(T)), data.data(), usage) {}
+  Buffer(GLsizeiptr size, const void* data, BufferUsage usage)
+      : Buffer(size, data, GLenum(usage)) {}
+  template <class T>
+  Buffer(const std::vector<T>& data, BufferUsage usage) : Buffer(data, GLenum(usage)) {}
   ~Buffer();
 
   Buffer(const Buffer&) = delete;
@@ -77,6 +81,7 @@ class Buffer {
 
   // Indexed binding for GL_SHADER_STORAGE_BUFFER / GL_UNIFORM_BUFFER / atomic counters.
   void bindBase(GLenum target, GLuint index) const;
+  void bindBase(BufferTarget target, GLuint index) const { bindBase(GLenum(target), index); }
   void bindRange(GLenum target, GLuint index, GLintptr offset, GLsizeiptr size) const;
   void bind(GLenum target) const;
 

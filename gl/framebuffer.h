@@ -61,6 +61,7 @@ class Framebuffer {
   static void bindDefault(GLenum target = GL_FRAMEBUFFER);
   // A framebuffer by name (0: the default one), e.g. one a caller passed down.
   static void bindRaw(GLenum target, GLuint id);
+  static void bindRaw(FramebufferTarget target, GLuint id) { bindRaw(GLenum(target), id); }
 
   // Clear one draw buffer (index into setDrawBuffers) or the depth attachment. Scissor and
   // write masks apply as usual.
