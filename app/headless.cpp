@@ -222,6 +222,16 @@ void sayScene(const Options& options, const SceneSetup& scene, const Simulation&
     std::fprintf(stderr, "csmhair: warning: %s\n", warning.c_str());
 }
 
+// Nothing is read back per frame but the samples: every frame's with --metrics, otherwise one
+// in ten, for the NaN check; a frame written out (`writes`) waits for its own first.
+DriverOptions drivingOptions(bool metrics, bool writes) {
+  DriverOptions driving;
+  driving.sampleEvery = metrics ? 1 : 10;
+  driving.waitForSamples = writes;
+  driving.timeToCompletion = metrics;
+  return driving;
+}
+
 // --metrics: every frame's wall and stage times, every frame's sample, the drawn frames'
 // times, and what ran.
 class MetricsOutput {
@@ -313,6 +323,26 @@ class FrameCapture {
   double lastMs_ = 0.0;
   long readBack_ = 0;
 };
+
+// What is drawn, on stderr unless --quiet: the strands, the size, the device, the folder.
+void sayRendering(const Options& options, const SceneSetup& scene, const Simulation& sim,
+                  const gl::HeadlessContext& context) {
+  if (options.quiet) return;
+  std::fprintf(stderr, "csmhair: rendering %zu strands (%zu simulated) at %dx%d on %s%s%s\n",
+               drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render),
+               sim.solver().strandCount(), options.width, options.height,
+               context.renderer().c_str(), options.outDir.empty() ? "" : " into ",
+               options.outDir.c_str());
+}
+
+// CSM_PASS_PROFILE=1: the GPU solver's passes over the run's `frames` frames, each timed
+// between two waits (sim/run/make_solver.h).
+void sayPassProfile(long frames) {
+  const std::string passes = passProfileTable(frames);
+  if (!passes.empty())
+    std::fprintf(stderr, "csmhair: CSM_PASS_PROFILE, %ld frames, each pass between two waits:\n%s",
+                 frames, passes.c_str());
+}
 
 // A line on stderr every two seconds and at the last frame: the frame, its wall time, the
 // latest measure and, with --metrics, the drawn frames.
@@ -437,16 +467,10 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   const long frames = options.frames >= 0 ? options.frames : 60;
   MetricsOutput metrics(options);
   const bool writes = render && (images.on() || video.on());
-  // Nothing is read back per frame but the samples: every frame's with --metrics, otherwise
-  // one in ten, for the NaN check; a frame written out waits for its own first.
-  DriverOptions driving;
-  driving.sampleEvery = metrics.on() ? 1 : 10;
-  driving.waitForSamples = writes;
-  driving.timeToCompletion = metrics.on();
   // The metrics measure hair-hair contacts in every mode (with hair-hair off, a candidate
   // search per sample outside the frame's timing), so modes compare on the same measures.
   sim->solver().setContactMeasures(metrics.on());
-  FrameDriver driver(*sim, driving);
+  FrameDriver driver(*sim, drivingOptions(metrics.on(), writes));
   Progress progress(options, frames);
   sayScene(options, scene, *sim, frames);
 
@@ -454,12 +478,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   if (render) {
     capture = FrameCapture::create(options);
     if (!capture) return 1;
-    if (!options.quiet)
-      std::fprintf(stderr, "csmhair: rendering %zu strands (%zu simulated) at %dx%d on %s%s%s\n",
-                   drawnStrandCount(sim->solver().strandCount(), scene.preset.view.render),
-                   sim->solver().strandCount(), options.width, options.height,
-                   context->renderer().c_str(), images.on() ? " into " : "",
-                   options.outDir.c_str());
+    sayRendering(options, scene, *sim, *context);
   }
 
   RunWarnings warnings;
@@ -499,10 +518,7 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
       nan = true;
     }
   }
-  const std::string passes = passProfileTable(simulated);
-  if (!passes.empty())
-    std::fprintf(stderr, "csmhair: CSM_PASS_PROFILE, %ld frames, each pass between two waits:\n%s",
-                 simulated, passes.c_str());
+  sayPassProfile(simulated);
   warnings.say(*sim);
   if (!hair.finish(*sim)) return 1;
   if (video.on() && !video.close(capture->framesReadBack())) return 1;
