@@ -20,13 +20,14 @@ extern char** environ;
 namespace csm {
 
 CaptureTarget::CaptureTarget(int width, int height)
-    : width_(width), height_(height), color_(GL_RGBA8, width, height) {
-  framebuffer_.attach(GL_COLOR_ATTACHMENT0, color_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    : width_(width), height_(height), color_(gl::TextureFormat::Rgba8, width, height) {
+  framebuffer_.attach(gl::Attachment::Color0, color_).setDrawBuffers({gl::Attachment::Color0});
 }
 
 std::vector<std::uint8_t> CaptureTarget::readRgb() const {
-  std::vector<std::uint8_t> bottomUp = framebuffer_.read<std::uint8_t>(
-      GL_COLOR_ATTACHMENT0, {0, 0, width_, height_}, GL_RGB, GL_UNSIGNED_BYTE, 3);
+  std::vector<std::uint8_t> bottomUp =
+      framebuffer_.read<std::uint8_t>(gl::Attachment::Color0, {0, 0, width_, height_},
+                                      gl::PixelFormat::Rgb, gl::PixelType::UnsignedByte, 3);
   // GL's rows run bottom to top; images run top to bottom.
   std::vector<std::uint8_t> rgb(bottomUp.size());
   const std::size_t row = std::size_t(width_) * 3;

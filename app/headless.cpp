@@ -1,21 +1,24 @@
 #include "app/headless.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "app/capture.h"
+#include "app/frame_view.h"
 #include "app/import_progress.h"
-#include "sim/run/frame_driver.h"
 #include "app/metrics.h"
-#include "sim/gpu/pass_profile.h"
+#include "app/sim_thread.h"
 #include "gl/caps.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
 #include "sim/groom/cyhair.h"
 #include "sim/groom/hair_sequence.h"
+#include "sim/run/frame_driver.h"
 #include "sim/run/make_solver.h"
 #include "sim/run/simulation.h"
 #include "sim/solver/stiffness.h"
@@ -24,6 +27,400 @@ namespace csm {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Frames are drawn when something will see them: files, a video, or the metrics' render
+// times. --no-render turns all of it off.
+bool drawsFrames(const Options& options) {
+  return !options.noRender &&
+         (!options.outDir.empty() || !options.video.empty() || !options.metrics.empty());
+}
+
+// --out: the frames as frame_00001.png, frame_00002.png, ... in a directory made before the
+// run, so that an unwritable one fails before anything is simulated.
+class ImageFiles {
+ public:
+  explicit ImageFiles(const Options& options) : dir_(options.outDir) {}
+  bool on() const { return !dir_.empty(); }
+  bool makeDirectory() const {
+    std::error_code ec;
+    std::filesystem::create_directories(dir_, ec);
+    if (ec || !std::filesystem::is_directory(dir_)) {
+      std::fprintf(stderr, "csmhair: --out %s: cannot create the directory%s%s\n", dir_.c_str(),
+                   ec ? ": " : "", ec ? ec.message().c_str() : "");
+      return false;
+    }
+    return true;
+  }
+  // The `index`th frame written (from 1).
+  bool write(long index, int width, int height, const std::vector<std::uint8_t>& rgb) const {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05ld.png", index);
+    const std::string path = (std::filesystem::path(dir_) / name).string();
+    std::string error;
+    if (!writePng(path, width, height, rgb, &error)) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return false;
+    }
+    return true;
+  }
+
+ private:
+  std::string dir_;
+};
+
+// --video: the frames piped into ffmpeg, started before the run so that a missing one fails
+// before anything is simulated.
+class VideoOutput {
+ public:
+  explicit VideoOutput(const Options& options) : options_(options) {}
+  bool on() const { return pipe_ != nullptr; }
+  // One video frame a drawn frame: every --every simulated frames of `frameDt` seconds.
+  bool open(double frameDt) {
+    const double fps = 1.0 / (frameDt * options_.every);
+    std::string error;
+    pipe_ = VideoPipe::open(options_.video, options_.width, options_.height, fps, &error);
+    if (!pipe_) std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+    return pipe_ != nullptr;
+  }
+  bool write(const std::vector<std::uint8_t>& rgb) {
+    if (pipe_->write(rgb)) return true;
+    std::string error;
+    pipe_->close(&error);
+    std::fprintf(stderr, "csmhair: %s: ffmpeg stopped taking frames%s%s\n", options_.video.c_str(),
+                 error.empty() ? "" : ": ", error.c_str());
+    return false;
+  }
+  // Waits for ffmpeg to finish the file of `frames` frames.
+  bool close(long frames) {
+    std::string error;
+    if (!pipe_->close(&error)) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return false;
+    }
+    if (!options_.quiet)
+      std::fprintf(stderr, "csmhair: wrote %ld frames to %s\n", frames, options_.video.c_str());
+    return true;
+  }
+
+ private:
+  const Options& options_;
+  std::unique_ptr<VideoPipe> pipe_;
+};
+
+// --export-hair-sequence (the strands every --every frames) and --export-hair (the last
+// frame's), read back from the solver.
+class HairExport {
+ public:
+  explicit HairExport(const Options& options) : options_(options) {}
+  // The sequence's directory, before anything is simulated.
+  bool prepare() const {
+    std::string error;
+    if (options_.exportSequence.empty() || io::prepareSequenceDir(options_.exportSequence, &error))
+      return true;
+    std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
+    return false;
+  }
+  bool writeFrame(Simulation& sim) {
+    if (options_.exportSequence.empty()) return true;
+    sim.solver().readPositions(x_);
+    ++exported_;
+    std::string error;
+    if (!io::writeSequenceFrame(options_.exportSequence, exported_, sim.groom(), x_, &error)) {
+      std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
+      return false;
+    }
+    return true;
+  }
+  // The final strands in world space, as a cyHair file for other tools; then what was written.
+  bool finish(Simulation& sim) {
+    if (!options_.exportHair.empty()) {
+      sim.solver().readPositions(x_);
+      const Groom out = io::posedGroom(sim.groom(), x_);
+      std::string error;
+      if (!io::writeCyHair(options_.exportHair, out, &error)) {
+        std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+        return false;
+      }
+      if (!options_.quiet)
+        std::fprintf(stderr, "csmhair: wrote %zu strands to %s\n", out.strandCount(),
+                     options_.exportHair.c_str());
+    }
+    if (exported_ > 0 && !options_.quiet)
+      std::fprintf(stderr, "csmhair: wrote %ld frames of %zu strands into %s\n", exported_,
+                   sim.groom().strandCount(), options_.exportSequence.c_str());
+    return true;
+  }
+
+ private:
+  const Options& options_;
+  std::vector<glm::vec4> x_;
+  long exported_ = 0;
+};
+
+// The offscreen GL context for both the GPU solver and the renderer; null, having said why,
+// when there is none or --require-gpu refuses it.
+std::unique_ptr<gl::HeadlessContext> openContext(const Options& options, bool render) {
+  std::string error;
+  std::unique_ptr<gl::HeadlessContext> context = gl::HeadlessContext::create(&error);
+  if (!context) {
+    std::fprintf(stderr, "csmhair: no OpenGL 4.3 context for %s: %s\n",
+                 render ? "rendering (use --no-render to simulate only)" : "the GPU solver",
+                 error.c_str());
+    return nullptr;
+  }
+  if (gl::isSoftwareRenderer(context->renderer())) {
+    if (options.requireGpu) {
+      std::fprintf(stderr,
+                   "csmhair: --require-gpu: the OpenGL context (%s) is a software renderer, "
+                   "%s, not a GPU\n",
+                   context->platform().c_str(), context->renderer().c_str());
+      return nullptr;
+    }
+    if (!options.quiet)
+      std::fprintf(stderr, "csmhair: warning: %s\n",
+                   gl::softwareRendererWarning(context->renderer()).c_str());
+  }
+  return context;
+}
+
+// The scene loaded on the solver --solver names; null, having said why, with the exit status
+// in `status` (2: the scene, 1: anything else).
+std::unique_ptr<Simulation> loadSimulation(const Options& options, const SceneSetup& scene,
+                                           int* status) {
+  std::string error;
+  std::unique_ptr<Solver> solver = makeSolver(options.solver, &error);
+  if (!solver) {
+    std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+    *status = 1;
+    return nullptr;
+  }
+  auto sim = std::make_unique<Simulation>(std::move(solver));
+  if (!options.quiet) sim->setImportProgress(ImportProgressPrinter());
+  if (!sim->load(scene.preset.scene, scene.baseDir, &error)) {
+    std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+    *status = 2;
+    return nullptr;
+  }
+  return sim;
+}
+
+// What runs, on stderr: the counts and the solver (not with --quiet), and, even with --quiet,
+// what the import changed of the file and hair softer than asked.
+void sayScene(const Options& options, const SceneSetup& scene, const Simulation& sim, long frames) {
+  const Solver& solver = sim.solver();
+  const StiffnessInfo stiffness = solver.stiffness();
+  if (!options.quiet)
+    std::fprintf(stderr,
+                 "csmhair: %s: %zu strands, %zu particles, solver %s%s%s%s, %ld frames; %s\n",
+                 scene.source.c_str(), solver.strandCount(), solver.particleCount(),
+                 std::string(solver.name()).c_str(), solver.variant().empty() ? "" : " (",
+                 solver.variant().c_str(), solver.variant().empty() ? "" : ")", frames,
+                 stiffnessText(stiffness).c_str());
+  if (const std::string groom = groomReportText(sim.groomReport()); !groom.empty())
+    std::fprintf(stderr, "csmhair: warning: %s\n", groom.c_str());
+  if (const std::string warning = stiffnessWarning(stiffness); !warning.empty())
+    std::fprintf(stderr, "csmhair: warning: %s\n", warning.c_str());
+}
+
+// Nothing is read back per frame but the samples: every frame's with --metrics, otherwise one
+// in ten, for the NaN check; a frame written out (`writes`) waits for its own first.
+DriverOptions drivingOptions(bool metrics, bool writes) {
+  DriverOptions driving;
+  driving.sampleEvery = metrics ? 1 : 10;
+  driving.waitForSamples = writes;
+  driving.timeToCompletion = metrics;
+  return driving;
+}
+
+// --metrics: every frame's wall and stage times, every frame's sample, the drawn frames'
+// times, and what ran.
+class MetricsOutput {
+ public:
+  explicit MetricsOutput(const Options& options) : options_(options) {}
+  bool on() const { return !options_.metrics.empty(); }
+  void addFrame(double ms, const std::vector<StageTime>& stages) {
+    if (on()) log_.addFrame(ms, stages);
+  }
+  void addSample(const FrameSample& sample) {
+    if (on()) log_.addSample(sample);
+  }
+  void addRender(double ms, const std::vector<StageTime>& stages) { log_.addRender(ms, stages); }
+  // `context` and `renderer` are null when the run had none.
+  bool write(const SceneSetup& scene, const Simulation& sim, const gl::HeadlessContext* context,
+             const HairRenderer* renderer) const {
+    if (!on()) return true;
+    SimFrame figures;
+    takeFigures(sim, figures);
+    nlohmann::json meta = describeRun(runDescription(
+        scene, figures,
+        options_.solver == "gpu" && context ? context->renderer() : std::string("cpu")));
+    meta["mode"] = "headless";
+    meta["head_carried_frames"] = sim.carriedFrames();
+    if (renderer) {
+      meta["drawn_strands"] =
+          drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render);
+      meta["render_size"] = {options_.width, options_.height};
+      meta["render_samples"] = renderer->samples();
+      meta["gl_renderer"] = context->renderer();
+    }
+    std::string error;
+    if (!log_.write(options_.metrics, meta, &error)) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return false;
+    }
+    return true;
+  }
+
+ private:
+  const Options& options_;
+  MetricsLog log_;
+};
+
+// The drawn frames: the renderer, the offscreen target it draws into and the positions it
+// draws from (the GPU solver's own buffer, or the CPU solver's uploaded).
+class FrameCapture {
+ public:
+  // Null, having said why, when the renderer does not start.
+  static std::unique_ptr<FrameCapture> create(const Options& options) {
+    std::string error;
+    std::unique_ptr<HairRenderer> renderer = HairRenderer::create(&error);
+    if (!renderer) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return nullptr;
+    }
+    return std::unique_ptr<FrameCapture>(
+        new FrameCapture(std::move(renderer), options.width, options.height));
+  }
+  const HairRenderer& renderer() const { return *renderer_; }
+  int width() const { return target_.width(); }
+  int height() const { return target_.height(); }
+  // Draws the simulation's current frame; with --metrics, waits for it and adds its times.
+  void draw(Simulation& sim, const ViewConfig& view, MetricsOutput& metrics) {
+    const unsigned buffer = positions_.update(sim.solver());
+    const auto start = Clock::now();
+    renderer_->render(
+        frameViewOf(sim, view, buffer, target_.width(), target_.height(), target_.framebuffer()));
+    if (metrics.on()) {
+      CaptureTarget::waitForGpu();
+      lastMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+      metrics.addRender(lastMs_, renderer_->stageTimes());
+    }
+  }
+  // The frame drawn last, rows top to bottom; counts the frames read back.
+  std::vector<std::uint8_t> readBack() {
+    ++readBack_;
+    return target_.readRgb();
+  }
+  double lastMs() const { return lastMs_; }
+  long framesReadBack() const { return readBack_; }
+
+ private:
+  FrameCapture(std::unique_ptr<HairRenderer> renderer, int width, int height)
+      : renderer_(std::move(renderer)), target_(width, height) {}
+  std::unique_ptr<HairRenderer> renderer_;
+  CaptureTarget target_;
+  PositionSource positions_;
+  double lastMs_ = 0.0;
+  long readBack_ = 0;
+};
+
+// What is drawn, on stderr unless --quiet: the strands, the size, the device, the folder.
+void sayRendering(const Options& options, const SceneSetup& scene, const Simulation& sim,
+                  const gl::HeadlessContext& context) {
+  if (options.quiet) return;
+  std::fprintf(stderr, "csmhair: rendering %zu strands (%zu simulated) at %dx%d on %s%s%s\n",
+               drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render),
+               sim.solver().strandCount(), options.width, options.height,
+               context.renderer().c_str(), options.outDir.empty() ? "" : " into ",
+               options.outDir.c_str());
+}
+
+// CSM_PASS_PROFILE=1: the GPU solver's passes over the run's `frames` frames, each timed
+// between two waits (sim/run/make_solver.h).
+void sayPassProfile(long frames) {
+  const std::string passes = passProfileTable(frames);
+  if (!passes.empty())
+    std::fprintf(stderr, "csmhair: CSM_PASS_PROFILE, %ld frames, each pass between two waits:\n%s",
+                 frames, passes.c_str());
+}
+
+// A line on stderr every two seconds and at the last frame: the frame, its wall time, the
+// latest measure and, with --metrics, the drawn frames.
+class Progress {
+ public:
+  Progress(const Options& options, long frames) : quiet_(options.quiet), frames_(frames) {}
+  void frame(long f, long simulated, const FrameDriver& driver, const FrameCapture* capture,
+             bool metrics) {
+    const auto now = Clock::now();
+    if (quiet_ || (now - lastReport_ <= std::chrono::seconds(2) && f + 1 != frames_)) return;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame", f + 1, frames_,
+                 1000.0 * elapsed / double(simulated));
+    if (driver.latestSample())
+      std::fprintf(stderr, "  max strain %.4f (frame %ld)",
+                   driver.latestSample()->accuracy.maxStrain, driver.latestSample()->frame);
+    std::fprintf(stderr, "  %.0f s elapsed", elapsed);
+    if (capture && metrics)
+      std::fprintf(stderr, "  render %.1f ms  %ld written", capture->lastMs(),
+                   capture->framesReadBack());
+    std::fputc('\n', stderr);
+    lastReport_ = now;
+  }
+
+ private:
+  bool quiet_;
+  long frames_;
+  Clock::time_point start_ = Clock::now(), lastReport_ = start_;
+};
+
+// What the frames' samples said that the run must not keep silent, said at its end: lists that
+// did not fit the solver's buffers, crowds too dense for the contacts, segments too long for
+// the grid (ContactStats::add keeps the running counts), and head moves carried rigidly.
+class RunWarnings {
+ public:
+  void add(const FrameSample& sample) { seen_.add(sample.contacts); }
+  void say(const Simulation& sim) const {
+    if (seen_.overflows > 0)
+      std::fprintf(stderr,
+                   "csmhair: warning: the candidate pairs of %llu frames did not fit the solver's "
+                   "buffers: those frames kept the list before them (and counted no crossings)\n",
+                   (unsigned long long)seen_.overflows);
+    if (seen_.crowded > 0)
+      std::fprintf(stderr,
+                   "csmhair: warning: up to %llu segments a frame were in too dense a crowd for "
+                   "the strand contacts (over 2,048 candidate pairs, or a grid cell the search "
+                   "could not finish): some or all of their contacts were missing\n",
+                   (unsigned long long)seen_.crowded);
+    if (sim.carriedFrames() > 0)
+      std::fprintf(stderr,
+                   "csmhair: note: in %ld frames a move of the head moved its roots faster than "
+                   "%.0f m/s: the hair went with it, rigidly, for the part beyond\n",
+                   sim.carriedFrames(), kMaxRootSpeed);
+    if (seen_.oversize > 0)
+      std::fprintf(stderr,
+                   "csmhair: warning: up to %llu segments a frame were too long for the "
+                   "collision grid's cells or not finite: they had no strand contacts\n",
+                   (unsigned long long)seen_.oversize);
+  }
+
+ private:
+  ContactStats seen_;
+};
+
+// The samples the driver has taken, to the warnings and the metrics.
+void takeSamples(FrameDriver& driver, RunWarnings& warnings, MetricsOutput& metrics) {
+  for (const FrameSample& sample : driver.takeSamples()) {
+    warnings.add(sample);
+    metrics.addSample(sample);
+  }
+}
+
+void sayNan(const FrameDriver& driver) {
+  std::fprintf(stderr,
+               "csmhair: error: the simulation produced NaN at frame %ld (%llu particles); "
+               "stopping\n",
+               driver.nanFrame(), (unsigned long long)driver.nanParticles());
+}
 
 }  // namespace
 
@@ -46,289 +443,88 @@ int printDeviceInfo(const Options& options) {
 }
 
 int runHeadless(const Options& options, const SceneSetup& scene) {
-  std::string error;
-  // Frames are drawn when something will see them: files, a video, or the metrics' render
-  // times. --no-render turns all of it off.
-  const bool render = !options.noRender && (!options.outDir.empty() || !options.video.empty() ||
-                                            !options.metrics.empty());
+  const bool render = drawsFrames(options);
   if (options.noRender && !options.video.empty()) {
     std::fprintf(stderr, "csmhair: --video needs frames; drop --no-render\n");
     return 2;
   }
   // Before anything is simulated: a missing ffmpeg or an unwritable directory fails at once.
-  std::unique_ptr<VideoPipe> video;
-  if (render && !options.video.empty()) {
-    const double fps = 1.0 / (double(scene.preset.scene.sim.dt) * options.every);
-    video = VideoPipe::open(options.video, options.width, options.height, fps, &error);
-    if (!video) {
-      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-      return 1;
-    }
-  }
-  if (render && !options.outDir.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(options.outDir, ec);
-    if (ec || !std::filesystem::is_directory(options.outDir)) {
-      std::fprintf(stderr, "csmhair: --out %s: cannot create the directory%s%s\n",
-                   options.outDir.c_str(), ec ? ": " : "", ec ? ec.message().c_str() : "");
-      return 1;
-    }
-  }
-  if (!options.exportSequence.empty() && !io::prepareSequenceDir(options.exportSequence, &error)) {
-    std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
-    return 1;
-  }
-  // One offscreen GL context for both the GPU solver and the renderer.
+  VideoOutput video(options);
+  if (render && !options.video.empty() && !video.open(double(scene.preset.scene.sim.dt))) return 1;
+  const ImageFiles images(options);
+  if (render && images.on() && !images.makeDirectory()) return 1;
+  HairExport hair(options);
+  if (!hair.prepare()) return 1;
+
   std::unique_ptr<gl::HeadlessContext> context;
   if (render || options.solver == "gpu") {
-    context = gl::HeadlessContext::create(&error);
-    if (!context) {
-      std::fprintf(stderr, "csmhair: no OpenGL 4.3 context for %s: %s\n",
-                   render ? "rendering (use --no-render to simulate only)" : "the GPU solver",
-                   error.c_str());
-      return 1;
-    }
-    if (gl::isSoftwareRenderer(context->renderer())) {
-      if (options.requireGpu) {
-        std::fprintf(stderr,
-                     "csmhair: --require-gpu: the OpenGL context (%s) is a software renderer, "
-                     "%s, not a GPU\n",
-                     context->platform().c_str(), context->renderer().c_str());
-        return 1;
-      }
-      if (!options.quiet)
-        std::fprintf(stderr, "csmhair: warning: %s\n",
-                     gl::softwareRendererWarning(context->renderer()).c_str());
-    }
+    context = openContext(options, render);
+    if (!context) return 1;
   }
-  std::unique_ptr<Solver> solver = makeSolver(options.solver, &error);
-  if (!solver) {
-    std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-    return 1;
-  }
-  Simulation sim(std::move(solver));
-  if (!options.quiet) sim.setImportProgress(ImportProgressPrinter());
-  if (!sim.load(scene.preset.scene, scene.baseDir, &error)) {
-    std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-    return 2;
-  }
+  int status = 0;
+  std::unique_ptr<Simulation> sim = loadSimulation(options, scene, &status);
+  if (!sim) return status;
   const long frames = options.frames >= 0 ? options.frames : 60;
-  const Groom& groom = sim.groom();
-  const bool metrics = !options.metrics.empty();
-  const bool writes = render && (!options.outDir.empty() || !options.video.empty());
-  // Nothing is read back per frame but the samples: every frame's with --metrics, otherwise
-  // one in ten, for the NaN check; a frame written out waits for its own first.
-  DriverOptions driving;
-  driving.sampleEvery = metrics ? 1 : 10;
-  driving.waitForSamples = writes;
-  driving.timeToCompletion = metrics;
+  MetricsOutput metrics(options);
+  const bool writes = render && (images.on() || video.on());
   // The metrics measure hair-hair contacts in every mode (with hair-hair off, a candidate
   // search per sample outside the frame's timing), so modes compare on the same measures.
-  sim.solver().setContactMeasures(metrics);
-  FrameDriver driver(sim, driving);
-  MetricsLog recorder;
-  std::vector<glm::vec4> x;
-  auto lastReport = Clock::now();
-  const auto start = Clock::now();
-  long firstNanFrame = -1;
-  auto nanStop = [&] {
-    firstNanFrame = driver.nanFrame();
-    std::fprintf(stderr,
-                 "csmhair: error: the simulation produced NaN at frame %ld (%llu particles); "
-                 "stopping\n",
-                 firstNanFrame, (unsigned long long)driver.nanParticles());
-  };
-  const StiffnessInfo stiffness = sim.solver().stiffness();
-  if (!options.quiet)
-    std::fprintf(
-        stderr, "csmhair: %s: %zu strands, %zu particles, solver %s%s%s%s, %ld frames; %s\n",
-        scene.source.c_str(), sim.solver().strandCount(), sim.solver().particleCount(),
-        std::string(sim.solver().name()).c_str(), sim.solver().variant().empty() ? "" : " (",
-        sim.solver().variant().c_str(), sim.solver().variant().empty() ? "" : ")", frames,
-        stiffnessText(stiffness).c_str());
-  // Said even with --quiet: what the import changed of the file, and hair softer than asked.
-  if (const std::string groom = groomReportText(sim.groomReport()); !groom.empty())
-    std::fprintf(stderr, "csmhair: warning: %s\n", groom.c_str());
-  if (const std::string warning = stiffnessWarning(stiffness); !warning.empty())
-    std::fprintf(stderr, "csmhair: warning: %s\n", warning.c_str());
+  sim->solver().setContactMeasures(metrics.on());
+  FrameDriver driver(*sim, drivingOptions(metrics.on(), writes));
+  Progress progress(options, frames);
+  sayScene(options, scene, *sim, frames);
 
-  std::unique_ptr<HairRenderer> renderer;
-  std::unique_ptr<CaptureTarget> target;
-  PositionSource positions;
-  long written = 0;
-  double lastRenderMs = 0.0;
+  std::unique_ptr<FrameCapture> capture;
   if (render) {
-    renderer = HairRenderer::create(&error);
-    if (!renderer) {
-      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-      return 1;
-    }
-    target = std::make_unique<CaptureTarget>(options.width, options.height);
-    if (!options.quiet)
-      std::fprintf(stderr, "csmhair: rendering %zu strands (%zu simulated) at %dx%d on %s%s%s\n",
-                   drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render),
-                   sim.solver().strandCount(), options.width, options.height,
-                   context->renderer().c_str(), options.outDir.empty() ? "" : " into ",
-                   options.outDir.c_str());
+    capture = FrameCapture::create(options);
+    if (!capture) return 1;
+    sayRendering(options, scene, *sim, *context);
   }
-  // Frames whose hair-hair lists did not fit the solver's buffers: said at the end, never silent.
-  // (ContactStats::add keeps the running count of overflows and the most crowded segments.)
-  ContactStats seen;
-  auto takeSamples = [&] {
-    for (const FrameSample& sample : driver.takeSamples()) {
-      seen.add(sample.contacts);
-      if (metrics) recorder.addSample(sample);
-    }
-  };
-  gpu::pass_profile::clear();  // CSM_PASS_PROFILE: the frames only, not the set-up
+
+  RunWarnings warnings;
+  bool nan = false;
+  clearPassProfile();  // CSM_PASS_PROFILE: the frames only, not the set-up
   long simulated = 0;
-  long exported = 0;  // frames written by --export-hair-sequence
   for (long f = 0; f < frames; ++f) {
     driver.step();
     ++simulated;
-    if (metrics) recorder.addFrame(driver.lastStepMs(), sim.solver().stageTimes());
-    takeSamples();
+    metrics.addFrame(driver.lastStepMs(), sim->solver().stageTimes());
+    takeSamples(driver, warnings, metrics);
     if (driver.stopped()) {
-      nanStop();
+      sayNan(driver);
+      nan = true;
       break;
     }
-    if (!options.exportSequence.empty() && (f + 1) % options.every == 0) {
-      sim.solver().readPositions(x);
-      ++exported;
-      if (!io::writeSequenceFrame(options.exportSequence, exported, groom, x, &error)) {
-        std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
-        return 1;
-      }
-    }
-    if (renderer && (f + 1) % options.every == 0) {
-      const unsigned buffer = positions.update(sim.solver());
-      const auto r0 = Clock::now();
-      renderer->render(frameViewOf(sim, scene.preset.view, buffer, target->width(),
-                                   target->height(), target->framebuffer()));
-      if (metrics) {
-        CaptureTarget::waitForGpu();
-        lastRenderMs = std::chrono::duration<double, std::milli>(Clock::now() - r0).count();
-        recorder.addRender(lastRenderMs, renderer->stageTimes());
-      }
+    const bool due = (f + 1) % options.every == 0;
+    if (due && !hair.writeFrame(*sim)) return 1;
+    if (due && capture) {
+      capture->draw(*sim, scene.preset.view, metrics);
       if (writes) {
-        const std::vector<std::uint8_t> rgb = target->readRgb();
-        ++written;
-        if (!options.outDir.empty()) {
-          char name[32];
-          std::snprintf(name, sizeof name, "frame_%05ld.png", written);
-          const std::string path = (std::filesystem::path(options.outDir) / name).string();
-          if (!writePng(path, target->width(), target->height(), rgb, &error)) {
-            std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-            return 1;
-          }
-        }
-        if (video && !video->write(rgb)) {
-          video->close(&error);
-          std::fprintf(stderr, "csmhair: %s: ffmpeg stopped taking frames%s%s\n",
-                       options.video.c_str(), error.empty() ? "" : ": ", error.c_str());
+        const std::vector<std::uint8_t> rgb = capture->readBack();
+        if (images.on() &&
+            !images.write(capture->framesReadBack(), capture->width(), capture->height(), rgb))
           return 1;
-        }
+        if (video.on() && !video.write(rgb)) return 1;
       }
     }
-    const auto now = Clock::now();
-    if (!options.quiet && (now - lastReport > std::chrono::seconds(2) || f + 1 == frames)) {
-      const double elapsed = std::chrono::duration<double>(now - start).count();
-      std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame", f + 1, frames,
-                   1000.0 * elapsed / double(simulated));
-      if (driver.latestSample())
-        std::fprintf(stderr, "  max strain %.4f (frame %ld)",
-                     driver.latestSample()->accuracy.maxStrain, driver.latestSample()->frame);
-      std::fprintf(stderr, "  %.0f s elapsed", elapsed);
-      if (renderer && metrics)
-        std::fprintf(stderr, "  render %.1f ms  %ld written", lastRenderMs, written);
-      std::fputc('\n', stderr);
-      lastReport = now;
-    }
+    progress.frame(f, simulated, driver, capture.get(), metrics.on());
   }
   // The samples still in flight: the last frames' NaN check and measures.
-  if (firstNanFrame < 0) {
+  if (!nan) {
     driver.drain();
-    takeSamples();
-    if (driver.stopped()) nanStop();
-  }
-  const std::string passes = gpu::pass_profile::table(simulated);
-  if (!passes.empty())
-    std::fprintf(stderr, "csmhair: CSM_PASS_PROFILE, %ld frames, each pass between two waits:\n%s",
-                 simulated, passes.c_str());
-  if (seen.overflows > 0)
-    std::fprintf(stderr,
-                 "csmhair: warning: the candidate pairs of %llu frames did not fit the solver's "
-                 "buffers: those frames kept the list before them (and counted no crossings)\n",
-                 (unsigned long long)seen.overflows);
-  if (seen.crowded > 0)
-    std::fprintf(stderr,
-                 "csmhair: warning: up to %llu segments a frame were in too dense a crowd for "
-                 "the strand contacts (over 2,048 candidate pairs, or a grid cell the search "
-                 "could not finish): some or all of their contacts were missing\n",
-                 (unsigned long long)seen.crowded);
-  if (sim.carriedFrames() > 0)
-    std::fprintf(
-        stderr,
-        "csmhair: note: in %ld frames a move of the head moved its roots faster than %.0f m/s: the "
-        "hair went with it, rigidly, for the part beyond\n",
-        sim.carriedFrames(), kMaxRootSpeed);
-  if (seen.oversize > 0)
-    std::fprintf(stderr,
-                 "csmhair: warning: up to %llu segments a frame were too long for the collision "
-                 "grid's cells or not finite: they had no strand contacts\n",
-                 (unsigned long long)seen.oversize);
-  if (!options.exportHair.empty()) {
-    // The final strands in world space, as a cyHair file for other tools.
-    sim.solver().readPositions(x);
-    const Groom out = io::posedGroom(groom, x);
-    if (!io::writeCyHair(options.exportHair, out, &error)) {
-      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-      return 1;
-    }
-    if (!options.quiet)
-      std::fprintf(stderr, "csmhair: wrote %zu strands to %s\n", out.strandCount(),
-                   options.exportHair.c_str());
-  }
-  if (exported > 0 && !options.quiet)
-    std::fprintf(stderr, "csmhair: wrote %ld frames of %zu strands into %s\n", exported,
-                 groom.strandCount(), options.exportSequence.c_str());
-  if (video) {
-    if (!video->close(&error)) {
-      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-      return 1;
-    }
-    if (!options.quiet)
-      std::fprintf(stderr, "csmhair: wrote %ld frames to %s\n", written, options.video.c_str());
-  }
-  if (!options.metrics.empty()) {
-    const Config& c = sim.config();
-    RunDescription d;
-    d.preset = scene.preset.name;
-    d.source = scene.source;
-    d.config = c;
-    d.stiffness = stiffness;
-    d.strands = sim.solver().strandCount();
-    d.particles = sim.solver().particleCount();
-    d.solver = std::string(sim.solver().name());
-    d.solverVariant = sim.solver().variant();
-    d.groom = sim.groomReport();
-    d.device = options.solver == "gpu" && context ? context->renderer() : std::string("cpu");
-    nlohmann::json meta = describeRun(d);
-    meta["mode"] = "headless";
-    meta["head_carried_frames"] = sim.carriedFrames();
-    if (renderer) {
-      meta["drawn_strands"] =
-          drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render);
-      meta["render_size"] = {options.width, options.height};
-      meta["render_samples"] = renderer->samples();
-      meta["gl_renderer"] = context->renderer();
-    }
-    if (!recorder.write(options.metrics, meta, &error)) {
-      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-      return 1;
+    takeSamples(driver, warnings, metrics);
+    if (driver.stopped()) {
+      sayNan(driver);
+      nan = true;
     }
   }
-  return firstNanFrame >= 0 ? 1 : 0;
+  sayPassProfile(simulated);
+  warnings.say(*sim);
+  if (!hair.finish(*sim)) return 1;
+  if (video.on() && !video.close(capture->framesReadBack())) return 1;
+  if (!metrics.write(scene, *sim, context.get(), capture ? &capture->renderer() : nullptr))
+    return 1;
+  return nan ? 1 : 0;
 }
 
 }  // namespace csm

@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <fstream>
 
+#include "app/scene_setup.h"
+#include "app/sim_thread.h"
+
 namespace csm {
 
 namespace {
@@ -158,6 +161,22 @@ bool MetricsLog::write(const std::string& path, const nlohmann::json& meta,
     return false;
   }
   return true;
+}
+
+RunDescription runDescription(const SceneSetup& scene, const SimFrame& figures,
+                              const std::string& device) {
+  RunDescription d;
+  d.preset = scene.preset.name;
+  d.source = scene.source;
+  d.config = figures.config;
+  d.stiffness = figures.stiffness;
+  d.strands = figures.strands;
+  d.particles = figures.particles;
+  d.solver = figures.solver;
+  d.solverVariant = figures.solverVariant;
+  d.groom = figures.groomReport;
+  d.device = device;
+  return d;
 }
 
 nlohmann::json describeRun(const RunDescription& r) {

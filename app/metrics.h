@@ -13,6 +13,9 @@
 
 namespace csm {
 
+struct SceneSetup;  // app/scene_setup.h
+struct SimFrame;    // app/sim_thread.h
+
 class MetricsLog {
  public:
   // A simulated frame: its wall time and the solver's stage times.
@@ -62,6 +65,12 @@ struct RunDescription {
   // 15.0.6, 256 bits)" or "NVIDIA H100 80GB HBM3/PCIe/SSE2"), "cpu" otherwise.
   std::string device;
 };
+// The one place a RunDescription is filled, for headless runs and the window alike: `scene` as
+// set up, the running scene's figures as a SimFrame carries them (the window's latest frame; a
+// headless run takes them from its Simulation with takeFigures, app/sim_thread.h), and the
+// device the solver ran on.
+RunDescription runDescription(const SceneSetup& scene, const SimFrame& figures,
+                              const std::string& device);
 nlohmann::json describeRun(const RunDescription& run);
 
 }  // namespace csm

@@ -6,7 +6,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "app/viewer.h"
+#include "app/sim_controls.h"
 #include "sim/solver/stiffness.h"
 
 namespace csm {
@@ -120,12 +120,12 @@ void sphereWidgets(const PresetParam& p, Preset& config, const std::string& labe
 
 // What the stiffness the solver runs with comes to: steps, alpha, window in particles, and a
 // warning when the stiffness asks for more steps than sim.max_substeps allows.
-void drawStiffnessInfo(const Viewer& viewer) {
-  const StiffnessInfo& info = viewer.simFrame().stiffness;
+void drawStiffnessInfo(const PanelView& view) {
+  const StiffnessInfo& info = view.frame.stiffness;
   if (info.strands == 0) return;
   ImGui::Indent();
   std::string text = stiffnessText(info);
-  const SimConfig& sim = viewer.simFrame().config.sim;
+  const SimConfig& sim = view.frame.config.sim;
   if (info.model == StiffnessModel::Calibrated) {
     char ei[64];
     std::snprintf(ei, sizeof ei, "; EI = B x density = %.3g N m^2",
@@ -149,8 +149,8 @@ void drawStiffnessInfo(const Viewer& viewer) {
   ImGui::Unindent();
 }
 
-void drawGroupContents(const ParamGroup& group, Viewer& viewer) {
-  Preset& edited = viewer.document().edited();
+void drawGroupContents(const ParamGroup& group, const PanelView& view, PanelRequests& ask) {
+  Preset& edited = ask.editedPreset();
   bool apply = false;
   for (const PresetParam* p : group.params) {
     const bool applies = p->applies(edited);
@@ -159,20 +159,20 @@ void drawGroupContents(const ParamGroup& group, Viewer& viewer) {
     if (!applies) ImGui::EndDisabled();
     if (e == ParamEdit::Apply) apply = true;
     if (applies && (p->key == "sim.window_length" || p->key == "sim.stiffness_window"))
-      drawStiffnessInfo(viewer);
+      drawStiffnessInfo(view);
   }
   // Apply once, after the loop: applyConfig refreshes the edited copy.
-  if (apply) viewer.applyConfig(Preset(edited));
+  if (apply) ask.applyConfig(Preset(edited));
   for (const ParamGroup& sub : group.children) {
     if (ImGui::TreeNode(sub.name.c_str())) {
-      drawGroupContents(sub, viewer);
+      drawGroupContents(sub, view, ask);
       ImGui::TreePop();
     }
   }
 }
 
-void drawMessages(const Viewer& viewer, size_t count) {
-  const auto& messages = viewer.messages();
+void drawMessages(const PanelView& view, size_t count) {
+  const auto& messages = view.messages;
   const size_t first = messages.size() > count ? messages.size() - count : 0;
   for (size_t i = first; i < messages.size(); ++i) {
     const ViewerMessage& m = messages[i];
@@ -187,23 +187,23 @@ void drawMessages(const Viewer& viewer, size_t count) {
 }
 
 // The keys' actions as buttons, for the mouse.
-void drawControls(Viewer& viewer) {
-  if (ImGui::Button(viewer.controls().paused() ? "Run" : "Pause"))
-    viewer.controls().setPaused(!viewer.controls().paused());
+void drawControls(PanelRequests& ask) {
+  if (ImGui::Button(ask.controls().paused() ? "Run" : "Pause"))
+    ask.controls().setPaused(!ask.controls().paused());
   ImGui::SameLine();
   if (ImGui::Button("Step")) {
-    viewer.controls().setPaused(true);
-    viewer.controls().stepOnce();
+    ask.controls().setPaused(true);
+    ask.controls().stepOnce();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Reset hair")) viewer.controls().resetHair();
+  if (ImGui::Button("Reset hair")) ask.controls().resetHair();
   ImGui::SameLine();
-  if (ImGui::Button("Frame head")) viewer.frameHead();
+  if (ImGui::Button("Frame head")) ask.frameHead();
   ImGui::SameLine();
-  if (ImGui::Button("Reset view")) viewer.resetView();
-  if (ImGui::Button("Undo head drag")) viewer.resetHead();
+  if (ImGui::Button("Reset view")) ask.resetView();
+  if (ImGui::Button("Undo head drag")) ask.resetHead();
   ImGui::SameLine();
-  if (ImGui::Button("Screenshot")) viewer.requestScreenshot(viewer.defaultScreenshotName());
+  if (ImGui::Button("Screenshot")) ask.screenshot();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Saves what the window shows, panels included, in the current folder.");
 }
@@ -289,27 +289,28 @@ ParamEdit paramWidget(const PresetParam& p, Preset& config) {
   return edit.changed || edit.finished ? ParamEdit::Apply : ParamEdit::None;
 }
 
-void drawParameterPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place) {
+void drawParameterPanel(const PanelView& view, PanelRequests& ask, PanelState& state,
+                        const PanelLayout& layout, bool place) {
   if (place) setNextWindowRect(layout.parameters);
   if (!ImGui::Begin("Parameters")) {
     ImGui::End();
     return;
   }
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.5f);  // room for the labels
-  drawControls(viewer);
-  drawPresetSection(viewer, state);
+  drawControls(ask);
+  drawPresetSection(view, ask, state);
   for (const ParamGroup& group : paramGroups()) {
     const bool open =
         group.name == "Hairstyle" || group.name == "Simulation" || group.name == "Wind";
     if (ImGui::CollapsingHeader(group.name.c_str(), open ? ImGuiTreeNodeFlags_DefaultOpen : 0))
-      drawGroupContents(group, viewer);
+      drawGroupContents(group, view, ask);
   }
-  if (ImGui::CollapsingHeader("Messages")) drawMessages(viewer, 30);
+  if (ImGui::CollapsingHeader("Messages")) drawMessages(view, 30);
   ImGui::PopItemWidth();
   ImGui::End();
 }
 
-void drawBanners(Viewer& viewer, const PanelLayout& layout) {
+void drawBanners(const PanelView& view, PanelRequests& ask, const PanelLayout& layout) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   // Over the hair, between the panels: centred on the part of the window they leave free.
   const float centreX = vp->WorkPos.x + layout.view.x + layout.view.width * 0.5f;
@@ -333,13 +334,13 @@ void drawBanners(Viewer& viewer, const PanelLayout& layout) {
     ImGui::End();
     ImGui::PopStyleColor(2);
   };
-  if (viewer.controls().nanStopped())
-    banner("##nan", "The simulation produced NaN at frame " + std::to_string(viewer.nanFrame()) +
-                        " (" + std::to_string(viewer.nanParticles()) +
+  if (ask.controls().nanStopped())
+    banner("##nan", "The simulation produced NaN at frame " + std::to_string(view.frame.nanFrame) +
+                        " (" + std::to_string(view.frame.nanParticles) +
                         " particles) and is paused; strands in the picture may be broken.\n"
                         "Press R to reset the hair to rest, or change the parameters "
                         "(smaller time step, more substeps, less stiffness) or revert the preset.");
-  if (const SimThread::ImportStatus import = viewer.importStatus(); !import.stage.empty()) {
+  if (const SimThread::ImportStatus import = view.import; !import.stage.empty()) {
     // A long groom import: the window stays live, the old scene on show until it is done.
     ImGui::SetNextWindowPos(ImVec2(topCentre.x, y), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
     if (ImGui::Begin("##import", nullptr, bannerFlags)) {
@@ -349,14 +350,14 @@ void drawBanners(Viewer& viewer, const PanelLayout& layout) {
     }
     ImGui::End();
   }
-  if (!viewer.sceneView().hasRenderer())
+  if (!view.scene.hasRenderer())
     banner("##renderer", "The renderer did not start, so the hair is simulated but not drawn:\n" +
-                             viewer.sceneView().rendererError());
+                             view.scene.rendererError());
 
   // The latest message, for a few seconds at the bottom: a refused edit or a saved file
   // should not need the Messages section opened to be seen.
-  if (!viewer.messages().empty()) {
-    const ViewerMessage& m = viewer.messages().back();
+  if (!view.messages.empty()) {
+    const ViewerMessage& m = view.messages.back();
     const double age =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - m.when).count();
     if (age < (m.level == MessageLevel::Info ? 3.0 : 8.0)) {
@@ -379,7 +380,7 @@ void drawBanners(Viewer& viewer, const PanelLayout& layout) {
     }
   }
 
-  if (!viewer.presetErrors().empty()) {
+  if (!view.presetErrors.empty()) {
     ImGui::SetNextWindowPos(
         ImVec2(centreX, vp->WorkPos.y + layout.view.y + layout.view.height * 0.3f),
         ImGuiCond_Appearing, ImVec2(0.5f, 0.0f));
@@ -387,25 +388,25 @@ void drawBanners(Viewer& viewer, const PanelLayout& layout) {
                              ImGuiCond_Appearing);
     ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.6f, 0.05f, 0.05f, 1.0f));
     ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.75f, 0.08f, 0.08f, 1.0f));
-    const std::string title = "Preset problems: " + viewer.presetErrorsNote() + "###presetproblems";
+    const std::string title = "Preset problems: " + view.presetErrorsNote + "###presetproblems";
     if (ImGui::Begin(title.c_str())) {
       ImGui::PushStyleColor(ImGuiCol_Text, kRed);
-      for (const std::string& m : viewer.presetErrors()) ImGui::TextWrapped("%s", m.c_str());
+      for (const std::string& m : view.presetErrors) ImGui::TextWrapped("%s", m.c_str());
       ImGui::PopStyleColor();
-      if (ImGui::Button("Dismiss")) viewer.dismissPresetErrors();
+      if (ImGui::Button("Dismiss")) ask.dismissPresetErrors();
     }
     ImGui::End();
     ImGui::PopStyleColor(2);
   }
-  if (viewer.sceneView().shaderReloadFailed()) {
+  if (view.scene.shaderReloadFailed()) {
     ImGui::SetNextWindowSize(ImVec2(640.0f, 300.0f), ImGuiCond_Appearing);
     if (ImGui::Begin("Shader reload failed: the old shaders are still in use")) {
-      if (ImGui::Button("Dismiss")) viewer.sceneView().dismissShaderLog();
+      if (ImGui::Button("Dismiss")) ask.dismissShaderLog();
       ImGui::SameLine();
-      if (ImGui::Button("Try again (F5)")) viewer.reloadShaders();
+      if (ImGui::Button("Try again (F5)")) ask.reloadShaders();
       ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
       ImGui::PushStyleColor(ImGuiCol_Text, kRed);
-      ImGui::TextUnformatted(viewer.sceneView().shaderLog().c_str());
+      ImGui::TextUnformatted(view.scene.shaderLog().c_str());
       ImGui::PopStyleColor();
       ImGui::EndChild();
     }
@@ -448,7 +449,7 @@ void setNextWindowRect(const PanelRect& r) {
   ImGui::SetNextWindowSize(ImVec2(r.width, r.height));
 }
 
-void drawPanels(Viewer& viewer, PanelState& state) {
+void drawPanels(const PanelView& view, PanelRequests& ask, PanelState& state) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const PanelLayout layout = panelLayout(vp->WorkSize.x, vp->WorkSize.y, ImGui::GetFontSize());
   // Laid out on the first frame and again when the window's size changes (a window manager
@@ -459,11 +460,11 @@ void drawPanels(Viewer& viewer, PanelState& state) {
     state.layoutWidth = vp->WorkSize.x;
     state.layoutHeight = vp->WorkSize.y;
   }
-  drawParameterPanel(viewer, state, layout, place);
-  if (state.showStats) drawStatsPanel(viewer, state, layout, place);
-  if (state.showTimeline) drawTimelinePanel(viewer, state, layout, place);
+  drawParameterPanel(view, ask, state, layout, place);
+  if (state.showStats) drawStatsPanel(view, ask, state, layout, place);
+  if (state.showTimeline) drawTimelinePanel(view, ask, state, layout, place);
   if (state.showHelp) drawHelpPanel(state, layout, place);
-  drawBanners(viewer, layout);
+  drawBanners(view, ask, layout);
 }
 
 }  // namespace csm

@@ -9,10 +9,58 @@
 #include <vector>
 
 #include "app/params.h"
+#include "app/preset_document.h"
+#include "app/scene_view.h"
+#include "app/sim_thread.h"
+#include "app/viewer_message.h"
+#include "app/viewer_stats.h"
 
 namespace csm {
 
-class Viewer;
+class SimControls;
+
+// What the panels show, read from the viewer once a frame (Viewer::panelView). Views, not
+// copies, of what the viewer keeps: a change a widget asks for shows where it is read after it.
+struct PanelView {
+  const SimFrame& frame;                         // the latest frame: counts, stiffness, timeline
+  const PresetDocument& document;                // the preset: its name, file, what differs
+  const ViewerStats& stats;                      // the UI's frame times, the drawn strands
+  const std::vector<ViewerMessage>& messages;    // oldest first
+  const std::vector<std::string>& presetErrors;  // the preset problems window's lines
+  const std::string& presetErrorsNote;           // and its title
+  const SceneView& scene;                        // the renderer's state, quality, shader log
+  SimThread::ImportStatus import;                // a long groom import's stage and share done
+  const std::string& renderer;                   // the window's GL renderer
+  bool loading = false;                          // a preset is being opened
+  bool vsync = false;
+};
+
+// What the panels ask of the viewer; the Viewer implements it and the panels see nothing else
+// of it. Every change of the scene goes through applyConfig, as a test's would.
+class PanelRequests {
+ public:
+  // Pause, step, reset and the timeline.
+  virtual SimControls& controls() = 0;
+  // The copy of the preset the parameter widgets edit in place before applyConfig.
+  virtual Preset& editedPreset() = 0;
+  virtual bool applyConfig(const Preset& next) = 0;
+  virtual bool loadPreset(const std::string& path) = 0;
+  virtual bool save() = 0;
+  virtual bool saveAs(const std::string& path) = 0;
+  virtual void revert() = 0;
+  virtual void frameHead() = 0;
+  virtual void resetView() = 0;
+  virtual void resetHead() = 0;
+  virtual bool reloadShaders() = 0;
+  // What the window shows, panels included, into a file named by the time in the current folder.
+  virtual void screenshot() = 0;
+  virtual void dismissPresetErrors() = 0;
+  virtual void dismissShaderLog() = 0;
+  virtual void setVsync(bool on) = 0;
+
+ protected:
+  ~PanelRequests() = default;
+};
 
 // What the panels remember between frames.
 struct PanelState {
@@ -63,18 +111,21 @@ enum class ParamEdit {
 // One widget for one parameter, chosen by its type, editing `config` in place.
 ParamEdit paramWidget(const PresetParam& p, Preset& preset);
 
-// Every panel and banner of one frame; widgets that change the scene call
-// Viewer::applyConfig (or the viewer's other actions).
-void drawPanels(Viewer& viewer, PanelState& state);
+// Every panel and banner of one frame: they show `view`; widgets that change the scene ask
+// `ask` (applyConfig, or the viewer's other requests).
+void drawPanels(const PanelView& view, PanelRequests& ask, PanelState& state);
 
-void drawPresetSection(Viewer& viewer, PanelState& state);
+void drawPresetSection(const PanelView& view, PanelRequests& ask, PanelState& state);
 // Each panel's rectangle is applied when `place` (the first frame and after the window's size
 // changed); the user moves and resizes them in between.
-void drawParameterPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place);
-void drawStatsPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place);
-void drawTimelinePanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place);
+void drawParameterPanel(const PanelView& view, PanelRequests& ask, PanelState& state,
+                        const PanelLayout& layout, bool place);
+void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state,
+                    const PanelLayout& layout, bool place);
+void drawTimelinePanel(const PanelView& view, PanelRequests& ask, PanelState& state,
+                       const PanelLayout& layout, bool place);
 void drawHelpPanel(PanelState& state, const PanelLayout& layout, bool place);
-void drawBanners(Viewer& viewer, const PanelLayout& layout);
+void drawBanners(const PanelView& view, PanelRequests& ask, const PanelLayout& layout);
 
 // Keys and mouse actions, for the help panel (and the README).
 struct Shortcut {

@@ -3,7 +3,6 @@
 #include <imgui_stdlib.h>
 
 #include "app/panels.h"
-#include "app/viewer.h"
 #include "app/viewer_presets.h"
 
 namespace csm {
@@ -12,7 +11,7 @@ namespace {
 const ImVec4 kYellow{1.0f, 0.8f, 0.3f, 1.0f};
 constexpr double kRescanSeconds = 2.0;
 
-void rescan(const Viewer& viewer, PanelState& state) {
+void rescan(const PanelView& view, PanelState& state) {
   const double now = ImGui::GetTime();
   if (now - state.presetsScannedAt < kRescanSeconds) return;
   state.presetsScannedAt = now;
@@ -20,7 +19,7 @@ void rescan(const Viewer& viewer, PanelState& state) {
       state.selectedPreset >= 0 && state.selectedPreset < int(state.presetFiles.size())
           ? state.presetFiles[size_t(state.selectedPreset)]
           : std::filesystem::path();
-  state.presetDirs = presetDirectories(viewer.document().path());
+  state.presetDirs = presetDirectories(view.document.path());
   state.presetFiles = listPresets(state.presetDirs);
   state.selectedPreset = -1;
   for (size_t i = 0; i < state.presetFiles.size(); ++i)
@@ -36,11 +35,11 @@ std::string shortName(const std::filesystem::path& file, const PanelState& state
 
 }  // namespace
 
-void drawPresetSection(Viewer& viewer, PanelState& state) {
+void drawPresetSection(const PanelView& view, PanelRequests& ask, PanelState& state) {
   if (!ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  rescan(viewer, state);
-  ImGui::Text("%s", viewer.preset().name.c_str());
-  const std::vector<std::string_view> changed = viewer.document().modifiedKeys();
+  rescan(view, state);
+  ImGui::Text("%s", view.document.current().name.c_str());
+  const std::vector<std::string_view> changed = view.document.modifiedKeys();
   if (!changed.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(kYellow, "modified (%zu)", changed.size());
@@ -51,8 +50,8 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
       ImGui::EndTooltip();
     }
   }
-  ImGui::TextDisabled("%s", viewer.document().path().empty() ? "built-in preset"
-                                                             : viewer.document().path().c_str());
+  ImGui::TextDisabled(
+      "%s", view.document.path().empty() ? "built-in preset" : view.document.path().c_str());
 
   if (state.presetFiles.empty()) {
     ImGui::TextWrapped(
@@ -62,16 +61,15 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
                                  ImVec2(-1.0f, ImGui::GetTextLineHeightWithSpacing() * 5.5f))) {
     std::error_code ec;
     const std::filesystem::path open =
-        viewer.document().path().empty()
-            ? std::filesystem::path()
-            : std::filesystem::weakly_canonical(viewer.document().path(), ec);
+        view.document.path().empty() ? std::filesystem::path()
+                                     : std::filesystem::weakly_canonical(view.document.path(), ec);
     for (size_t i = 0; i < state.presetFiles.size(); ++i) {
       const bool current = !open.empty() && open == state.presetFiles[i];
       const std::string name = shortName(state.presetFiles[i], state) + (current ? "  (open)" : "");
       if (ImGui::Selectable(name.c_str(), state.selectedPreset == int(i),
                             ImGuiSelectableFlags_AllowDoubleClick)) {
         state.selectedPreset = int(i);
-        if (ImGui::IsMouseDoubleClicked(0)) viewer.loadPreset(state.presetFiles[i].string());
+        if (ImGui::IsMouseDoubleClicked(0)) ask.loadPreset(state.presetFiles[i].string());
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", state.presetFiles[i].c_str());
     }
@@ -82,12 +80,12 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
       state.selectedPreset >= 0 && state.selectedPreset < int(state.presetFiles.size());
   ImGui::BeginDisabled(!picked);
   if (ImGui::Button("Load"))
-    viewer.loadPreset(state.presetFiles[size_t(state.selectedPreset)].string());
+    ask.loadPreset(state.presetFiles[size_t(state.selectedPreset)].string());
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Load the selected preset (or double-click it).");
   ImGui::SameLine();
-  ImGui::BeginDisabled(viewer.document().path().empty());
-  if (ImGui::Button("Save")) viewer.save();
+  ImGui::BeginDisabled(view.document.path().empty());
+  if (ImGui::Button("Save")) ask.save();
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip(
@@ -95,12 +93,12 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
         "file and renamed, so a crash never leaves half a preset.");
   ImGui::SameLine();
   ImGui::BeginDisabled(changed.empty());
-  if (ImGui::Button("Revert")) viewer.revert();
+  if (ImGui::Button("Revert")) ask.revert();
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Back to the preset as loaded or last saved.");
   ImGui::SameLine();
-  if (ImGui::Button("Reload shaders")) viewer.reloadShaders();
+  if (ImGui::Button("Reload shaders")) ask.reloadShaders();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "Recompile the shaders from disk (F5); a shader that fails keeps the old "
@@ -111,8 +109,8 @@ void drawPresetSection(Viewer& viewer, PanelState& state) {
   ImGui::BeginDisabled(state.saveAsName.empty());
   if (ImGui::Button("Save as")) {
     const std::filesystem::path path =
-        saveAsPath(state.saveAsName, viewer.document().path(), state.presetDirs);
-    if (viewer.saveAs(path.string())) {
+        saveAsPath(state.saveAsName, view.document.path(), state.presetDirs);
+    if (ask.saveAs(path.string())) {
       state.saveAsName.clear();
       state.presetsScannedAt = -1e9;
     }

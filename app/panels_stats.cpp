@@ -6,8 +6,7 @@
 #include <imgui.h>
 
 #include "app/panels.h"
-#include "app/viewer.h"
-#include "app/window.h"
+#include "app/sim_controls.h"
 
 namespace csm {
 namespace {
@@ -58,7 +57,8 @@ const std::vector<Shortcut>& shortcuts() {
   return list;
 }
 
-void drawStatsPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place) {
+void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state,
+                    const PanelLayout& layout, bool place) {
   // As tall as its lines, up to its place above the Timeline (then it scrolls), and as wide as
   // its column: lines longer than that scroll sideways.
   if (place) setNextWindowRect(layout.stats);
@@ -69,22 +69,22 @@ void drawStatsPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout
     ImGui::End();
     return;
   }
-  const ViewerStats& s = viewer.stats();
-  const SimFrame& f = viewer.simFrame();
+  const ViewerStats& s = view.stats;
+  const SimFrame& f = view.frame;
   ImGui::Text("%.1f fps   %.1f ms a frame", s.fps, s.frameMs.mean());
-  ImGui::Text("solver %s, %s", f.solver.c_str(), viewer.window().renderer().c_str());
+  ImGui::Text("solver %s, %s", solverLabel(f).c_str(), view.renderer.c_str());
   ImGui::Text("t = %.2f s, frame %ld%s", f.time, f.frame,
-              viewer.loading()             ? "  (loading)"
-              : viewer.controls().paused() ? "  (paused)"
-                                           : "");
+              view.loading              ? "  (loading)"
+              : ask.controls().paused() ? "  (paused)"
+                                        : "");
   ImGui::Text("timeline: %.1f of %.0f MB, %ld frames%s",
               double(f.timeline.bytes + f.timeline.aBytes) / (1 << 20),
               double(f.timeline.budget) / (1 << 20),
               f.timeline.first >= 0 ? f.timeline.last - f.timeline.first + 1 : 0L,
               f.timeline.shown >= 0 ? ", one shown" : "");
-  ImGui::TextDisabled(
-      "picture: %s quality",
-      viewer.sceneView().lastQuality() == DrawQuality::Interactive ? "interactive" : "full");
+  ImGui::TextDisabled("picture: %s quality", view.scene.lastQuality() == DrawQuality::Interactive
+                                                 ? "interactive"
+                                                 : "full");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "While the camera moves or the hair simulates the scene is drawn with\n"
@@ -170,8 +170,8 @@ void drawStatsPanel(Viewer& viewer, PanelState& state, const PanelLayout& layout
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", repairs.c_str());
     }
   }
-  bool vsync = viewer.vsync();
-  if (ImGui::Checkbox("vsync", &vsync)) viewer.setVsync(vsync);
+  bool vsync = view.vsync;
+  if (ImGui::Checkbox("vsync", &vsync)) ask.setVsync(vsync);
   ImGui::End();
 }
 

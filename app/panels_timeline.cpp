@@ -8,18 +8,19 @@
 #include <imgui.h>
 
 #include "app/panels.h"
-#include "app/viewer.h"
+#include "app/sim_controls.h"
 
 namespace csm {
 
-void drawTimelinePanel(Viewer& viewer, PanelState& state, const PanelLayout& layout, bool place) {
+void drawTimelinePanel(const PanelView& view, PanelRequests& ask, PanelState& state,
+                       const PanelLayout& layout, bool place) {
   // Along the bottom, right of the Parameters panel; its six rows fit its height.
   if (place) setNextWindowRect(layout.timeline);
   if (!ImGui::Begin("Timeline", &state.showTimeline)) {
     ImGui::End();
     return;
   }
-  const SimFrame& f = viewer.simFrame();
+  const SimFrame& f = view.frame;
   const TimelineStatus& t = f.timeline;
   const bool recorded = t.first >= 0;
   const long at = t.shown >= 0 ? t.shown : t.live;
@@ -29,59 +30,59 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state, const PanelLayout& lay
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderInt("##frame", &frame, int(t.first), int(t.last),
                          t.shown >= 0 ? "recorded frame %d" : "live, frame %d")) {
-      viewer.controls().playRecording(false);
-      viewer.controls().showRecorded(frame);
+      ask.controls().playRecording(false);
+      ask.controls().showRecorded(frame);
     }
   } else {
     ImGui::TextDisabled("nothing recorded yet");
   }
   ImGui::BeginDisabled(!recorded);
   if (ImGui::Button("|<")) {
-    viewer.controls().playRecording(false);
-    viewer.controls().showRecorded(t.first);
+    ask.controls().playRecording(false);
+    ask.controls().showRecorded(t.first);
   }
   ImGui::SameLine();
   if (ImGui::Button("<")) {
-    viewer.controls().playRecording(false);
-    viewer.controls().showRecorded(std::max(t.first, at - 1));
+    ask.controls().playRecording(false);
+    ask.controls().showRecorded(std::max(t.first, at - 1));
   }
   ImGui::SameLine();
-  if (ImGui::Button(viewer.controls().playingRecording() ? "Stop" : "Play", ImVec2(48.0f, 0.0f)))
-    viewer.controls().playRecording(!viewer.controls().playingRecording());
+  if (ImGui::Button(ask.controls().playingRecording() ? "Stop" : "Play", ImVec2(48.0f, 0.0f)))
+    ask.controls().playRecording(!ask.controls().playingRecording());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play the recording back at real time");
   ImGui::SameLine();
   if (ImGui::Button(">")) {
-    viewer.controls().playRecording(false);
-    viewer.controls().showRecorded(std::min(t.last, at + 1));
+    ask.controls().playRecording(false);
+    ask.controls().showRecorded(std::min(t.last, at + 1));
   }
   ImGui::SameLine();
   if (ImGui::Button(">|")) {
-    viewer.controls().playRecording(false);
-    viewer.controls().showRecorded(t.last);
+    ask.controls().playRecording(false);
+    ask.controls().showRecorded(t.last);
   }
   ImGui::SameLine();
-  bool loop = viewer.controls().loopRecording();
-  if (ImGui::Checkbox("Loop", &loop)) viewer.controls().setLoopRecording(loop);
+  bool loop = ask.controls().loopRecording();
+  if (ImGui::Checkbox("Loop", &loop)) ask.controls().setLoopRecording(loop);
   ImGui::SameLine();
   ImGui::BeginDisabled(t.shown < 0);
-  if (ImGui::Button("Resume from here")) viewer.controls().resumeFrom(t.shown);
+  if (ImGui::Button("Resume from here")) ask.controls().resumeFrom(t.shown);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip(
         "Simulate on from the frame shown, with the parameters as they are now.\n"
         "The frames recorded after it are dropped and recorded again.");
   ImGui::SameLine();
-  if (ImGui::Button("Live")) viewer.controls().showRecorded(-1);
+  if (ImGui::Button("Live")) ask.controls().showRecorded(-1);
   ImGui::EndDisabled();
   ImGui::EndDisabled();
 
   bool recording = t.recording;
-  if (ImGui::Checkbox("Record", &recording)) viewer.controls().setRecording(recording);
+  if (ImGui::Checkbox("Record", &recording)) ask.controls().setRecording(recording);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f);
   ImGui::InputFloat("s", &state.bakeSeconds, 0.5f, 2.0f, "%.1f");
   state.bakeSeconds = std::clamp(state.bakeSeconds, 0.1f, 600.0f);
   ImGui::SameLine();
-  if (ImGui::Button("Bake")) viewer.controls().bake(state.bakeSeconds);
+  if (ImGui::Button("Bake")) ask.controls().bake(state.bakeSeconds);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Simulate (and record) this many seconds as fast as they go, then pause");
   if (t.bakeLeft > 0 && t.bakeTotal > 0) {
@@ -93,14 +94,14 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state, const PanelLayout& lay
   }
   ImGui::SetNextItemWidth(160.0f);
   if (ImGui::SliderInt("cache MB", &state.cacheMb, 16, 8192, "%d MB", ImGuiSliderFlags_Logarithmic))
-    viewer.controls().setCacheBudget(size_t(state.cacheMb) << 20);
+    ask.controls().setCacheBudget(size_t(state.cacheMb) << 20);
   ImGui::SameLine();
   ImGui::Text("%.1f of %.0f MB, %ld frames (%zu keyframes)", double(t.bytes + t.aBytes) / (1 << 20),
               double(t.budget) / (1 << 20), recorded ? t.last - t.first + 1 : 0L, t.keyframes);
   // Out: the recorded range as cyHair files.
   ImGui::BeginDisabled(!recorded);
   if (ImGui::Button("Export .hair"))
-    viewer.controls().exportRecorded(state.exportDir, t.first, t.last);
+    ask.controls().exportRecorded(state.exportDir, t.first, t.last);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Every recorded frame as FOLDER/frame_00001.hair, ... (cyHair)");
   ImGui::SameLine();
@@ -110,23 +111,23 @@ void drawTimelinePanel(Viewer& viewer, PanelState& state, const PanelLayout& lay
 
   // A/B: the recording kept as A, B simulated again over its span with today's parameters.
   ImGui::BeginDisabled(!recorded);
-  if (ImGui::Button("Keep as A")) viewer.controls().keepAsA();
+  if (ImGui::Button("Keep as A")) ask.controls().keepAsA();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Keep this recording, and its parameters, to compare with");
   ImGui::EndDisabled();
   if (t.aFirst >= 0) {
     ImGui::SameLine();
-    if (ImGui::Button("Run B")) viewer.controls().rerunFromA();
+    if (ImGui::Button("Run B")) ask.controls().rerunFromA();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
           "Simulate A's frames again from its first, with the parameters as they are now:\n"
           "the same head motion and wind, which follow the clock");
     ImGui::SameLine();
     bool a = t.showingA;
-    if (ImGui::Checkbox("show A (B)", &a)) viewer.controls().showA(a);
+    if (ImGui::Checkbox("show A (B)", &a)) ask.controls().showA(a);
     ImGui::SameLine();
     std::string changed;
-    for (std::string_view k : viewer.controls().keysChangedSinceA())
+    for (std::string_view k : ask.controls().keysChangedSinceA())
       changed += (changed.empty() ? "" : ", ") + std::string(k);
     ImGui::Text("A: frames %ld-%ld, %.1f MB; B differs in: %s", t.aFirst, t.aLast,
                 double(t.aBytes) / (1 << 20), changed.empty() ? "nothing yet" : changed.c_str());

@@ -52,9 +52,9 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
   const Key key{frame.serial, version_, size.width, size.height, quality};
 
   if (color_.id() == 0 || color_.width() != size.width || color_.height() != size.height) {
-    color_ = gl::Texture::create2D(GL_RGBA8, size.width, size.height);
+    color_ = gl::Texture::create2D(gl::TextureFormat::Rgba8, size.width, size.height);
     fbo_ = gl::Framebuffer();
-    fbo_.attach(GL_COLOR_ATTACHMENT0, color_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
+    fbo_.attach(gl::Attachment::Color0, color_).setDrawBuffers({gl::Attachment::Color0});
     drawn_ = Key{};
   }
   if (!(key == drawn_) || capture) {

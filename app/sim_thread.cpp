@@ -263,27 +263,38 @@ void SimThread::event(SimEvent::Kind kind, long ticket, std::string text) {
   events_.push_back({kind, ticket, std::move(text)});
 }
 
+std::string solverLabel(const SimFrame& frame) {
+  return frame.solverVariant.empty() ? frame.solver
+                                     : frame.solver + " (" + frame.solverVariant + ")";
+}
+
+void takeFigures(const Simulation& sim, SimFrame& frame) {
+  const Solver& solver = sim.solver();
+  frame.solver = std::string(solver.name());
+  frame.solverVariant = solver.variant();
+  frame.config = sim.config();
+  frame.groomReport = sim.groomReport();
+  frame.strands = solver.strandCount();
+  frame.particles = solver.particleCount();
+  frame.carriedFrames = sim.carriedFrames();
+  frame.stiffness = solver.stiffness();
+}
+
 void SimThread::publish(long ticket) {
   auto f = std::make_shared<SimFrame>();
   f->ticket = ticket;
   f->loaded = loaded_;
   Solver& solver = sim_->solver();
   f->solver = std::string(solver.name());
-  if (const std::string variant = solver.variant(); !variant.empty())
-    f->solver += " (" + variant + ")";
+  f->solverVariant = solver.variant();
   if (loaded_) {
+    takeFigures(*sim_, *f);
     f->frame = sim_->frame();
     f->time = sim_->time();
     f->generation = sim_->generation();
-    f->config = sim_->config();
     f->groom = sim_->sharedGroom();
     f->head = sim_->sharedHead();
-    f->groomReport = sim_->groomReport();
     f->headPose = sim_->headPose();
-    f->strands = solver.strandCount();
-    f->particles = solver.particleCount();
-    f->carriedFrames = sim_->carriedFrames();
-    f->stiffness = solver.stiffness();
     f->stepMs = driver_->lastStepMs();
     f->stages = solver.stageTimes();
     f->sample = driver_->latestSample();

@@ -59,7 +59,8 @@ struct SimFrame {
   std::size_t strands = 0, particles = 0;
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)
   StiffnessInfo stiffness;
-  std::string solver;  // the solver's name
+  std::string solver;         // the solver's name
+  std::string solverVariant;  // Solver::variant(): the GPU solver's kernel path
   // The simulation's own figures: the last step's wall time (to completion) and stages, the
   // latest sample (a few frames old) and one max strain per sample.
   double stepMs = 0.0;
@@ -80,6 +81,13 @@ struct SimFrame {
   int slot = -1;
   std::shared_ptr<const std::vector<glm::vec4>> hostPositions;
 };
+
+// The solver as the window shows it: its name and, when it has one, its variant, "gpu (particle)".
+std::string solverLabel(const SimFrame& frame);
+// The running scene's figures into `frame`: the solver, its counts and stiffness, the config,
+// the groom's report and the head's carried frames. What the simulation thread copies into
+// every frame it publishes, and what a headless run describes itself by (runDescription).
+void takeFigures(const Simulation& sim, SimFrame& frame);
 
 // What the thread has to say, in order; the UI shows them and keeps its own state in step.
 struct SimEvent {

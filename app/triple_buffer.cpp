@@ -21,7 +21,7 @@ int TripleBuffer::write(unsigned source, std::size_t bytes) {
   Slot& slot = slots_[s];
   if (slot.buffer.id() == 0) slot.buffer = gl::Buffer();
   if (std::size_t(slot.buffer.size()) != bytes)
-    slot.buffer.setData(GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
+    slot.buffer.setData(GLsizeiptr(bytes), nullptr, gl::BufferUsage::DynamicCopy);
   // The solver wrote the positions from compute shaders.
   gl::memoryBarrier(gl::Barrier::BufferUpdate);
   gl::copyBuffer(source, slot.buffer.id(), GLsizeiptr(bytes));

@@ -419,12 +419,22 @@ bool Viewer::reloadShaders() {
   return ok;
 }
 
-bool Viewer::vsync() const {
-  return window_->vsync();
-}
-
 void Viewer::setVsync(bool on) {
   window_->setVsync(on);
+}
+
+PanelView Viewer::panelView() const {
+  return PanelView{.frame = *frame_,
+                   .document = doc_,
+                   .stats = stats_,
+                   .messages = messages_,
+                   .presetErrors = presetErrors_,
+                   .presetErrorsNote = presetErrorsNote_,
+                   .scene = *view_,
+                   .import = sim_->importStatus(),
+                   .renderer = window_->renderer(),
+                   .loading = pendingOpen_.has_value(),
+                   .vsync = window_->vsync()};
 }
 
 std::string Viewer::defaultScreenshotName() const {
@@ -551,7 +561,7 @@ void Viewer::runFrame() {
   controls_->advancePlayback();
   handleKeys();
   handleMouse();
-  drawPanels(*this, *panels_);
+  drawPanels(panelView(), *this, *panels_);
   ImGui::Render();
   const bool capture = screenshotDue();
   renderScene(capture);
@@ -639,21 +649,11 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
                  "%.1f ms); %ld UI frames, %.1f ms apart on average; %zu strands, %zu particles, "
                  "solver %s, %s\n",
                  f.frame, seconds, f.frame > 0 ? 1000.0 * seconds / double(f.frame) : 0.0, f.stepMs,
-                 viewer->framesDrawn(), s.frameMs.mean(), f.strands, f.particles, f.solver.c_str(),
-                 viewer->window().renderer().c_str());
+                 viewer->framesDrawn(), s.frameMs.mean(), f.strands, f.particles,
+                 solverLabel(f).c_str(), viewer->window().renderer().c_str());
   }
   if (!options.metrics.empty()) {
-    RunDescription d;
-    d.preset = scene.preset.name;
-    d.source = scene.source;
-    d.config = f.config;
-    d.stiffness = f.stiffness;
-    d.strands = f.strands;
-    d.particles = f.particles;
-    d.solver = f.solver;
-    d.groom = f.groomReport;
-    d.device = viewer->window().renderer();
-    nlohmann::json meta = describeRun(d);
+    nlohmann::json meta = describeRun(runDescription(scene, f, viewer->window().renderer()));
     meta["mode"] = "window";
     meta["wall_seconds"] = seconds;
     meta["sim_frames"] = f.frame;

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "app/panels.h"
 #include "app/preset.h"
 #include "app/preset_document.h"
 #include "app/scene_view.h"
@@ -41,7 +42,6 @@
 namespace csm {
 
 class GlfwWindow;
-struct PanelState;
 
 struct ViewerOptions {
   int width = 1280, height = 720;
@@ -66,7 +66,10 @@ struct ViewerOptions {
   SolverByName makeSolver;
 };
 
-class Viewer {
+// The panels (app/panels.h) see the viewer through what they show (PanelView) and what they ask
+// (PanelRequests, implemented here), not through this class's interface, which is main's and
+// the tests'.
+class Viewer : private PanelRequests {
  public:
   // Opens the window, Dear ImGui, the renderer and the simulation thread. Null when there is
   // no window to open; `error` then says why and points to --headless.
@@ -84,26 +87,17 @@ class Viewer {
   // running scene until the new one is ready. When the file is not a valid preset, or its
   // hair cannot be grown, the current scene stays and the messages are shown in the window
   // (presetErrors()). False when the file is refused at once.
-  bool loadPreset(const std::string& path);
-  // The one setter: applies a whole preset (crossCheck and capacity at once, then the
-  // simulation's setConfig between its frames, which regrows the hair when a Rebuild
-  // parameter changed; a regrow that fails is undone with a message). On failure keeps the
-  // running scene and shows why.
-  bool applyConfig(const Preset& next);
-  // One parameter from text, as --set reads it, through applyConfig.
+  bool loadPreset(const std::string& path) override;
+  // One parameter from text, as --set reads it, through applyConfig (the one setter, which the
+  // panels' widgets call too).
   bool setParam(std::string_view key, std::string_view text, std::string* error = nullptr);
-  bool save();  // over the opened preset
-  bool saveAs(const std::string& path);
-  void revert();  // back to the preset as loaded (or last saved)
+  bool saveAs(const std::string& path) override;
+  void revert() override;  // back to the preset as loaded (or last saved)
 
   // --- Running ---------------------------------------------------------------------------
   // Pause, step, reset and the timeline: what the window asks of its simulation thread.
-  SimControls& controls() { return *controls_; }
-  const SimControls& controls() const { return *controls_; }
-  void resetView();  // the preset's camera
-  void frameHead();
-  void resetHead();  // undo the mouse's head pose
-  bool reloadShaders();
+  SimControls& controls() override { return *controls_; }
+  bool reloadShaders() override;
   // Saves what the window shows, panels included, at full quality, in the first frame that
   // shows every change made before the request (and, with `minFrame`, simulation frame
   // `minFrame` or later).
@@ -123,37 +117,25 @@ class Viewer {
   // stopped on NaN, at the limit), then takes in its latest frame.
   bool waitForSimFrame(long frame, double timeoutSeconds = 120.0);
 
-  // --- State, for the panels and tests ---------------------------------------------------
+  // --- State, for main and tests ----------------------------------------------------------
   // The latest frame of the simulation the window has taken in: what is drawn and what the
   // Stats panel shows (time, counts, stiffness, samples, NaN).
   const SimFrame& simFrame() const { return *frame_; }
   // The preset: what runs and is shown, what the widgets edit, as loaded, its file.
   const PresetDocument& document() const { return doc_; }
-  PresetDocument& document() { return doc_; }
-  const Preset& preset() const { return doc_.current(); }
   // The picture of the scene: the renderer, the quality it was drawn at, the shader log.
   const SceneView& sceneView() const { return *view_; }
-  SceneView& sceneView() { return *view_; }
-  bool loading() const { return pendingOpen_.has_value(); }
   const ViewerStats& stats() const { return stats_; }
   const std::vector<ViewerMessage>& messages() const { return messages_; }
   const std::vector<std::string>& presetErrors() const { return presetErrors_; }
-  void dismissPresetErrors() { presetErrors_.clear(); }
+  void dismissPresetErrors() override { presetErrors_.clear(); }
   // Shows messages (one a line) in the preset problems window, titled with `note`.
   void showPresetErrors(const std::string& text, const std::string& note);
-  const std::string& presetErrorsNote() const { return presetErrorsNote_; }
   SimThread::ImportStatus importStatus() const { return sim_->importStatus(); }
-  long nanFrame() const { return frame_->nanFrame; }
-  uint64_t nanParticles() const { return frame_->nanParticles; }
   const Image& lastScreenshot() const { return lastScreenshot_; }
   const std::string& lastScreenshotPath() const { return lastScreenshotPath_; }
   long framesDrawn() const { return framesDrawn_; }
   GlfwWindow& window() { return *window_; }
-  bool vsync() const;
-  void setVsync(bool on);
-  std::string defaultScreenshotName() const;
-  // From any thread; messages from other threads show from the next frame on.
-  void log(MessageLevel level, std::string text);
   // Every UI frame's interval and the simulation's frames, with ViewerOptions::recordMetrics.
   MetricsLog metrics() const;
 
@@ -164,6 +146,27 @@ class Viewer {
     std::string baseDir, path;
   };
   Viewer() = default;
+
+  // PanelRequests: the rest of what the panels ask (the public ones above too).
+  Preset& editedPreset() override { return doc_.edited(); }
+  // The one setter: applies a whole preset (crossCheck and capacity at once, then the
+  // simulation's setConfig between its frames, which regrows the hair when a Rebuild
+  // parameter changed; a regrow that fails is undone with a message). On failure keeps the
+  // running scene and shows why.
+  bool applyConfig(const Preset& next) override;
+  bool save() override;  // over the opened preset
+  void frameHead() override;
+  void resetView() override;  // the preset's camera
+  void resetHead() override;  // undo the mouse's head pose
+  void screenshot() override { requestScreenshot(defaultScreenshotName()); }
+  void dismissShaderLog() override { view_->dismissShaderLog(); }
+  void setVsync(bool on) override;
+  // What the panels show this frame.
+  PanelView panelView() const;
+
+  std::string defaultScreenshotName() const;
+  // From any thread; messages from other threads show from the next frame on.
+  void log(MessageLevel level, std::string text);
   void startOpen(const Preset& preset, const std::string& baseDir, const std::string& path);
   void takeSimFrame();
   void handle(const SimEvent& e);

@@ -15,7 +15,8 @@ Image readWindowPixels(int width, int height) {
   std::vector<uint8_t> rgba(size_t(width) * height * 4);
   // Framebuffer 0 is the window's; wrap it only to read, and let go without deleting.
   gl::Framebuffer window = gl::Framebuffer::wrap(0);
-  window.read(GL_BACK, gl::Rect{0, 0, width, height}, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  window.read(gl::Attachment::WindowBack, gl::Rect{0, 0, width, height}, gl::PixelFormat::Rgba,
+              gl::PixelType::UnsignedByte, rgba.data());
   window.release();
   image.width = width;
   image.height = height;

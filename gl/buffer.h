@@ -4,6 +4,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -20,6 +21,10 @@ class Buffer {
   template <class T>
   explicit Buffer(const std::vector<T>& data, GLenum usage = GL_DYNAMIC_DRAW)
       : Buffer(GLsizeiptr(data.size() * sizeof(T)), data.data(), usage) {}
+  Buffer(GLsizeiptr size, const void* data, BufferUsage usage)
+      : Buffer(size, data, GLenum(usage)) {}
+  template <class T>
+  Buffer(const std::vector<T>& data, BufferUsage usage) : Buffer(data, GLenum(usage)) {}
   ~Buffer();
 
   Buffer(const Buffer&) = delete;
@@ -37,6 +42,9 @@ class Buffer {
 
   // Reallocates (glBufferData). `usage` is a hint; the last one given is kept for upload().
   void setData(GLsizeiptr size, const void* data, GLenum usage);
+  void setData(GLsizeiptr size, const void* data, BufferUsage usage) {
+    setData(size, data, GLenum(usage));
+  }
   void setData(GLsizeiptr size, const void* data) { setData(size, data, usage_); }
   void setSubData(GLintptr offset, GLsizeiptr size, const void* data);
   // Reads back into `out`. Waits for the GPU. Issues the buffer-update barrier itself, since
@@ -73,6 +81,7 @@ class Buffer {
 
   // Indexed binding for GL_SHADER_STORAGE_BUFFER / GL_UNIFORM_BUFFER / atomic counters.
   void bindBase(GLenum target, GLuint index) const;
+  void bindBase(BufferTarget target, GLuint index) const { bindBase(GLenum(target), index); }
   void bindRange(GLenum target, GLuint index, GLintptr offset, GLsizeiptr size) const;
   void bind(GLenum target) const;
 

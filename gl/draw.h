@@ -4,6 +4,7 @@
 // can be reordered without surprises (as in Vulkan's pipeline state objects).
 #include <cstddef>
 
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -28,8 +29,15 @@ void setViewport(GLint x, GLint y, GLsizei width, GLsizei height);
 
 // glDrawElementsInstanced on the bound vertex array's uint index buffer, from index `first`.
 void drawElements(GLenum mode, std::size_t count, GLsizei instances = 1, std::size_t first = 0);
+inline void drawElements(Primitive mode, std::size_t count, GLsizei instances = 1,
+                         std::size_t first = 0) {
+  drawElements(GLenum(mode), count, instances, first);
+}
 // glDrawArrays with no vertex attributes (vertices from gl_VertexID).
 void drawArrays(GLenum mode, GLint first, GLsizei count);
+inline void drawArrays(Primitive mode, GLint first, GLsizei count) {
+  drawArrays(GLenum(mode), first, count);
+}
 
 // Binds a buffer by name to an indexed SSBO binding (a buffer another module owns).
 void bindStorageBuffer(GLuint index, GLuint buffer);

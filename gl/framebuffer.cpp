@@ -103,6 +103,15 @@ Framebuffer& Framebuffer::setDrawBuffers(std::initializer_list<GLenum> buffers) 
   return *this;
 }
 
+Framebuffer& Framebuffer::setDrawBuffers(std::initializer_list<Attachment> buffers) {
+  std::vector<GLenum> names;
+  for (Attachment a : buffers) names.push_back(GLenum(a));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, id_);
+  glDrawBuffers(GLsizei(names.size()), names.data());
+  maybeCheckErrors("Framebuffer::setDrawBuffers");
+  return *this;
+}
+
 bool Framebuffer::checkComplete(std::string* message) const {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, id_);
   GLenum status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);

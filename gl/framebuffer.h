@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -41,9 +42,16 @@ class Framebuffer {
   // Attaches one layer of a 2D array.
   Framebuffer& attachLayer(GLenum attachment, const Texture& texture, GLint layer, GLint level = 0);
   Framebuffer& attach(GLenum attachment, const Renderbuffer& renderbuffer);
+  Framebuffer& attach(Attachment attachment, const Texture& texture, GLint level = 0) {
+    return attach(GLenum(attachment), texture, level);
+  }
+  Framebuffer& attach(Attachment attachment, const Renderbuffer& renderbuffer) {
+    return attach(GLenum(attachment), renderbuffer);
+  }
   Framebuffer& detach(GLenum attachment);
   // Which color attachments the fragment outputs 0, 1, ... write; GL_NONE skips one.
   Framebuffer& setDrawBuffers(std::initializer_list<GLenum> buffers);
+  Framebuffer& setDrawBuffers(std::initializer_list<Attachment> buffers);
 
   // True when complete; otherwise `message` (if given) names the failing status.
   bool checkComplete(std::string* message = nullptr) const;
@@ -53,6 +61,7 @@ class Framebuffer {
   static void bindDefault(GLenum target = GL_FRAMEBUFFER);
   // A framebuffer by name (0: the default one), e.g. one a caller passed down.
   static void bindRaw(GLenum target, GLuint id);
+  static void bindRaw(FramebufferTarget target, GLuint id) { bindRaw(GLenum(target), id); }
 
   // Clear one draw buffer (index into setDrawBuffers) or the depth attachment. Scissor and
   // write masks apply as usual.
@@ -70,6 +79,15 @@ class Framebuffer {
                        std::size_t(components));
     read(attachment, rect, format, type, out.data());
     return out;
+  }
+  void read(Attachment attachment, const Rect& rect, PixelFormat format, PixelType type,
+            void* out) const {
+    read(GLenum(attachment), rect, GLenum(format), GLenum(type), out);
+  }
+  template <class T>
+  std::vector<T> read(Attachment attachment, const Rect& rect, PixelFormat format, PixelType type,
+                      int components) const {
+    return read<T>(GLenum(attachment), rect, GLenum(format), GLenum(type), components);
   }
 
   // Copies into framebuffer `dst` (0 = default); resolves multisampling when this one is

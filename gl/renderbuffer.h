@@ -1,4 +1,5 @@
 #pragma once
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -10,6 +11,8 @@ class Renderbuffer {
   explicit Renderbuffer(NoCreateT) noexcept {}
   // `samples` 0 makes a single-sample renderbuffer.
   Renderbuffer(GLenum internalFormat, GLsizei width, GLsizei height, GLsizei samples = 0);
+  Renderbuffer(TextureFormat format, GLsizei width, GLsizei height, GLsizei samples = 0)
+      : Renderbuffer(GLenum(format), width, height, samples) {}
   ~Renderbuffer();
   Renderbuffer(const Renderbuffer&) = delete;
   Renderbuffer& operator=(const Renderbuffer&) = delete;

@@ -4,8 +4,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "gl/enums.h"
 #include "gl/program.h"
 
 namespace csm::gl {
@@ -40,6 +42,8 @@ std::optional<ExpandedSource> expandIncludes(std::string_view relPath,
                                              std::string* error = nullptr);
 
 struct StageSource {
+  StageSource(GLenum stage, std::string path) : stage(stage), path(std::move(path)) {}
+  StageSource(ShaderStage stage, std::string path) : stage(GLenum(stage)), path(std::move(path)) {}
   GLenum stage;      // GL_COMPUTE_SHADER, GL_VERTEX_SHADER, ...
   std::string path;  // relative to shaders/
 };

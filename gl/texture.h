@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -19,10 +20,21 @@ class Texture {
   Texture& operator=(Texture&& other) noexcept;
 
   static Texture create2D(GLenum internalFormat, GLsizei width, GLsizei height, GLsizei levels = 1);
+  static Texture create2D(TextureFormat format, GLsizei width, GLsizei height, GLsizei levels = 1) {
+    return create2D(GLenum(format), width, height, levels);
+  }
   static Texture create2DArray(GLenum internalFormat, GLsizei width, GLsizei height, GLsizei layers,
                                GLsizei levels = 1);
+  static Texture create2DArray(TextureFormat format, GLsizei width, GLsizei height, GLsizei layers,
+                               GLsizei levels = 1) {
+    return create2DArray(GLenum(format), width, height, layers, levels);
+  }
   static Texture create2DMultisample(GLenum internalFormat, GLsizei width, GLsizei height,
                                      GLsizei samples, bool fixedSampleLocations = true);
+  static Texture create2DMultisample(TextureFormat format, GLsizei width, GLsizei height,
+                                     GLsizei samples, bool fixedSampleLocations = true) {
+    return create2DMultisample(GLenum(format), width, height, samples, fixedSampleLocations);
+  }
   // Takes ownership of an existing name of the given target; queries its size and format.
   static Texture wrap(GLuint id, GLenum target);
   GLuint release() noexcept;
@@ -41,6 +53,16 @@ class Texture {
   Texture& setWrap(GLenum wrap);
   Texture& setBorderColor(const std::array<float, 4>& rgba);
   Texture& setParameter(GLenum name, GLint value);
+  Texture& setFilter(Filter minFilter, Filter magFilter) {
+    return setFilter(GLenum(minFilter), GLenum(magFilter));
+  }
+  Texture& setWrap(Wrap wrap) { return setWrap(GLenum(wrap)); }
+  // A depth texture sampled as a shadow map (sampler2DShadow): each fetch compares the
+  // reference with the stored depth by `compare` and filters the results.
+  Texture& setDepthCompare(DepthCompare compare) {
+    return setParameter(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE)
+        .setParameter(GL_TEXTURE_COMPARE_FUNC, GLint(compare));
+  }
 
   // Uploads a region of one level; for a 2D array, `layer` picks the first of `depth`
   // layers.
@@ -48,6 +70,10 @@ class Texture {
                    GLenum type, const void* data);
   void setSubImage(GLint level, GLint x, GLint y, GLint layer, GLsizei width, GLsizei height,
                    GLsizei depth, GLenum format, GLenum type, const void* data);
+  void setSubImage(GLint level, GLint x, GLint y, GLint layer, GLsizei width, GLsizei height,
+                   GLsizei depth, PixelFormat format, PixelType type, const void* data) {
+    setSubImage(level, x, y, layer, width, height, depth, GLenum(format), GLenum(type), data);
+  }
   void generateMipmap();
 
   // Binds for sampling on texture unit `unit` (leaves `unit` active).

@@ -1,4 +1,5 @@
 #pragma once
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -30,6 +31,12 @@ class VertexArray {
   VertexArray& setAttribute(GLuint location, const Buffer& buffer, GLint components, GLenum type,
                             GLsizei stride, GLintptr offset, bool normalized = false,
                             GLuint divisor = 0);
+  VertexArray& setAttribute(GLuint location, const Buffer& buffer, GLint components,
+                            AttributeType type, GLsizei stride, GLintptr offset,
+                            bool normalized = false, GLuint divisor = 0) {
+    return setAttribute(location, buffer, components, GLenum(type), stride, offset, normalized,
+                        divisor);
+  }
   // An integer attribute (ivec/uvec in GLSL), not converted.
   VertexArray& setIntegerAttribute(GLuint location, const Buffer& buffer, GLint components,
                                    GLenum type, GLsizei stride, GLintptr offset,

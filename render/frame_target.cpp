@@ -13,19 +13,19 @@ void FrameTarget::resize(int width, int height, int samples) {
   height_ = height;
   asked_ = samples;
   if (samples > 1) {
-    color_ = gl::Texture::create2DMultisample(GL_RGBA16F, width, height, samples);
+    color_ = gl::Texture::create2DMultisample(gl::TextureFormat::Rgba16f, width, height, samples);
     samples_ = std::max(1, int(color_.samples()));
-    depth_ = gl::Renderbuffer(GL_DEPTH_COMPONENT24, width, height, samples_);
+    depth_ = gl::Renderbuffer(gl::TextureFormat::Depth24, width, height, samples_);
   } else {
-    color_ = gl::Texture::create2D(GL_RGBA16F, width, height);
-    color_.setFilter(GL_NEAREST, GL_NEAREST);
+    color_ = gl::Texture::create2D(gl::TextureFormat::Rgba16f, width, height);
+    color_.setFilter(gl::Filter::Nearest, gl::Filter::Nearest);
     samples_ = 1;
-    depth_ = gl::Renderbuffer(GL_DEPTH_COMPONENT24, width, height, 0);
+    depth_ = gl::Renderbuffer(gl::TextureFormat::Depth24, width, height, 0);
   }
   fbo_ = gl::Framebuffer();
-  fbo_.attach(GL_COLOR_ATTACHMENT0, color_)
-      .attach(GL_DEPTH_ATTACHMENT, depth_)
-      .setDrawBuffers({GL_COLOR_ATTACHMENT0});
+  fbo_.attach(gl::Attachment::Color0, color_)
+      .attach(gl::Attachment::Depth, depth_)
+      .setDrawBuffers({gl::Attachment::Color0});
   std::string message;
   if (!fbo_.checkComplete(&message))
     gl::logMessage(gl::LogLevel::Error, "frame target: " + message);

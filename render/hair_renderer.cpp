@@ -143,8 +143,8 @@ struct HairRenderer::Programs {
     auto one = [&](gl::Program& out, const char* name, const char* vert, const char* frag,
                    const std::vector<gl::Define>& d) {
       std::string l;
-      std::optional<gl::Program> made =
-          gl::buildProgram(name, {{GL_VERTEX_SHADER, vert}, {GL_FRAGMENT_SHADER, frag}}, d, &l);
+      std::optional<gl::Program> made = gl::buildProgram(
+          name, {{gl::ShaderStage::Vertex, vert}, {gl::ShaderStage::Fragment, frag}}, d, &l);
       if (!l.empty()) all += l + "\n";
       if (made)
         out = std::move(*made);
@@ -154,7 +154,7 @@ struct HairRenderer::Programs {
     auto compute = [&](gl::Program& out, const char* name, const char* source) {
       std::string l;
       std::optional<gl::Program> made =
-          gl::buildProgram(name, {{GL_COMPUTE_SHADER, source}}, defines, &l);
+          gl::buildProgram(name, {{gl::ShaderStage::Compute, source}}, defines, &l);
       if (!l.empty()) all += l + "\n";
       if (made)
         out = std::move(*made);
@@ -203,7 +203,8 @@ HairRenderer::HairRenderer() : clock_(gl::queryCaps().timerQuery) {
       1, std::min({caps.maxSamples, caps.maxColorTextureSamples, caps.maxDepthTextureSamples}));
   clock_.setSynchronous(caps.software);
   emptyVao_ = gl::VertexArray();
-  frameUniforms_ = gl::Buffer(GLsizeiptr(sizeof(FrameUniforms)), nullptr, GL_DYNAMIC_DRAW);
+  frameUniforms_ =
+      gl::Buffer(GLsizeiptr(sizeof(FrameUniforms)), nullptr, gl::BufferUsage::DynamicDraw);
   shadowFor(RenderConfig{}.shadowMapSize);
 }
 
@@ -377,7 +378,7 @@ void HairRenderer::render(const FrameView& frame) {
 
   // The solver may have written the positions from a compute shader.
   gl::memoryBarrier(gl::Barrier::Storage);
-  frameUniforms_.bindBase(GL_UNIFORM_BUFFER, bindings::kFrameUniforms);
+  frameUniforms_.bindBase(gl::BufferTarget::Uniform, bindings::kFrameUniforms);
   gl::bindStorageBuffer(bindings::kPositions, frame.positionBuffer);
   geometry_->bind();
   head_.bind();
@@ -435,7 +436,7 @@ void HairRenderer::render(const FrameView& frame) {
   gl::applyDrawState({});
   p.background.use();
   emptyVao_.bind();
-  gl::drawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawArrays(gl::Primitive::Triangles, 0, 3);
   gl::applyDrawState({.depthTest = true, .cull = gl::Cull::Back});
   p.head.use();
   head_.draw(amount.fullHead);
@@ -468,7 +469,7 @@ void HairRenderer::render(const FrameView& frame) {
 
   // Post: tone map each sample, resolve, gamma, into the caller's framebuffer.
   gl::applyDrawState({});
-  gl::Framebuffer::bindRaw(GL_DRAW_FRAMEBUFFER, frame.targetFramebuffer);
+  gl::Framebuffer::bindRaw(gl::FramebufferTarget::Draw, frame.targetFramebuffer);
   clock_.begin("post");
   gl::setViewport(0, 0, frame.width, frame.height);
   target.color().bind(bindings::kResolvedUnit);
@@ -477,7 +478,7 @@ void HairRenderer::render(const FrameView& frame) {
   p.post.setUniform("uScale", glm::vec2(float(drawnWidth) / float(frame.width),
                                         float(drawnHeight) / float(frame.height)));
   emptyVao_.bind();
-  gl::drawArrays(GL_TRIANGLES, 0, 3);
+  gl::drawArrays(gl::Primitive::Triangles, 0, 3);
   clock_.endFrame();
   gl::maybeCheckErrors("HairRenderer::render");
 }

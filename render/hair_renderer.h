@@ -54,8 +54,8 @@ class HairRenderer final : public Renderer {
   // Strands drawn by the last render(): guides drawn times (1 + children drawn).
   std::size_t drawnStrands() const { return drawnStrands_; }
   // Per-pass times from glFinish and the CPU clock instead of timer queries. On by default
-  // on software rasterizers: llvmpipe's GL_TIME_ELAPSED sees only its rasterizer threads,
-  // not the vertex shading done inside the draw calls, and was measured to put most of the
+  // on software rasterizers: llvmpipe's elapsed-time queries see only its rasterizer threads,
+  // not the vertex shading done inside the draw calls, and were measured to put most of the
   // hair pass on the pass after it. On a GPU it would stall the pipeline: queries there.
   // The viewer turns it off (it would stall every frame of the window).
   void setSynchronousTiming(bool on) { clock_.setSynchronous(on); }

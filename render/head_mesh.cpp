@@ -16,13 +16,13 @@ HeadMesh::Mesh HeadMesh::upload(const std::vector<glm::vec3>& positions,
                                 const std::vector<glm::vec3>& normals,
                                 const std::vector<uint32_t>& indices) {
   Mesh m;
-  m.positions = gl::Buffer(positions, GL_STATIC_DRAW);
-  m.normals = gl::Buffer(normals, GL_STATIC_DRAW);
-  m.indices = gl::Buffer(indices, GL_STATIC_DRAW);
+  m.positions = gl::Buffer(positions, gl::BufferUsage::StaticDraw);
+  m.normals = gl::Buffer(normals, gl::BufferUsage::StaticDraw);
+  m.indices = gl::Buffer(indices, gl::BufferUsage::StaticDraw);
   m.indexCount = indices.size();
   m.vao = gl::VertexArray();
-  m.vao.setAttribute(0, m.positions, 3, GL_FLOAT, sizeof(glm::vec3), 0);
-  m.vao.setAttribute(1, m.normals, 3, GL_FLOAT, sizeof(glm::vec3), 0);
+  m.vao.setAttribute(0, m.positions, 3, gl::AttributeType::Float, sizeof(glm::vec3), 0);
+  m.vao.setAttribute(1, m.normals, 3, gl::AttributeType::Float, sizeof(glm::vec3), 0);
   m.vao.setIndexBuffer(m.indices);
   return m;
 }
@@ -46,7 +46,8 @@ HeadMesh::HeadMesh() {
       indices.insert(indices.end(), {a, b, b + 1, a, b + 1, a + 1});
     }
   sphere_ = upload(vertices, vertices, indices);
-  placementBuffer_ = gl::Buffer(GLsizeiptr(sizeof(glm::vec4)), nullptr, GL_DYNAMIC_DRAW);
+  placementBuffer_ =
+      gl::Buffer(GLsizeiptr(sizeof(glm::vec4)), nullptr, gl::BufferUsage::DynamicDraw);
 }
 
 void HeadMesh::update(const HeadModel& model, const Pose& head) {
@@ -76,14 +77,14 @@ void HeadMesh::update(const HeadModel& model, const Pose& head) {
 }
 
 void HeadMesh::bind() const {
-  placementBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kHeadSpheres);
+  placementBuffer_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kHeadSpheres);
 }
 
 void HeadMesh::draw(bool full) const {
   if (placements_ == 0) return;
   const Mesh& m = !mannequin_ ? sphere_ : full ? mannequinGpu_ : coarseGpu_;
   m.vao.bind();
-  gl::drawElements(GL_TRIANGLES, m.indexCount, placements_);
+  gl::drawElements(gl::Primitive::Triangles, m.indexCount, placements_);
 }
 
 }  // namespace csm

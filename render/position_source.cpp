@@ -11,20 +11,4 @@ unsigned PositionSource::update(Solver& solver) {
   return buffer_.id();
 }
 
-FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
-                      int width, int height, unsigned framebuffer) {
-  FrameView v;
-  v.scene = &sim.config();
-  v.look = &view;
-  v.groom = &sim.groom();
-  v.generation = sim.generation();
-  v.head = &sim.head();
-  v.headPose = sim.headPose();
-  v.positionBuffer = positionBuffer;
-  v.width = width;
-  v.height = height;
-  v.targetFramebuffer = framebuffer;
-  return v;
-}
-
 }  // namespace csm

@@ -8,8 +8,7 @@
 #include <glm/vec4.hpp>
 
 #include "gl/buffer.h"
-#include "render/renderer.h"
-#include "sim/run/simulation.h"
+#include "sim/core/solver.h"
 
 namespace csm {
 
@@ -22,10 +21,5 @@ class PositionSource {
   gl::Buffer buffer_{gl::NoCreate};
   std::vector<glm::vec4> scratch_;
 };
-
-// The FrameView of a simulation's current frame seen as `view` says, drawn into
-// `framebuffer` at width x height.
-FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
-                      int width, int height, unsigned framebuffer = 0);
 
 }  // namespace csm

@@ -117,9 +117,10 @@ std::vector<Sphere> scalpSpheres(const HeadModel& head) {
 
 gl::Texture makeScalpMap(const Groom& groom, const std::vector<Sphere>& spheres) {
   const ScalpTexels t = scalpTexels(groom, spheres);
-  gl::Texture map = gl::Texture::create2DArray(GL_RGBA8, t.size, t.size, t.layers);
-  map.setFilter(GL_LINEAR, GL_LINEAR).setWrap(GL_CLAMP_TO_EDGE);
-  map.setSubImage(0, 0, 0, 0, t.size, t.size, t.layers, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba.data());
+  gl::Texture map = gl::Texture::create2DArray(gl::TextureFormat::Rgba8, t.size, t.size, t.layers);
+  map.setFilter(gl::Filter::Linear, gl::Filter::Linear).setWrap(gl::Wrap::ClampToEdge);
+  map.setSubImage(0, 0, 0, 0, t.size, t.size, t.layers, gl::PixelFormat::Rgba,
+                  gl::PixelType::UnsignedByte, t.rgba.data());
   return map;
 }
 

@@ -13,24 +13,24 @@ namespace csm {
 void ShadowMaps::resize(int size) {
   if (size == size_) return;
   size_ = size;
-  lightDepth_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, size, size);
-  lightDepth_.setFilter(GL_NEAREST, GL_NEAREST).setWrap(GL_CLAMP_TO_EDGE);
-  headShadow_ = gl::Texture::create2D(GL_DEPTH_COMPONENT32F, size, size);
-  headShadow_.setFilter(GL_LINEAR, GL_LINEAR)
-      .setWrap(GL_CLAMP_TO_EDGE)
-      .setParameter(GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE)
-      .setParameter(GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  lightDepth_ = gl::Texture::create2D(gl::TextureFormat::Depth32f, size, size);
+  lightDepth_.setFilter(gl::Filter::Nearest, gl::Filter::Nearest).setWrap(gl::Wrap::ClampToEdge);
+  headShadow_ = gl::Texture::create2D(gl::TextureFormat::Depth32f, size, size);
+  headShadow_.setFilter(gl::Filter::Linear, gl::Filter::Linear)
+      .setWrap(gl::Wrap::ClampToEdge)
+      .setDepthCompare(gl::DepthCompare::LessOrEqual);
   // Half floats: layers sum a few hundred strand opacities at most, and blending them is
   // cheaper than in 32-bit floats.
-  opacityLayers_ = gl::Texture::create2D(GL_RGBA16F, size, size);
-  opacityLayers_.setFilter(GL_NEAREST, GL_NEAREST).setWrap(GL_CLAMP_TO_EDGE);
+  opacityLayers_ = gl::Texture::create2D(gl::TextureFormat::Rgba16f, size, size);
+  opacityLayers_.setFilter(gl::Filter::Nearest, gl::Filter::Nearest).setWrap(gl::Wrap::ClampToEdge);
 
   lightDepthFbo_ = gl::Framebuffer();
-  lightDepthFbo_.attach(GL_DEPTH_ATTACHMENT, lightDepth_).setDrawBuffers({GL_NONE});
+  lightDepthFbo_.attach(gl::Attachment::Depth, lightDepth_).setDrawBuffers({gl::Attachment::None});
   headShadowFbo_ = gl::Framebuffer();
-  headShadowFbo_.attach(GL_DEPTH_ATTACHMENT, headShadow_).setDrawBuffers({GL_NONE});
+  headShadowFbo_.attach(gl::Attachment::Depth, headShadow_).setDrawBuffers({gl::Attachment::None});
   opacityFbo_ = gl::Framebuffer();
-  opacityFbo_.attach(GL_COLOR_ATTACHMENT0, opacityLayers_).setDrawBuffers({GL_COLOR_ATTACHMENT0});
+  opacityFbo_.attach(gl::Attachment::Color0, opacityLayers_)
+      .setDrawBuffers({gl::Attachment::Color0});
   for (const gl::Framebuffer* f : {&lightDepthFbo_, &headShadowFbo_, &opacityFbo_}) {
     std::string message;
     if (!f->checkComplete(&message)) gl::logMessage(gl::LogLevel::Error, "shadow maps: " + message);

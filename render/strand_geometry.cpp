@@ -172,8 +172,8 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
 
   std::vector<glm::vec4> rest(groom.pointCount());
   for (std::size_t i = 0; i < rest.size(); ++i) rest[i] = glm::vec4(groom.points[i], 1.0f);
-  restPositions_ = gl::Buffer(rest, GL_STATIC_DRAW);
-  strandFirst_ = gl::Buffer(groom.first, GL_STATIC_DRAW);
+  restPositions_ = gl::Buffer(rest, gl::BufferUsage::StaticDraw);
+  strandFirst_ = gl::Buffer(groom.first, gl::BufferUsage::StaticDraw);
 
   strandFlags_ = 0;
   std::vector<glm::vec4> attributes(std::max<std::size_t>(strands, 1), glm::vec4(1.0f));
@@ -193,12 +193,12 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
         attributes[s].a = float(std::clamp(groom.thickness[s] / mean, 0.1, 4.0));
     }
   }
-  strandAttributes_ = gl::Buffer(attributes, GL_STATIC_DRAW);
+  strandAttributes_ = gl::Buffer(attributes, gl::BufferUsage::StaticDraw);
   if (dummyAttributes_.id() == 0) {
     // Bound in place of the per-strand attributes when the groom has none: every SSBO a
     // shader declares must be backed by a buffer.
     const glm::vec4 one(1.0f);
-    dummyAttributes_ = gl::Buffer(GLsizeiptr(sizeof(one)), &one, GL_STATIC_DRAW);
+    dummyAttributes_ = gl::Buffer(GLsizeiptr(sizeof(one)), &one, gl::BufferUsage::StaticDraw);
   }
 
   // Spline points: (n - 1) subdivision + 1 per strand of n >= 2 particles.
@@ -223,18 +223,18 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
   }
   childRun_ = childStrand.size();
   if (childStrand.empty()) childStrand.push_back(0);
-  childFirst_ = gl::Buffer(childFirstHost_, GL_STATIC_DRAW);
-  childStrand_ = gl::Buffer(childStrand, GL_STATIC_DRAW);
-  splineFirst_ = gl::Buffer(splineFirstHost_, GL_STATIC_DRAW);
-  pointStrand_ = gl::Buffer(pointStrand, GL_STATIC_DRAW);
+  childFirst_ = gl::Buffer(childFirstHost_, gl::BufferUsage::StaticDraw);
+  childStrand_ = gl::Buffer(childStrand, gl::BufferUsage::StaticDraw);
+  splineFirst_ = gl::Buffer(splineFirstHost_, gl::BufferUsage::StaticDraw);
+  pointStrand_ = gl::Buffer(pointStrand, gl::BufferUsage::StaticDraw);
   links_ = guideLinks(groom);
   if (links_.data.empty()) links_.data.assign(2, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  guideLinks_ = gl::Buffer(links_.data, GL_STATIC_DRAW);
+  guideLinks_ = gl::Buffer(links_.data, gl::BufferUsage::StaticDraw);
   const GLsizeiptr pointBytes = GLsizeiptr(std::max<std::size_t>(splinePoints_, 1) * 16);
-  guidePoints_ = gl::Buffer(pointBytes, nullptr, GL_DYNAMIC_COPY);
-  guideTangents_ = gl::Buffer(pointBytes, nullptr, GL_DYNAMIC_COPY);
-  guideFrames_ = gl::Buffer(pointBytes, nullptr, GL_DYNAMIC_COPY);
-  guideShade_ = gl::Buffer(2 * pointBytes, nullptr, GL_DYNAMIC_COPY);
+  guidePoints_ = gl::Buffer(pointBytes, nullptr, gl::BufferUsage::DynamicCopy);
+  guideTangents_ = gl::Buffer(pointBytes, nullptr, gl::BufferUsage::DynamicCopy);
+  guideFrames_ = gl::Buffer(pointBytes, nullptr, gl::BufferUsage::DynamicCopy);
+  guideShade_ = gl::Buffer(2 * pointBytes, nullptr, gl::BufferUsage::DynamicCopy);
 
   order_ = drawOrder(groom);
   guides_ = order_.size();
@@ -262,8 +262,8 @@ bool StrandGeometry::update(const Groom& groom, long generation, int subdivision
   }
   for (auto* v : {&strip, &shadow})
     if (v->empty()) v->push_back(0);
-  stripIndices_ = gl::Buffer(strip, GL_STATIC_DRAW);
-  shadowIndices_ = gl::Buffer(shadow, GL_STATIC_DRAW);
+  stripIndices_ = gl::Buffer(strip, gl::BufferUsage::StaticDraw);
+  shadowIndices_ = gl::Buffer(shadow, gl::BufferUsage::StaticDraw);
   for (gl::VertexArray* vao : {&stripVao_, &shadowVao_, &childVao_})
     if (vao->id() == 0) *vao = gl::VertexArray();
   stripVao_.setIndexBuffer(stripIndices_);
@@ -305,8 +305,8 @@ int StrandGeometry::setChildren(int wanted) {
   if (children == children_) return children;
   children_ = children;
   const std::size_t items = std::max<std::size_t>(childRun_ * std::size_t(children), 1);
-  childPoints_ = gl::Buffer(GLsizeiptr(items * 16), nullptr, GL_DYNAMIC_COPY);
-  childColors_ = gl::Buffer(GLsizeiptr(items * 16), nullptr, GL_DYNAMIC_COPY);
+  childPoints_ = gl::Buffer(GLsizeiptr(items * 16), nullptr, gl::BufferUsage::DynamicCopy);
+  childColors_ = gl::Buffer(GLsizeiptr(items * 16), nullptr, gl::BufferUsage::DynamicCopy);
   // Segments by child rank, then guides in draw order: drawing k children of every guide is
   // a prefix (a share of the strands drops children before guides).
   std::vector<std::uint32_t> lines;
@@ -323,53 +323,53 @@ int StrandGeometry::setChildren(int wanted) {
     childPrefix_.push_back(lines.size());
   }
   if (lines.empty()) lines.push_back(0);
-  childIndices_ = gl::Buffer(lines, GL_STATIC_DRAW);
+  childIndices_ = gl::Buffer(lines, gl::BufferUsage::StaticDraw);
   childVao_.setIndexBuffer(childIndices_);
   return children;
 }
 
 void StrandGeometry::bind() const {
-  restPositions_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kRestPositions);
-  strandFirst_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kStrandFirst);
+  restPositions_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kRestPositions);
+  strandFirst_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kStrandFirst);
   (strandFlags_ ? strandAttributes_ : dummyAttributes_)
-      .bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kStrandAttributes);
-  splineFirst_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kSplineFirst);
-  pointStrand_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kPointStrand);
-  guideLinks_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuideLinks);
-  guidePoints_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuidePoints);
-  guideTangents_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuideTangents);
-  guideFrames_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuideFrames);
-  guideShade_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kGuideShade);
-  childPoints_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kChildPoints);
-  childColors_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kChildColors);
-  childFirst_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kChildFirst);
-  childStrand_.bindBase(GL_SHADER_STORAGE_BUFFER, bindings::kChildStrand);
+      .bindBase(gl::BufferTarget::ShaderStorage, bindings::kStrandAttributes);
+  splineFirst_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kSplineFirst);
+  pointStrand_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kPointStrand);
+  guideLinks_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kGuideLinks);
+  guidePoints_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kGuidePoints);
+  guideTangents_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kGuideTangents);
+  guideFrames_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kGuideFrames);
+  guideShade_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kGuideShade);
+  childPoints_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kChildPoints);
+  childColors_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kChildColors);
+  childFirst_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kChildFirst);
+  childStrand_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kChildStrand);
 }
 
 void StrandGeometry::draw(const gl::VertexArray& vao, const std::vector<std::size_t>& prefix,
-                          unsigned mode, std::size_t count) const {
+                          gl::Primitive mode, std::size_t count) const {
   count = std::min(count, prefix.size() - 1);
   if (count == 0 || prefix[count] == 0) return;
   vao.bind();
-  gl::drawElements(GLenum(mode), prefix[count]);
+  gl::drawElements(mode, prefix[count]);
 }
 
 void StrandGeometry::drawRibbons(std::size_t guides) const {
-  draw(stripVao_, stripPrefix_, GL_TRIANGLES, guides);
+  draw(stripVao_, stripPrefix_, gl::Primitive::Triangles, guides);
 }
 
 void StrandGeometry::drawThinGuides(std::size_t guides) const {
   // The shadow passes' lines: two points a simulated segment, where a line a pixel wide
   // shows no corners.
-  draw(shadowVao_, shadowPrefix_, GL_LINES, guides);
+  draw(shadowVao_, shadowPrefix_, gl::Primitive::Lines, guides);
 }
 
 void StrandGeometry::drawGuideLines(std::size_t guides) const {
-  draw(shadowVao_, shadowPrefix_, GL_LINES, guides);
+  draw(shadowVao_, shadowPrefix_, gl::Primitive::Lines, guides);
 }
 
 void StrandGeometry::drawChildren(int children) const {
-  if (children > 0) draw(childVao_, childPrefix_, GL_LINES, std::size_t(children));
+  if (children > 0) draw(childVao_, childPrefix_, gl::Primitive::Lines, std::size_t(children));
 }
 
 }  // namespace csm

@@ -85,7 +85,7 @@ class StrandGeometry {
 
  private:
   // The first `count` entries of `prefix` (guides or child ranks).
-  void draw(const gl::VertexArray& vao, const std::vector<std::size_t>& prefix, unsigned mode,
+  void draw(const gl::VertexArray& vao, const std::vector<std::size_t>& prefix, gl::Primitive mode,
             std::size_t count) const;
 
   struct Key {

@@ -2,9 +2,10 @@
 # The modules point one way (docs/ARCHITECTURE.md section 2): gl -> sim -> render -> app, tools/
 # beside app, and inside sim/ its layers, bottom to top: base, core, param, head, groom, solver,
 # gpu, run, verify. Fails on an include against that direction (a folder includes only folders
-# below it or itself), on sim/verify in the app or the renderer, on GL outside sim/gpu, on the
-# CPU library of sim/run reaching the GPU solver, and on a CPU test binary that links a GL,
-# window or GUI library.
+# below it or itself), on sim/verify in the app or the renderer, on sim/run in the renderer, on
+# sim/gpu in the app (it has the solver factory), on GL outside sim/gpu, on the CPU library of
+# sim/run reaching the GPU solver, on the panels including the viewer, on a GL_ constant in the
+# app or the renderer, and on a CPU test binary that links a GL, window or GUI library.
 #   tests/layers.sh SOURCE_DIR CPU_TEST_BINARY
 set -u
 src=$1
@@ -35,6 +36,12 @@ if [ -n "$hits" ]; then echo "FAIL: sim/ sources outside its layers:"; echo "$hi
 # The verification layer is for tests and tools: the program does not include it.
 check app '#include "sim/verify/' "app/ does not include sim/verify"
 check render '#include "sim/verify/' "render/ does not include sim/verify"
+# The renderer draws a FrameView (render/renderer.h), which the app builds from the Simulation:
+# it knows frames, not simulations.
+check render '#include "sim/run/' "render/ includes nothing of sim/run"
+# The app makes its solvers, and reads the GPU one's pass profile, through the solver factory:
+# nothing of sim/gpu's own headers.
+check app '#include "sim/gpu/' "app/ reaches sim/gpu only through sim/run/make_solver.h"
 # sim/run's CPU library needs no GL: only the solver factory (its own library) knows the GPU one.
 hits=$(grep -rnE '#include "sim/gpu/' "$src/sim/run" --include='*.h' --include='*.cpp' | grep -v "^$src/sim/run/make_solver\.")
 if [ -n "$hits" ]; then echo "FAIL: sim/run reaches sim/gpu outside make_solver:"; echo "$hits"; fail=1; else echo "ok: sim/run reaches sim/gpu only in make_solver"; fi
@@ -45,6 +52,13 @@ if [ -n "$hits" ]; then echo "FAIL: GL outside sim/gpu:"; echo "$hits"; fail=1; 
 # tools/; they call gl/'s wrappers.
 hits=$(grep -rnE '\bgl[A-Z][A-Za-z0-9]*\(' "$src/sim" "$src/render" "$src/app" "$src/tools" --include='*.h' --include='*.cpp')
 if [ -n "$hits" ]; then echo "FAIL: raw GL calls outside gl/:"; echo "$hits"; fail=1; else echo "ok: GL calls only in gl/"; fi
+# The panels see the viewer through PanelView and PanelRequests (app/panels.h), not its class.
+hits=$(grep -nE '#include "app/viewer\.h"' "$src"/app/panels*.h "$src"/app/panels*.cpp 2>/dev/null)
+if [ -n "$hits" ]; then echo "FAIL: the panels include the viewer:"; echo "$hits"; fail=1; else echo "ok: the panels do not include app/viewer.h"; fi
+# GL's constants stay behind gl/ too: the app and the renderer name formats, attachments,
+# usage, primitives, ... with gl/'s typed enums (gl/enums.h).
+check app '\bGL_[A-Z0-9_]+' "app/ names no GL_ constant (gl/enums.h has typed ones)"
+check render '\bGL_[A-Z0-9_]+' "render/ names no GL_ constant (gl/enums.h has typed ones)"
 libs=$(ldd "$cpu_tests" | grep -iE 'libepoxy|libEGL|libGL|libOpenGL|libglfw|libimgui|libX11')
 if [ -n "$libs" ]; then
   echo "FAIL: the CPU tests link GL, window or GUI libraries:"; echo "$libs"; fail=1

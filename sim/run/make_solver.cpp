@@ -2,6 +2,7 @@
 
 #include "sim/solver/cpu_solver.h"
 #include "sim/gpu/gpu_solver.h"
+#include "sim/gpu/pass_profile.h"
 
 namespace csm {
 
@@ -10,6 +11,14 @@ std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error) 
   if (name == "gpu") return GpuSolver::start(error);
   if (error) *error = "unknown solver \"" + name + "\" (solvers: cpu, gpu)";
   return nullptr;
+}
+
+void clearPassProfile() {
+  gpu::pass_profile::clear();
+}
+
+std::string passProfileTable(long frames) {
+  return gpu::pass_profile::table(frames);
 }
 
 }  // namespace csm

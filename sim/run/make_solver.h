@@ -19,4 +19,12 @@ using SolverByName =
 // Null with a message when the name is unknown or the solver cannot start.
 std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error);
 
+// The GPU solver's pass profile (CSM_PASS_PROFILE=1 in the environment, sim/gpu/pass_profile.h),
+// here so that a program reaches the GPU solver only through this factory. Forgets what was timed
+// so far: a run calls it after its set-up, so that the table holds its frames only.
+void clearPassProfile();
+// Every pass's ms a frame over `frames` frames, slowest first; empty when nothing was timed (the
+// profile off, or no GPU solver ran).
+std::string passProfileTable(long frames);
+
 }  // namespace csm

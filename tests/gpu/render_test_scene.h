@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/capture.h"
+#include "app/frame_view.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
 #include "app/preset.h"

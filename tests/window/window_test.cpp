@@ -251,7 +251,7 @@ TEST_CASE(
   runSimFrames(*v, 3);
   const size_t before = v->simFrame().strands;
   CHECK(before == 6000);
-  const CameraConfig camera = v->preset().view.camera;
+  const CameraConfig camera = v->document().current().view.camera;
   // Paused, so the clock can be compared across the change.
   v->controls().setPaused(true);
   REQUIRE(v->sync());
@@ -266,7 +266,7 @@ TEST_CASE(
   CHECK(v->simFrame().strands == 1500);
   CHECK(v->simFrame().config.hairstyle.strands == 1500);
   CHECK(v->simFrame().config.wind.strength == 8.0f);
-  const CameraConfig& now = v->preset().view.camera;
+  const CameraConfig& now = v->document().current().view.camera;
   CHECK((now.target == camera.target && now.distance == camera.distance && now.yaw == camera.yaw &&
          now.pitch == camera.pitch && now.fov == camera.fov));
   CHECK(v->simFrame().time == Approx(t));
@@ -416,7 +416,7 @@ TEST_CASE("window: a broken preset shows its messages and the scene keeps runnin
   CHECK_FALSE(v->setParam("hairstyle.min_particles", "40"));
   REQUIRE(v->sync());
   CHECK(v->simFrame().config.hairstyle.minParticles == 5);
-  CHECK(v->preset().scene.hairstyle.minParticles == 5);
+  CHECK(v->document().current().scene.hairstyle.minParticles == 5);
   v->dismissPresetErrors();
   CHECK(v->presetErrors().empty());
   removeTemp(dir);
@@ -434,7 +434,7 @@ TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[win
   REQUIRE(v->waitForSimFrame(40));
   REQUIRE(v->controls().nanStopped());
   CHECK(v->controls().paused());
-  CHECK(v->nanFrame() >= 4);
+  CHECK(v->simFrame().nanFrame >= 4);
   const long frame = v->simFrame().frame;
   CHECK(frame < 40);
   runFrames(*v, 3);
@@ -649,7 +649,7 @@ TEST_CASE("window: the UI runs while a frame of simulation does not end", "[wind
   REQUIRE(v->setParam("camera.yaw", "75"));
   REQUIRE(v->setParam("wind.strength", "3"));  // queued for the thread, between frames
   runFrames(*v, 2);
-  CHECK(v->preset().view.camera.yaw == 75.0f);
+  CHECK(v->document().current().view.camera.yaw == 75.0f);
   CHECK(v->simFrame().config.wind.strength != 3.0f);  // not yet applied: the frame runs on
 
   // The frame ends: the edit is applied before the next one, and the view shows it.
@@ -668,12 +668,12 @@ TEST_CASE("window: interactive quality while simulating, full when still and for
   c.view.render.children = 3;
   std::string error;
   REQUIRE(v->open(c, "", "", &error));
-  REQUIRE(v->preset().view.render.interactive);
+  REQUIRE(v->document().current().view.render.interactive);
   runSimFrames(*v, 3);
   runFrames(*v, 1);
   CHECK(v->sceneView().lastQuality() == DrawQuality::Interactive);
   // A share of the strands: render.interactive_amount of 400 x 4 drawn.
-  const double amount = v->preset().view.render.interactiveAmount;
+  const double amount = v->document().current().view.render.interactiveAmount;
   CHECK(double(v->stats().drawnStrands) < 0.6 * 1600.0);
   CHECK(double(v->stats().drawnStrands) >= 0.5 * amount * 1600.0);
 

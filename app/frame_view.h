@@ -1,0 +1,15 @@
+// What the renderer draws of a simulation's frame: the app builds the FrameView
+// (render/renderer.h) from the Simulation, so that render/ knows frames, not simulations.
+#pragma once
+
+#include "render/renderer.h"
+#include "sim/run/simulation.h"
+
+namespace csm {
+
+// The FrameView of a simulation's current frame seen as `view` says, drawn into
+// `framebuffer` at width x height.
+FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
+                      int width, int height, unsigned framebuffer = 0);
+
+}  // namespace csm
