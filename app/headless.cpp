@@ -11,7 +11,7 @@
 #include "app/frame_view.h"
 #include "app/import_progress.h"
 #include "app/metrics.h"
-#include "app/sim_thread.h"
+#include "app/sim_frame.h"
 #include "gl/caps.h"
 #include "gl/context.h"
 #include "render/hair_renderer.h"

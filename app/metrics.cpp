@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "app/scene_setup.h"
-#include "app/sim_thread.h"
+#include "app/sim_frame.h"
 
 namespace csm {
 

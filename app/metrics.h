@@ -14,7 +14,7 @@
 namespace csm {
 
 struct SceneSetup;  // app/scene_setup.h
-struct SimFrame;    // app/sim_thread.h
+struct SimFrame;    // app/sim_frame.h
 
 class MetricsLog {
  public:
@@ -67,7 +67,7 @@ struct RunDescription {
 };
 // The one place a RunDescription is filled, for headless runs and the window alike: `scene` as
 // set up, the running scene's figures as a SimFrame carries them (the window's latest frame; a
-// headless run takes them from its Simulation with takeFigures, app/sim_thread.h), and the
+// headless run takes them from its Simulation with takeFigures, app/sim_frame.h), and the
 // device the solver ran on.
 RunDescription runDescription(const SceneSetup& scene, const SimFrame& figures,
                               const std::string& device);

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/sim_thread.h"
+#include "app/sim_frame.h"
 #include "app/window.h"
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"

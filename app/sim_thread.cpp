@@ -263,23 +263,6 @@ void SimThread::event(SimEvent::Kind kind, long ticket, std::string text) {
   events_.push_back({kind, ticket, std::move(text)});
 }
 
-std::string solverLabel(const SimFrame& frame) {
-  return frame.solverVariant.empty() ? frame.solver
-                                     : frame.solver + " (" + frame.solverVariant + ")";
-}
-
-void takeFigures(const Simulation& sim, SimFrame& frame) {
-  const Solver& solver = sim.solver();
-  frame.solver = std::string(solver.name());
-  frame.solverVariant = solver.variant();
-  frame.config = sim.config();
-  frame.groomReport = sim.groomReport();
-  frame.strands = solver.strandCount();
-  frame.particles = solver.particleCount();
-  frame.carriedFrames = sim.carriedFrames();
-  frame.stiffness = solver.stiffness();
-}
-
 void SimThread::publish(long ticket) {
   auto f = std::make_shared<SimFrame>();
   f->ticket = ticket;
