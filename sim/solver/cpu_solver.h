@@ -37,12 +37,6 @@ namespace csm {
 void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, int iterations,
                      const Eigen::Vector3d& axis = Eigen::Vector3d::Zero(), double twistStep = 1.0);
 
-// Measures c_w (sim/solver/stiffness.h) on this solver: a long straight strand bent by a small sine
-// wave of wavenumber kappa, with nothing acting but the goals of the paper model with window w
-// and alpha = 1; mu is the share of the wave one step removes, and c_w = mu / (kappa w l)^4,
-// extrapolated to kappa -> 0 from kappa w l = 0.1 and 0.2.
-double measureWindowCoefficient(int w);
-
 class CpuSolver final : public Solver {
  public:
   // Region sums by prefix differences (O(1) per region, Rivers & James 2007), or summed
@@ -83,12 +77,14 @@ class CpuSolver final : public Solver {
   void step(double h, const Pose& head);
   const std::vector<glm::dvec3>& positions() const { return x_; }
   const std::vector<glm::dvec3>& velocities() const { return v_; }
-  std::vector<glm::dvec3>& mutablePositions() { return x_; }
-  std::vector<glm::dvec3>& mutableVelocities() { return v_; }
   // Rest length of the segment from particle i to i+1.
   double restLength(size_t i) const { return restLength_[i]; }
 
  private:
+  // Sets a wave's positions in double, which writeState would round to float
+  // (sim/verify/window_coefficient.h).
+  friend double measureWindowCoefficient(int w);
+
   void clearStages();
   void rebuildRegions();
   void predict(double h, const Pose& head);

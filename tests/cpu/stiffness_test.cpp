@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "sim/solver/cpu_solver.h"
+#include "sim/verify/window_coefficient.h"
 #include "sim/solver/stiffness.h"
 #include "tests/stiffness_cases.h"
 
