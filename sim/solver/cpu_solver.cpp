@@ -14,6 +14,7 @@
 #include "sim/base/state_bytes.h"
 #include "sim/solver/wind.h"
 #include "sim/solver/accuracy.h"
+#include "sim/solver/state_io.h"
 #include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
@@ -625,21 +626,16 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
 }
 
 void CpuSolver::readPositions(std::vector<glm::vec4>& out) {
-  out.resize(x_.size());
-  for (size_t i = 0; i < x_.size(); ++i) out[i] = glm::vec4(glm::vec3(x_[i]), 1.0f);
+  readDoublePositions(x_, out);
 }
 
 void CpuSolver::readVelocities(std::vector<glm::vec4>& out) {
-  out.resize(v_.size());
-  for (size_t i = 0; i < v_.size(); ++i) out[i] = glm::vec4(glm::vec3(v_[i]), 0.0f);
+  readDoubleVelocities(v_, out);
 }
 
 void CpuSolver::writeState(const std::vector<glm::vec4>& positions,
                            const std::vector<glm::vec4>& velocities) {
-  for (size_t i = 0; i < x_.size() && i < positions.size(); ++i)
-    x_[i] = glm::dvec3(glm::vec3(positions[i]));
-  for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
-    v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+  writeDoubleState(positions, velocities, x_, v_);
 }
 
 void CpuSolver::saveState(SolverState& out) {

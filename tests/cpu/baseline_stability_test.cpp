@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/solver/baselines/baseline_solver.h"
+#include "sim/solver/baselines/make_baseline.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/core/pose.h"
 #include "sim/verify/measure.h"

@@ -99,8 +99,9 @@ class BaselineSolver : public Solver {
   double lastMs_ = 0.0;
 };
 
-// "ms-explicit", "ms-implicit", "pbd", "ftl"; null for an unknown name.
-std::unique_ptr<BaselineSolver> makeBaseline(std::string_view name, const BaselineParams& params);
-std::vector<std::string> baselineNames();
+// Projects the distance constraint |p_i - p_j| = rest with stiffness k (0..1) and inverse
+// masses wi, wj (0 = kinematic) (Mueller et al. 2007, section 3.3): PBD's constraints, and
+// follow-the-leader's bending.
+void projectDistance(glm::dvec3& pi, glm::dvec3& pj, double wi, double wj, double rest, double k);
 
 }  // namespace csm
