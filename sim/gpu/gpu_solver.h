@@ -5,7 +5,8 @@
 // The pieces: StrandBuffers (the hair's state and layout), the passes of a step (GpuKernels:
 // per strand, predict.comp, shape_match.comp and strain_limit.comp; per particle, strand_step.comp
 // and, with strand contacts, strand_strain.comp), ContactSearch (hair-hair contacts once per frame
-// when collision.mode is full, acting during the next frame), SampleRing (the measures,
+// when collision.mode is full, acting during the next frame; ContactSolve, their solve each
+// substep), VolumePasses (the volume modes' grid, once a frame), SampleRing (the measures,
 // fenced and read a few frames late) and StageTimer. The regions and the number of steps come
 // from sim/solver/stiffness.h, as for CpuSolver. 3 dispatches per step (1 per particle without
 // strand contacts) + 11 per frame.
@@ -24,9 +25,9 @@
 #include "sim/gpu/contact_solve.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/sample_ring.h"
-#include "sim/solver/volume.h"
 #include "sim/gpu/stage_timer.h"
 #include "sim/gpu/strand_buffers.h"
+#include "sim/gpu/volume_passes.h"
 #include "sim/core/hair_state.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_model.h"
@@ -145,12 +146,19 @@ class GpuSolver final : public Solver {
   std::vector<gl::Define> withReads(std::vector<gl::Define> defines) const;
   bool build(int maxStrandSize, std::string* error);
   void uploadRegions();
-  void resetVolume();
   // Whether frames or samples list candidates (a strand mode, or contact measures).
   bool listsCandidates() const;
   // The grid's buffers sized for the hair as it stands (ContactSearch::sizeForLastSearch).
   void sizeLists();
+  // The frame's parameters for steps ending at `poses` (from `before`), written into params_
+  // by what they fill, then uploaded with a Substep per step.
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
+  void writeStepParams(gpu::SimParams& p) const;  // gravity, wind, stiffness, the counts
+  void writeHeadParams(gpu::SimParams& p) const;  // the hair's radius, the head's shape
+  // Strand contacts and their grid, whose cells count from the head where the frame ends.
+  void writeContactParams(gpu::SimParams& p, const Pose& frameEnd) const;
+  // params_ and each step's Substep (the head's pose, its spheres) to the GPU.
+  void uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
   // The candidate lists of the current state, built now (detectContacts, the measures).
   void listCandidatesNow(gpu::StageTimer* timer);
@@ -175,7 +183,7 @@ class GpuSolver final : public Solver {
   gpu::SimParams params_{};
 
   struct Passes {
-    gpu::ComputePass predict, shapeMatch, measure, volumeSplat, volumeDispatch, volumeField, carry;
+    gpu::ComputePass predict, shapeMatch, measure, carry;
     // For the head's spheres and for its distance field (llvmpipe runs both sides of a
     // branch: each build runs only its own head's push).
     gpu::ComputePass strainLimit[2];
@@ -187,13 +195,7 @@ class GpuSolver final : public Solver {
   gpu::ContactSearch contactSearch_;  // strand contacts: the search
   gpu::ContactSolve contactSolve_;    // and the solve
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
-  // The volume mode: the grid's geometry (the CPU reference's), its sums, per-particle
-  // lengths, rest fractions and each node's field (CSM_BIND_VOLUME_FIELD), read by texel fetches.
-  VolumeGrid volume_;
-  gl::Buffer volumeSums_{gl::NoCreate}, volumeLength_{gl::NoCreate}, volumeRest_{gl::NoCreate},
-      volumeField_{gl::NoCreate};
-  gl::BufferTexture volumeSumsTex_{gl::NoCreate}, volumeRestTex_{gl::NoCreate},
-      volumeFieldTex_{gl::NoCreate};
+  gpu::VolumePasses volume_;  // the volume mode's grid and passes
   // The head's distance field (sim/head/distance_grid.h), read by texel fetches; one node when
   // unused.
   gl::Buffer headField_{gl::NoCreate};
