@@ -84,17 +84,6 @@ std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
   return solver;
 }
 
-bool GpuSolver::setKernels(GpuKernels kernels, std::string* error) {
-  kernels_ = kernels;
-  std::string why;
-  if (!build(std::max(32, hair_.longestStrand), &why)) {
-    if (error) *error = why;
-    failure_ = why;
-    return false;
-  }
-  return true;
-}
-
 GpuSolver::~GpuSolver() = default;
 
 bool GpuSolver::build(int maxStrandSize, std::string* error) {
@@ -256,23 +245,6 @@ void GpuSolver::uploadHeadField() {
   gpu::view(headFieldTex_, headField_, GL_RGBA32F);
   uploadedField_ = field;
   uploadedHead_ = headModel_.shared();  // keeps the field uploaded alive, so its address names it
-}
-
-size_t GpuSolver::volumeNodesVisited() const {
-  return volume_.nodesVisited(contactSearch_.dispatch());
-}
-
-GpuSolver::GridStats GpuSolver::gridStats() {
-  const std::vector<uint32_t> c = gpu::readCounters(contactSearch_);
-  GridStats g;
-  g.entries = c[CSM_COUNTER_ENTRIES];
-  g.capacity = contactSearch_.entryCapacity();
-  g.oversize = c[CSM_COUNTER_OVERSIZE];
-  g.buckets = contactSearch_.bucketCount();
-  g.pairs = c[CSM_COUNTER_PAIR_LIST];
-  g.pairCapacity = contactSearch_.pairListCapacity();
-  g.cell = params_.cellEdge;
-  return g;
 }
 
 void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before) {
@@ -506,23 +478,6 @@ void GpuSolver::listCandidatesNow(gpu::StageTimer* timer) {
   contactSearch_.findCandidates(timer);
 }
 
-void GpuSolver::detectContacts() {
-  if (hair_.particles == 0) return;
-  // Timed as a frame of its own.
-  timer_.beginFrame();
-  listCandidatesNow(&timer_);
-  // A tool asks for this pass's candidates: when the grid did not fit, grow it and run again
-  // (stepFrame instead grows it as the next frame begins).
-  if (contactSearch_.countersSeen(gpu::readCounters(contactSearch_).data())) {
-    writeParams({head_}, {head_});
-    bindAll();
-    contactSearch_.findCandidates(&timer_);
-  }
-  timer_.endFrame();
-  gl::memoryBarrier(gl::Barrier::All);
-  framesSinceMeasure_ = 0;  // the counters measure the hair as it stands
-}
-
 void GpuSolver::finish() {
   gl::finish();
 }
@@ -664,10 +619,6 @@ void GpuSolver::carry(const Pose& by) {
       .run(uint32_t(hair_.particles));
   gl::memoryBarrier(gl::Barrier::All);
   head_ = compose(by, head_);
-}
-
-ContactStats GpuSolver::readContactStats() {
-  return gpu::contactStatsOf(gpu::readCounters(contactSearch_).data());
 }
 
 unsigned GpuSolver::lastSubstepSpheres() const {

@@ -21,7 +21,6 @@
 #include "gl/buffer.h"
 #include "sim/gpu/contact_search.h"
 #include "sim/gpu/compute_pass.h"
-#include "sim/gpu/contact_readback.h"
 #include "sim/gpu/contact_solve.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/sample_ring.h"
@@ -82,59 +81,16 @@ class GpuSolver final : public Solver {
   std::vector<StageTime> stageTimes() override { return timer_.times(); }
   // Those of the latest sample taken: nothing is read back for them.
   ContactStats contactStats() override { return sampledContacts_; }
-  // Nodes of the volume mode's grid: none unless collision.mode is a volume mode (tests).
-  size_t volumeNodes() const { return volume_.nodes(); }
-  // Nodes the volume's node pass ran on in the last frame: the box the splat reached (reads
-  // back its indirect dispatch; tests).
-  size_t volumeNodesVisited() const;
   void setContactMeasures(bool always) override;
   void requestSample(long frame) override;
   std::optional<FrameSample> takeSample(bool wait = false) override;
   void dropSamples() override { samples_.drop(); }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
-  // The passes in use: chosen at create() by the context (PerStrand on a software renderer,
-  // PerParticle on a GPU); CSM_GPU_KERNELS=strand|particle in the environment overrides, and so
-  // does setKernels (tests, benchmarks), which builds what the choice needs.
-  GpuKernels kernels() const { return kernels_; }
-  bool setKernels(GpuKernels kernels, std::string* error = nullptr);
-
-  // --- For tests and tools (these read back at once). ---
-  // The measures of the last candidate list (reading them changes nothing: the grid grows as
-  // the next frame begins).
-  ContactStats readContactStats();
-  // Builds the candidate list of the current state now (stepFrame does it at the start of
-  // each frame with strand contacts); the next frame builds its own.
-  void detectContacts();
-  // Caps the collision grid's growing buffers at `bytes` each, as a device whose buffer
-  // textures hold no more (ContactSearch::limitStorage): the next reset sizes them under it,
-  // and a frame after the cap is raised may grow them past it.
-  void limitGridStorage(uint64_t bytes) { contactSearch_.limitStorage(bytes); }
-  // Where the second view of the sides and lists starts, at most (ContactSearch::limitListSplit).
-  void limitGridListSplit(uint64_t texels) { contactSearch_.limitListSplit(texels); }
-  uint32_t gridListSplit() const { return contactSearch_.listSplit(); }
-  // The pairs (a < b) closer than 2r of the last candidate pass, in no particular order;
-  // `overflow` when the pair list did not hold them.
-  std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr) {
-    return gpu::readPairs(contactSearch_, overflow);
-  }
-  // Per segment (by its first particle): its candidates (other segment, contact distance).
-  std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates() {
-    return gpu::readCandidates(contactSearch_);
-  }
-  // The order the list pass and the contact solve take the segments in (segment_order.comp).
-  std::vector<uint32_t> readSegmentOrder() const { return gpu::readSegmentOrder(contactSearch_); }
-  // The grid of the last candidate pass (reads back): entries it needed, entries the buffers
-  // hold (over it, the frame kept the last list), segments in no cell (not finite, or a
-  // box over the cell cap), and the cell edge in metres.
-  struct GridStats {
-    uint32_t entries = 0, capacity = 0, oversize = 0, buckets = 0;
-    uint32_t pairs = 0, pairCapacity = 0;  // candidate pairs the last pass needed, and held
-    float cell = 0.0f;
-  };
-  GridStats gridStats();
-
  private:
+  // Tests and tools read the buffers, and choose the passes, through it (sim/gpu/gpu_probe.h).
+  friend class GpuProbe;
+
   // How the step's passes read: on a GPU the parameters from a uniform block and the particles
   // through storage blocks; on a software renderer from storage and texel fetches.
   struct Reads {
@@ -160,7 +116,8 @@ class GpuSolver final : public Solver {
   // params_ and each step's Substep (the head's pose, its spheres) to the GPU.
   void uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
-  // The candidate lists of the current state, built now (detectContacts, the measures).
+  // The candidate lists of the current state, built now (GpuProbe::detectContacts, the
+  // measures).
   void listCandidatesNow(gpu::StageTimer* timer);
   // A candidate list within the frame (collision.lists), from where the hair is now.
   void listAgain();

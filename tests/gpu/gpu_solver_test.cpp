@@ -13,6 +13,7 @@
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/gpu/gpu_params.h"
+#include "sim/gpu/gpu_probe.h"
 #include "sim/gpu/gpu_solver.h"
 #include "sim/groom/hairstyle.h"
 #include "app/preset.h"
@@ -245,27 +246,29 @@ TEST_CASE("GPU lists: sides and lists past one view's texels are read and writte
   auto whole = test::gpuSolver(), split = test::gpuSolver();
   whole->reset(g, c, Pose{});
   whole->stepFrame(Pose{}, Pose{});
-  const uint64_t texels = whole->gridStats().pairs * 6 / 5;
+  const uint64_t texels = GpuProbe(*whole).gridStats().pairs * 6 / 5;
   whole->reset(g, c, Pose{});
-  split->limitGridListSplit(texels);
+  GpuProbe(*split).limitGridListSplit(texels);
   split->reset(g, c, Pose{});
-  INFO("split " << split->gridListSplit() << " texels");
-  REQUIRE(split->gridListSplit() <= texels);
-  REQUIRE(split->gridListSplit() + 64 > texels);
+  INFO("split " << GpuProbe(*split).gridListSplit() << " texels");
+  REQUIRE(GpuProbe(*split).gridListSplit() <= texels);
+  REQUIRE(GpuProbe(*split).gridListSplit() + 64 > texels);
   uint64_t crossings = 0;
   for (int f = 0; f < 8; ++f) {
     whole->stepFrame(Pose{}, Pose{});
     split->stepFrame(Pose{}, Pose{});
-    const GpuSolver::GridStats grid = split->gridStats();
+    const GpuProbe::GridStats grid = GpuProbe(*split).gridStats();
     INFO("frame " << f << ": pairs " << grid.pairs << " capacity " << grid.pairCapacity);
-    CHECK(2 * uint64_t(grid.pairs) > split->gridListSplit());  // sides past the first view
-    const ContactStats a = split->readContactStats(), b = whole->readContactStats();
+    CHECK(2 * uint64_t(grid.pairs) >
+          GpuProbe(*split).gridListSplit());  // sides past the first view
+    const ContactStats a = GpuProbe(*split).readContactStats(),
+                       b = GpuProbe(*whole).readContactStats();
     CHECK(a.overflows == 0);
     CHECK(a.crowded == 0);
     CHECK(a.candidates == b.candidates);
     CHECK(a.crossings == b.crossings);
     crossings += a.crossings;
-    CHECK(split->readCandidates() == whole->readCandidates());
+    CHECK(GpuProbe(*split).readCandidates() == GpuProbe(*whole).readCandidates());
   }
   CHECK(crossings > 0);
   std::vector<glm::vec4> x, y;
@@ -309,7 +312,7 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
     for (int f = 0; f < 25; ++f) {
       cpu.stepFrame(Pose{}, Pose{});
       gpu->stepFrame(Pose{}, Pose{});
-      const ContactStats onCpu = cpu.contactStats(), onGpu = gpu->readContactStats();
+      const ContactStats onCpu = cpu.contactStats(), onGpu = GpuProbe(*gpu).readContactStats();
       INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates
                     << ", closer than r CPU " << onCpu.penetrations << " GPU "
                     << onGpu.penetrations);
@@ -373,7 +376,7 @@ TEST_CASE("GPU and CPU solvers agree with the penalty model; GPU runs are bit-id
     cpu.stepFrame(Pose{}, Pose{});
     gpu->stepFrame(Pose{}, Pose{});
     again->stepFrame(Pose{}, Pose{});
-    const ContactStats onCpu = cpu.contactStats(), onGpu = gpu->readContactStats();
+    const ContactStats onCpu = cpu.contactStats(), onGpu = GpuProbe(*gpu).readContactStats();
     INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates);
     penetrations += onGpu.penetrations;
     if (f < 2) {
@@ -485,7 +488,7 @@ TEST_CASE("GPU: strand contacts add no motion to a rest groom with gravity off",
     gpu->readPositions(rest);
     for (int f = 0; f < 60; ++f) gpu->stepFrame(Pose{}, Pose{});
     gpu->readPositions(x);
-    *stats = gpu->readContactStats();
+    *stats = GpuProbe(*gpu).readContactStats();
     double moved = 0.0;
     for (size_t i = 0; i < x.size(); ++i)
       moved = std::max(moved, double(glm::length(glm::vec3(x[i]) - glm::vec3(rest[i]))));
@@ -521,7 +524,7 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
     gpu->readPositions(x);
     gpu->readVelocities(v);
     x.insert(x.end(), v.begin(), v.end());
-    CHECK(gpu->readContactStats().contacts > 0);
+    CHECK(GpuProbe(*gpu).readContactStats().contacts > 0);
     return x;
   };
   const std::vector<glm::vec4> a = run(), b = run();
@@ -549,24 +552,24 @@ TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is c
   auto headOnly = test::gpuSolver(), switched = test::gpuSolver();
   headOnly->reset(g, c, Pose{});
   switched->reset(g, c, Pose{});
-  CHECK(switched->volumeNodes() == 0);
+  CHECK(GpuProbe(*switched).volumeNodes() == 0);
   Config volume = c;
   volume.collision.mode = CollisionMode::Volume;
   switched->setConfig(volume);
   CpuSolver cpu;
   cpu.reset(g, volume, Pose{});
-  CHECK(switched->volumeNodes() == cpu.volumeNodes());
-  CHECK(switched->volumeNodes() > 1000);
+  CHECK(GpuProbe(*switched).volumeNodes() == cpu.volumeNodes());
+  CHECK(GpuProbe(*switched).volumeNodes() > 1000);
   for (int f = 0; f < 10; ++f) {
     headOnly->stepFrame(Pose{}, Pose{});
     switched->stepFrame(Pose{}, Pose{});
   }
   // The node pass ran on the box the hair reached, not on the grid made for all it can reach
   // (200 strands on the crown: under a tenth of the nodes).
-  const size_t visited = switched->volumeNodesVisited();
-  INFO("nodes visited " << visited << " of " << switched->volumeNodes());
+  const size_t visited = GpuProbe(*switched).volumeNodesVisited();
+  INFO("nodes visited " << visited << " of " << GpuProbe(*switched).volumeNodes());
   CHECK(visited > 0);
-  CHECK(visited * 10 < switched->volumeNodes());
+  CHECK(visited * 10 < GpuProbe(*switched).volumeNodes());
   // The grid built after the reset acts: the hair ends elsewhere than with the head alone.
   std::vector<glm::vec4> a, b;
   headOnly->readPositions(a);
@@ -577,7 +580,7 @@ TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is c
   INFO("farthest particle apart " << apart * 1e3 << " mm");
   CHECK(apart > 1e-4);
   switched->setConfig(c);
-  CHECK(switched->volumeNodes() == 0);
+  CHECK(GpuProbe(*switched).volumeNodes() == 0);
 }
 
 TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][solver]") {
@@ -637,7 +640,7 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
                          "grid",      "contacts",       "volume"};
   // Strand contacts, no volume: every stage but the volume's did work and took time; the
   // volume's took none. The per-particle path predicts inside shape matching's pass.
-  const bool fused = gpu->kernels() == GpuKernels::PerParticle;
+  const bool fused = GpuProbe(*gpu).kernels() == GpuKernels::PerParticle;
   for (size_t k = 0; k < 6; ++k) {
     INFO(stages[k].name << " " << stages[k].ms << " ms");
     CHECK(stages[k].name == names[k]);
@@ -667,7 +670,7 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
   up.collision.mode = CollisionMode::Head;
   gpu->setConfig(up);
   gpu->stepFrame(Pose{}, Pose{});
-  CHECK(gpu->readContactStats().contacts == 0);
+  CHECK(GpuProbe(*gpu).readContactStats().contacts == 0);
 
   // reset rebuilds for a groom of another size, and the clock starts again.
   const Groom bigger = grow(smallScene(120));

@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl/fence.h"
+#include "sim/gpu/gpu_probe.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/run/frame_recording.h"
 #include "sim/run/simulation.h"
@@ -228,7 +229,7 @@ TEST_CASE("Solvers: the first frame after a restore counts no crossings against 
   const Groom g = test::growFor(c);
   std::unique_ptr<Solver> solver = solverNamed(name);
   auto contacts = [&] {
-    return name == "gpu" ? static_cast<GpuSolver&>(*solver).readContactStats()
+    return name == "gpu" ? GpuProbe(static_cast<GpuSolver&>(*solver)).readContactStats()
                          : static_cast<CpuSolver&>(*solver).contactStats();
   };
   solver->reset(g, c, Pose{});
