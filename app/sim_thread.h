@@ -35,7 +35,7 @@
 #include "sim/core/groom.h"
 #include "sim/core/pose.h"
 #include "sim/run/timeline.h"
-#include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/run/make_solver.h"
 
 namespace csm {
@@ -176,7 +176,7 @@ class SimThread {
   std::vector<SimEvent> takeEvents();
   // Every frame's time and sample so far (with Options::recordMetrics).
   MetricsLog metrics() const;
-  // Where a groom import on the thread stands (sim/groom/hairstyle.h's ImportProgress); an empty
+  // Where a groom import on the thread stands (sim/groom/scene_groom.h's ImportProgress); an empty
   // stage when none is running.
   struct ImportStatus {
     std::string stage;

@@ -13,6 +13,7 @@
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
 #include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/core/pose.h"
 #include "sim/core/solver.h"
 #include "sim/head/head_model.h"

@@ -1,5 +1,5 @@
-// Grooms from files as a scene takes them (sim/groom/hairstyle.h's fitFileGroom): the flaws of real
-// grooms repaired and counted, steps that a few degenerate strands cannot set, roots on the
+// Grooms from files as a scene takes them (sim/groom/scene_groom.h's fitFileGroom): the flaws of
+// real grooms repaired and counted, steps that a few degenerate strands cannot set, roots on the
 // scalp of any head and no particle inside it, roots found for OBJ curves.
 #include <cmath>
 #include <filesystem>
