@@ -144,7 +144,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
 
 void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   config_ = config;
-  shape_ = headModel_.update(config_).collider();
+  shape_ = headModel_.collider();
   time_ = 0.0;
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
@@ -156,6 +156,8 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   if (!build(hair_.longestStrand, &failure_)) {
     if (failure_.empty()) failure_ = "the GPU solver's shaders did not build";
     gl::logMessage(gl::LogLevel::Error, failure_);
+  } else if (!headModel_.handed()) {
+    failure_ = kNoHeadFailure;
   }
   // Rest lengths set the cell edge (METHOD.md section 3.6): strain limiting keeps the current
   // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
@@ -190,7 +192,7 @@ void GpuSolver::setConfig(const Config& config) {
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   const bool listed = listsCandidates();
   config_ = config;
-  shape_ = headModel_.update(config_).collider();
+  shape_ = headModel_.collider();
   if (config_.collision.model == ContactModel::Penalty && failure_.empty() &&
       !contactSolve_.buildPenalty(&failure_)) {
     if (failure_.empty()) failure_ = "the GPU solver's penalty contact shaders did not build";

@@ -125,7 +125,7 @@ class GpuSolver final : public Solver {
   void uploadHeadField();               // the head's distance field, when it is one
 
   Config config_;
-  SolverHead headModel_;  // the scene's head (handed, or built from config_)
+  SolverHead headModel_;  // the scene's head, handed before the reset
   SceneHead shape_;       // what it collides with, read every step
   double time_ = 0.0;
   Pose head_;
@@ -136,7 +136,8 @@ class GpuSolver final : public Solver {
   int builtParticleMaxN_ = 0;  // the per-particle passes', 0 until built
   GpuKernels kernels_ = GpuKernels::PerStrand;
   Reads reads_;
-  std::string failure_;  // set by reset when the groom's strands cannot be simulated
+  // Set by reset when the groom's strands cannot be simulated, or no head was handed.
+  std::string failure_;
   gpu::SimParams params_{};
 
   struct Passes {

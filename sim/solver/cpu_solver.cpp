@@ -200,7 +200,8 @@ void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, 
 
 void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   config_ = config;
-  shape_ = headModel_.update(config_).collider();
+  shape_ = headModel_.collider();
+  failure_ = headModel_.handed() ? std::string() : std::string(kNoHeadFailure);
   time_ = 0.0;
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
@@ -265,7 +266,7 @@ void CpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   config_ = config;
-  shape_ = headModel_.update(config_).collider();
+  shape_ = headModel_.collider();
   if (rebuild) rebuildRegions();
   if (regrid) resetVolume();
   if (remeasure) measureAnew();
@@ -295,6 +296,12 @@ void CpuSolver::clearStages() {
 void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   clearStages();
   const FramePlan plan = planFrame(config_.sim, regions_.planRate);
+  if (!failure_.empty()) {
+    // No head to collide with (failure()): the clock runs, the hair stays.
+    time_ += plan.substeps * plan.h;
+    head_ = to;
+    return;
+  }
   ++framesSinceMeasure_;
   // The frame's contact candidates, from where it starts (METHOD.md section 3.3).
   auto t0 = Clock::now();

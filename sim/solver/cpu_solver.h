@@ -6,6 +6,7 @@
 #pragma once
 
 #include <deque>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -48,6 +49,7 @@ class CpuSolver final : public Solver {
   std::string_view name() const override { return "cpu"; }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
+  std::string failure() const override { return failure_; }
   void setConfig(const Config& config) override;
   void stepFrame(const Pose& from, const Pose& to) override;
 
@@ -101,7 +103,8 @@ class CpuSolver final : public Solver {
 
   RegionSums sums_;
   Config config_;
-  SolverHead headModel_;  // the scene's head (handed, or built from config_)
+  SolverHead headModel_;  // the scene's head, handed before the reset
+  std::string failure_;   // set by reset when no head was handed
   SceneHead shape_;       // what it collides with, read every step
   double time_ = 0.0;
   Pose head_;  // the head pose at the end of the last step

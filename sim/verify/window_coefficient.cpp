@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "sim/solver/cpu_solver.h"
+#include "sim/verify/solver_head.h"
 
 namespace csm {
 
@@ -33,7 +34,7 @@ double measureWindowCoefficient(int w) {
     const double kappa = kwl / (w * l);
     const double amplitude = 1e-6 / kappa;
     CpuSolver solver;
-    solver.reset(straight, c, Pose{});
+    resetWithHead(solver, straight, c, Pose{});
     // The wave is set in double, as the solver holds it (writeState would round it to float and
     // move the measure off the table's digits): this function is the solver's friend for that.
     std::vector<glm::dvec3>& x = solver.x_;

@@ -16,6 +16,7 @@
 #include "sim/head/head_model.h"
 #include "sim/solver/stiffness.h"
 #include "tests/import_cases.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 namespace fs = std::filesystem;
@@ -75,8 +76,8 @@ TEST_CASE(
   CHECK(planFrame(c.sim, regions.maxRate).wanted > 2 * planFrame(c.sim, regions.planRate).wanted);
 
   CpuSolver a, b;
-  a.reset(clean, c, pose);
-  b.reset(flawed, c, pose);
+  resetWithHead(a, clean, c, pose);
+  resetWithHead(b, flawed, c, pose);
   CHECK(b.stiffness().plan.substeps == a.stiffness().plan.substeps);
   CHECK(b.stiffness().stifferStrands == 1);
   CHECK(a.stiffness().stifferStrands == 0);

@@ -22,6 +22,7 @@
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
 #include "tests/gpu/gpu_solver_fixture.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 using test::strandOf;
@@ -128,7 +129,7 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
       Config c;
       c.collision.mode = CollisionMode::Strands;
       c.collision.radius = float(r);
-      gpu->reset(g, c, Pose{});
+      resetWithHead(*gpu, g, c, Pose{});
       GpuProbe(*gpu).detectContacts();
       const Compared cmp = compare(*gpu, g, r);
       INFO("step " << step << " r " << r << ": brute force " << cmp.brute << ", GPU " << cmp.gpu
@@ -193,7 +194,7 @@ TEST_CASE("GPU lists: each run of segments is taken longest list first", "[gpu][
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = 0.002f;
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   GpuProbe(*gpu).detectContacts();
   const auto lists = GpuProbe(*gpu).readCandidates();
   const std::vector<uint32_t> order = GpuProbe(*gpu).readSegmentOrder();
@@ -236,7 +237,7 @@ TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu
   c.wind.strength = 3.0f;
   c.collision.mode = CollisionMode::Strands;
   const Groom g = growHairstyle(c, *HeadModel::require(c));
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   for (int f = 0; f < 10; ++f) gpu->stepFrame(Pose{}, Pose{});
   GpuProbe(*gpu).detectContacts();
   const Compared cmp = compare(*gpu, g, c.collision.radius);
@@ -269,7 +270,7 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
     Config m = c;
     m.collision.mode = mode;
     auto gpu = test::gpuSolver();
-    gpu->reset(g, m, headPose(m.head, 0.0));
+    resetWithHead(*gpu, g, m, headPose(m.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 90; ++f, t += m.sim.dt)
       gpu->stepFrame(headPose(m.head, t), headPose(m.head, t + m.sim.dt));
@@ -319,7 +320,7 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = float(r);
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   GpuProbe(*gpu).detectContacts();
   const GpuProbe::GridStats grid = GpuProbe(*gpu).gridStats();
   INFO("entries " << grid.entries << " capacity " << grid.capacity << " oversize " << grid.oversize
@@ -374,7 +375,7 @@ TEST_CASE(
   const Groom g = packedBundle(0);
   const Config c = contactConfig(true);
   GpuProbe(*gpu).limitGridStorage(128 * 1024);
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   GpuProbe(*gpu).limitGridStorage(UINT64_MAX);
   const uint32_t capacity = GpuProbe(*gpu).gridStats().pairCapacity;
   CHECK(capacity == 128 * 1024 / 16);
@@ -403,7 +404,7 @@ TEST_CASE(
   // The count of frames over capacity runs on (still the one), until a reset.
   CHECK(GpuProbe(*gpu).readContactStats().overflows == 1);
   CHECK(GpuProbe(*gpu).gridStats().pairCapacity == fits.pairCapacity);
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   CHECK(GpuProbe(*gpu).readContactStats().overflows == 0);
 }
 
@@ -430,14 +431,14 @@ TEST_CASE("GPU grid: cells of three quarters of a segment in sparse hair and hal
   // rest segment, else half). Segments 1 cm long, reach 1.5 mm here (3 mm cells at least).
   auto gpu = test::gpuSolver();
   const Config c = contactConfig(false);
-  gpu->reset(hangingRows(60), c, Pose{});  // two rows of strands 1.6 mm apart: few pairs
+  resetWithHead(*gpu, hangingRows(60), c, Pose{});  // two rows of strands 1.6 mm apart: few pairs
   gpu->stepFrame(Pose{}, Pose{});
   GpuProbe::GridStats grid = GpuProbe(*gpu).gridStats();
   INFO("sparse: " << grid.pairs << " pairs of 900 segments, cell " << grid.cell);
   CHECK(grid.pairs < 20 * 900);
   CHECK(grid.cell == Approx(0.0075));
   // 15 x 15 strands 0.3 mm apart, 5 segments each: ~100 pairs a segment.
-  gpu->reset(strandBlock(0.0003f, 0.01f), c, Pose{});
+  resetWithHead(*gpu, strandBlock(0.0003f, 0.01f), c, Pose{});
   gpu->stepFrame(Pose{}, Pose{});
   grid = GpuProbe(*gpu).gridStats();
   INFO("dense: " << grid.pairs << " pairs of 1125 segments, cell " << grid.cell);
@@ -459,7 +460,7 @@ TEST_CASE("GPU grid: a search over the pair list's capacity keeps the list befor
   c.collision.margin = 0.006f;
   const uint32_t cap = 13500;
   GpuProbe(*gpu).limitGridStorage(uint64_t(cap) * 16);
-  gpu->reset(hangingRows(60), c, Pose{});
+  resetWithHead(*gpu, hangingRows(60), c, Pose{});
   REQUIRE(GpuProbe(*gpu).gridStats().pairCapacity == cap);
   std::vector<std::vector<std::pair<uint32_t, float>>> before;
   int fitted = 0;
@@ -515,7 +516,7 @@ TEST_CASE("GPU lists: a segment lists all of 1500 candidates and none of 2500",
     INFO(crossing << " crossing segments");
     const Groom g = crowd(crossing);
     auto gpu = test::gpuSolver();
-    gpu->reset(g, c, Pose{});
+    resetWithHead(*gpu, g, c, Pose{});
     GpuProbe(*gpu).detectContacts();
     const auto lists = GpuProbe(*gpu).readCandidates();
     const ContactStats stats = GpuProbe(*gpu).readContactStats();
@@ -555,7 +556,7 @@ TEST_CASE("GPU grid: its buffers stay within the cap on what the device's views 
   const uint64_t cap = 128 * 1024;
   auto gpu = test::gpuSolver();
   GpuProbe(*gpu).limitGridStorage(cap);
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   for (int f = 0; f < 3; ++f) gpu->stepFrame(Pose{}, Pose{});
   const GpuProbe::GridStats grid = GpuProbe(*gpu).gridStats();
   INFO("pairs " << grid.pairs << " capacity " << grid.pairCapacity << " entries " << grid.entries
@@ -568,7 +569,7 @@ TEST_CASE("GPU grid: its buffers stay within the cap on what the device's views 
   CHECK(std::all_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); }));
   // Uncapped, the reset sizes the lists for the bundle: every frame fits.
   auto free = test::gpuSolver();
-  free->reset(g, c, Pose{});
+  resetWithHead(*free, g, c, Pose{});
   for (int f = 0; f < 3; ++f) free->stepFrame(Pose{}, Pose{});
   CHECK(GpuProbe(*free).readContactStats().overflows == 0);
   CHECK(GpuProbe(*free).gridStats().pairCapacity > cap / 16);
@@ -583,9 +584,9 @@ TEST_CASE("GPU grid: a reset or a switch to a strand mode sizes the lists for th
   const Groom g = packedBundle(0);
   Config c = contactConfig(true);
   auto reset = test::gpuSolver(), switched = test::gpuSolver();
-  reset->reset(g, c, Pose{});
+  resetWithHead(*reset, g, c, Pose{});
   c.collision.mode = CollisionMode::Head;
-  switched->reset(g, c, Pose{});
+  resetWithHead(*switched, g, c, Pose{});
   const uint32_t reserved = GpuProbe(*switched).gridStats().pairCapacity;
   c.collision.mode = CollisionMode::Strands;
   switched->setConfig(c);
@@ -612,10 +613,10 @@ TEST_CASE("GPU grid: a restored state sizes the lists for the hair it restores",
   const Groom spread = strandBlock(0.05f, 0.004f);
   const Config c = contactConfig(true);
   auto source = test::gpuSolver(), restored = test::gpuSolver();
-  source->reset(packed, c, Pose{});
+  resetWithHead(*source, packed, c, Pose{});
   SolverState state;
   source->saveState(state);
-  restored->reset(spread, c, Pose{});
+  resetWithHead(*restored, spread, c, Pose{});
   const uint32_t reserved = GpuProbe(*restored).gridStats().pairCapacity;
   std::string error;
   REQUIRE(restored->restoreState(state, &error));
@@ -643,7 +644,7 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
   auto eager = test::gpuSolver(), never = test::gpuSolver();
   for (GpuSolver* s : {eager.get(), never.get()}) {
     GpuProbe(*s).limitGridStorage(128 * 1024);
-    s->reset(g, c, Pose{});
+    resetWithHead(*s, g, c, Pose{});
     GpuProbe(*s).limitGridStorage(UINT64_MAX);
   }
   const uint32_t capacity = GpuProbe(*eager).gridStats().pairCapacity;
@@ -665,7 +666,7 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
   // The contacts change this motion, so a frame without them would show.
   auto headOnly = test::gpuSolver();
   c.collision.mode = CollisionMode::Head;
-  headOnly->reset(g, c, Pose{});
+  resetWithHead(*headOnly, g, c, Pose{});
   for (int f = 0; f < 4; ++f) headOnly->stepFrame(Pose{}, Pose{});
   std::vector<glm::vec4> h;
   headOnly->readPositions(h);
@@ -680,7 +681,7 @@ TEST_CASE("GPU grid: positions that are not finite stay out of the grid", "[gpu]
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = 0.002f;
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   GpuProbe(*gpu).detectContacts();
   CHECK(GpuProbe(*gpu).gridStats().oversize == 2);  // both segments of the broken strand
   CHECK(GpuProbe(*gpu).readContactStats().contacts > 0);

@@ -19,6 +19,7 @@
 #include "sim/solver/cpu_solver.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gpu_solver_fixture.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -27,7 +28,7 @@ namespace {
 std::vector<glm::vec4> run(GpuKernels kernels, const Config& c, const Groom& g, int frames) {
   auto gpu = test::gpuSolver();
   REQUIRE(GpuProbe(*gpu).setKernels(kernels));
-  gpu->reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
   double t = 0.0;
   for (int f = 0; f < frames; ++f, t += c.sim.dt)
     gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));

@@ -23,6 +23,7 @@
 #include "tests/strand_contact_scenes.h"
 #include "sim/solver/accuracy.h"
 #include "sim/head/head_model.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -65,8 +66,8 @@ Difference difference(const std::vector<glm::vec4>& gpu, const std::vector<glm::
 bool endsApart(const Config& a, const Config& b, int frames) {
   auto first = test::gpuSolver(), second = test::gpuSolver();
   const Groom g = grow(a);
-  first->reset(g, a, Pose{});
-  second->reset(g, b, Pose{});
+  resetWithHead(*first, g, a, Pose{});
+  resetWithHead(*second, g, b, Pose{});
   double t = 0.0;
   for (int f = 0; f < frames; ++f, t += a.sim.dt) {
     first->stepFrame(headPose(a.head, t), headPose(a.head, t + a.sim.dt));
@@ -82,8 +83,8 @@ Difference runBoth(const Config& c, int frames, double limit) {
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
   CpuSolver cpu;
-  cpu.reset(g, c, headPose(c.head, 0.0));
-  gpu->reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(cpu, g, c, headPose(c.head, 0.0));
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
   REQUIRE(gpu->particleCount() == cpu.particleCount());
   double t = 0.0;
   for (int f = 0; f < frames; ++f, t += c.sim.dt) {
@@ -244,12 +245,12 @@ TEST_CASE("GPU lists: sides and lists past one view's texels are read and writte
   c.wind.strength = 3.0f;
   const Groom g = grow(c);
   auto whole = test::gpuSolver(), split = test::gpuSolver();
-  whole->reset(g, c, Pose{});
+  resetWithHead(*whole, g, c, Pose{});
   whole->stepFrame(Pose{}, Pose{});
   const uint64_t texels = GpuProbe(*whole).gridStats().pairs * 6 / 5;
-  whole->reset(g, c, Pose{});
+  resetWithHead(*whole, g, c, Pose{});
   GpuProbe(*split).limitGridListSplit(texels);
-  split->reset(g, c, Pose{});
+  resetWithHead(*split, g, c, Pose{});
   INFO("split " << GpuProbe(*split).gridListSplit() << " texels");
   REQUIRE(GpuProbe(*split).gridListSplit() <= texels);
   REQUIRE(GpuProbe(*split).gridListSplit() + 64 > texels);
@@ -306,8 +307,8 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
     c.collision.solve = solve;
     auto gpu = test::gpuSolver();
     CpuSolver cpu;
-    cpu.reset(g, c, Pose{});
-    gpu->reset(g, c, Pose{});
+    resetWithHead(cpu, g, c, Pose{});
+    resetWithHead(*gpu, g, c, Pose{});
     double later[4] = {0.0, 0.0, 0.0, 0.0};  // CPU, GPU candidates; CPU, GPU closer than r
     for (int f = 0; f < 25; ++f) {
       cpu.stepFrame(Pose{}, Pose{});
@@ -367,9 +368,9 @@ TEST_CASE("GPU and CPU solvers agree with the penalty model; GPU runs are bit-id
   const Groom g = grow(c);
   auto gpu = test::gpuSolver(), again = test::gpuSolver();
   CpuSolver cpu;
-  cpu.reset(g, c, Pose{});
-  gpu->reset(g, c, Pose{});
-  again->reset(g, c, Pose{});
+  resetWithHead(cpu, g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
+  resetWithHead(*again, g, c, Pose{});
   double later[2] = {0.0, 0.0};
   uint64_t penetrations = 0;
   for (int f = 0; f < 25; ++f) {
@@ -408,7 +409,7 @@ TEST_CASE("GPU: the penalty model slows a strand dropped across another", "[gpu]
     c.collision.mode = mode;
     c.collision.model = model;
     auto gpu = test::gpuSolver();
-    gpu->reset(test::drapeGroom(), c, Pose{});
+    resetWithHead(*gpu, test::drapeGroom(), c, Pose{});
     for (int f = 0; f < 30; ++f) gpu->stepFrame(Pose{}, Pose{});
     std::vector<glm::vec4> x;
     gpu->readPositions(x);
@@ -428,7 +429,7 @@ TEST_CASE("GPU: a strand dropped across another stays on top for 2 s", "[gpu][co
     Config c = test::drapeConfig();
     c.collision.mode = mode;
     auto gpu = test::gpuSolver();
-    gpu->reset(test::drapeGroom(), c, Pose{});
+    resetWithHead(*gpu, test::drapeGroom(), c, Pose{});
     for (int f = 0; f < 120; ++f) gpu->stepFrame(Pose{}, Pose{});
     std::vector<glm::vec4> x;
     gpu->readPositions(x);
@@ -451,7 +452,7 @@ TEST_CASE("GPU: lists within the frame catch a strand that closes in faster than
   // a frame lets the strand 0.02 mm from the bar, four hold it at 2r.
   auto closest = [](int lists) {
     auto gpu = test::gpuSolver();
-    gpu->reset(test::thrownGroom(), test::thrownConfig(lists), Pose{});
+    resetWithHead(*gpu, test::thrownGroom(), test::thrownConfig(lists), Pose{});
     std::vector<glm::vec4> x;
     gpu->readPositions(x);
     gpu->writeState(x, test::throwDown(x));
@@ -483,7 +484,7 @@ TEST_CASE("GPU: strand contacts add no motion to a rest groom with gravity off",
     Config m = c;
     m.collision.mode = mode;
     auto gpu = test::gpuSolver();
-    gpu->reset(g, m, Pose{});
+    resetWithHead(*gpu, g, m, Pose{});
     std::vector<glm::vec4> rest, x;
     gpu->readPositions(rest);
     for (int f = 0; f < 60; ++f) gpu->stepFrame(Pose{}, Pose{});
@@ -516,7 +517,7 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
   const Groom g = grow(c);
   auto run = [&] {
     auto gpu = test::gpuSolver();
-    gpu->reset(g, c, headPose(c.head, 0.0));
+    resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 30; ++f, t += c.sim.dt)
       gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
@@ -550,14 +551,14 @@ TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is c
   c.collision.volumeFraction = 0.02f;  // pushes where hair gathers
   const Groom g = growHairstyle(c, *HeadModel::require(c));
   auto headOnly = test::gpuSolver(), switched = test::gpuSolver();
-  headOnly->reset(g, c, Pose{});
-  switched->reset(g, c, Pose{});
+  resetWithHead(*headOnly, g, c, Pose{});
+  resetWithHead(*switched, g, c, Pose{});
   CHECK(GpuProbe(*switched).volumeNodes() == 0);
   Config volume = c;
   volume.collision.mode = CollisionMode::Volume;
   switched->setConfig(volume);
   CpuSolver cpu;
-  cpu.reset(g, volume, Pose{});
+  resetWithHead(cpu, g, volume, Pose{});
   CHECK(GpuProbe(*switched).volumeNodes() == cpu.volumeNodes());
   CHECK(GpuProbe(*switched).volumeNodes() > 1000);
   for (int f = 0; f < 10; ++f) {
@@ -592,7 +593,7 @@ TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][sol
   REQUIRE(c.collision.mode == CollisionMode::Strands);
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
-  gpu->reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
   const int frames = 1000 / c.sim.substeps;
   double t = 0.0;
   for (int f = 0; f < frames; ++f, t += c.sim.dt)
@@ -617,7 +618,7 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
   Config c = smallScene(50);
   c.collision.mode = CollisionMode::Strands;
   const Groom g = grow(c);
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   CHECK(gpu->strandCount() == g.strandCount());
   CHECK(gpu->particleCount() == g.pointCount());
   CHECK(gpu->positionBuffer() != 0);
@@ -674,7 +675,7 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
 
   // reset rebuilds for a groom of another size, and the clock starts again.
   const Groom bigger = grow(smallScene(120));
-  gpu->reset(bigger, c, Pose{});
+  resetWithHead(*gpu, bigger, c, Pose{});
   CHECK(gpu->time() == 0.0);
   CHECK(gpu->particleCount() == bigger.pointCount());
   gpu->readPositions(x);
@@ -748,7 +749,7 @@ TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measure
   c.head.frequency = 1.5f;
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
-  gpu->reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
   double t = 0.0;
   for (int f = 0; f < 20; ++f, t += c.sim.dt) {
     gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
@@ -798,8 +799,8 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
   auto plain = test::gpuSolver();
-  gpu->reset(g, c, Pose{});
-  plain->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
+  resetWithHead(*plain, g, c, Pose{});
   gpu->stepFrame(Pose{}, Pose{});
   gpu->requestSample(1);
   const std::optional<FrameSample> off = gpu->takeSample(true);
@@ -864,7 +865,7 @@ TEST_CASE("GPU solver: carry turns and moves the hair on the GPU, reading nothin
   auto gpu = test::gpuSolver();
   Config c = smallScene(40);
   const Groom g = grow(c);
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   for (int f = 0; f < 3; ++f) gpu->stepFrame(Pose{}, Pose{});
   std::vector<glm::vec4> x0, v0, x1, v1;
   gpu->readPositions(x0);

@@ -15,6 +15,7 @@
 #include "sim/run/simulation.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gpu_solver_fixture.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -232,7 +233,7 @@ TEST_CASE("Solvers: the first frame after a restore counts no crossings against 
     return name == "gpu" ? GpuProbe(static_cast<GpuSolver&>(*solver)).readContactStats()
                          : static_cast<CpuSolver&>(*solver).contactStats();
   };
-  solver->reset(g, c, Pose{});
+  resetWithHead(*solver, g, c, Pose{});
   for (int f = 0; f < 10; ++f) solver->stepFrame(Pose{}, Pose{});
   SolverState saved;
   solver->saveState(saved);

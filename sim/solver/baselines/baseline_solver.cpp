@@ -39,7 +39,8 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
     if (i + 2 < n && strandOf_[i] == strandOf_[i + 2])
       bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
   }
-  headSpheres_ = headModel_.update(config).spheres();
+  headSpheres_ = headModel_.collider().spheres;
+  failure_ = headModel_.handed() ? std::string() : std::string(kNoHeadFailure);
   spheres_ = worldSpheres(headSpheres_, head);
   samples_.clear();
   onReset();
@@ -49,6 +50,11 @@ void BaselineSolver::stepFrame(const Pose& from, const Pose& to) {
   const auto t0 = std::chrono::steady_clock::now();
   const int substeps = std::max(1, config_.sim.substeps);
   const double h = double(config_.sim.dt) / substeps;
+  if (!failure_.empty()) {
+    // No head to collide with (failure()): the clock runs, the hair stays.
+    time_ += substeps * h;
+    return;
+  }
   for (int k = 0; k < substeps; ++k) {
     step(h, interpolate(from, to, double(k + 1) / substeps));
     time_ += h;
