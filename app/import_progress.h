@@ -1,6 +1,6 @@
 // Where a long groom import stands, said on stderr: once it has taken a second, each new stage
-// and twice a second at most within one (sim/groom/hairstyle.h's ImportProgress). The headless run
-// and the window's simulation thread both say it; the window also draws it (panels.cpp).
+// and twice a second at most within one (sim/groom/scene_groom.h's ImportProgress). The headless
+// run and the window's simulation thread both say it; the window also draws it (panels.cpp).
 #pragma once
 
 #include <chrono>

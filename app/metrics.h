@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/core/config.h"
-#include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/core/results.h"
 
 namespace csm {

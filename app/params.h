@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/preset.h"
+#include "app/preset_value.h"
 #include "sim/param/param_table.h"
 
 namespace csm {

@@ -1,6 +1,6 @@
-// Presets: a JSON file holding a whole scene: what it is called, the simulated scene
-// (sim/core/config.h) and how it is viewed (render/view_config.h). Every key is a parameter of the
-// one list (app/params.h).
+// Presets: a JSON file holding a whole scene (app/preset_value.h): what it is called, the
+// simulated scene (sim/core/config.h) and how it is viewed (render/view_config.h). Every key is a
+// parameter of the one list (app/params.h), which reading and writing walk.
 #pragma once
 
 #include <string>
@@ -9,17 +9,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "render/view_config.h"
-#include "sim/core/config.h"
+#include "app/preset_value.h"
 
 namespace csm {
-
-struct Preset {
-  std::string name = "default";
-  std::string description;
-  Config scene;     // what the simulation runs
-  ViewConfig view;  // the look, the camera, the light
-};
 
 struct PresetErrors {
   std::vector<std::string> messages;  // each names the file and the JSON path or byte offset

@@ -17,7 +17,7 @@
 #include "sim/core/groom.h"
 #include "sim/core/pose.h"
 #include "sim/core/results.h"
-#include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/run/timeline.h"
 
 namespace csm {

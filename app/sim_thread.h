@@ -136,7 +136,7 @@ class SimThread {
   std::vector<SimEvent> takeEvents();
   // Every frame's time and sample so far (with Options::recordMetrics).
   MetricsLog metrics() const;
-  // Where a groom import on the thread stands (sim/groom/hairstyle.h's ImportProgress); an empty
+  // Where a groom import on the thread stands (sim/groom/scene_groom.h's ImportProgress); an empty
   // stage when none is running.
   struct ImportStatus {
     std::string stage;

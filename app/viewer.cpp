@@ -300,7 +300,8 @@ void Viewer::showPresetErrors(const std::string& text, const std::string& note) 
 }
 
 bool Viewer::applyConfig(const Preset& next) {
-  std::vector<std::string> problems = crossCheck(next.scene);
+  // The running scene's head: a mesh it already holds is not read again on this thread.
+  std::vector<std::string> problems = crossCheck(next.scene, frame_->head.get());
   const std::string capacity = checkCapacity(next.scene);
   if (!capacity.empty()) problems.push_back(capacity);
   if (!problems.empty()) {

@@ -13,9 +13,11 @@
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
 #include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/core/pose.h"
 #include "sim/core/solver.h"
 #include "sim/head/head_model.h"
+#include "sim/verify/solver_head.h"
 
 namespace csm::test {
 
@@ -82,7 +84,7 @@ inline void checkImportedRun(Solver& solver, double floatSlack) {
   const Groom g = importFor(c, importedGroom(c, true), &report);
   CHECK(report.repair.droppedStrands >= 2);
   CHECK(report.repair.mergedPoints >= 6 * 150);
-  solver.reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(solver, g, c, headPose(c.head, 0.0));
   double t = 0.0;
   FrameSample last;
   for (int f = 0; f < 30; ++f, t += c.sim.dt) {

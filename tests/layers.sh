@@ -5,7 +5,8 @@
 # below it or itself), on sim/verify in the app or the renderer, on sim/run in the renderer, on
 # sim/gpu in the app (it has the solver factory), on GL outside sim/gpu, on the CPU library of
 # sim/run reaching the GPU solver, on the panels including the viewer, on a GL_ constant in the
-# app or the renderer, and on a CPU test binary that links a GL, window or GUI library.
+# app or the renderer, on two modules (a header and its source) that include each other, and on
+# a CPU test binary that links a GL, window or GUI library.
 #   tests/layers.sh SOURCE_DIR CPU_TEST_BINARY
 set -u
 src=$1
@@ -59,6 +60,33 @@ if [ -n "$hits" ]; then echo "FAIL: the panels include the viewer:"; echo "$hits
 # usage, primitives, ... with gl/'s typed enums (gl/enums.h).
 check app '\bGL_[A-Z0-9_]+' "app/ names no GL_ constant (gl/enums.h has typed ones)"
 check render '\bGL_[A-Z0-9_]+' "render/ names no GL_ constant (gl/enums.h has typed ones)"
+# No two modules (a header and its source, app/viewer.{h,cpp}) include each other: a pair that
+# does is one piece split in two, or a dependency that should point one way.
+if ! python3 - "$src" <<'PY'
+import os, re, sys
+src = sys.argv[1]
+include = re.compile(r'^\s*#include\s+"([^"]+)"', re.M)
+uses = {}
+for top in ("gl", "sim", "render", "app", "tools"):
+    for root, _, files in os.walk(os.path.join(src, top)):
+        for f in files:
+            if f.endswith((".h", ".cpp")):
+                rel = os.path.relpath(os.path.join(root, f), src)
+                module = os.path.splitext(rel)[0]
+                text = open(os.path.join(src, rel), errors="replace").read()
+                uses.setdefault(module, set()).update(
+                    m for m in (os.path.splitext(h)[0] for h in include.findall(text)) if m != module)
+pairs = sorted({tuple(sorted((a, b))) for a, used in uses.items() for b in used
+                if b in uses and a in uses[b]})
+for a, b in pairs:
+    print(f"FAIL: {a} and {b} include each other")
+if not pairs:
+    print(f"ok: no two modules include each other ({len(uses)} modules)")
+sys.exit(1 if pairs else 0)
+PY
+then
+  fail=1
+fi
 libs=$(ldd "$cpu_tests" | grep -iE 'libepoxy|libEGL|libGL|libOpenGL|libglfw|libimgui|libX11')
 if [ -n "$libs" ]; then
   echo "FAIL: the CPU tests link GL, window or GUI libraries:"; echo "$libs"; fail=1

@@ -20,6 +20,7 @@
 #include "app/preset.h"
 #include "sim/core/solver.h"
 #include "sim/head/head_model.h"
+#include "sim/verify/solver_head.h"
 
 namespace csm::test {
 
@@ -192,7 +193,7 @@ inline double momentumDrift(const SolverMaker& make, int steps) {
     mass[i + 1] += half;
   }
   std::unique_ptr<Solver> solver = make();
-  solver->reset(g, c, Pose{});
+  resetWithHead(*solver, g, c, Pose{});
   std::vector<glm::vec4> x(st.position), v(st.position.size());
   for (size_t i = 0; i < x.size(); ++i) {
     const float t = float(i);

@@ -85,7 +85,7 @@ class ContactSearch {
   void swapLists() { half_ ^= 1u; }
   // Grows the entry buffer or the pair list when `counters` (read back) say they did not fit;
   // true if either grew. beginFrame calls it with the last search's counters; a tool that reads
-  // them at once may too (GpuSolver::detectContacts).
+  // them at once may too (GpuProbe::detectContacts).
   bool countersSeen(const uint32_t* counters);
 
   const gl::Buffer& counters() const { return counters_; }

@@ -84,17 +84,6 @@ std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
   return solver;
 }
 
-bool GpuSolver::setKernels(GpuKernels kernels, std::string* error) {
-  kernels_ = kernels;
-  std::string why;
-  if (!build(std::max(32, hair_.longestStrand), &why)) {
-    if (error) *error = why;
-    failure_ = why;
-    return false;
-  }
-  return true;
-}
-
 GpuSolver::~GpuSolver() = default;
 
 bool GpuSolver::build(int maxStrandSize, std::string* error) {
@@ -109,11 +98,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
   if (!builtCommon_) {
     if (!passes_.measure.build("sim/measure.comp", CSM_MEASURE_GROUP, withReads({}), error) ||
         !passes_.carry.build("sim/carry.comp", CSM_PARTICLE_GROUP, {}, error) ||
-        !passes_.volumeSplat.build("sim/volume_splat.comp", CSM_PARTICLE_GROUP, withReads({}),
-                                   error) ||
-        !passes_.volumeDispatch.build("sim/volume_dispatch.comp", 1, withReads({}), error) ||
-        !passes_.volumeField.build("sim/volume_field.comp", CSM_PARTICLE_GROUP, withReads({}),
-                                   error) ||
+        !volume_.build(withReads({}), error) ||
         !contactSearch_.build(error, contactSolve_, withReads({})))
       return false;
     builtCommon_ = true;
@@ -159,7 +144,7 @@ bool GpuSolver::build(int maxStrandSize, std::string* error) {
 
 void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   config_ = config;
-  shape_ = headModel_.update(config_).collider();
+  shape_ = headModel_.collider();
   time_ = 0.0;
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
@@ -171,6 +156,8 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   if (!build(hair_.longestStrand, &failure_)) {
     if (failure_.empty()) failure_ = "the GPU solver's shaders did not build";
     gl::logMessage(gl::LogLevel::Error, failure_);
+  } else if (!headModel_.handed()) {
+    failure_ = kNoHeadFailure;
   }
   // Rest lengths set the cell edge (METHOD.md section 3.6): strain limiting keeps the current
   // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
@@ -180,7 +167,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
                             2.0f * config.collision.radius + config.collision.margin,
                             glm::vec3(head.translation));
   uploadRegions();
-  resetVolume();
+  volume_.reset(state_, config_.collision);
   uploadHeadField();
   if (paramsBuffer_.id() == 0) paramsBuffer_ = gl::Buffer();
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
@@ -205,14 +192,14 @@ void GpuSolver::setConfig(const Config& config) {
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   const bool listed = listsCandidates();
   config_ = config;
-  shape_ = headModel_.update(config_).collider();
+  shape_ = headModel_.collider();
   if (config_.collision.model == ContactModel::Penalty && failure_.empty() &&
       !contactSolve_.buildPenalty(&failure_)) {
     if (failure_.empty()) failure_ = "the GPU solver's penalty contact shaders did not build";
     gl::logMessage(gl::LogLevel::Error, failure_);
   }
   if (rebuild && hair_.particles > 0) uploadRegions();
-  if (regrid) resetVolume();
+  if (regrid) volume_.reset(state_, config_.collision);
   if (shape_.field != uploadedField_) uploadHeadField();
   const bool sized = !listed && listsCandidates();
   if (sized) sizeLists();
@@ -262,52 +249,17 @@ void GpuSolver::uploadHeadField() {
   uploadedHead_ = headModel_.shared();  // keeps the field uploaded alive, so its address names it
 }
 
-void GpuSolver::resetVolume() {
-  // The grid's geometry, each particle's length and the rest fraction come from the CPU
-  // reference (set up once per groom); the GPU splats each frame.
-  // A mode without the volume keeps no grid: its buffers shrink to one element.
-  if (volumeForces(config_.collision.mode)) {
-    std::vector<glm::dvec3> rest(state_.rest.size());
-    for (size_t i = 0; i < rest.size(); ++i) rest[i] = glm::dvec3(glm::vec3(state_.rest[i]));
-    volume_.reset(rest, state_.strandFirst, config_.collision.volumeCell, config_.collision.radius);
-  } else {
-    volume_.release();
-  }
-  std::vector<float> length(volume_.particleLength().begin(), volume_.particleLength().end());
-  gpu::fill(volumeLength_, length);
-  gpu::fill(volumeRest_, volume_.restFraction());
-  // The nodes' sums, then the box of the nodes the splat reached (volumeBox in common.glsl).
-  gpu::zeroed<glm::ivec4>(volumeSums_, volume_.empty() ? 0 : volume_.nodes() + 2);
-  gpu::zeroed<glm::vec4>(volumeField_, 2 * volume_.nodes());
-  gpu::view(volumeSumsTex_, volumeSums_, GL_RGBA32I);
-  gpu::view(volumeRestTex_, volumeRest_, GL_R32F);
-  gpu::view(volumeFieldTex_, volumeField_, GL_RGBA32F);
-}
-
-size_t GpuSolver::volumeNodesVisited() const {
-  const std::vector<glm::uvec4> d = contactSearch_.dispatch().download<glm::uvec4>(CSM_DISPATCHES);
-  return size_t(d[CSM_DISPATCH_VOLUME_FIELD].x) * d[CSM_DISPATCH_VOLUME_FIELD].y *
-         CSM_PARTICLE_GROUP;
-}
-
-GpuSolver::GridStats GpuSolver::gridStats() {
-  const std::vector<uint32_t> c = gpu::readCounters(contactSearch_);
-  GridStats g;
-  g.entries = c[CSM_COUNTER_ENTRIES];
-  g.capacity = contactSearch_.entryCapacity();
-  g.oversize = c[CSM_COUNTER_OVERSIZE];
-  g.buckets = contactSearch_.bucketCount();
-  g.pairs = c[CSM_COUNTER_PAIR_LIST];
-  g.pairCapacity = contactSearch_.pairListCapacity();
-  g.cell = params_.cellEdge;
-  return g;
-}
-
 void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before) {
+  writeStepParams(params_);
+  writeHeadParams(params_);
+  writeContactParams(params_, poses.back());
+  volume_.writeParams(params_, config_.collision, head_);
+  uploadParams(poses, before);
+}
+
+void GpuSolver::writeStepParams(gpu::SimParams& p) const {
   const SimConfig& sim = config_.sim;
-  const CollisionConfig& col = config_.collision;
   const WindConfig& wind = config_.wind;
-  gpu::SimParams& p = params_;
   p.gravity = sim.gravity;
   const glm::dvec3 dir = glm::normalize(glm::dvec3(wind.direction));
   p.windDirection = glm::vec3(dir);
@@ -318,47 +270,25 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
   p.turbulenceScale = wind.turbulenceScale;
   p.alpha = sim.stiffness;
   p.strainLimit = sim.strainLimit;
-  p.radius = col.radius;
-  p.headFriction = col.headFriction;
-  const float reach = 2.0f * col.radius + col.margin;
-  p.candidateDistance = reach;
-  p.compliance = col.compliance;
-  p.friction = col.friction;
-  p.sweepSolve = col.solve == ContactSolve::Sweep ? 1.0f : 0.0f;
   p.dftl = sim.dftl;
   p.windDrag = wind.drag;
   static_assert(int(StiffnessModel::Paper) == CSM_STIFFNESS_PAPER &&
                 int(StiffnessModel::Calibrated) == CSM_STIFFNESS_CALIBRATED);
   p.stiffnessModel = int(sim.stiffnessModel);
   p.rotationIterations = sim.rotationIterations;
-  p.headSpheres = int(shape_.spheres.size());
   p.strainLimiting = sim.strainLimiting;
-  p.headCollision = collidesWithHead(col.mode);
   p.windOn = wind.strength > 0.0f && wind.drag > 0.0f;
-  // The strain limit's sweep applies the constraints' corrections; penalties go to velocities.
-  p.strandContacts = strandContacts(col.mode) && col.model == ContactModel::Constraints;
-  p.penaltyStiffness = col.penaltyStiffness;
-  p.penaltyDamping = col.penaltyDamping;
   p.particles = hair_.particles;
   p.strands = hair_.strands;
   p.segments = hair_.segments;
-  contactSearch_.writeParams(p, reach);
-  // Cells count from the head, so the clamped 10-bit cell coordinates (common.glsl) cover
-  // +-512 cells around it wherever it moves.
-  p.gridOrigin = glm::vec3(poses.back().translation);
-  // The volume grid, fixed to the head where the frame starts.
-  glm::dmat4 toWorld = glm::mat4_cast(head_.rotation);
-  toWorld[3] = glm::dvec4(head_.translation, 1.0);
-  p.volumeToWorld = glm::mat4(toWorld);
-  p.volumeToHead = glm::mat4(glm::inverse(toWorld));
-  p.volumeOrigin = glm::vec3(volume_.origin());
-  p.volumeCell = float(volume_.cell());
-  p.volumeDims = glm::uvec3(volume_.dims());
-  p.volumeForces = volumeForces(col.mode) && !volume_.empty() ? 1u : 0u;
-  p.volumeFriction = col.volumeFriction;
-  p.volumeStiffness = col.volumeStiffness;
-  p.volumeAllowed = col.volumeFraction;
-  p.volumePerUnit = float(volume_.fillPerUnit());
+}
+
+void GpuSolver::writeHeadParams(gpu::SimParams& p) const {
+  const CollisionConfig& col = config_.collision;
+  p.radius = col.radius;
+  p.headFriction = col.headFriction;
+  p.headSpheres = int(shape_.spheres.size());
+  p.headCollision = collidesWithHead(col.mode);
   if (const DistanceGrid* field = uploadedField_) {
     p.headFieldOrigin = field->origin;
     p.headFieldCell = field->cell;
@@ -370,7 +300,28 @@ void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Po
     p.headFieldDims = glm::uvec3(2u);
     p.headIsField = 0u;
   }
+}
 
+void GpuSolver::writeContactParams(gpu::SimParams& p, const Pose& frameEnd) const {
+  const CollisionConfig& col = config_.collision;
+  const float reach = 2.0f * col.radius + col.margin;
+  p.candidateDistance = reach;
+  p.compliance = col.compliance;
+  p.friction = col.friction;
+  p.sweepSolve = col.solve == ContactSolve::Sweep ? 1.0f : 0.0f;
+  // The strain limit's sweep applies the constraints' corrections; penalties go to velocities.
+  p.strandContacts = strandContacts(col.mode) && col.model == ContactModel::Constraints;
+  p.penaltyStiffness = col.penaltyStiffness;
+  p.penaltyDamping = col.penaltyDamping;
+  contactSearch_.writeParams(p, reach);
+  // Cells count from the head, so the clamped 10-bit cell coordinates (common.glsl) cover
+  // +-512 cells around it wherever it moves.
+  p.gridOrigin = glm::vec3(frameEnd.translation);
+}
+
+void GpuSolver::uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before) {
+  const SimConfig& sim = config_.sim;
+  const gpu::SimParams& p = params_;
   const int substeps = int(poses.size());
   substepsWritten_ = substeps;
   const double h = double(sim.dt) / substeps;
@@ -415,15 +366,9 @@ void GpuSolver::bindAll() {
   contactSolve_.bind();
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
   if (reads_.uniformParams) paramsBuffer_.bindBase(GL_UNIFORM_BUFFER, CSM_UNIFORM_PARAMS);
-  volumeSums_.bindBase(ssbo, CSM_BIND_VOLUME_SUMS);
-  volumeLength_.bindBase(ssbo, CSM_BIND_VOLUME_LENGTH);
-  volumeField_.bindBase(ssbo, CSM_BIND_VOLUME_FIELD);
-  volumeSumsTex_.bind(CSM_TEX_VOLUME_SUMS);
-  volumeRestTex_.bind(CSM_TEX_VOLUME_REST);
-  volumeFieldTex_.bind(CSM_TEX_VOLUME_FIELD);
+  volume_.bind();
   headFieldTex_.bind(CSM_TEX_HEAD_FIELD);
   headField_.bindBase(ssbo, CSM_BIND_HEAD_FIELD);
-  volumeRest_.bindBase(ssbo, CSM_BIND_VOLUME_REST);
   spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
   measure_.bindBase(ssbo, CSM_BIND_MEASURE);
 }
@@ -461,15 +406,7 @@ void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
   // The volume mode's grid, from where the frame starts (sim/solver/volume.h).
   if (params_.volumeForces != 0u) {
     timer_.stage(gpu::kVolume);
-    volumeSums_.clearToZero();
-    gl::memoryBarrier(gpu::kPassBarrier);
-    passes_.volumeSplat.run(particles);
-    gl::memoryBarrier(gpu::kPassBarrier);
-    // Only the nodes of the box the hair reached: sized on the GPU.
-    passes_.volumeDispatch.set("groupSize", uint32_t(CSM_PARTICLE_GROUP)).run(1);
-    gl::memoryBarrier(gl::Barrier::Command);
-    passes_.volumeField.runIndirect(contactSearch_.dispatch(), CSM_DISPATCH_VOLUME_FIELD);
-    gl::memoryBarrier(gpu::kPassBarrier);
+    volume_.run(particles, contactSearch_.dispatch());
   }
   const int head = uploadedField_ ? 1 : 0;
   for (int k = 0; k < substeps && kernels_ == GpuKernels::PerParticle; ++k) {
@@ -541,23 +478,6 @@ void GpuSolver::listCandidatesNow(gpu::StageTimer* timer) {
   writeParams({head_}, {head_});
   bindAll();
   contactSearch_.findCandidates(timer);
-}
-
-void GpuSolver::detectContacts() {
-  if (hair_.particles == 0) return;
-  // Timed as a frame of its own.
-  timer_.beginFrame();
-  listCandidatesNow(&timer_);
-  // A tool asks for this pass's candidates: when the grid did not fit, grow it and run again
-  // (stepFrame instead grows it as the next frame begins).
-  if (contactSearch_.countersSeen(gpu::readCounters(contactSearch_).data())) {
-    writeParams({head_}, {head_});
-    bindAll();
-    contactSearch_.findCandidates(&timer_);
-  }
-  timer_.endFrame();
-  gl::memoryBarrier(gl::Barrier::All);
-  framesSinceMeasure_ = 0;  // the counters measure the hair as it stands
 }
 
 void GpuSolver::finish() {
@@ -701,10 +621,6 @@ void GpuSolver::carry(const Pose& by) {
       .run(uint32_t(hair_.particles));
   gl::memoryBarrier(gl::Barrier::All);
   head_ = compose(by, head_);
-}
-
-ContactStats GpuSolver::readContactStats() {
-  return gpu::contactStatsOf(gpu::readCounters(contactSearch_).data());
 }
 
 unsigned GpuSolver::lastSubstepSpheres() const {

@@ -5,7 +5,8 @@
 // The pieces: StrandBuffers (the hair's state and layout), the passes of a step (GpuKernels:
 // per strand, predict.comp, shape_match.comp and strain_limit.comp; per particle, strand_step.comp
 // and, with strand contacts, strand_strain.comp), ContactSearch (hair-hair contacts once per frame
-// when collision.mode is full, acting during the next frame), SampleRing (the measures,
+// when collision.mode is full, acting during the next frame; ContactSolve, their solve each
+// substep), VolumePasses (the volume modes' grid, once a frame), SampleRing (the measures,
 // fenced and read a few frames late) and StageTimer. The regions and the number of steps come
 // from sim/solver/stiffness.h, as for CpuSolver. 3 dispatches per step (1 per particle without
 // strand contacts) + 11 per frame.
@@ -20,13 +21,12 @@
 #include "gl/buffer.h"
 #include "sim/gpu/contact_search.h"
 #include "sim/gpu/compute_pass.h"
-#include "sim/gpu/contact_readback.h"
 #include "sim/gpu/contact_solve.h"
 #include "sim/gpu/gpu_params.h"
 #include "sim/gpu/sample_ring.h"
-#include "sim/solver/volume.h"
 #include "sim/gpu/stage_timer.h"
 #include "sim/gpu/strand_buffers.h"
+#include "sim/gpu/volume_passes.h"
 #include "sim/core/hair_state.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_model.h"
@@ -81,59 +81,16 @@ class GpuSolver final : public Solver {
   std::vector<StageTime> stageTimes() override { return timer_.times(); }
   // Those of the latest sample taken: nothing is read back for them.
   ContactStats contactStats() override { return sampledContacts_; }
-  // Nodes of the volume mode's grid: none unless collision.mode is a volume mode (tests).
-  size_t volumeNodes() const { return volume_.nodes(); }
-  // Nodes the volume's node pass ran on in the last frame: the box the splat reached (reads
-  // back its indirect dispatch; tests).
-  size_t volumeNodesVisited() const;
   void setContactMeasures(bool always) override;
   void requestSample(long frame) override;
   std::optional<FrameSample> takeSample(bool wait = false) override;
   void dropSamples() override { samples_.drop(); }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
 
-  // The passes in use: chosen at create() by the context (PerStrand on a software renderer,
-  // PerParticle on a GPU); CSM_GPU_KERNELS=strand|particle in the environment overrides, and so
-  // does setKernels (tests, benchmarks), which builds what the choice needs.
-  GpuKernels kernels() const { return kernels_; }
-  bool setKernels(GpuKernels kernels, std::string* error = nullptr);
-
-  // --- For tests and tools (these read back at once). ---
-  // The measures of the last candidate list (reading them changes nothing: the grid grows as
-  // the next frame begins).
-  ContactStats readContactStats();
-  // Builds the candidate list of the current state now (stepFrame does it at the start of
-  // each frame with strand contacts); the next frame builds its own.
-  void detectContacts();
-  // Caps the collision grid's growing buffers at `bytes` each, as a device whose buffer
-  // textures hold no more (ContactSearch::limitStorage): the next reset sizes them under it,
-  // and a frame after the cap is raised may grow them past it.
-  void limitGridStorage(uint64_t bytes) { contactSearch_.limitStorage(bytes); }
-  // Where the second view of the sides and lists starts, at most (ContactSearch::limitListSplit).
-  void limitGridListSplit(uint64_t texels) { contactSearch_.limitListSplit(texels); }
-  uint32_t gridListSplit() const { return contactSearch_.listSplit(); }
-  // The pairs (a < b) closer than 2r of the last candidate pass, in no particular order;
-  // `overflow` when the pair list did not hold them.
-  std::vector<std::pair<uint32_t, uint32_t>> readContactPairs(bool* overflow = nullptr) {
-    return gpu::readPairs(contactSearch_, overflow);
-  }
-  // Per segment (by its first particle): its candidates (other segment, contact distance).
-  std::vector<std::vector<std::pair<uint32_t, float>>> readCandidates() {
-    return gpu::readCandidates(contactSearch_);
-  }
-  // The order the list pass and the contact solve take the segments in (segment_order.comp).
-  std::vector<uint32_t> readSegmentOrder() const { return gpu::readSegmentOrder(contactSearch_); }
-  // The grid of the last candidate pass (reads back): entries it needed, entries the buffers
-  // hold (over it, the frame kept the last list), segments in no cell (not finite, or a
-  // box over the cell cap), and the cell edge in metres.
-  struct GridStats {
-    uint32_t entries = 0, capacity = 0, oversize = 0, buckets = 0;
-    uint32_t pairs = 0, pairCapacity = 0;  // candidate pairs the last pass needed, and held
-    float cell = 0.0f;
-  };
-  GridStats gridStats();
-
  private:
+  // Tests and tools read the buffers, and choose the passes, through it (sim/gpu/gpu_probe.h).
+  friend class GpuProbe;
+
   // How the step's passes read: on a GPU the parameters from a uniform block and the particles
   // through storage blocks; on a software renderer from storage and texel fetches.
   struct Reads {
@@ -145,14 +102,22 @@ class GpuSolver final : public Solver {
   std::vector<gl::Define> withReads(std::vector<gl::Define> defines) const;
   bool build(int maxStrandSize, std::string* error);
   void uploadRegions();
-  void resetVolume();
   // Whether frames or samples list candidates (a strand mode, or contact measures).
   bool listsCandidates() const;
   // The grid's buffers sized for the hair as it stands (ContactSearch::sizeForLastSearch).
   void sizeLists();
+  // The frame's parameters for steps ending at `poses` (from `before`), written into params_
+  // by what they fill, then uploaded with a Substep per step.
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
+  void writeStepParams(gpu::SimParams& p) const;  // gravity, wind, stiffness, the counts
+  void writeHeadParams(gpu::SimParams& p) const;  // the hair's radius, the head's shape
+  // Strand contacts and their grid, whose cells count from the head where the frame ends.
+  void writeContactParams(gpu::SimParams& p, const Pose& frameEnd) const;
+  // params_ and each step's Substep (the head's pose, its spheres) to the GPU.
+  void uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
   void bindAll();
-  // The candidate lists of the current state, built now (detectContacts, the measures).
+  // The candidate lists of the current state, built now (GpuProbe::detectContacts, the
+  // measures).
   void listCandidatesNow(gpu::StageTimer* timer);
   // A candidate list within the frame (collision.lists), from where the hair is now.
   void listAgain();
@@ -160,7 +125,7 @@ class GpuSolver final : public Solver {
   void uploadHeadField();               // the head's distance field, when it is one
 
   Config config_;
-  SolverHead headModel_;  // the scene's head (handed, or built from config_)
+  SolverHead headModel_;  // the scene's head, handed before the reset
   SceneHead shape_;       // what it collides with, read every step
   double time_ = 0.0;
   Pose head_;
@@ -171,11 +136,12 @@ class GpuSolver final : public Solver {
   int builtParticleMaxN_ = 0;  // the per-particle passes', 0 until built
   GpuKernels kernels_ = GpuKernels::PerStrand;
   Reads reads_;
-  std::string failure_;  // set by reset when the groom's strands cannot be simulated
+  // Set by reset when the groom's strands cannot be simulated, or no head was handed.
+  std::string failure_;
   gpu::SimParams params_{};
 
   struct Passes {
-    gpu::ComputePass predict, shapeMatch, measure, volumeSplat, volumeDispatch, volumeField, carry;
+    gpu::ComputePass predict, shapeMatch, measure, carry;
     // For the head's spheres and for its distance field (llvmpipe runs both sides of a
     // branch: each build runs only its own head's push).
     gpu::ComputePass strainLimit[2];
@@ -187,13 +153,7 @@ class GpuSolver final : public Solver {
   gpu::ContactSearch contactSearch_;  // strand contacts: the search
   gpu::ContactSolve contactSolve_;    // and the solve
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
-  // The volume mode: the grid's geometry (the CPU reference's), its sums, per-particle
-  // lengths, rest fractions and each node's field (CSM_BIND_VOLUME_FIELD), read by texel fetches.
-  VolumeGrid volume_;
-  gl::Buffer volumeSums_{gl::NoCreate}, volumeLength_{gl::NoCreate}, volumeRest_{gl::NoCreate},
-      volumeField_{gl::NoCreate};
-  gl::BufferTexture volumeSumsTex_{gl::NoCreate}, volumeRestTex_{gl::NoCreate},
-      volumeFieldTex_{gl::NoCreate};
+  gpu::VolumePasses volume_;  // the volume mode's grid and passes
   // The head's distance field (sim/head/distance_grid.h), read by texel fetches; one node when
   // unused.
   gl::Buffer headField_{gl::NoCreate};

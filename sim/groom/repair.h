@@ -3,7 +3,7 @@
 // resolve are dropped; points that repeat the one before (or nearly, closer than the scene
 // needs) are merged into it. Each reader repairs what is wrong whatever the units (the first
 // pass); the scene repairs again in metres once the groom is fitted to the head (the second),
-// sim/groom/hairstyle.h's fitFileGroom.
+// sim/groom/scene_groom.h's fitFileGroom.
 #pragma once
 
 #include <cstddef>

@@ -68,27 +68,4 @@ const SurfaceMesh* HeadModel::surface() const {
   return mesh_ ? &mesh_->mesh : &mannequinMesh();
 }
 
-void SolverHead::hand(std::shared_ptr<const HeadModel> model) {
-  model_ = std::move(model);
-  handed_ = model_ != nullptr;
-}
-
-const HeadModel& SolverHead::update(const Config& c) {
-  if (handed_) return *model_;
-  const std::string path = c.head.mesh.empty() ? std::string() : headMeshPath(c);
-  const bool same = model_ && path == meshPath_ && c.head.fitSpheres == fitSpheres_ &&
-                    c.head.spheres == spheres_ && c.collision.headShape == shape_;
-  if (!same) {
-    std::string error;
-    std::shared_ptr<const HeadModel> built = HeadModel::build(c, &error, model_.get());
-    if (!built) throw std::runtime_error(error);
-    model_ = std::move(built);
-    meshPath_ = path;
-    fitSpheres_ = c.head.fitSpheres;
-    spheres_ = c.head.spheres;
-    shape_ = c.collision.headShape;
-  }
-  return *model_;
-}
-
 }  // namespace csm

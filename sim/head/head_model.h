@@ -59,6 +59,8 @@ class HeadModel {
   const SurfaceMesh* surface() const;
   // True when the shape is the built-in mannequin (no head.mesh).
   bool mannequin() const { return !mesh_; }
+  // The head.mesh file it was read from, resolved (headMeshPath); empty for the mannequin.
+  const std::string& meshPath() const { return meshPath_; }
   // What a solver reads every step.
   SceneHead collider() const { return {field(), spheres_}; }
 
@@ -71,25 +73,23 @@ class HeadModel {
   std::vector<Sphere> spheres_;
 };
 
-// A solver's head: the one its owner handed it (Simulation, which built it when the scene
-// loaded), or else one built from the config of each reset and config change, sharing what the
-// last one had (tests and tools that run a solver on its own, on a scene checked before).
+// A solver's head: the one its owner handed it (Solver::setHead) before its reset. Simulation
+// hands the head it built when the scene loaded; tests and tools that run a solver on its own
+// hand one built from their scene (sim/verify/solver_head.h). A solver never builds one: without
+// it, the solver's reset says so in failure() (kNoHeadFailure) and it steps nothing.
 class SolverHead {
  public:
-  void hand(std::shared_ptr<const HeadModel> model);
-  // The head for `c`: the handed one, or one built for `c` when none is yet or the last was
-  // built for other head settings. Throws std::runtime_error naming the file when head.mesh
-  // cannot be read (a scene that loads through Simulation has had it read already).
-  const HeadModel& update(const Config& c);
+  void hand(std::shared_ptr<const HeadModel> model) { model_ = std::move(model); }
+  bool handed() const { return model_ != nullptr; }
+  // What the solver collides with: the handed head's; nothing when none was handed.
+  SceneHead collider() const { return model_ ? model_->collider() : SceneHead{}; }
   const std::shared_ptr<const HeadModel>& shared() const { return model_; }
 
  private:
   std::shared_ptr<const HeadModel> model_;
-  bool handed_ = false;
-  std::string meshPath_;  // what model_ was built for, when not handed
-  bool fitSpheres_ = false;
-  std::vector<Sphere> spheres_;
-  HeadShape shape_ = HeadShape::Sdf;
 };
+
+inline constexpr const char* kNoHeadFailure =
+    "no head was handed to the solver (Solver::setHead before reset)";
 
 }  // namespace csm

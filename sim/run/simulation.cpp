@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/param/sim_params.h"
 #include "sim/run/scene_checks.h"
 

@@ -8,7 +8,7 @@
 
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
-#include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/head/head_model.h"
 #include "sim/core/pose.h"
 #include "sim/core/solver.h"
@@ -39,7 +39,7 @@ class Simulation {
  public:
   explicit Simulation(std::unique_ptr<Solver> solver) : solver_(std::move(solver)) {}
 
-  // Where a long groom import stands, while load or setConfig build one (sim/groom/hairstyle.h).
+  // Where a long groom import stands, while load or setConfig build one (sim/groom/scene_groom.h).
   void setImportProgress(ImportProgress progress) { importProgress_ = std::move(progress); }
 
   // Grows the groom and resets the solver. On failure keeps what it had and says why.

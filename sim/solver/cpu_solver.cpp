@@ -14,6 +14,7 @@
 #include "sim/base/state_bytes.h"
 #include "sim/solver/wind.h"
 #include "sim/solver/accuracy.h"
+#include "sim/solver/state_io.h"
 #include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
@@ -197,51 +198,10 @@ void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, 
   }
 }
 
-double measureWindowCoefficient(int w) {
-  const double l = 0.01;
-  const int n = 8 * w + 24;
-  Groom straight;
-  std::vector<glm::vec3> pts;
-  for (int i = 0; i < n; ++i) pts.emplace_back(float(i * l), 0.0f, 0.0f);
-  straight.addStrand(pts);
-  Config c;
-  c.sim.stiffnessModel = StiffnessModel::Paper;
-  c.sim.stiffnessWindow = w;
-  c.sim.stiffness = 1.0f;
-  c.sim.pinned = 0;
-  c.sim.gravity = glm::vec3(0.0f);
-  c.sim.damping = 0.0f;
-  c.sim.strainLimiting = false;
-  c.sim.rotationIterations = 16;
-  c.collision.mode = CollisionMode::Off;
-  c.wind.strength = 0.0f;
-  // mu(kappa) / (kappa w l)^4 = c_w + d (kappa w l)^2: two wavenumbers give c_w. The slope
-  // kappa * amplitude stays small enough that the rotations' nonlinearity is far below mu.
-  auto ratio = [&](double kwl) {
-    const double kappa = kwl / (w * l);
-    const double amplitude = 1e-6 / kappa;
-    CpuSolver solver;
-    solver.reset(straight, c, Pose{});
-    std::vector<glm::dvec3>& x = solver.mutablePositions();
-    for (int i = 0; i < n; ++i) x[i] = glm::dvec3(i * l, amplitude * std::sin(kappa * i * l), 0.0);
-    solver.step(1e-3, Pose{});
-    // The middle particles, whose goals no clipped region and no clipped per-region mass
-    // reaches (3w from either end): there g = (1 - mu) u exactly.
-    double gu = 0.0, uu = 0.0;
-    for (int i = 3 * w + 1; i < n - 3 * w - 1; ++i) {
-      const double u = amplitude * std::sin(kappa * i * l);
-      gu += solver.positions()[i].y * u;
-      uu += u * u;
-    }
-    return (1.0 - gu / uu) / std::pow(kwl, 4.0);
-  };
-  const double r1 = ratio(0.1), r2 = ratio(0.2);
-  return (4.0 * r1 - r2) / 3.0;
-}
-
 void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   config_ = config;
-  shape_ = headModel_.update(config_).collider();
+  shape_ = headModel_.collider();
+  failure_ = headModel_.handed() ? std::string() : std::string(kNoHeadFailure);
   time_ = 0.0;
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
@@ -306,7 +266,7 @@ void CpuSolver::setConfig(const Config& config) {
   const bool rebuild = regionsChanged(config_.sim, config.sim);
   const bool regrid = volumeGridChanged(config_.collision, config.collision);
   config_ = config;
-  shape_ = headModel_.update(config_).collider();
+  shape_ = headModel_.collider();
   if (rebuild) rebuildRegions();
   if (regrid) resetVolume();
   if (remeasure) measureAnew();
@@ -336,6 +296,12 @@ void CpuSolver::clearStages() {
 void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
   clearStages();
   const FramePlan plan = planFrame(config_.sim, regions_.planRate);
+  if (!failure_.empty()) {
+    // No head to collide with (failure()): the clock runs, the hair stays.
+    time_ += plan.substeps * plan.h;
+    head_ = to;
+    return;
+  }
   ++framesSinceMeasure_;
   // The frame's contact candidates, from where it starts (METHOD.md section 3.3).
   auto t0 = Clock::now();
@@ -667,21 +633,16 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
 }
 
 void CpuSolver::readPositions(std::vector<glm::vec4>& out) {
-  out.resize(x_.size());
-  for (size_t i = 0; i < x_.size(); ++i) out[i] = glm::vec4(glm::vec3(x_[i]), 1.0f);
+  readDoublePositions(x_, out);
 }
 
 void CpuSolver::readVelocities(std::vector<glm::vec4>& out) {
-  out.resize(v_.size());
-  for (size_t i = 0; i < v_.size(); ++i) out[i] = glm::vec4(glm::vec3(v_[i]), 0.0f);
+  readDoubleVelocities(v_, out);
 }
 
 void CpuSolver::writeState(const std::vector<glm::vec4>& positions,
                            const std::vector<glm::vec4>& velocities) {
-  for (size_t i = 0; i < x_.size() && i < positions.size(); ++i)
-    x_[i] = glm::dvec3(glm::vec3(positions[i]));
-  for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
-    v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+  writeDoubleState(positions, velocities, x_, v_);
 }
 
 void CpuSolver::saveState(SolverState& out) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <deque>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -37,12 +38,6 @@ namespace csm {
 void extractRotation(const Eigen::Matrix3d& A, double J, Eigen::Quaterniond& q, int iterations,
                      const Eigen::Vector3d& axis = Eigen::Vector3d::Zero(), double twistStep = 1.0);
 
-// Measures c_w (sim/solver/stiffness.h) on this solver: a long straight strand bent by a small sine
-// wave of wavenumber kappa, with nothing acting but the goals of the paper model with window w
-// and alpha = 1; mu is the share of the wave one step removes, and c_w = mu / (kappa w l)^4,
-// extrapolated to kappa -> 0 from kappa w l = 0.1 and 0.2.
-double measureWindowCoefficient(int w);
-
 class CpuSolver final : public Solver {
  public:
   // Region sums by prefix differences (O(1) per region, Rivers & James 2007), or summed
@@ -54,6 +49,7 @@ class CpuSolver final : public Solver {
   std::string_view name() const override { return "cpu"; }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
+  std::string failure() const override { return failure_; }
   void setConfig(const Config& config) override;
   void stepFrame(const Pose& from, const Pose& to) override;
 
@@ -83,12 +79,14 @@ class CpuSolver final : public Solver {
   void step(double h, const Pose& head);
   const std::vector<glm::dvec3>& positions() const { return x_; }
   const std::vector<glm::dvec3>& velocities() const { return v_; }
-  std::vector<glm::dvec3>& mutablePositions() { return x_; }
-  std::vector<glm::dvec3>& mutableVelocities() { return v_; }
   // Rest length of the segment from particle i to i+1.
   double restLength(size_t i) const { return restLength_[i]; }
 
  private:
+  // Sets a wave's positions in double, which writeState would round to float
+  // (sim/verify/window_coefficient.h).
+  friend double measureWindowCoefficient(int w);
+
   void clearStages();
   void rebuildRegions();
   void predict(double h, const Pose& head);
@@ -105,7 +103,8 @@ class CpuSolver final : public Solver {
 
   RegionSums sums_;
   Config config_;
-  SolverHead headModel_;  // the scene's head (handed, or built from config_)
+  SolverHead headModel_;  // the scene's head, handed before the reset
+  std::string failure_;   // set by reset when no head was handed
   SceneHead shape_;       // what it collides with, read every step
   double time_ = 0.0;
   Pose head_;  // the head pose at the end of the last step

@@ -12,7 +12,7 @@
 namespace csm {
 namespace {
 
-// c_w for w = 1..16, as measureWindowCoefficient (sim/solver/cpu_solver.h) measures it
+// c_w for w = 1..16, as measureWindowCoefficient (sim/verify/window_coefficient.h) measures it
 // (csmhair-bench --only window; the float rest positions leave about 1e-4 of noise in it).
 constexpr double kWindowCoefficient[] = {0.0,      0.055560, 0.043748, 0.037031, 0.033429, 0.031197,
                                          0.029715, 0.028627, 0.027820, 0.027200, 0.026706, 0.026297,

@@ -33,8 +33,9 @@ namespace csm {
 // c_w for a window of w particles per side: one application of the goals (alpha = 1) removes
 // mu = c_w (kappa w l)^4 of a small bending wave of wavenumber kappa on a long straight strand
 // of segment l, in the limit kappa w l -> 0. Measured on CpuSolver (measureWindowCoefficient in
-// sim/solver/cpu_solver.h; tests/cpu/stiffness_test.cpp measures it again for w = 1..16); beyond
-// the table, (1 + 2/w) / 45, which it tends to (1/45 is the continuous window's).
+// sim/verify/window_coefficient.h; tests/cpu/stiffness_test.cpp measures it again for
+// w = 1..16); beyond the table, (1 + 2/w) / 45, which it tends to (1/45 is the continuous
+// window's).
 double windowCoefficient(int w);
 
 // Particles per side of a calibrated window of length L on a strand of n particles with mean

@@ -11,6 +11,7 @@
 #include "sim/core/pose.h"
 #include "sim/solver/accuracy.h"
 #include "sim/solver/stiffness.h"
+#include "sim/verify/solver_head.h"
 
 namespace csm {
 namespace {
@@ -26,7 +27,7 @@ bool finite(const glm::vec4& p) {
 }  // namespace
 
 SceneRunner::SceneRunner(Solver& solver, const Scene& scene) : solver_(solver), scene_(scene) {
-  solver_.reset(scene.groom, scene.config, headPose(scene.config.head, 0.0));
+  resetWithHead(solver_, scene.groom, scene.config, headPose(scene.config.head, 0.0));
 }
 
 void SceneRunner::frame() {

@@ -10,6 +10,7 @@
 #include "sim/solver/cpu_solver.h"
 #include "sim/core/pose.h"
 #include "test_scenes.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -49,8 +50,8 @@ TEST_CASE("region sums by prefix differences equal direct sums for every w and l
   for (int w = 1; w <= 12; ++w) {
     c.sim.stiffnessWindow = w;
     CpuSolver prefix(CpuSolver::RegionSums::Prefix), direct(CpuSolver::RegionSums::Direct);
-    prefix.reset(g, c, Pose{});
-    direct.reset(g, c, Pose{});
+    resetWithHead(prefix, g, c, Pose{});
+    resetWithHead(direct, g, c, Pose{});
     for (int f = 0; f < 10; ++f) {
       const Pose from = rotationAbout({0, 0, 0}, {0.3, 1, 0.2}, 4.0 * f);
       const Pose to = rotationAbout({0, 0, 0}, {0.3, 1, 0.2}, 4.0 * (f + 1));
@@ -68,7 +69,7 @@ TEST_CASE("with no forces the hair keeps its rest shape", "[quick]") {
   c.collision.mode = CollisionMode::Off;
   const Groom g = test::growFor(c);
   CpuSolver solver;
-  solver.reset(g, c, Pose{});
+  resetWithHead(solver, g, c, Pose{});
   const std::vector<glm::dvec3> rest = solver.positions();
   for (int f = 0; f < 100; ++f) solver.stepFrame(Pose{}, Pose{});
   CHECK(maxDistance(solver.positions(), rest) < 1e-9);
@@ -86,8 +87,8 @@ TEST_CASE("a rigid motion of the head moves settled hair rigidly", "[quick]") {
   turned.sim.gravity = glm::vec3(motion.rotation * glm::dvec3(c.sim.gravity));
 
   CpuSolver a, b;
-  a.reset(g, c, Pose{});
-  b.reset(g, turned, motion);
+  resetWithHead(a, g, c, Pose{});
+  resetWithHead(b, g, turned, motion);
   for (int f = 0; f < 60; ++f) {
     a.stepFrame(Pose{}, Pose{});
     b.stepFrame(motion, motion);
@@ -98,7 +99,7 @@ TEST_CASE("a rigid motion of the head moves settled hair rigidly", "[quick]") {
   CHECK(maxDistance(b.positions(), expected) < 1e-6);
   // And the hair did settle: it moved away from its rest shape under gravity.
   CpuSolver rest;
-  rest.reset(g, c, Pose{});
+  resetWithHead(rest, g, c, Pose{});
   CHECK(maxDistance(a.positions(), rest.positions()) > 1e-3);
 }
 
@@ -114,7 +115,7 @@ TEST_CASE("strain after limiting never exceeds epsilon", "[quick]") {
   c.collision.mode = CollisionMode::Head;
   const Groom g = test::growFor(c);
   CpuSolver solver;
-  solver.reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(solver, g, c, headPose(c.head, 0.0));
   const double h = c.sim.dt / c.sim.substeps;
   double worst = 0.0;
   for (int k = 0; k < 240; ++k) {
@@ -138,7 +139,7 @@ TEST_CASE("no particle ends a step inside a head sphere", "[quick]") {
   c.wind.direction = {0.0f, 0.0f, -1.0f};  // into the face
   const Groom g = test::growFor(c);
   CpuSolver solver;
-  solver.reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(solver, g, c, headPose(c.head, 0.0));
   const double h = c.sim.dt / c.sim.substeps;
   int inside = 0;
   for (int k = 0; k < 240; ++k) {
@@ -162,7 +163,7 @@ TEST_CASE("without head collisions the same scene does go inside the head", "[qu
   c.wind.direction = {0.0f, 0.0f, -1.0f};
   const Groom g = test::growFor(c);
   CpuSolver solver;
-  solver.reset(g, c, Pose{});
+  resetWithHead(solver, g, c, Pose{});
   for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
   int inside = 0;
   for (size_t s = 0; s < g.strandCount(); ++s)
@@ -180,7 +181,7 @@ TEST_CASE("the same preset gives bit-identical results twice", "[quick]") {
   const Groom g = test::growFor(c);
   auto run = [&] {
     CpuSolver solver;
-    solver.reset(g, c, headPose(c.head, 0.0));
+    resetWithHead(solver, g, c, headPose(c.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 40; ++f, t += c.sim.dt)
       solver.stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
@@ -201,7 +202,7 @@ TEST_CASE("hair-hair collision keeps strands apart") {
     Config m = c;
     m.collision.mode = mode;
     CpuSolver solver;
-    solver.reset(g, m, Pose{});
+    resetWithHead(solver, g, m, Pose{});
     double t = 0.0;
     for (int f = 0; f < 90; ++f, t += m.sim.dt)
       solver.stepFrame(headPose(m.head, t), headPose(m.head, t + m.sim.dt));

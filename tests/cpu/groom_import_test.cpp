@@ -1,5 +1,5 @@
-// Grooms from files as a scene takes them (sim/groom/hairstyle.h's fitFileGroom): the flaws of real
-// grooms repaired and counted, steps that a few degenerate strands cannot set, roots on the
+// Grooms from files as a scene takes them (sim/groom/scene_groom.h's fitFileGroom): the flaws of
+// real grooms repaired and counted, steps that a few degenerate strands cannot set, roots on the
 // scalp of any head and no particle inside it, roots found for OBJ curves.
 #include <cmath>
 #include <filesystem>
@@ -16,6 +16,7 @@
 #include "sim/head/head_model.h"
 #include "sim/solver/stiffness.h"
 #include "tests/import_cases.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 namespace fs = std::filesystem;
@@ -75,8 +76,8 @@ TEST_CASE(
   CHECK(planFrame(c.sim, regions.maxRate).wanted > 2 * planFrame(c.sim, regions.planRate).wanted);
 
   CpuSolver a, b;
-  a.reset(clean, c, pose);
-  b.reset(flawed, c, pose);
+  resetWithHead(a, clean, c, pose);
+  resetWithHead(b, flawed, c, pose);
   CHECK(b.stiffness().plan.substeps == a.stiffness().plan.substeps);
   CHECK(b.stiffness().stifferStrands == 1);
   CHECK(a.stiffness().stifferStrands == 0);

@@ -6,6 +6,7 @@
 
 #include "sim/core/segment_pairs.h"
 #include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/mannequin.h"
 #include "sim/head/head_model.h"

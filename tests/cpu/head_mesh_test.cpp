@@ -334,9 +334,31 @@ TEST_CASE("head.mesh gone when the scene loads: an error naming the file, not th
   error.clear();
   CHECK_FALSE(sim.load(c, dir.path.string(), &error));
   CHECK_THAT(error, Catch::StartsWith("head.mesh: " + (dir.path / "sphere.obj").string()));
-  // A solver run on its own with that scene says so too, rather than colliding with another head.
+  // A solver builds no head of its own: run with none handed in, it says so rather than
+  // colliding with another head.
   CpuSolver solver;
-  CHECK_THROWS_WITH(solver.setConfig(c), Catch::Contains("sphere.obj"));
+  Groom strand;
+  strand.addStrand({glm::vec3(0.0f, 0.20f, 0.0f), glm::vec3(0.0f, 0.19f, 0.0f),
+                    glm::vec3(0.0f, 0.18f, 0.0f), glm::vec3(0.0f, 0.17f, 0.0f)});
+  solver.reset(strand, c, Pose{});
+  CHECK_THAT(solver.failure(), Catch::Contains("no head"));
+}
+
+TEST_CASE("crossCheck reads head.mesh only when the running scene does not hold it",
+          "[head_mesh]") {
+  TempDir dir;
+  dir.write("sphere.obj", objText(icosphere(2)));
+  Config c = Config{};
+  c.head.mesh = "sphere.obj";
+  c.head.meshDir = dir.path.string();
+  const std::shared_ptr<const HeadModel> loaded = HeadModel::require(c);
+  std::filesystem::remove(dir.path / "sphere.obj");
+  // The viewer's edits check against the scene that runs: its head holds the mesh, read once.
+  CHECK(crossCheck(c, loaded.get()).empty());
+  // With no scene, or one holding another head, the file is read, and found gone.
+  CHECK(crossCheck(c).size() == 1);
+  Config mannequin = Config{};
+  CHECK(crossCheck(c, HeadModel::require(mannequin).get()).size() == 1);
 }
 
 // Found by fuzz_obj (tests/fuzz/regressions/obj/): a NUL byte ended tinyobjloader's line

@@ -16,6 +16,7 @@
 #include "sim/head/sphere_fit.h"
 #include "sim/head/head_model.h"
 #include "tests/cpu/test_scenes.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -182,7 +183,7 @@ TEST_CASE("Mannequin: no particle ends a frame inside the head by more than the 
   c.wind.direction = {0.3f, 0.0f, -1.0f};
   const Groom g = test::growFor(c);
   CpuSolver cpu;
-  cpu.reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(cpu, g, c, headPose(c.head, 0.0));
   const DistanceGrid& field = mannequinGrid();
   const double r = c.collision.radius;
   double deepest = 1.0;
@@ -206,7 +207,7 @@ TEST_CASE("Mannequin: no particle ends a frame inside the head by more than the 
   Config off = c;
   off.collision.mode = CollisionMode::Off;
   CpuSolver free;
-  free.reset(g, off, headPose(c.head, 0.0));
+  resetWithHead(free, g, off, headPose(c.head, 0.0));
   t = 0.0;
   double freeDeepest = 1.0;
   for (int f = 0; f < 40; ++f, t += c.sim.dt) {
@@ -271,7 +272,7 @@ TEST_CASE("Mannequin: the face stays open once the hair has settled", "[head][cp
     const Groom g = test::growFor(c);
     REQUIRE(strandsOverFace(g, pointsOf(g)) == 0);
     CpuSolver cpu;
-    cpu.reset(g, c, headPose(c.head, 0.0));
+    resetWithHead(cpu, g, c, headPose(c.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 60; ++f, t += c.sim.dt)
       cpu.stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));

@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/solver/baselines/baseline_solver.h"
+#include "sim/solver/baselines/make_baseline.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/verify/measure.h"
 #include "sim/solver/accuracy.h"

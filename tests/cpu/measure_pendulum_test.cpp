@@ -2,7 +2,7 @@
 // the period of a uniform rod, 2 pi sqrt(2L / 3g).
 #include <catch2/catch.hpp>
 
-#include "sim/solver/baselines/baseline_solver.h"
+#include "sim/solver/baselines/make_baseline.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/verify/measure.h"
 

@@ -7,8 +7,10 @@
 #include <cmath>
 
 #include "sim/solver/cpu_solver.h"
+#include "sim/verify/window_coefficient.h"
 #include "sim/solver/stiffness.h"
 #include "tests/stiffness_cases.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -69,7 +71,7 @@ TEST_CASE("a capped stiffness is said in the solver's stiffness info", "[quick]"
   s.config.sim.windowLength = 0.005f;  // w = 1: a rate of ~9e7 /s^2, ~160 steps a frame
   s.config.sim.maxSubsteps = 16;
   CpuSolver solver;
-  solver.reset(s.groom, s.config, Pose{});
+  resetWithHead(solver, s.groom, s.config, Pose{});
   const StiffnessInfo info = solver.stiffness();
   CHECK(info.plan.capped);
   CHECK(info.plan.substeps == 16);

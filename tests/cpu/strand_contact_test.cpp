@@ -17,6 +17,7 @@
 #include "sim/head/head_model.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/strand_contact_scenes.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -32,7 +33,7 @@ test::Drape drape(CollisionMode mode, double seconds) {
   Config c = test::drapeConfig();
   c.collision.mode = mode;
   CpuSolver solver;
-  solver.reset(test::drapeGroom(), c, Pose{});
+  resetWithHead(solver, test::drapeGroom(), c, Pose{});
   for (int f = 0; f < int(std::lround(seconds / c.sim.dt)); ++f) solver.stepFrame(Pose{}, Pose{});
   return test::measureDrape(positions(solver));
 }
@@ -93,7 +94,7 @@ TEST_CASE("with gravity off the rest groom stays still for 1 s with strand conta
   c.collision.mode = CollisionMode::Strands;
   const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver solver;
-  solver.reset(g, c, Pose{});
+  resetWithHead(solver, g, c, Pose{});
   const std::vector<glm::vec4> rest = positions(solver);
   for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
   const std::vector<glm::vec4> x = positions(solver);
@@ -294,7 +295,7 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   c.collision.mode = CollisionMode::Head;
   const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver solver;
-  solver.reset(g, c, Pose{});
+  resetWithHead(solver, g, c, Pose{});
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(1);
   const FrameSample off = solver.takeSample().value();
@@ -321,7 +322,7 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   CHECK(on.contacts.penetrations == withinR);
   // The simulation is the same with the measures on: they change no state.
   CpuSolver plain;
-  plain.reset(g, c, Pose{});
+  resetWithHead(plain, g, c, Pose{});
   plain.stepFrame(Pose{}, Pose{});
   plain.stepFrame(Pose{}, Pose{});
   const std::vector<glm::vec4> a = positions(solver), b = positions(plain);
@@ -373,7 +374,7 @@ TEST_CASE("more contact iterations hold dense hair in the wind apart better") {
     Config ci = c;
     ci.collision.iterations = iterations;
     CpuSolver solver;
-    solver.reset(g, ci, Pose{});
+    resetWithHead(solver, g, ci, Pose{});
     Run out;
     for (int f = 0; f < 16; ++f) {
       solver.stepFrame(Pose{}, Pose{});
@@ -404,7 +405,7 @@ TEST_CASE("lists within the frame catch a strand that closes in faster than the 
   };
   auto thrown = [&](int lists) {
     CpuSolver solver;
-    solver.reset(test::thrownGroom(), test::thrownConfig(lists), Pose{});
+    resetWithHead(solver, test::thrownGroom(), test::thrownConfig(lists), Pose{});
     REQUIRE(solver.stiffness().plan.substeps == 4);
     const std::vector<glm::vec4> x = positions(solver);
     solver.writeState(x, test::throwDown(x));
@@ -455,7 +456,7 @@ TEST_CASE("lists within the frame: where they come, and what they measure", "[qu
     Config cl = c;
     cl.collision.lists = lists;
     CpuSolver solver;
-    solver.reset(g, cl, Pose{});
+    resetWithHead(solver, g, cl, Pose{});
     solver.stepFrame(Pose{}, Pose{});
     return solver.contactStats();
   };
@@ -545,7 +546,7 @@ TEST_CASE("penalty contacts slow a strand dropped across another, constraints ho
     c.collision.mode = mode;
     c.collision.model = model;
     CpuSolver solver;
-    solver.reset(test::drapeGroom(), c, Pose{});
+    resetWithHead(solver, test::drapeGroom(), c, Pose{});
     for (int f = 0; f < 30; ++f) solver.stepFrame(Pose{}, Pose{});
     return test::measureDrape(positions(solver));
   };

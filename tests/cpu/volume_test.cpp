@@ -12,6 +12,7 @@
 #include "sim/groom/hairstyle.h"
 #include "sim/solver/volume.h"
 #include "sim/head/head_model.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -121,8 +122,8 @@ TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is 
   c.collision.volumeFraction = 0.02f;  // pushes where hair gathers
   const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver headOnly, switched;
-  headOnly.reset(g, c, Pose{});
-  switched.reset(g, c, Pose{});
+  resetWithHead(headOnly, g, c, Pose{});
+  resetWithHead(switched, g, c, Pose{});
   CHECK(switched.volumeNodes() == 0);
   for (int f = 0; f < 5; ++f) {
     headOnly.stepFrame(Pose{}, Pose{});
@@ -154,7 +155,7 @@ TEST_CASE("volume mode: with gravity off the rest groom stays still", "[quick]")
   c.collision.volumeFraction = 0.01f;  // everything the groom packed is allowed, not more
   const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver solver;
-  solver.reset(g, c, Pose{});
+  resetWithHead(solver, g, c, Pose{});
   const std::vector<glm::dvec3> rest = solver.positions();
   for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
   double moved = 0.0;
@@ -176,7 +177,7 @@ TEST_CASE("volume mode: hair falling onto itself ends less dense than without it
     Config m = c;
     m.collision.mode = mode;
     CpuSolver solver;
-    solver.reset(g, m, Pose{});
+    resetWithHead(solver, g, m, Pose{});
     for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
     // The densest node over the last state, on a grid of the same geometry.
     VolumeGrid grid;

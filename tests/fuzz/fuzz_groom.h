@@ -1,7 +1,8 @@
 // What the groom targets do with a groom their reader accepted: the reader's promise (a sound
-// structure, finite points), then the steps a preset naming the file takes (sim/groom/hairstyle.h's
-// fitFileGroom: strands kept, the fit to the head, roots snapped, resampling), on the spheres
-// or on the mannequin's field as `selector` says, and their promise: a groom the solver can run.
+// structure, finite points), then the steps a preset naming the file takes
+// (sim/groom/scene_groom.h's fitFileGroom: strands kept, the fit to the head, roots snapped,
+// resampling), on the spheres or on the mannequin's field as `selector` says, and their promise:
+// a groom the solver can run.
 #pragma once
 
 #include <cmath>
@@ -9,7 +10,7 @@
 
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
-#include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/groom/read_common.h"
 #include "sim/head/head_model.h"
 #include "tests/fuzz/fuzz_common.h"

@@ -15,6 +15,7 @@
 
 #include "shaders/sim/bindings.glsl"
 #include "sim/core/segment_pairs.h"
+#include "sim/gpu/gpu_probe.h"
 #include "sim/gpu/gpu_solver.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/head/head_model.h"
@@ -22,6 +23,7 @@
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
 #include "tests/gpu/gpu_solver_fixture.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 using test::strandOf;
@@ -63,7 +65,7 @@ Compared compare(GpuSolver& gpu, const Groom& g, double r) {
   const std::vector<uint32_t> strand = strandOf(g);
   const auto brute = findContactsBruteForce(xd, strand, 2.0 * r * (1.0 + 1e-5));
   bool overflow = true;
-  std::vector<std::pair<uint32_t, uint32_t>> found = gpu.readContactPairs(&overflow);
+  std::vector<std::pair<uint32_t, uint32_t>> found = GpuProbe(gpu).readContactPairs(&overflow);
   REQUIRE_FALSE(overflow);
   std::set<std::pair<uint32_t, uint32_t>> gpuSet(found.begin(), found.end());
   Compared c;
@@ -128,8 +130,8 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
       Config c;
       c.collision.mode = CollisionMode::Strands;
       c.collision.radius = float(r);
-      gpu->reset(g, c, Pose{});
-      gpu->detectContacts();
+      resetWithHead(*gpu, g, c, Pose{});
+      GpuProbe(*gpu).detectContacts();
       const Compared cmp = compare(*gpu, g, r);
       INFO("step " << step << " r " << r << ": brute force " << cmp.brute << ", GPU " << cmp.gpu
                    << ", missing " << cmp.missing << ", extra " << cmp.extra
@@ -138,7 +140,7 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
       CHECK(cmp.missing == 0);
       CHECK(cmp.extra == 0);
       // The stats count the same pairs.
-      CHECK(gpu->readContactStats().contacts == cmp.gpu);
+      CHECK(GpuProbe(*gpu).readContactStats().contacts == cmp.gpu);
 
       // Each segment lists every pair within 2r + margin it is part of, in ascending order,
       // however many (r = 8 mm: over a hundred).
@@ -157,7 +159,7 @@ TEST_CASE("GPU grid: exactly the contact pairs brute force finds", "[gpu][collis
         expected[p.a].push_back(p.b);
         expected[p.b].push_back(p.a);
       }
-      const auto lists = gpu->readCandidates();
+      const auto lists = GpuProbe(*gpu).readCandidates();
       size_t wrong = 0, most = 0;
       for (size_t i = 0; i < lists.size(); ++i) {
         std::vector<uint32_t> e = expected[i], got;
@@ -194,10 +196,10 @@ TEST_CASE("GPU lists: each run of segments is taken longest list first",
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = 0.002f;
-  gpu->reset(g, c, Pose{});
-  gpu->detectContacts();
-  const auto lists = gpu->readCandidates();
-  const std::vector<uint32_t> order = gpu->readSegmentOrder();
+  resetWithHead(*gpu, g, c, Pose{});
+  GpuProbe(*gpu).detectContacts();
+  const auto lists = GpuProbe(*gpu).readCandidates();
+  const std::vector<uint32_t> order = GpuProbe(*gpu).readSegmentOrder();
   REQUIRE(order.size() == g.pointCount());
   const size_t run = CSM_PARTICLE_GROUP;
   size_t outOfRun = 0, repeated = 0, misordered = 0, reordered = 0;
@@ -237,9 +239,9 @@ TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu
   c.wind.strength = 3.0f;
   c.collision.mode = CollisionMode::Strands;
   const Groom g = growHairstyle(c, *HeadModel::require(c));
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   for (int f = 0; f < 10; ++f) gpu->stepFrame(Pose{}, Pose{});
-  gpu->detectContacts();
+  GpuProbe(*gpu).detectContacts();
   const Compared cmp = compare(*gpu, g, c.collision.radius);
   INFO("brute force " << cmp.brute << ", GPU " << cmp.gpu << ", missing " << cmp.missing
                       << ", extra " << cmp.extra << ", within rounding of 2r " << cmp.ambiguous);
@@ -259,11 +261,11 @@ TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
     Config m = c;
     m.collision.mode = mode;
     auto gpu = test::gpuSolver();
-    gpu->reset(g, m, headPose(m.head, 0.0));
+    resetWithHead(*gpu, g, m, headPose(m.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 90; ++f, t += m.sim.dt)
       gpu->stepFrame(headPose(m.head, t), headPose(m.head, t + m.sim.dt));
-    *stats = gpu->readContactStats();
+    *stats = GpuProbe(*gpu).readContactStats();
     std::vector<glm::vec4> x;
     gpu->readPositions(x);
     return findContactsBruteForce(toDouble(x), strand, m.collision.radius).size();
@@ -309,9 +311,9 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = float(r);
-  gpu->reset(g, c, Pose{});
-  gpu->detectContacts();
-  const GpuSolver::GridStats grid = gpu->gridStats();
+  resetWithHead(*gpu, g, c, Pose{});
+  GpuProbe(*gpu).detectContacts();
+  const GpuProbe::GridStats grid = GpuProbe(*gpu).gridStats();
   INFO("entries " << grid.entries << " capacity " << grid.capacity << " oversize " << grid.oversize
                   << " cell " << grid.cell);
   CHECK(grid.oversize == 1);
@@ -327,7 +329,7 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
       expected.insert({p.a, p.b});
   size_t missing = 0, extra = 0;
   std::set<std::pair<uint32_t, uint32_t>> found;
-  for (const auto& p : gpu->readContactPairs()) {
+  for (const auto& p : GpuProbe(*gpu).readContactPairs()) {
     found.insert(p);
     CHECK(p.first != longFirst);
     CHECK(p.second != longFirst);
@@ -346,8 +348,8 @@ TEST_CASE("GPU grid: a segment over the cell cap and a grid over its buffers deg
   // The buffers hold what this groom needs, so stepping finds the contacts with no growth.
   const uint32_t capacity = grid.capacity;
   gpu->stepFrame(Pose{}, Pose{});
-  CHECK(gpu->readContactStats().contacts > 0);
-  CHECK(gpu->gridStats().capacity == capacity);
+  CHECK(GpuProbe(*gpu).readContactStats().contacts > 0);
+  CHECK(GpuProbe(*gpu).gridStats().capacity == capacity);
 }
 
 TEST_CASE(
@@ -363,38 +365,38 @@ TEST_CASE(
   auto gpu = test::gpuSolver();
   const Groom g = packedBundle(0);
   const Config c = contactConfig(true);
-  gpu->limitGridStorage(128 * 1024);
-  gpu->reset(g, c, Pose{});
-  gpu->limitGridStorage(UINT64_MAX);
-  const uint32_t capacity = gpu->gridStats().pairCapacity;
+  GpuProbe(*gpu).limitGridStorage(128 * 1024);
+  resetWithHead(*gpu, g, c, Pose{});
+  GpuProbe(*gpu).limitGridStorage(UINT64_MAX);
+  const uint32_t capacity = GpuProbe(*gpu).gridStats().pairCapacity;
   CHECK(capacity == 128 * 1024 / 16);
   gpu->stepFrame(Pose{}, Pose{});
-  const GpuSolver::GridStats over = gpu->gridStats();
+  const GpuProbe::GridStats over = GpuProbe(*gpu).gridStats();
   INFO("pairs " << over.pairs << " capacity " << over.pairCapacity);
   CHECK(over.pairs > capacity);
   CHECK(over.entries <= over.capacity);
-  const auto empty = gpu->readCandidates();
+  const auto empty = GpuProbe(*gpu).readCandidates();
   CHECK(std::all_of(empty.begin(), empty.end(), [](const auto& l) { return l.empty(); }));
   // The next frame grows the list and fits.
-  const ContactStats overStats = gpu->readContactStats();
+  const ContactStats overStats = GpuProbe(*gpu).readContactStats();
   CHECK(overStats.candidates == over.pairs);
   CHECK(overStats.overflows == 1);
   CHECK(overStats.oversize == 0);
   gpu->stepFrame(Pose{}, Pose{});
-  const GpuSolver::GridStats fits = gpu->gridStats();
+  const GpuProbe::GridStats fits = GpuProbe(*gpu).gridStats();
   CHECK(fits.pairCapacity > capacity);
   CHECK(fits.pairs <= fits.pairCapacity);
   size_t listed = 0;
-  for (const auto& l : gpu->readCandidates()) listed += l.size();
+  for (const auto& l : GpuProbe(*gpu).readCandidates()) listed += l.size();
   CHECK(listed > 0);
   // A sample that fits grows nothing.
-  gpu->readContactStats();
+  GpuProbe(*gpu).readContactStats();
   gpu->stepFrame(Pose{}, Pose{});
   // The count of frames over capacity runs on (still the one), until a reset.
-  CHECK(gpu->readContactStats().overflows == 1);
-  CHECK(gpu->gridStats().pairCapacity == fits.pairCapacity);
-  gpu->reset(g, c, Pose{});
-  CHECK(gpu->readContactStats().overflows == 0);
+  CHECK(GpuProbe(*gpu).readContactStats().overflows == 1);
+  CHECK(GpuProbe(*gpu).gridStats().pairCapacity == fits.pairCapacity);
+  resetWithHead(*gpu, g, c, Pose{});
+  CHECK(GpuProbe(*gpu).readContactStats().overflows == 0);
 }
 
 // Two rows of strands held horizontally along +z at rest, 1.6 mm apart in each row: row A at
@@ -420,21 +422,21 @@ TEST_CASE("GPU grid: cells of three quarters of a segment in sparse hair and hal
   // rest segment, else half). Segments 1 cm long, reach 1.5 mm here (3 mm cells at least).
   auto gpu = test::gpuSolver();
   const Config c = contactConfig(false);
-  gpu->reset(hangingRows(60), c, Pose{});  // two rows of strands 1.6 mm apart: few pairs
+  resetWithHead(*gpu, hangingRows(60), c, Pose{});  // two rows of strands 1.6 mm apart: few pairs
   gpu->stepFrame(Pose{}, Pose{});
-  GpuSolver::GridStats grid = gpu->gridStats();
+  GpuProbe::GridStats grid = GpuProbe(*gpu).gridStats();
   INFO("sparse: " << grid.pairs << " pairs of 900 segments, cell " << grid.cell);
   CHECK(grid.pairs < 20 * 900);
   CHECK(grid.cell == Approx(0.0075));
   // 15 x 15 strands 0.3 mm apart, 5 segments each: ~100 pairs a segment.
-  gpu->reset(strandBlock(0.0003f, 0.01f), c, Pose{});
+  resetWithHead(*gpu, strandBlock(0.0003f, 0.01f), c, Pose{});
   gpu->stepFrame(Pose{}, Pose{});
-  grid = gpu->gridStats();
+  grid = GpuProbe(*gpu).gridStats();
   INFO("dense: " << grid.pairs << " pairs of 1125 segments, cell " << grid.cell);
   CHECK(grid.pairs > 20 * 1125);
   CHECK(grid.cell == Approx(0.005));
   CHECK(grid.entries <= grid.capacity);
-  CHECK(gpu->readContactStats().overflows == 0);
+  CHECK(GpuProbe(*gpu).readContactStats().overflows == 0);
 }
 
 TEST_CASE("GPU grid: a search over the pair list's capacity keeps the list before it",
@@ -448,18 +450,18 @@ TEST_CASE("GPU grid: a search over the pair list's capacity keeps the list befor
   c.sim.gravity = glm::vec3(0.0f, -9.81f, 0.0f);
   c.collision.margin = 0.006f;
   const uint32_t cap = 13500;
-  gpu->limitGridStorage(uint64_t(cap) * 16);
-  gpu->reset(hangingRows(60), c, Pose{});
-  REQUIRE(gpu->gridStats().pairCapacity == cap);
+  GpuProbe(*gpu).limitGridStorage(uint64_t(cap) * 16);
+  resetWithHead(*gpu, hangingRows(60), c, Pose{});
+  REQUIRE(GpuProbe(*gpu).gridStats().pairCapacity == cap);
   std::vector<std::vector<std::pair<uint32_t, float>>> before;
   int fitted = 0;
-  for (int f = 0; f < 20 && gpu->readContactStats().overflows == 0; ++f) {
-    before = gpu->readCandidates();
+  for (int f = 0; f < 20 && GpuProbe(*gpu).readContactStats().overflows == 0; ++f) {
+    before = GpuProbe(*gpu).readCandidates();
     gpu->stepFrame(Pose{}, Pose{});
-    if (gpu->readContactStats().overflows == 0) ++fitted;
+    if (GpuProbe(*gpu).readContactStats().overflows == 0) ++fitted;
   }
-  const GpuSolver::GridStats over = gpu->gridStats();
-  const ContactStats stats = gpu->readContactStats();
+  const GpuProbe::GridStats over = GpuProbe(*gpu).gridStats();
+  const ContactStats stats = GpuProbe(*gpu).readContactStats();
   INFO("frames that fit " << fitted << ", pairs " << over.pairs << " entries " << over.entries
                           << " of " << over.capacity);
   REQUIRE(stats.overflows == 1);
@@ -467,16 +469,16 @@ TEST_CASE("GPU grid: a search over the pair list's capacity keeps the list befor
   CHECK(over.pairs > cap);
   CHECK(over.entries <= over.capacity);
   CHECK(stats.crossings == 0);
-  const auto kept = gpu->readCandidates();
+  const auto kept = GpuProbe(*gpu).readCandidates();
   size_t listed = 0;
   for (const auto& l : kept) listed += l.size();
   CHECK(listed > 20000);
   CHECK(kept == before);
   // The next frame, over the cap too (the cap stops the growth), keeps the same lists.
   gpu->stepFrame(Pose{}, Pose{});
-  REQUIRE(gpu->gridStats().pairs > cap);
-  CHECK(gpu->readContactStats().overflows == 2);
-  CHECK(gpu->readCandidates() == before);
+  REQUIRE(GpuProbe(*gpu).gridStats().pairs > cap);
+  CHECK(GpuProbe(*gpu).readContactStats().overflows == 2);
+  CHECK(GpuProbe(*gpu).readCandidates() == before);
 }
 
 // One segment 6 cm along x (particles 0 and 1) and `crossing` segments 1 cm along z, each a
@@ -505,13 +507,14 @@ TEST_CASE("GPU lists: a segment lists all of 1500 candidates and none of 2500",
     INFO(crossing << " crossing segments");
     const Groom g = crowd(crossing);
     auto gpu = test::gpuSolver();
-    gpu->reset(g, c, Pose{});
-    gpu->detectContacts();
-    const auto lists = gpu->readCandidates();
-    const ContactStats stats = gpu->readContactStats();
+    resetWithHead(*gpu, g, c, Pose{});
+    GpuProbe(*gpu).detectContacts();
+    const auto lists = GpuProbe(*gpu).readCandidates();
+    const ContactStats stats = GpuProbe(*gpu).readContactStats();
     CHECK(stats.oversize == 0);
-    CHECK(gpu->gridStats().pairs <= gpu->gridStats().pairCapacity);  // this pass fitted
-    size_t listing = 0;  // crossing segments that list the first
+    CHECK(GpuProbe(*gpu).gridStats().pairs <=
+          GpuProbe(*gpu).gridStats().pairCapacity);  // this pass fitted
+    size_t listing = 0;                              // crossing segments that list the first
     for (size_t i = 2; i < lists.size(); ++i)
       for (const auto& cand : lists[i]) listing += cand.first == 0 ? 1 : 0;
     if (crossing <= 2048) {
@@ -543,24 +546,24 @@ TEST_CASE("GPU grid: its buffers stay within the cap on what the device's views 
   const Config c = contactConfig(true);
   const uint64_t cap = 128 * 1024;
   auto gpu = test::gpuSolver();
-  gpu->limitGridStorage(cap);
-  gpu->reset(g, c, Pose{});
+  GpuProbe(*gpu).limitGridStorage(cap);
+  resetWithHead(*gpu, g, c, Pose{});
   for (int f = 0; f < 3; ++f) gpu->stepFrame(Pose{}, Pose{});
-  const GpuSolver::GridStats grid = gpu->gridStats();
+  const GpuProbe::GridStats grid = GpuProbe(*gpu).gridStats();
   INFO("pairs " << grid.pairs << " capacity " << grid.pairCapacity << " entries " << grid.entries
                 << " capacity " << grid.capacity);
   CHECK(grid.pairs > cap / 16);
   CHECK(grid.pairCapacity == cap / 16);
   CHECK(grid.capacity <= cap / 16);
-  CHECK(gpu->readContactStats().overflows == 3);
-  const auto lists = gpu->readCandidates();
+  CHECK(GpuProbe(*gpu).readContactStats().overflows == 3);
+  const auto lists = GpuProbe(*gpu).readCandidates();
   CHECK(std::all_of(lists.begin(), lists.end(), [](const auto& l) { return l.empty(); }));
   // Uncapped, the reset sizes the lists for the bundle: every frame fits.
   auto free = test::gpuSolver();
-  free->reset(g, c, Pose{});
+  resetWithHead(*free, g, c, Pose{});
   for (int f = 0; f < 3; ++f) free->stepFrame(Pose{}, Pose{});
-  CHECK(free->readContactStats().overflows == 0);
-  CHECK(free->gridStats().pairCapacity > cap / 16);
+  CHECK(GpuProbe(*free).readContactStats().overflows == 0);
+  CHECK(GpuProbe(*free).gridStats().pairCapacity > cap / 16);
 }
 
 TEST_CASE("GPU grid: a reset or a switch to a strand mode sizes the lists for the hair as it is",
@@ -572,22 +575,22 @@ TEST_CASE("GPU grid: a reset or a switch to a strand mode sizes the lists for th
   const Groom g = packedBundle(0);
   Config c = contactConfig(true);
   auto reset = test::gpuSolver(), switched = test::gpuSolver();
-  reset->reset(g, c, Pose{});
+  resetWithHead(*reset, g, c, Pose{});
   c.collision.mode = CollisionMode::Head;
-  switched->reset(g, c, Pose{});
-  const uint32_t reserved = switched->gridStats().pairCapacity;
+  resetWithHead(*switched, g, c, Pose{});
+  const uint32_t reserved = GpuProbe(*switched).gridStats().pairCapacity;
   c.collision.mode = CollisionMode::Strands;
   switched->setConfig(c);
   for (GpuSolver* s : {reset.get(), switched.get()}) {
     s->stepFrame(Pose{}, Pose{});
-    const GpuSolver::GridStats grid = s->gridStats();
+    const GpuProbe::GridStats grid = GpuProbe(*s).gridStats();
     INFO("pairs " << grid.pairs << " capacity " << grid.pairCapacity << " reserved " << reserved);
     CHECK(grid.pairs > reserved);
     CHECK(grid.pairs <= grid.pairCapacity);
-    CHECK(s->readContactStats().overflows == 0);
-    CHECK(s->readContactStats().crossings == 0);
+    CHECK(GpuProbe(*s).readContactStats().overflows == 0);
+    CHECK(GpuProbe(*s).readContactStats().crossings == 0);
     size_t listed = 0;
-    for (const auto& l : s->readCandidates()) listed += l.size();
+    for (const auto& l : GpuProbe(*s).readCandidates()) listed += l.size();
     CHECK(listed == 2 * size_t(grid.pairs));
   }
 }
@@ -601,21 +604,21 @@ TEST_CASE("GPU grid: a restored state sizes the lists for the hair it restores",
   const Groom spread = strandBlock(0.05f, 0.004f);
   const Config c = contactConfig(true);
   auto source = test::gpuSolver(), restored = test::gpuSolver();
-  source->reset(packed, c, Pose{});
+  resetWithHead(*source, packed, c, Pose{});
   SolverState state;
   source->saveState(state);
-  restored->reset(spread, c, Pose{});
-  const uint32_t reserved = restored->gridStats().pairCapacity;
+  resetWithHead(*restored, spread, c, Pose{});
+  const uint32_t reserved = GpuProbe(*restored).gridStats().pairCapacity;
   std::string error;
   REQUIRE(restored->restoreState(state, &error));
   restored->stepFrame(Pose{}, Pose{});
   source->stepFrame(Pose{}, Pose{});
-  const GpuSolver::GridStats grid = restored->gridStats();
+  const GpuProbe::GridStats grid = GpuProbe(*restored).gridStats();
   INFO("pairs " << grid.pairs << " capacity " << grid.pairCapacity << " reserved " << reserved);
   CHECK(grid.pairs > reserved);
   CHECK(grid.pairs <= grid.pairCapacity);
-  CHECK(restored->readContactStats().overflows == 0);
-  CHECK(grid.pairs == source->gridStats().pairs);
+  CHECK(GpuProbe(*restored).readContactStats().overflows == 0);
+  CHECK(grid.pairs == GpuProbe(*source).gridStats().pairs);
 }
 
 TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counters",
@@ -631,11 +634,11 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
   c.sim.rootLength = 0.004f;  // the head holds the first segment; the rest sags
   auto eager = test::gpuSolver(), never = test::gpuSolver();
   for (GpuSolver* s : {eager.get(), never.get()}) {
-    s->limitGridStorage(128 * 1024);
-    s->reset(g, c, Pose{});
-    s->limitGridStorage(UINT64_MAX);
+    GpuProbe(*s).limitGridStorage(128 * 1024);
+    resetWithHead(*s, g, c, Pose{});
+    GpuProbe(*s).limitGridStorage(UINT64_MAX);
   }
-  const uint32_t capacity = eager->gridStats().pairCapacity;
+  const uint32_t capacity = GpuProbe(*eager).gridStats().pairCapacity;
   for (long f = 0; f < 4; ++f) {
     eager->stepFrame(Pose{}, Pose{});
     eager->requestSample(f);
@@ -648,13 +651,13 @@ TEST_CASE("GPU grid: the buffers grow at the same frame whoever reads the counte
   never->readPositions(b);
   CHECK(a == b);
   for (GpuSolver* s : {eager.get(), never.get()}) {
-    CHECK(s->readContactStats().overflows == 1);
-    CHECK(s->gridStats().pairCapacity > capacity);
+    CHECK(GpuProbe(*s).readContactStats().overflows == 1);
+    CHECK(GpuProbe(*s).gridStats().pairCapacity > capacity);
   }
   // The contacts change this motion, so a frame without them would show.
   auto headOnly = test::gpuSolver();
   c.collision.mode = CollisionMode::Head;
-  headOnly->reset(g, c, Pose{});
+  resetWithHead(*headOnly, g, c, Pose{});
   for (int f = 0; f < 4; ++f) headOnly->stepFrame(Pose{}, Pose{});
   std::vector<glm::vec4> h;
   headOnly->readPositions(h);
@@ -670,9 +673,9 @@ TEST_CASE("GPU grid: positions that are not finite stay out of the grid",
   Config c;
   c.collision.mode = CollisionMode::Strands;
   c.collision.radius = 0.002f;
-  gpu->reset(g, c, Pose{});
-  gpu->detectContacts();
-  CHECK(gpu->gridStats().oversize == 2);  // both segments of the broken strand
-  CHECK(gpu->readContactStats().contacts > 0);
-  CHECK(gpu->readContactStats().contacts == gpu->readContactPairs().size());
+  resetWithHead(*gpu, g, c, Pose{});
+  GpuProbe(*gpu).detectContacts();
+  CHECK(GpuProbe(*gpu).gridStats().oversize == 2);  // both segments of the broken strand
+  CHECK(GpuProbe(*gpu).readContactStats().contacts > 0);
+  CHECK(GpuProbe(*gpu).readContactStats().contacts == GpuProbe(*gpu).readContactPairs().size());
 }

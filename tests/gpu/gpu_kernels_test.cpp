@@ -13,11 +13,13 @@
 #include <glm/geometric.hpp>
 
 #include "gl/caps.h"
+#include "sim/gpu/gpu_probe.h"
 #include "sim/gpu/gpu_solver.h"
 #include "sim/gpu/strand_groups.h"
 #include "sim/solver/cpu_solver.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gpu_solver_fixture.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -25,8 +27,8 @@ namespace {
 
 std::vector<glm::vec4> run(GpuKernels kernels, const Config& c, const Groom& g, int frames) {
   auto gpu = test::gpuSolver();
-  REQUIRE(gpu->setKernels(kernels));
-  gpu->reset(g, c, headPose(c.head, 0.0));
+  REQUIRE(GpuProbe(*gpu).setKernels(kernels));
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
   double t = 0.0;
   for (int f = 0; f < frames; ++f, t += c.sim.dt)
     gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
@@ -62,11 +64,11 @@ TEST_CASE("GPU kernels: per strand on a software renderer, per particle on a GPU
   auto gpu = test::gpuSolver();
   const char* forced = std::getenv("CSM_GPU_KERNELS");
   if (forced && std::string(forced) == "particle") {
-    CHECK(gpu->kernels() == GpuKernels::PerParticle);
+    CHECK(GpuProbe(*gpu).kernels() == GpuKernels::PerParticle);
   } else if (forced && std::string(forced) == "strand") {
-    CHECK(gpu->kernels() == GpuKernels::PerStrand);
+    CHECK(GpuProbe(*gpu).kernels() == GpuKernels::PerStrand);
   } else {
-    CHECK(gpu->kernels() ==
+    CHECK(GpuProbe(*gpu).kernels() ==
           (gl::queryCaps().software ? GpuKernels::PerStrand : GpuKernels::PerParticle));
   }
 }

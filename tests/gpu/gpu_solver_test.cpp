@@ -13,6 +13,7 @@
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/gpu/gpu_params.h"
+#include "sim/gpu/gpu_probe.h"
 #include "sim/gpu/gpu_solver.h"
 #include "sim/groom/hairstyle.h"
 #include "app/preset.h"
@@ -22,6 +23,7 @@
 #include "tests/strand_contact_scenes.h"
 #include "sim/solver/accuracy.h"
 #include "sim/head/head_model.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -64,8 +66,8 @@ Difference difference(const std::vector<glm::vec4>& gpu, const std::vector<glm::
 bool endsApart(const Config& a, const Config& b, int frames) {
   auto first = test::gpuSolver(), second = test::gpuSolver();
   const Groom g = grow(a);
-  first->reset(g, a, Pose{});
-  second->reset(g, b, Pose{});
+  resetWithHead(*first, g, a, Pose{});
+  resetWithHead(*second, g, b, Pose{});
   double t = 0.0;
   for (int f = 0; f < frames; ++f, t += a.sim.dt) {
     first->stepFrame(headPose(a.head, t), headPose(a.head, t + a.sim.dt));
@@ -81,8 +83,8 @@ Difference runBoth(const Config& c, int frames, double limit) {
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
   CpuSolver cpu;
-  cpu.reset(g, c, headPose(c.head, 0.0));
-  gpu->reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(cpu, g, c, headPose(c.head, 0.0));
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
   REQUIRE(gpu->particleCount() == cpu.particleCount());
   double t = 0.0;
   for (int f = 0; f < frames; ++f, t += c.sim.dt) {
@@ -243,29 +245,31 @@ TEST_CASE("GPU lists: sides and lists past one view's texels are read and writte
   c.wind.strength = 3.0f;
   const Groom g = grow(c);
   auto whole = test::gpuSolver(), split = test::gpuSolver();
-  whole->reset(g, c, Pose{});
+  resetWithHead(*whole, g, c, Pose{});
   whole->stepFrame(Pose{}, Pose{});
-  const uint64_t texels = whole->gridStats().pairs * 6 / 5;
-  whole->reset(g, c, Pose{});
-  split->limitGridListSplit(texels);
-  split->reset(g, c, Pose{});
-  INFO("split " << split->gridListSplit() << " texels");
-  REQUIRE(split->gridListSplit() <= texels);
-  REQUIRE(split->gridListSplit() + 64 > texels);
+  const uint64_t texels = GpuProbe(*whole).gridStats().pairs * 6 / 5;
+  resetWithHead(*whole, g, c, Pose{});
+  GpuProbe(*split).limitGridListSplit(texels);
+  resetWithHead(*split, g, c, Pose{});
+  INFO("split " << GpuProbe(*split).gridListSplit() << " texels");
+  REQUIRE(GpuProbe(*split).gridListSplit() <= texels);
+  REQUIRE(GpuProbe(*split).gridListSplit() + 64 > texels);
   uint64_t crossings = 0;
   for (int f = 0; f < 8; ++f) {
     whole->stepFrame(Pose{}, Pose{});
     split->stepFrame(Pose{}, Pose{});
-    const GpuSolver::GridStats grid = split->gridStats();
+    const GpuProbe::GridStats grid = GpuProbe(*split).gridStats();
     INFO("frame " << f << ": pairs " << grid.pairs << " capacity " << grid.pairCapacity);
-    CHECK(2 * uint64_t(grid.pairs) > split->gridListSplit());  // sides past the first view
-    const ContactStats a = split->readContactStats(), b = whole->readContactStats();
+    CHECK(2 * uint64_t(grid.pairs) >
+          GpuProbe(*split).gridListSplit());  // sides past the first view
+    const ContactStats a = GpuProbe(*split).readContactStats(),
+                       b = GpuProbe(*whole).readContactStats();
     CHECK(a.overflows == 0);
     CHECK(a.crowded == 0);
     CHECK(a.candidates == b.candidates);
     CHECK(a.crossings == b.crossings);
     crossings += a.crossings;
-    CHECK(split->readCandidates() == whole->readCandidates());
+    CHECK(GpuProbe(*split).readCandidates() == GpuProbe(*whole).readCandidates());
   }
   CHECK(crossings > 0);
   std::vector<glm::vec4> x, y;
@@ -303,13 +307,13 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
     c.collision.solve = solve;
     auto gpu = test::gpuSolver();
     CpuSolver cpu;
-    cpu.reset(g, c, Pose{});
-    gpu->reset(g, c, Pose{});
+    resetWithHead(cpu, g, c, Pose{});
+    resetWithHead(*gpu, g, c, Pose{});
     double later[4] = {0.0, 0.0, 0.0, 0.0};  // CPU, GPU candidates; CPU, GPU closer than r
     for (int f = 0; f < 25; ++f) {
       cpu.stepFrame(Pose{}, Pose{});
       gpu->stepFrame(Pose{}, Pose{});
-      const ContactStats onCpu = cpu.contactStats(), onGpu = gpu->readContactStats();
+      const ContactStats onCpu = cpu.contactStats(), onGpu = GpuProbe(*gpu).readContactStats();
       INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates
                     << ", closer than r CPU " << onCpu.penetrations << " GPU "
                     << onGpu.penetrations);
@@ -364,16 +368,16 @@ TEST_CASE("GPU and CPU solvers agree with the penalty model, GPU runs are bit-id
   const Groom g = grow(c);
   auto gpu = test::gpuSolver(), again = test::gpuSolver();
   CpuSolver cpu;
-  cpu.reset(g, c, Pose{});
-  gpu->reset(g, c, Pose{});
-  again->reset(g, c, Pose{});
+  resetWithHead(cpu, g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
+  resetWithHead(*again, g, c, Pose{});
   double later[2] = {0.0, 0.0};
   uint64_t penetrations = 0;
   for (int f = 0; f < 25; ++f) {
     cpu.stepFrame(Pose{}, Pose{});
     gpu->stepFrame(Pose{}, Pose{});
     again->stepFrame(Pose{}, Pose{});
-    const ContactStats onCpu = cpu.contactStats(), onGpu = gpu->readContactStats();
+    const ContactStats onCpu = cpu.contactStats(), onGpu = GpuProbe(*gpu).readContactStats();
     INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates);
     penetrations += onGpu.penetrations;
     if (f < 2) {
@@ -405,7 +409,7 @@ TEST_CASE("GPU: the penalty model slows a strand dropped across another", "[gpu]
     c.collision.mode = mode;
     c.collision.model = model;
     auto gpu = test::gpuSolver();
-    gpu->reset(test::drapeGroom(), c, Pose{});
+    resetWithHead(*gpu, test::drapeGroom(), c, Pose{});
     for (int f = 0; f < 30; ++f) gpu->stepFrame(Pose{}, Pose{});
     std::vector<glm::vec4> x;
     gpu->readPositions(x);
@@ -425,7 +429,7 @@ TEST_CASE("GPU: a strand dropped across another stays on top for 2 s", "[gpu][co
     Config c = test::drapeConfig();
     c.collision.mode = mode;
     auto gpu = test::gpuSolver();
-    gpu->reset(test::drapeGroom(), c, Pose{});
+    resetWithHead(*gpu, test::drapeGroom(), c, Pose{});
     for (int f = 0; f < 120; ++f) gpu->stepFrame(Pose{}, Pose{});
     std::vector<glm::vec4> x;
     gpu->readPositions(x);
@@ -448,7 +452,7 @@ TEST_CASE("GPU: lists within the frame catch a strand that closes in faster than
   // a frame lets the strand 0.02 mm from the bar, four hold it at 2r.
   auto closest = [](int lists) {
     auto gpu = test::gpuSolver();
-    gpu->reset(test::thrownGroom(), test::thrownConfig(lists), Pose{});
+    resetWithHead(*gpu, test::thrownGroom(), test::thrownConfig(lists), Pose{});
     std::vector<glm::vec4> x;
     gpu->readPositions(x);
     gpu->writeState(x, test::throwDown(x));
@@ -480,12 +484,12 @@ TEST_CASE("GPU: strand contacts add no motion to a rest groom with gravity off",
     Config m = c;
     m.collision.mode = mode;
     auto gpu = test::gpuSolver();
-    gpu->reset(g, m, Pose{});
+    resetWithHead(*gpu, g, m, Pose{});
     std::vector<glm::vec4> rest, x;
     gpu->readPositions(rest);
     for (int f = 0; f < 60; ++f) gpu->stepFrame(Pose{}, Pose{});
     gpu->readPositions(x);
-    *stats = gpu->readContactStats();
+    *stats = GpuProbe(*gpu).readContactStats();
     double moved = 0.0;
     for (size_t i = 0; i < x.size(); ++i)
       moved = std::max(moved, double(glm::length(glm::vec3(x[i]) - glm::vec3(rest[i]))));
@@ -513,7 +517,7 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
   const Groom g = grow(c);
   auto run = [&] {
     auto gpu = test::gpuSolver();
-    gpu->reset(g, c, headPose(c.head, 0.0));
+    resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
     double t = 0.0;
     for (int f = 0; f < 30; ++f, t += c.sim.dt)
       gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
@@ -521,7 +525,7 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[g
     gpu->readPositions(x);
     gpu->readVelocities(v);
     x.insert(x.end(), v.begin(), v.end());
-    CHECK(gpu->readContactStats().contacts > 0);
+    CHECK(GpuProbe(*gpu).readContactStats().contacts > 0);
     return x;
   };
   const std::vector<glm::vec4> a = run(), b = run();
@@ -547,26 +551,26 @@ TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is c
   c.collision.volumeFraction = 0.02f;  // pushes where hair gathers
   const Groom g = growHairstyle(c, *HeadModel::require(c));
   auto headOnly = test::gpuSolver(), switched = test::gpuSolver();
-  headOnly->reset(g, c, Pose{});
-  switched->reset(g, c, Pose{});
-  CHECK(switched->volumeNodes() == 0);
+  resetWithHead(*headOnly, g, c, Pose{});
+  resetWithHead(*switched, g, c, Pose{});
+  CHECK(GpuProbe(*switched).volumeNodes() == 0);
   Config volume = c;
   volume.collision.mode = CollisionMode::Volume;
   switched->setConfig(volume);
   CpuSolver cpu;
-  cpu.reset(g, volume, Pose{});
-  CHECK(switched->volumeNodes() == cpu.volumeNodes());
-  CHECK(switched->volumeNodes() > 1000);
+  resetWithHead(cpu, g, volume, Pose{});
+  CHECK(GpuProbe(*switched).volumeNodes() == cpu.volumeNodes());
+  CHECK(GpuProbe(*switched).volumeNodes() > 1000);
   for (int f = 0; f < 10; ++f) {
     headOnly->stepFrame(Pose{}, Pose{});
     switched->stepFrame(Pose{}, Pose{});
   }
   // The node pass ran on the box the hair reached, not on the grid made for all it can reach
   // (200 strands on the crown: under a tenth of the nodes).
-  const size_t visited = switched->volumeNodesVisited();
-  INFO("nodes visited " << visited << " of " << switched->volumeNodes());
+  const size_t visited = GpuProbe(*switched).volumeNodesVisited();
+  INFO("nodes visited " << visited << " of " << GpuProbe(*switched).volumeNodes());
   CHECK(visited > 0);
-  CHECK(visited * 10 < switched->volumeNodes());
+  CHECK(visited * 10 < GpuProbe(*switched).volumeNodes());
   // The grid built after the reset acts: the hair ends elsewhere than with the head alone.
   std::vector<glm::vec4> a, b;
   headOnly->readPositions(a);
@@ -577,7 +581,7 @@ TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is c
   INFO("farthest particle apart " << apart * 1e3 << " mm");
   CHECK(apart > 1e-4);
   switched->setConfig(c);
-  CHECK(switched->volumeNodes() == 0);
+  CHECK(GpuProbe(*switched).volumeNodes() == 0);
 }
 
 TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][solver]") {
@@ -589,7 +593,7 @@ TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][sol
   REQUIRE(c.collision.mode == CollisionMode::Strands);
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
-  gpu->reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
   const int frames = 1000 / c.sim.substeps;
   double t = 0.0;
   for (int f = 0; f < frames; ++f, t += c.sim.dt)
@@ -614,7 +618,7 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
   Config c = smallScene(50);
   c.collision.mode = CollisionMode::Strands;
   const Groom g = grow(c);
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   CHECK(gpu->strandCount() == g.strandCount());
   CHECK(gpu->particleCount() == g.pointCount());
   CHECK(gpu->positionBuffer() != 0);
@@ -637,7 +641,7 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
                          "grid",      "contacts",       "volume"};
   // Strand contacts, no volume: every stage but the volume's did work and took time; the
   // volume's took none. The per-particle path predicts inside shape matching's pass.
-  const bool fused = gpu->kernels() == GpuKernels::PerParticle;
+  const bool fused = GpuProbe(*gpu).kernels() == GpuKernels::PerParticle;
   for (size_t k = 0; k < 6; ++k) {
     INFO(stages[k].name << " " << stages[k].ms << " ms");
     CHECK(stages[k].name == names[k]);
@@ -667,11 +671,11 @@ TEST_CASE("GPU solver: live parameters, reset, read-backs and timers", "[gpu][so
   up.collision.mode = CollisionMode::Head;
   gpu->setConfig(up);
   gpu->stepFrame(Pose{}, Pose{});
-  CHECK(gpu->readContactStats().contacts == 0);
+  CHECK(GpuProbe(*gpu).readContactStats().contacts == 0);
 
   // reset rebuilds for a groom of another size, and the clock starts again.
   const Groom bigger = grow(smallScene(120));
-  gpu->reset(bigger, c, Pose{});
+  resetWithHead(*gpu, bigger, c, Pose{});
   CHECK(gpu->time() == 0.0);
   CHECK(gpu->particleCount() == bigger.pointCount());
   gpu->readPositions(x);
@@ -745,7 +749,7 @@ TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measure
   c.head.frequency = 1.5f;
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
-  gpu->reset(g, c, headPose(c.head, 0.0));
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
   double t = 0.0;
   for (int f = 0; f < 20; ++f, t += c.sim.dt) {
     gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
@@ -795,8 +799,8 @@ TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
   auto plain = test::gpuSolver();
-  gpu->reset(g, c, Pose{});
-  plain->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
+  resetWithHead(*plain, g, c, Pose{});
   gpu->stepFrame(Pose{}, Pose{});
   gpu->requestSample(1);
   const std::optional<FrameSample> off = gpu->takeSample(true);
@@ -861,7 +865,7 @@ TEST_CASE("GPU solver: carry turns and moves the hair on the GPU, reading nothin
   auto gpu = test::gpuSolver();
   Config c = smallScene(40);
   const Groom g = grow(c);
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   for (int f = 0; f < 3; ++f) gpu->stepFrame(Pose{}, Pose{});
   std::vector<glm::vec4> x0, v0, x1, v1;
   gpu->readPositions(x0);

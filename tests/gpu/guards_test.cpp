@@ -13,6 +13,7 @@
 #include "sim/run/simulation.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gl_fixture.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -70,7 +71,7 @@ TEST_CASE("Guard: a NaN once in the state does not stay in the region rotations"
   Config c = test::smallScene(40);
   c.collision.mode = CollisionMode::Strands;
   const Groom g = test::growFor(c);
-  solver->reset(g, c, Pose{});
+  resetWithHead(*solver, g, c, Pose{});
   for (int f = 0; f < 5; ++f) solver->stepFrame(Pose{}, Pose{});
   std::vector<glm::vec4> x, v;
   solver->readPositions(x);
@@ -107,7 +108,7 @@ TEST_CASE("Guard: a zero-length segment in the wind gives no NaN", "[guard][gpu]
     if (s == 0) points.back() = points[points.size() - 2];
     repeated.addStrand(points);
   }
-  solver->reset(repeated, c, Pose{});
+  resetWithHead(*solver, repeated, c, Pose{});
   for (int f = 0; f < 10; ++f) solver->stepFrame(Pose{}, Pose{});
   CHECK(nonFinite(*solver) == 0);
   // A NaN there is not always seen as one: the head's collision puts a NaN particle on the
@@ -141,7 +142,7 @@ TEST_CASE("Guard: the largest damping and wind drag at the longest frame stay bo
   c.wind.gusts = 0.0f;
   c.wind.turbulence = 0.0f;
   const Groom g = test::growFor(c);
-  solver->reset(g, c, Pose{});
+  resetWithHead(*solver, g, c, Pose{});
   double top = 0.0;
   for (int f = 0; f < 20; ++f) {
     solver->stepFrame(Pose{}, Pose{});
@@ -208,7 +209,7 @@ TEST_CASE("Guard: hair driven through the head comes out within reach of its par
   c.collision.mode = CollisionMode::Head;
   c.collision.headShape = shape;
   const Groom g = test::growFor(c);
-  solver->reset(g, c, Pose{});
+  resetWithHead(*solver, g, c, Pose{});
   for (int f = 0; f < 30; ++f) solver->stepFrame(Pose{}, Pose{});
 
   // Every particle thrown at the head's centre at 40 m/s: 17 cm a step of 1/240 s, through
@@ -267,7 +268,7 @@ TEST_CASE("Guard: a strand longer than the solvers take is refused, not frozen",
   g.addStrand(points);
   Config c = test::smallScene();
   c.collision.mode = CollisionMode::Head;
-  gpu->reset(g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
   INFO(gpu->failure());
   CHECK(gpu->failure().find(std::to_string(kMaxStrandParticles)) != std::string::npos);
   // It steps nothing, and says so, instead of leaving the strand where it is without a word.
@@ -281,6 +282,6 @@ TEST_CASE("Guard: a strand longer than the solvers take is refused, not frozen",
   points.resize(kMaxStrandParticles);
   Groom ok;
   ok.addStrand(points);
-  gpu->reset(ok, c, Pose{});
+  resetWithHead(*gpu, ok, c, Pose{});
   CHECK(gpu->failure().empty());
 }

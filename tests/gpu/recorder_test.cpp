@@ -9,11 +9,13 @@
 #include <catch2/catch.hpp>
 
 #include "gl/fence.h"
+#include "sim/gpu/gpu_probe.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/run/frame_recording.h"
 #include "sim/run/simulation.h"
 #include "tests/cpu/test_scenes.h"
 #include "tests/gpu/gpu_solver_fixture.h"
+#include "sim/verify/solver_head.h"
 
 using namespace csm;
 
@@ -228,10 +230,10 @@ TEST_CASE("Solvers: the first frame after a restore counts no crossings against 
   const Groom g = test::growFor(c);
   std::unique_ptr<Solver> solver = solverNamed(name);
   auto contacts = [&] {
-    return name == "gpu" ? static_cast<GpuSolver&>(*solver).readContactStats()
+    return name == "gpu" ? GpuProbe(static_cast<GpuSolver&>(*solver)).readContactStats()
                          : static_cast<CpuSolver&>(*solver).contactStats();
   };
-  solver->reset(g, c, Pose{});
+  resetWithHead(*solver, g, c, Pose{});
   for (int f = 0; f < 10; ++f) solver->stepFrame(Pose{}, Pose{});
   SolverState saved;
   solver->saveState(saved);

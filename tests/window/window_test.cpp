@@ -162,6 +162,8 @@ class NanAfter final : public Solver {
     frames_ = 0;
     inner_.reset(g, c, h);
   }
+  void setHead(std::shared_ptr<const HeadModel> head) override { inner_.setHead(std::move(head)); }
+  std::string failure() const override { return inner_.failure(); }
   void setConfig(const Config& c) override { inner_.setConfig(c); }
   void stepFrame(const Pose& from, const Pose& to) override {
     ++frames_;
@@ -205,6 +207,8 @@ class GatedSolver final : public Solver {
   explicit GatedSolver(std::shared_ptr<Gate> gate) : gate_(std::move(gate)) {}
   std::string_view name() const override { return "gated"; }
   void reset(const Groom& g, const Config& c, const Pose& h) override { inner_.reset(g, c, h); }
+  void setHead(std::shared_ptr<const HeadModel> head) override { inner_.setHead(std::move(head)); }
+  std::string failure() const override { return inner_.failure(); }
   void setConfig(const Config& c) override { inner_.setConfig(c); }
   void stepFrame(const Pose& from, const Pose& to) override {
     const long n = ++gate_->started;

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "sim/solver/cpu_solver.h"
+#include "sim/solver/baselines/make_baseline.h"
 #include "sim/groom/hairstyle.h"
 #include "app/preset.h"
 #include "sim/run/make_solver.h"

@@ -1,6 +1,6 @@
 // What a large groom costs to import: a cyHair file of 50,000 strands x 100 points (5 M points,
 // written here, in centimetres as a DCC tool writes them) read, repaired, fitted, resampled and
-// placed on the head (sim/groom/hairstyle.h's buildGroom, each stage timed through its progress),
+// placed on the head (sim/groom/scene_groom.h's buildGroom, each stage timed through its progress),
 // then a scene loaded with it and its first frame simulated; the process's peak resident memory
 // after each (VmHWM, reset before the import starts).
 #include <chrono>
@@ -14,7 +14,7 @@
 
 #include "sim/solver/cpu_solver.h"
 #include "sim/run/make_solver.h"
-#include "sim/groom/hairstyle.h"
+#include "sim/groom/scene_groom.h"
 #include "sim/groom/groom_file.h"
 #include "sim/run/simulation.h"
 #include "sim/head/head_model.h"

@@ -10,6 +10,7 @@
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
 #include "sim/solver/cpu_solver.h"
+#include "sim/verify/window_coefficient.h"
 #include "sim/solver/stiffness.h"
 
 namespace csm::bench {

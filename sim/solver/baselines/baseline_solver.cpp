@@ -6,12 +6,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/solver/baselines/follow_the_leader.h"
-#include "sim/solver/baselines/mass_spring.h"
-#include "sim/solver/baselines/pbd.h"
 #include "sim/head/head_model.h"
 #include "sim/solver/wind.h"
 #include "sim/solver/accuracy.h"
+#include "sim/solver/state_io.h"
 #include "sim/core/hair_state.h"
 
 namespace csm {
@@ -41,7 +39,8 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
     if (i + 2 < n && strandOf_[i] == strandOf_[i + 2])
       bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
   }
-  headSpheres_ = headModel_.update(config).spheres();
+  headSpheres_ = headModel_.collider().spheres;
+  failure_ = headModel_.handed() ? std::string() : std::string(kNoHeadFailure);
   spheres_ = worldSpheres(headSpheres_, head);
   samples_.clear();
   onReset();
@@ -51,6 +50,11 @@ void BaselineSolver::stepFrame(const Pose& from, const Pose& to) {
   const auto t0 = std::chrono::steady_clock::now();
   const int substeps = std::max(1, config_.sim.substeps);
   const double h = double(config_.sim.dt) / substeps;
+  if (!failure_.empty()) {
+    // No head to collide with (failure()): the clock runs, the hair stays.
+    time_ += substeps * h;
+    return;
+  }
   for (int k = 0; k < substeps; ++k) {
     step(h, interpolate(from, to, double(k + 1) / substeps));
     time_ += h;
@@ -109,21 +113,16 @@ void BaselineSolver::damp(double h) {
 }
 
 void BaselineSolver::readPositions(std::vector<glm::vec4>& out) {
-  out.resize(x_.size());
-  for (size_t i = 0; i < x_.size(); ++i) out[i] = glm::vec4(glm::vec3(x_[i]), 1.0f);
+  readDoublePositions(x_, out);
 }
 
 void BaselineSolver::readVelocities(std::vector<glm::vec4>& out) {
-  out.resize(v_.size());
-  for (size_t i = 0; i < v_.size(); ++i) out[i] = glm::vec4(glm::vec3(v_[i]), 0.0f);
+  readDoubleVelocities(v_, out);
 }
 
 void BaselineSolver::writeState(const std::vector<glm::vec4>& positions,
                                 const std::vector<glm::vec4>& velocities) {
-  for (size_t i = 0; i < x_.size() && i < positions.size(); ++i)
-    x_[i] = glm::dvec3(glm::vec3(positions[i]));
-  for (size_t i = 0; i < v_.size() && i < velocities.size(); ++i)
-    v_[i] = glm::dvec3(glm::vec3(velocities[i]));
+  writeDoubleState(positions, velocities, x_, v_);
 }
 
 void BaselineSolver::requestSample(long frame) {
@@ -141,16 +140,15 @@ std::optional<FrameSample> BaselineSolver::takeSample(bool) {
   return s;
 }
 
-std::unique_ptr<BaselineSolver> makeBaseline(std::string_view name, const BaselineParams& params) {
-  if (name == "ms-explicit") return std::make_unique<ExplicitMassSpring>(params);
-  if (name == "ms-implicit") return std::make_unique<ImplicitMassSpring>(params);
-  if (name == "pbd") return std::make_unique<PbdSolver>(params);
-  if (name == "ftl") return std::make_unique<FollowTheLeader>(params);
-  return nullptr;
-}
-
-std::vector<std::string> baselineNames() {
-  return {"ms-explicit", "ms-implicit", "pbd", "ftl"};
+void projectDistance(glm::dvec3& pi, glm::dvec3& pj, double wi, double wj, double rest, double k) {
+  const double w = wi + wj;
+  if (w <= 0.0) return;
+  const glm::dvec3 d = pi - pj;
+  const double len = glm::length(d);
+  if (len < 1e-15) return;
+  const glm::dvec3 corr = (k * (len - rest) / (w * len)) * d;
+  pi -= wi * corr;
+  pj += wj * corr;
 }
 
 }  // namespace csm

@@ -38,9 +38,10 @@ class BaselineSolver : public Solver {
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setConfig(const Config& config) override {
     config_ = config;
-    headSpheres_ = headModel_.update(config).spheres();
+    headSpheres_ = headModel_.collider().spheres;
   }
   void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
+  std::string failure() const override { return failure_; }
   void stepFrame(const Pose& from, const Pose& to) override;
 
   size_t strandCount() const override { return first_.size() - 1; }
@@ -84,7 +85,8 @@ class BaselineSolver : public Solver {
 
   BaselineParams params_;
   Config config_;
-  SolverHead headModel_;             // the scene's head (handed, or built from config_)
+  SolverHead headModel_;             // the scene's head, handed before the reset
+  std::string failure_;              // set by reset when no head was handed
   std::vector<Sphere> headSpheres_;  // its spheres, head frame
   double time_ = 0.0;
   std::vector<uint32_t> first_{0};
@@ -99,8 +101,9 @@ class BaselineSolver : public Solver {
   double lastMs_ = 0.0;
 };
 
-// "ms-explicit", "ms-implicit", "pbd", "ftl"; null for an unknown name.
-std::unique_ptr<BaselineSolver> makeBaseline(std::string_view name, const BaselineParams& params);
-std::vector<std::string> baselineNames();
+// Projects the distance constraint |p_i - p_j| = rest with stiffness k (0..1) and inverse
+// masses wi, wj (0 = kinematic) (Mueller et al. 2007, section 3.3): PBD's constraints, and
+// follow-the-leader's bending.
+void projectDistance(glm::dvec3& pi, glm::dvec3& pj, double wi, double wj, double rest, double k);
 
 }  // namespace csm

@@ -5,8 +5,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/solver/baselines/pbd.h"
-
 namespace csm {
 
 void FollowTheLeader::step(double h, const Pose& head) {

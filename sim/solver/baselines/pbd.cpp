@@ -7,17 +7,6 @@
 
 namespace csm {
 
-void projectDistance(glm::dvec3& pi, glm::dvec3& pj, double wi, double wj, double rest, double k) {
-  const double w = wi + wj;
-  if (w <= 0.0) return;
-  const glm::dvec3 d = pi - pj;
-  const double len = glm::length(d);
-  if (len < 1e-15) return;
-  const glm::dvec3 corr = (k * (len - rest) / (w * len)) * d;
-  pi -= wi * corr;
-  pj += wj * corr;
-}
-
 void PbdSolver::step(double h, const Pose& head) {
   prepareStep(head);
   const size_t n = x_.size();

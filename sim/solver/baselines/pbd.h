@@ -18,8 +18,4 @@ class PbdSolver final : public BaselineSolver {
   std::vector<glm::dvec3> p_;
 };
 
-// Projects the distance constraint |p_i - p_j| = rest with stiffness k (0..1) and inverse
-// masses wi, wj (0 = kinematic) (Mueller et al. 2007, section 3.3).
-void projectDistance(glm::dvec3& pi, glm::dvec3& pj, double wi, double wj, double rest, double k);
-
 }  // namespace csm

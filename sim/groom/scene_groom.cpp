@@ -1,0 +1,317 @@
+#include "sim/groom/scene_groom.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+#include <glm/geometric.hpp>
+
+#include "sim/base/file_io.h"
+#include "sim/head/head_model.h"
+#include "sim/groom/fit.h"
+#include "sim/groom/groom_file.h"
+#include "sim/groom/growth_head.h"
+#include "sim/groom/hairstyle.h"
+#include "sim/groom/resample.h"
+#include "shaders/sim/shared_constants.glsl"
+
+namespace csm {
+
+namespace {
+
+// Empty when every point of the fitted groom is finite (a strand that collapsed to a point is
+// the repair's to drop).
+std::string checkFitted(const Groom& g) {
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) {
+      const glm::vec3& p = g.points[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        return "point " + std::to_string(i - g.first[s]) + " of strand " + std::to_string(s) +
+               " is not finite";
+    }
+    if (s < g.thickness.size() && !std::isfinite(g.thickness[s]))
+      return "the thickness of strand " + std::to_string(s) + " is not finite";
+  }
+  return {};
+}
+
+void reverseStrand(Groom& g, size_t s) {
+  std::reverse(g.points.begin() + g.first[s], g.points.begin() + g.first[s + 1]);
+}
+
+// The component-wise median of points: where most of them are, whatever a minority does.
+glm::dvec3 medianPoint(std::vector<glm::dvec3> points) {
+  glm::dvec3 m(0.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    auto mid = points.begin() + long(points.size() / 2);
+    std::nth_element(
+        points.begin(), mid, points.end(),
+        [axis](const glm::dvec3& p, const glm::dvec3& q) { return p[axis] < q[axis]; });
+    m[axis] = (*mid)[axis];
+  }
+  return m;
+}
+
+// The median distance of points from their median point: how tightly they gather.
+double medianSpread(const std::vector<glm::dvec3>& points) {
+  const glm::dvec3 m = medianPoint(points);
+  std::vector<double> d;
+  for (const glm::dvec3& p : points) d.push_back(glm::length(p - m));
+  std::nth_element(d.begin(), d.begin() + long(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
+// The sphere through points by least squares (|p|^2 = 2 c.p + k is linear in c and k), in units
+// of their spread so that the system is well scaled whatever the file's units. A flat set has
+// no finite sphere: then the nearest of large ones is as good a surface, and a radius of 100
+// spreads stands for it.
+Sphere sphereThrough(const std::vector<glm::dvec3>& points) {
+  glm::dvec3 mean(0.0);
+  for (const glm::dvec3& p : points) mean += p;
+  mean /= double(points.size());
+  double spread = 0.0;
+  for (const glm::dvec3& p : points) spread = std::max(spread, glm::length(p - mean));
+  if (points.size() < 4 || !(spread > 0.0)) return {glm::vec3(mean), float(spread)};
+  Eigen::MatrixXd m(points.size(), 4);
+  Eigen::VectorXd rhs(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::dvec3 q = (points[i] - mean) / spread;
+    m.row(Eigen::Index(i)) << 2.0 * q.x, 2.0 * q.y, 2.0 * q.z, 1.0;
+    rhs(Eigen::Index(i)) = glm::dot(q, q);
+  }
+  const Eigen::Vector4d x = m.colPivHouseholderQr().solve(rhs);
+  glm::dvec3 c(x(0), x(1), x(2));
+  double r = std::sqrt(std::max(0.0, x(3) + glm::dot(c, c)));
+  if (!std::isfinite(r) || r > 100.0) {
+    c = glm::length(c) > 0.0 && std::isfinite(glm::length(c)) ? glm::normalize(c) * 100.0
+                                                              : glm::dvec3(0.0, -100.0, 0.0);
+    r = 100.0;
+  }
+  return {glm::vec3(mean + spread * c), float(spread * r)};
+}
+
+// For a groom whose format does not say which end is the root: turns the strands so that each
+// starts at its end on the scalp. Roots gather on a scalp, tips spread by the hair's length:
+// first the whole groom, by which ends gather the more tightly (the median distance from their
+// median point, which a minority of strands the other way round does not move; a bounding
+// sphere would be set by them). Then a strand whose other end lies nearer that median point is
+// in doubt, and is turned only when its other end lies nearer the scalp by a tenth of the
+// scalp's radius: the scalp being the sphere through the first ends of the strands not in doubt.
+// Hair swept over the crown has its tip near the roots' middle, but no nearer the scalp than
+// its root. Returns how many strands were turned from the file's order.
+size_t turnRootsFirst(Groom& g) {
+  std::vector<glm::dvec3> firsts, lasts;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    firsts.emplace_back(g.points[g.first[s]]);
+    lasts.emplace_back(g.points[g.first[s + 1] - 1]);
+  }
+  if (firsts.empty()) return 0;
+  const bool tipsFirst = medianSpread(lasts) < medianSpread(firsts);
+  if (tipsFirst) std::swap(firsts, lasts);
+  const glm::dvec3 crown = medianPoint(firsts);
+  std::vector<bool> doubtful(g.strandCount(), false);
+  std::vector<glm::dvec3> roots;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    doubtful[s] = glm::length(lasts[s] - crown) < glm::length(firsts[s] - crown);
+    if (!doubtful[s]) roots.push_back(firsts[s]);
+  }
+  const Sphere scalp = roots.empty() ? Sphere{glm::vec3(crown), 0.0f} : sphereThrough(roots);
+  auto gap = [&](const glm::dvec3& p) {
+    return std::abs(glm::length(p - glm::dvec3(scalp.center)) - double(scalp.radius));
+  };
+  const double on = 0.1 * double(scalp.radius);
+  size_t turned = 0;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    const bool turn = doubtful[s] && gap(lasts[s]) < gap(firsts[s]) - on;
+    if (turn != tipsFirst) {
+      reverseStrand(g, s);
+      ++turned;
+    }
+  }
+  return turned;
+}
+
+// Keeps `count` strands spread evenly over the file's order (all when count covers them).
+void keepStrands(Groom& g, size_t count) {
+  const size_t total = g.strandCount();
+  if (count >= total) return;
+  Groom out;
+  std::vector<glm::vec3> pts;
+  for (size_t k = 0; k < count; ++k) {
+    const size_t s = k * total / count;
+    pts.assign(g.points.begin() + g.first[s], g.points.begin() + g.first[s + 1]);
+    out.addStrand(pts);
+    if (!g.color.empty()) out.color.push_back(g.color[s]);
+    if (!g.thickness.empty()) out.thickness.push_back(g.thickness[s]);
+  }
+  g = std::move(out);
+}
+
+}  // namespace
+
+bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseDir, Groom& out,
+                std::string* error, GroomReport* report, const ImportProgress& progress) {
+  GroomReport local;
+  GroomReport& r = report ? *report : local;
+  r = {};
+  if (head.spheres().empty()) {
+    if (error) *error = "head.spheres: at least one sphere is needed to grow hair from";
+    return false;
+  }
+  const HairstyleConfig& h = c.hairstyle;
+  if (h.file.empty()) {
+    out = growHairstyle(c, head);
+    r.filePoints = r.simulatedPoints = out.pointCount();
+    return true;
+  }
+  const std::string path = resolveRelative(baseDir, h.file);
+  if (progress) progress("reading", 0.0);
+  io::GroomReadResult read = io::readGroom(path);
+  if (!read.groom) {
+    if (error) *error = read.error;
+    return false;
+  }
+  if (!fitFileGroom(c, head, std::move(*read.groom), path, out, error, &r, !read.rootsKnown,
+                    progress))
+    return false;
+  // The file's strands and repairs: those the reader dropped, then those the scene did.
+  r.fileStrands += read.repair.droppedStrands;
+  io::GroomRepair both = read.repair;
+  both.add(r.repair);
+  r.repair = both;
+  return true;
+}
+
+bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::string& path,
+                  Groom& out, std::string* error, GroomReport* report, bool findRoots,
+                  const ImportProgress& progress) {
+  // The stages' shares of a large import's time (5 M points: csmhair-bench --only import).
+  auto at = [&](const char* stage, double done) {
+    if (progress) progress(stage, done);
+  };
+  GroomReport local;
+  GroomReport& r = report ? *report : local;
+  r = {};
+  const HairstyleConfig& h = c.hairstyle;
+  r.fileStrands = g.strandCount();
+  keepStrands(g, size_t(h.strands));
+  at("fitting", 0.2);
+  io::FitOptions fit;
+  fit.scale = h.importScale;
+  fit.autoFit = h.importScale <= 0.0f;
+  fit.rotationDeg = h.importRotation;
+  fit.offset = h.importOffset;
+  fit.headSpheres = model.spheres();
+  fit.headField = model.field();
+  fit.snapRoots = true;
+  const GrowthHead head{fit.headSpheres, fit.headField};
+  if (findRoots) r.turnedStrands = turnRootsFirst(g);
+  const io::FitReport fitted = io::fitToHead(g, fit);
+  // The reader checked that the file's points are finite and its strands go somewhere, but the
+  // fit can undo both: points near float's limit rotated or scaled past it, a tiny spread of
+  // roots scaled up to the head's size, or a tiny import scale that collapses a strand.
+  if (const std::string problem = checkFitted(g); !problem.empty()) {
+    if (error)
+      *error = path + ": " + problem + " after fitting to the head (scale " +
+               std::to_string(fitted.scale) +
+               "); check hairstyle.import_scale, import_rotation and import_offset";
+    return false;
+  }
+  // Flaws that only the scene's resolution names: strands too short to simulate, points too
+  // close to tell apart.
+  at("repairing", 0.35);
+  io::RepairOptions repair;
+  repair.minLength = 0.5 * double(h.segmentLength);
+  repair.mergeDistance = kMergeShare * double(h.segmentLength);
+  repair.name = path;
+  const size_t fitStrands = g.strandCount();
+  r.repair = io::repairGroom(g, repair);
+  if (g.strandCount() == 0) {
+    if (error)
+      *error = path + ": no strand is left: all " + std::to_string(fitStrands) +
+               " are shorter than half of hairstyle.segment_length (" +
+               std::to_string(repair.minLength) + " m) once fitted to the head (scale " +
+               std::to_string(fitted.scale) +
+               "); check hairstyle.import_scale, import_rotation and import_offset";
+    return false;
+  }
+  r.filePoints = g.pointCount();
+  at("resampling", 0.45);
+  if (h.resampleTolerance > 0.0f) {
+    io::ResampleOptions opt;
+    opt.minParticles = uint32_t(h.minParticles);
+    opt.maxParticles = uint32_t(h.maxParticles);
+    opt.tolerance = h.resampleTolerance;
+    io::resampleGroom(g, opt);
+  }
+  const std::string problem = io::checkGroomStructure(g);
+  if (!problem.empty()) {
+    if (error) *error = path + ": " + problem;
+    return false;
+  }
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    if (g.strandSize(s) > kMaxStrandParticles) {
+      if (error)
+        *error = path + ": strand " + std::to_string(s) + " has " +
+                 std::to_string(g.strandSize(s)) + " points, more than the " +
+                 std::to_string(kMaxStrandParticles) +
+                 " a strand the solvers take: set hairstyle.resample_tolerance above 0 to thin "
+                 "it to at most hairstyle.max_particles";
+      return false;
+    }
+  // No particle starts inside the head: the roots are on its surface, the rest inside go out
+  // to the collision radius.
+  const double margin = double(c.collision.radius);
+  const size_t every = std::max<size_t>(1, g.strandCount() / 100);
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    if (s % every == 0) at("placing", 0.7 + 0.3 * double(s) / double(g.strandCount()));
+    for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
+      glm::dvec3 p(g.points[i]), normal;
+      // Only a particle inside: one the hair radius from the surface is where a simulation
+      // holds it, and a groom exported from one comes back as it went out. A particle deep in
+      // the head takes more than one push along the field's gradient.
+      if (!(head.distance(p, normal) < 0.0)) continue;
+      bool pushed = false;
+      for (int k = 0; k < 8 && head.pushOut(p, margin); ++k) pushed = true;
+      if (pushed) {
+        g.points[i] = glm::vec3(p);
+        ++r.pushedParticles;
+      }
+    }
+  }
+  at("placing", 1.0);
+  if (r.pushedParticles > 0) {
+    // Particles pushed from inside land on the surface nearest each: a run of them (a strand
+    // the file drew through the head) lands on one point. Merged again, counted again.
+    r.repair.add(io::repairGroom(g, repair));
+    if (g.strandCount() == 0) {
+      if (error)
+        *error = path +
+                 ": no strand is left: every strand lies inside the head, once fitted to "
+                 "it (scale " +
+                 std::to_string(fitted.scale) +
+                 "); check hairstyle.import_scale, import_rotation and import_offset";
+      return false;
+    }
+  }
+  r.simulatedPoints = g.pointCount();
+  out = std::move(g);
+  return true;
+}
+
+std::string groomReportText(const GroomReport& r) {
+  std::string parts = r.repair.summary();
+  auto add = [&](size_t n, const char* one, const char* many) {
+    if (n == 0) return;
+    if (!parts.empty()) parts += "; ";
+    parts += std::to_string(n) + (n == 1 ? one : many);
+  };
+  add(r.turnedStrands, " strand turned root first", " strands turned root first");
+  add(r.pushedParticles, " particle moved out of the head", " particles moved out of the head");
+  if (parts.empty()) return {};
+  std::string text = "the groom file: " + parts;
+  for (const std::string& n : r.repair.notes) text += "\n  " + n;
+  return text;
+}
+
+}  // namespace csm
