@@ -1,6 +1,7 @@
 #include "app/preset_document.h"
 
 #include "app/params.h"
+#include "app/preset.h"
 
 namespace csm {
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/preset.h"
+#include "app/preset_value.h"
 
 namespace csm {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "app/cli.h"
-#include "app/preset.h"
+#include "app/preset_value.h"
 
 namespace csm {
 

@@ -29,7 +29,7 @@
 
 #include "app/cli.h"
 #include "app/panels.h"
-#include "app/preset.h"
+#include "app/preset_value.h"
 #include "app/preset_document.h"
 #include "app/scene_view.h"
 #include "app/sim_controls.h"

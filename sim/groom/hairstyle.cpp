@@ -11,7 +11,6 @@
 
 #include "sim/core/segment_pairs.h"
 #include "sim/head/distance_grid.h"
-#include "sim/head/mannequin.h"
 #include "sim/head/head_model.h"
 #include "sim/groom/growth_head.h"
 #include "sim/groom/resample.h"

@@ -13,7 +13,6 @@
 #include "sim/groom/growth_head.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/groom/resample.h"
-#include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
 
