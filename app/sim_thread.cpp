@@ -268,8 +268,12 @@ void SimThread::publish(long ticket) {
   f->ticket = ticket;
   f->loaded = loaded_;
   Solver& solver = sim_->solver();
-  f->solver = std::string(solver.name());
-  f->solverVariant = solver.variant();
+  // takeFigures names a loaded scene's solver with its other figures; before a scene loads the
+  // panels name it all the same.
+  if (!loaded_) {
+    f->solver = std::string(solver.name());
+    f->solverVariant = solver.variant();
+  }
   if (loaded_) {
     takeFigures(*sim_, *f);
     f->frame = sim_->frame();
