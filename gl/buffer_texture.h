@@ -11,6 +11,7 @@
 #pragma once
 
 #include "gl/buffer.h"
+#include "gl/enums.h"
 #include "gl/gl.h"
 
 namespace csm::gl {
@@ -23,6 +24,9 @@ class BufferTexture {
   BufferTexture(const Buffer& buffer, GLenum internalFormat);
   // A view of `size` bytes of `buffer` from `offset` (see attachRange).
   BufferTexture(const Buffer& buffer, GLenum internalFormat, GLintptr offset, GLsizeiptr size);
+  BufferTexture(const Buffer& buffer, TextureFormat format) : BufferTexture(buffer, GLenum(format)) {}
+  BufferTexture(const Buffer& buffer, TextureFormat format, GLintptr offset, GLsizeiptr size)
+      : BufferTexture(buffer, GLenum(format), offset, size) {}
   ~BufferTexture();
   BufferTexture(const BufferTexture&) = delete;
   BufferTexture& operator=(const BufferTexture&) = delete;
@@ -36,15 +40,22 @@ class BufferTexture {
 
   // Points the view at `buffer` (again, after the buffer was reallocated).
   void attach(const Buffer& buffer, GLenum internalFormat);
+  void attach(const Buffer& buffer, TextureFormat format) { attach(buffer, GLenum(format)); }
   // Points the view at `size` bytes of `buffer` from `offset` (a multiple of
   // GL_TEXTURE_BUFFER_OFFSET_ALIGNMENT).
   void attachRange(const Buffer& buffer, GLenum internalFormat, GLintptr offset, GLsizeiptr size);
+  void attachRange(const Buffer& buffer, TextureFormat format, GLintptr offset, GLsizeiptr size) {
+    attachRange(buffer, GLenum(format), offset, size);
+  }
   // Binds for texelFetch on texture unit `unit`.
   void bind(GLuint unit) const;
   // Binds for imageLoad / imageStore on image unit `unit`: `access` GL_READ_ONLY,
   // GL_WRITE_ONLY or GL_READ_WRITE; `format` the view's internal format, which the shader's
   // layout qualifier must name (rgba32ui, rg32ui, ...).
   void bindImage(GLuint unit, GLenum access, GLenum format) const;
+  void bindImage(GLuint unit, ImageAccess access, TextureFormat format) const {
+    bindImage(unit, GLenum(access), GLenum(format));
+  }
   GLuint id() const { return id_; }
 
  private:

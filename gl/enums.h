@@ -3,18 +3,32 @@
 // pixel layouts, buffer usage and targets, filters, primitives, shader stages. render/ and app/
 // say what they mean with them, without GL's own enums, and cannot pass an attachment where a
 // format goes (Magnum's GL::TextureFormat and GL::Framebuffer::ColorAttachment do the same).
-// gl/'s classes take them beside their GLenum overloads, which the GPU solver still uses; a
-// name is added here when a caller needs it.
+// The GPU solver (sim/gpu) names them too. gl/'s classes take them beside their GLenum
+// overloads, which gl/'s own code and its tests use; a name is added here when a caller needs it.
 #include "gl/gl.h"
 
 namespace csm::gl {
 
-// A texture's or renderbuffer's internal format.
+// A texture's, renderbuffer's or buffer texture's internal format (the 32-bit ones are the
+// GPU solver's texel views of its buffers and its image loads and stores).
 enum class TextureFormat : GLenum {
   Rgba8 = GL_RGBA8,
   Rgba16f = GL_RGBA16F,
   Depth24 = GL_DEPTH_COMPONENT24,
   Depth32f = GL_DEPTH_COMPONENT32F,
+  R32f = GL_R32F,
+  Rg32f = GL_RG32F,
+  Rgba32f = GL_RGBA32F,
+  Rgba32i = GL_RGBA32I,
+  R32ui = GL_R32UI,
+  Rg32ui = GL_RG32UI,
+  Rgba32ui = GL_RGBA32UI,
+};
+// What a shader does with an image unit: imageLoad, imageStore or both.
+enum class ImageAccess : GLenum {
+  ReadOnly = GL_READ_ONLY,
+  WriteOnly = GL_WRITE_ONLY,
+  ReadWrite = GL_READ_WRITE,
 };
 
 // Where a framebuffer's draws go and its reads come from. WindowBack is the default
@@ -65,6 +79,7 @@ enum class BufferUsage : GLenum {
   StaticDraw = GL_STATIC_DRAW,    // written once by the CPU, read by draws and shaders
   DynamicDraw = GL_DYNAMIC_DRAW,  // written often by the CPU (uniforms a frame)
   DynamicCopy = GL_DYNAMIC_COPY,  // written by the GPU (shaders, copies), read by the GPU
+  StreamRead = GL_STREAM_READ,    // written by the GPU, read back by the CPU (staging)
 };
 // An indexed binding point a buffer is bound to for shaders.
 enum class BufferTarget : GLenum {

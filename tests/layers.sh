@@ -4,9 +4,9 @@
 # gpu, run, verify. Fails on an include against that direction (a folder includes only folders
 # below it or itself), on sim/verify in the app or the renderer, on sim/run in the renderer, on
 # sim/gpu in the app (it has the solver factory), on GL outside sim/gpu, on the CPU library of
-# sim/run reaching the GPU solver, on the panels including the viewer, on a GL_ constant in the
-# app or the renderer, on two modules (a header and its source) that include each other, and on
-# a CPU test binary that links a GL, window or GUI library.
+# sim/run reaching the GPU solver, on the panels including the viewer, on a GL_ constant outside
+# gl/ (the simulation, the app, the renderer), on two modules (a header and its source) that
+# include each other, and on a CPU test binary that links a GL, window or GUI library.
 #   tests/layers.sh SOURCE_DIR CPU_TEST_BINARY
 set -u
 src=$1
@@ -56,8 +56,9 @@ if [ -n "$hits" ]; then echo "FAIL: raw GL calls outside gl/:"; echo "$hits"; fa
 # The panels see the viewer through PanelView and PanelRequests (app/panels.h), not its class.
 hits=$(grep -nE '#include "app/viewer\.h"' "$src"/app/panels*.h "$src"/app/panels*.cpp 2>/dev/null)
 if [ -n "$hits" ]; then echo "FAIL: the panels include the viewer:"; echo "$hits"; fail=1; else echo "ok: the panels do not include app/viewer.h"; fi
-# GL's constants stay behind gl/ too: the app and the renderer name formats, attachments,
-# usage, primitives, ... with gl/'s typed enums (gl/enums.h).
+# GL's constants stay behind gl/ too: the simulation, the renderer and the app name formats,
+# attachments, usage, image access, primitives, ... with gl/'s typed enums (gl/enums.h).
+check sim '\bGL_[A-Z0-9_]+' "sim/ names no GL_ constant (gl/enums.h has typed ones)"
 check app '\bGL_[A-Z0-9_]+' "app/ names no GL_ constant (gl/enums.h has typed ones)"
 check render '\bGL_[A-Z0-9_]+' "render/ names no GL_ constant (gl/enums.h has typed ones)"
 # No two modules (a header and its source, app/viewer.{h,cpp}) include each other: a pair that

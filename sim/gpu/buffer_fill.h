@@ -7,6 +7,7 @@
 
 #include "gl/buffer.h"
 #include "gl/buffer_texture.h"
+#include "gl/enums.h"
 
 namespace csm::gpu {
 
@@ -28,7 +29,7 @@ void zeroed(gl::Buffer& buffer, size_t count) {
 }
 
 // A texelFetch view of `buffer` (see gl/buffer_texture.h).
-inline void view(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format) {
+inline void view(gl::BufferTexture& tex, const gl::Buffer& buffer, gl::TextureFormat format) {
   if (tex.id() == 0)
     tex = gl::BufferTexture(buffer, format);
   else
@@ -36,7 +37,7 @@ inline void view(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format
 }
 
 // A view of `size` bytes of `buffer` from `offset` (see BufferTexture::attachRange).
-inline void viewRange(gl::BufferTexture& tex, const gl::Buffer& buffer, GLenum format,
+inline void viewRange(gl::BufferTexture& tex, const gl::Buffer& buffer, gl::TextureFormat format,
                       GLintptr offset, GLsizeiptr size) {
   if (tex.id() == 0)
     tex = gl::BufferTexture(buffer, format, offset, size);

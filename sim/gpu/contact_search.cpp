@@ -45,7 +45,7 @@ bool ContactSearch::build(std::string* error, ContactSolve& solve,
   capacity_.setDevice(uint64_t(std::max<GLint>(caps.maxTextureBufferSize, 0)),
                       uint64_t(std::max<GLint>(caps.textureBufferOffsetAlignment, 1)));
   searchCounters_ = gl::Buffer();
-  searchCounters_.setData(kSearchCounters * sizeof(uint32_t), nullptr, GL_STREAM_READ);
+  searchCounters_.setData(kSearchCounters * sizeof(uint32_t), nullptr, gl::BufferUsage::StreamRead);
   return passes_.count.build("sim/grid_count.comp", CSM_PARTICLE_GROUP, with({}), error) &&
          passes_.scanBlocks.build("sim/scan_blocks.comp", CSM_PARTICLE_GROUP, with({}), error) &&
          passes_.scanSums.build("sim/scan_sums.comp", CSM_SCAN_GROUP, with({}), error) &&
@@ -109,7 +109,7 @@ void ContactSearch::reset(size_t particles, uint32_t segments, double meanSegmen
   std::vector<uint32_t> order(particles);  // in index order until the first search
   std::iota(order.begin(), order.end(), 0u);
   fill(segmentOrder_, order);
-  view(gridStartTex_, gridStart_, GL_R32UI);
+  view(gridStartTex_, gridStart_, gl::TextureFormat::R32ui);
   searchPending_ = false;
   capacity_.clear();  // reserveFor sizes the entry buffer and the pair list
 }
@@ -175,7 +175,7 @@ void ContactSearch::writeParams(SimParams& p, float reach) const {
 }
 
 void ContactSearch::bind() const {
-  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
+  const gl::BufferTarget ssbo = gl::BufferTarget::ShaderStorage;
   gridCount_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   gridStart_.bindBase(ssbo, CSM_BIND_GRID_START);
   scanBlockSums_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
@@ -187,12 +187,12 @@ void ContactSearch::bind() const {
   candidateRange_.bindBase(ssbo, CSM_BIND_CANDIDATE_RANGE);
   entryTex_.bind(CSM_TEX_ENTRIES);
   gridStartTex_.bind(CSM_TEX_GRID_START);
-  entryTex_.bindImage(CSM_IMAGE_ENTRIES, GL_WRITE_ONLY, GL_RGBA32UI);
-  pairListTex_.bindImage(CSM_IMAGE_PAIR_LIST, GL_READ_WRITE, GL_RGBA32UI);
-  pairSidesTex_.bindImages(CSM_IMAGE_PAIR_SIDES, CSM_IMAGE_PAIR_SIDES_HIGH, GL_READ_WRITE);
-  candidatesTex_[half_].bindImages(CSM_IMAGE_CANDIDATES, CSM_IMAGE_CANDIDATES_HIGH, GL_READ_WRITE);
+  entryTex_.bindImage(CSM_IMAGE_ENTRIES, gl::ImageAccess::WriteOnly, gl::TextureFormat::Rgba32ui);
+  pairListTex_.bindImage(CSM_IMAGE_PAIR_LIST, gl::ImageAccess::ReadWrite, gl::TextureFormat::Rgba32ui);
+  pairSidesTex_.bindImages(CSM_IMAGE_PAIR_SIDES, CSM_IMAGE_PAIR_SIDES_HIGH, gl::ImageAccess::ReadWrite);
+  candidatesTex_[half_].bindImages(CSM_IMAGE_CANDIDATES, CSM_IMAGE_CANDIDATES_HIGH, gl::ImageAccess::ReadWrite);
   candidatesTex_[half_ ^ 1u].bindImages(CSM_IMAGE_LAST_CANDIDATES, CSM_IMAGE_LAST_CANDIDATES_HIGH,
-                                        GL_READ_ONLY);
+                                        gl::ImageAccess::ReadOnly);
 }
 
 void ContactSearch::findCandidates(StageTimer* timer, bool measured) {
@@ -221,7 +221,7 @@ void ContactSearch::findCandidates(StageTimer* timer, bool measured) {
   // Counting sort of the pairs by segment: the same scan over the segments' pair counts, its
   // buffers bound in the grid's place for the while; scatter, one invocation per listed
   // pair.
-  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
+  const gl::BufferTarget ssbo = gl::BufferTarget::ShaderStorage;
   segmentPairs_.bindBase(ssbo, CSM_BIND_GRID_COUNT);
   segmentBase_.bindBase(ssbo, CSM_BIND_GRID_START);
   segmentScanBlocks_.bindBase(ssbo, CSM_BIND_SCAN_BLOCKS);
@@ -317,13 +317,13 @@ bool ContactSearch::countersSeen(const uint32_t* c) {
 void ContactSearch::growEntries(uint64_t needed) {
   if (!capacity_.growEntries(needed)) return;
   zeroed<glm::uvec4>(entries_, capacity_.entries());
-  view(entryTex_, entries_, GL_RGBA32UI);
+  view(entryTex_, entries_, gl::TextureFormat::Rgba32ui);
 }
 
 void ContactSearch::growPairList(uint64_t needed) {
   if (!capacity_.growPairs(needed)) return;
   zeroed<glm::uvec4>(pairList_, capacity_.pairs());
-  view(pairListTex_, pairList_, GL_RGBA32UI);
+  view(pairListTex_, pairList_, gl::TextureFormat::Rgba32ui);
   const uint64_t sides = 2 * uint64_t(capacity_.pairs());
   const uint32_t split = capacity_.listSplit();
   zeroed<glm::uvec2>(pairSides_, sides);

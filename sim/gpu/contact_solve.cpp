@@ -51,7 +51,7 @@ void ContactSolve::reset(size_t particles, uint32_t segments) {
 }
 
 void ContactSolve::bind() const {
-  correction_.bindBase(GL_SHADER_STORAGE_BUFFER, CSM_BIND_CORRECTION);
+  correction_.bindBase(gl::BufferTarget::ShaderStorage, CSM_BIND_CORRECTION);
 }
 
 void ContactSolve::run(unsigned substep, int iterations, bool splitViews) {

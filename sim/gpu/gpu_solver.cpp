@@ -244,7 +244,7 @@ void GpuSolver::uploadHeadField() {
   const DistanceGrid* field = shape_.field;
   if (field == uploadedField_ && headField_.id() != 0) return;
   gpu::fill(headField_, field ? field->nodes : std::vector<glm::vec4>(1));
-  gpu::view(headFieldTex_, headField_, GL_RGBA32F);
+  gpu::view(headFieldTex_, headField_, gl::TextureFormat::Rgba32f);
   uploadedField_ = field;
   uploadedHead_ = headModel_.shared();  // keeps the field uploaded alive, so its address names it
 }
@@ -351,7 +351,7 @@ void GpuSolver::uploadParams(const std::vector<Pose>& poses, const std::vector<P
   if (reads_.uniformParams) {
     // A uniform block is read whole: the buffer holds CSM_MAX_SUBSTEPS steps, used or not.
     if (size_t(paramsBuffer_.size()) < kParamBlockBytes)
-      paramsBuffer_.setData(GLsizeiptr(kParamBlockBytes), nullptr, GL_DYNAMIC_DRAW);
+      paramsBuffer_.setData(GLsizeiptr(kParamBlockBytes), nullptr, gl::BufferUsage::DynamicDraw);
     paramsBuffer_.setSubData(0, GLsizeiptr(blob.size()), blob.data());
   } else {
     paramsBuffer_.upload(blob);
@@ -360,12 +360,12 @@ void GpuSolver::uploadParams(const std::vector<Pose>& poses, const std::vector<P
 }
 
 void GpuSolver::bindAll() {
-  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
+  const gl::BufferTarget ssbo = gl::BufferTarget::ShaderStorage;
   hair_.bind();
   contactSearch_.bind();
   contactSolve_.bind();
   paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
-  if (reads_.uniformParams) paramsBuffer_.bindBase(GL_UNIFORM_BUFFER, CSM_UNIFORM_PARAMS);
+  if (reads_.uniformParams) paramsBuffer_.bindBase(gl::BufferTarget::Uniform, CSM_UNIFORM_PARAMS);
   volume_.bind();
   headFieldTex_.bind(CSM_TEX_HEAD_FIELD);
   headField_.bindBase(ssbo, CSM_BIND_HEAD_FIELD);
@@ -569,7 +569,7 @@ std::unique_ptr<FrameCopy> GpuSolver::copyFrame(bool withState) {
   copy->time = time_;
   copy->head = head_;
   if (n > 0) {
-    copy->staging = gl::Buffer(bytes * (withState ? 3 : 1), nullptr, GL_STREAM_READ);
+    copy->staging = gl::Buffer(bytes * (withState ? 3 : 1), nullptr, gl::BufferUsage::StreamRead);
     gl::memoryBarrier(gl::Barrier::BufferUpdate);
     hair_.position.copyTo(copy->staging, 0, 0, bytes);
     if (withState) {
@@ -659,7 +659,7 @@ std::optional<FrameSample> GpuSolver::takeSample(bool wait) {
 }
 
 std::unique_ptr<GpuSolver> GpuSolver::start(std::string* error) {
-  // Without a current context GL calls go to the dispatcher's no-op stubs: GL_VERSION is null.
+  // Without a current context GL calls go to the dispatcher's no-op stubs: the version string is null.
   if (gl::versionString() == nullptr) {
     if (error)
       *error =

@@ -13,13 +13,13 @@ void SplitView::attach(const gl::Buffer& buffer, uint64_t texels, uint32_t split
   const uint64_t highFirst = texels > split ? split : 0;
   const uint64_t highTexels = texels > split ? texels - split : lowTexels;
   constexpr uint64_t bytes = sizeof(glm::uvec2);
-  viewRange(low, buffer, GL_RG32UI, 0, GLsizeiptr(lowTexels * bytes));
-  viewRange(high, buffer, GL_RG32UI, GLintptr(highFirst * bytes), GLsizeiptr(highTexels * bytes));
+  viewRange(low, buffer, gl::TextureFormat::Rg32ui, 0, GLsizeiptr(lowTexels * bytes));
+  viewRange(high, buffer, gl::TextureFormat::Rg32ui, GLintptr(highFirst * bytes), GLsizeiptr(highTexels * bytes));
 }
 
-void SplitView::bindImages(GLuint lowUnit, GLuint highUnit, GLenum access) const {
-  low.bindImage(lowUnit, access, GL_RG32UI);
-  high.bindImage(highUnit, access, GL_RG32UI);
+void SplitView::bindImages(GLuint lowUnit, GLuint highUnit, gl::ImageAccess access) const {
+  low.bindImage(lowUnit, access, gl::TextureFormat::Rg32ui);
+  high.bindImage(highUnit, access, gl::TextureFormat::Rg32ui);
 }
 
 }  // namespace csm::gpu

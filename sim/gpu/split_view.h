@@ -7,6 +7,7 @@
 
 #include "gl/buffer.h"
 #include "gl/buffer_texture.h"
+#include "gl/enums.h"
 
 namespace csm::gpu {
 
@@ -15,7 +16,7 @@ struct SplitView {
   // Views `texels` texels of `buffer`: the first `split` in `low`, the rest in `high` (which,
   // when the buffer needs no second view, views the first's texels, never read).
   void attach(const gl::Buffer& buffer, uint64_t texels, uint32_t split);
-  void bindImages(GLuint lowUnit, GLuint highUnit, GLenum access) const;
+  void bindImages(GLuint lowUnit, GLuint highUnit, gl::ImageAccess access) const;
 };
 
 }  // namespace csm::gpu

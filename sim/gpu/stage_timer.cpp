@@ -22,7 +22,7 @@ void StageTimer::stage(Stage stage) {
   if (cpuClock_) {
     start_ = std::chrono::steady_clock::now();
   } else {
-    if (f.used == f.queries.size()) f.queries.emplace_back(stage, gl::Query(GL_TIME_ELAPSED));
+    if (f.used == f.queries.size()) f.queries.emplace_back(stage, gl::Query());
     f.queries[f.used].first = stage;
     f.queries[f.used].second.begin();
     ++f.used;

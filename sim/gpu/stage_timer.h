@@ -1,4 +1,4 @@
-// GPU time per stage of the solver's frame: one GL_TIME_ELAPSED query around each group of
+// GPU time per stage of the solver's frame: one time-elapsed query around each group of
 // dispatches, kept for the last few frames; times() reads the newest frame whose results are
 // in, never waiting. Software drivers (llvmpipe) run a dispatch before glDispatchCompute
 // returns and report no time for it in their timer queries, so there the stages are timed by

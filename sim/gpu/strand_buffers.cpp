@@ -46,9 +46,9 @@ void StrandBuffers::upload(const HairState& st, const glm::dquat& head) {
   groups = uint32_t(groupStarts.size() - 1);
   fill(groupFirst, groupStarts);
   fill(rotation, std::vector<glm::vec4>(particles, glm::vec4(head.x, head.y, head.z, head.w)));
-  view(positionTex, position, GL_RGBA32F);
-  view(velocityTex, velocity, GL_RGBA32F);
-  view(predictedTex, predicted, GL_RGBA32F);
+  view(positionTex, position, gl::TextureFormat::Rgba32f);
+  view(velocityTex, velocity, gl::TextureFormat::Rgba32f);
+  view(predictedTex, predicted, gl::TextureFormat::Rgba32f);
 }
 
 void StrandBuffers::uploadRegions(const HairState& state, const Regions& regions) {
@@ -65,24 +65,24 @@ void StrandBuffers::uploadRegions(const HairState& state, const Regions& regions
   for (size_t i = 0; i < particleCount; ++i)
     restTau[i] = glm::vec4(glm::vec3(state.rest[i]), float(regions.clampFit[i].y));
   fill(rest, restTau);
-  view(restTex, rest, GL_RGBA32F);
+  view(restTex, rest, gl::TextureFormat::Rgba32f);
   std::vector<glm::vec4> perStrand(strandCount);
   for (size_t s = 0; s < strandCount; ++s)
     perStrand[s] = glm::vec4(float(regions.rate[s]), float(regions.ghostMass[s]),
                              float(regions.pinned[s]), float(regions.fitEnd[s]));
   fill(strandStiffness, perStrand);
-  view(regionTex, region, GL_RGBA32F);
+  view(regionTex, region, gl::TextureFormat::Rgba32f);
   const std::vector<double> w = contactInverseMass(state, regions);
   // Per particle: the contacts' inverse mass, the clamp's pull (CSM_BIND_PARTICLE_CONSTANTS).
   std::vector<glm::vec2> constants(particleCount);
   for (size_t i = 0; i < particleCount; ++i)
     constants[i] = glm::vec2(float(w[i]), float(regions.clampPull[i]));
   fill(particleConstants, constants);
-  view(particleConstantsTex, particleConstants, GL_RG32F);
+  view(particleConstantsTex, particleConstants, gl::TextureFormat::Rg32f);
 }
 
 void StrandBuffers::bind() const {
-  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
+  const gl::BufferTarget ssbo = gl::BufferTarget::ShaderStorage;
   position.bindBase(ssbo, CSM_BIND_POSITION);
   velocity.bindBase(ssbo, CSM_BIND_VELOCITY);
   strandFirst.bindBase(ssbo, CSM_BIND_STRAND_FIRST);

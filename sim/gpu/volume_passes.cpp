@@ -29,13 +29,13 @@ void VolumePasses::reset(const HairState& state, const CollisionConfig& collisio
   // The nodes' sums, then the box of the nodes the splat reached (volumeBox in common.glsl).
   zeroed<glm::ivec4>(sums_, grid_.empty() ? 0 : grid_.nodes() + 2);
   zeroed<glm::vec4>(field_, 2 * grid_.nodes());
-  view(sumsTex_, sums_, GL_RGBA32I);
-  view(restTex_, rest_, GL_R32F);
-  view(fieldTex_, field_, GL_RGBA32F);
+  view(sumsTex_, sums_, gl::TextureFormat::Rgba32i);
+  view(restTex_, rest_, gl::TextureFormat::R32f);
+  view(fieldTex_, field_, gl::TextureFormat::Rgba32f);
 }
 
 void VolumePasses::bind() const {
-  const GLenum ssbo = GL_SHADER_STORAGE_BUFFER;
+  const gl::BufferTarget ssbo = gl::BufferTarget::ShaderStorage;
   sums_.bindBase(ssbo, CSM_BIND_VOLUME_SUMS);
   length_.bindBase(ssbo, CSM_BIND_VOLUME_LENGTH);
   field_.bindBase(ssbo, CSM_BIND_VOLUME_FIELD);
