@@ -196,7 +196,7 @@ std::unique_ptr<Simulation> loadSimulation(const Options& options, const SceneSe
   }
   auto sim = std::make_unique<Simulation>(std::move(solver));
   if (!options.quiet) sim->setImportProgress(ImportProgressPrinter());
-  if (!sim->load(scene.preset.scene, scene.baseDir, &error)) {
+  if (!sim->load(scene.preset.scene, scene.baseDir, &error, scene.head)) {
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
     *status = 2;
     return nullptr;

@@ -6,6 +6,7 @@
 #include "app/scene_setup.h"
 #include "app/params.h"
 #include "app/preset.h"
+#include "sim/head/head_model.h"
 #ifdef CSM_HAVE_VIEWER
 #include "app/viewer.h"
 #endif
@@ -33,7 +34,12 @@ int validate(const std::vector<std::string>& files) {
   for (const std::string& f : files) {
     csm::Preset c = csm::defaultPreset();
     csm::PresetErrors errors;
-    if (csm::loadPreset(f, c, errors)) {
+    // The head too, as the scene that loads the preset reads it: its file and line when bad.
+    std::string headError;
+    if (csm::loadPreset(f, c, errors) &&
+        !csm::HeadModel::build(c.scene, &headError))
+      errors.messages.push_back(f + ": head.mesh: " + headError);
+    if (errors.messages.empty()) {
       std::printf("%s: ok (%d strands)\n", f.c_str(), c.scene.hairstyle.strands);
     } else {
       std::fputs(errors.text().c_str(), stderr);

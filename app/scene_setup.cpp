@@ -64,6 +64,13 @@ bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {
     std::string capacity = checkCapacity(out.preset.scene);
     if (!capacity.empty()) msgs += capacity + "\n";
   }
+  if (msgs.empty()) {
+    std::string headError;
+    out.head = HeadModel::build(out.preset.scene, &headError);
+    if (!out.head)
+      msgs += out.source + (options.sets.empty() ? ": " : " with --set: ") + "head.mesh: " +
+              headError + "\n";
+  }
   if (!msgs.empty()) {
     if (errors) *errors = msgs;
     return false;

@@ -2,10 +2,12 @@
 // file with default settings) with every --set applied.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "app/cli.h"
 #include "app/preset_value.h"
+#include "sim/head/head_model.h"
 
 namespace csm {
 
@@ -13,9 +15,13 @@ struct SceneSetup {
   Preset preset;
   std::string baseDir;  // where relative paths in the preset point
   std::string source;   // what the scene came from, for messages
+  // The scene's head, built from the preset once (head.mesh read, checked and sampled; spheres
+  // fitted): the scene that loads it (Simulation::load) uses this one, reading nothing again.
+  std::shared_ptr<const HeadModel> head;
 };
 
-// Returns false with messages (one a line) naming the file and JSON path, or the --set.
+// Returns false with messages (one a line) naming the file and JSON path, or the --set; a
+// head.mesh that cannot be read is named with its file and line.
 bool setupScene(const Options& options, SceneSetup& out, std::string* errors);
 
 // True when `path` names a groom file rather than a preset.

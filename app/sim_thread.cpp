@@ -162,8 +162,8 @@ void SimThread::apply(Pending& p, long ticket) {
   const long generation = sim_->generation();
   bool opened = false;
   if (p.open) {
-    const auto& [config, baseDir] = *p.open;
-    if (sim_->load(config, baseDir, &error)) {
+    const OpenScene& scene = *p.open;
+    if (sim_->load(scene.config, scene.baseDir, &error, scene.head)) {
       opened = true;
       loaded_ = true;
       sim_->setUserPose(Pose{});
@@ -334,14 +334,15 @@ long SimThread::post(const std::function<void(Pending&, long)>& edit) {
   return ticket;
 }
 
-long SimThread::open(const Config& config, const std::string& baseDir) {
+long SimThread::open(const Config& config, const std::string& baseDir,
+                     std::shared_ptr<const HeadModel> head) {
   return post([&](Pending& p, long ticket) {
     // A new scene makes what was posted for the old one moot.
     p.config.reset();
     p.configTicket = 0;
     p.reset = false;
     p.userPose.reset();
-    p.open = std::make_pair(config, baseDir);
+    p.open = OpenScene{config, baseDir, std::move(head)};
     p.openTicket = ticket;
   });
 }

@@ -33,6 +33,7 @@
 #include "gl/context.h"
 #include "sim/core/config.h"
 #include "sim/core/pose.h"
+#include "sim/head/head_model.h"
 #include "sim/run/timeline.h"
 #include "sim/run/make_solver.h"
 
@@ -92,8 +93,10 @@ class SimThread {
   SimThread& operator=(const SimThread&) = delete;
 
   // --- Commands: each returns its ticket -------------------------------------------------
-  // A new scene, from rest at time 0, the user's head pose cleared.
-  long open(const Config& config, const std::string& baseDir);
+  // A new scene, from rest at time 0, the user's head pose cleared. `head`: the scene's head when
+  // already built from `config` (SceneSetup's), else it is built with the scene.
+  long open(const Config& config, const std::string& baseDir,
+            std::shared_ptr<const HeadModel> head = nullptr);
   // Live parameters, or a regrow when a Rebuild parameter changed (the clock runs on).
   long setConfig(const Config& config);
   long reset();  // back to rest, time 0; clears a NaN stop
@@ -158,9 +161,14 @@ class SimThread {
     bool keepA = false;
     std::optional<bool> showA;
   };
+  struct OpenScene {
+    Config config;
+    std::string baseDir;
+    std::shared_ptr<const HeadModel> head;  // null: built with the scene
+  };
   struct Pending {
     bool posted = false;  // a command came
-    std::optional<std::pair<Config, std::string>> open;
+    std::optional<OpenScene> open;
     std::optional<Config> config;
     long openTicket = 0, configTicket = 0;  // the commands' own tickets, for their events
     bool reset = false;

@@ -234,7 +234,8 @@ bool Viewer::waitForSimFrame(long frame, double timeoutSeconds) {
 
 // --- The scene -------------------------------------------------------------------------
 
-void Viewer::startOpen(const Preset& preset, const std::string& baseDir, const std::string& path) {
+void Viewer::startOpen(const Preset& preset, const std::string& baseDir, const std::string& path,
+                       std::shared_ptr<const HeadModel> head) {
   PendingOpen p;
   p.preset = preset;
   p.baseDir = baseDir;
@@ -242,16 +243,16 @@ void Viewer::startOpen(const Preset& preset, const std::string& baseDir, const s
   // Running, from the new scene's first frame on (posted first: the open is the last
   // command open() waits for).
   controls_->setPaused(false);
-  p.ticket = sim_->open(preset.scene, baseDir);
+  p.ticket = sim_->open(preset.scene, baseDir, std::move(head));
   pendingOpen_ = std::move(p);
   // A NaN of the old scene goes with it.
   controls_->opened(pendingOpen_->ticket);
 }
 
 bool Viewer::open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
-                  std::string* error) {
+                  std::string* error, std::shared_ptr<const HeadModel> head) {
   openError_.clear();
-  startOpen(preset, baseDir, presetPath);
+  startOpen(preset, baseDir, presetPath, std::move(head));
   const long ticket = pendingOpen_->ticket;
   const bool answered = sim_->waitForTicket(ticket);
   takeSimFrame();
@@ -300,8 +301,9 @@ void Viewer::showPresetErrors(const std::string& text, const std::string& note) 
 }
 
 bool Viewer::applyConfig(const Preset& next) {
-  // The running scene's head: a mesh it already holds is not read again on this thread.
-  std::vector<std::string> problems = crossCheck(next.scene, frame_->head.get());
+  // Nothing is read from disk here: a changed head.mesh is read by the simulation thread as it
+  // regrows, which refuses a bad one (ConfigRefused) and keeps the scene that runs.
+  std::vector<std::string> problems = crossCheck(next.scene);
   const std::string capacity = checkCapacity(next.scene);
   if (!capacity.empty()) problems.push_back(capacity);
   if (!problems.empty()) {
@@ -624,7 +626,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
     return startupErrors.empty() ? 1 : 2;
   }
   if (!viewer->open(scene.preset, scene.baseDir, startupErrors.empty() ? options.preset : "",
-                    &error)) {
+                    &error, scene.head)) {
     std::fprintf(stderr, "csmhair: %s: %s\n", scene.source.c_str(), error.c_str());
     return 2;
   }

@@ -38,6 +38,7 @@
 #include "app/viewer_image.h"
 #include "app/viewer_message.h"
 #include "app/viewer_stats.h"
+#include "sim/head/head_model.h"
 
 namespace csm {
 
@@ -80,9 +81,10 @@ class Viewer : private PanelRequests {
 
   // --- The scene -------------------------------------------------------------------------
   // Makes `preset` the current one and waits until it runs; `presetPath` is empty for the
-  // built-in one. False (the running scene stays) when its hair cannot be grown.
+  // built-in one; `head` the scene's head when already built (SceneSetup's), else the scene
+  // builds it. False (the running scene stays) when its hair cannot be grown.
   bool open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
-            std::string* error);
+            std::string* error, std::shared_ptr<const HeadModel> head = nullptr);
   // Reads and validates a preset file and starts opening it; the window keeps drawing the
   // running scene until the new one is ready. When the file is not a valid preset, or its
   // hair cannot be grown, the current scene stays and the messages are shown in the window
@@ -167,7 +169,8 @@ class Viewer : private PanelRequests {
   std::string defaultScreenshotName() const;
   // From any thread; messages from other threads show from the next frame on.
   void log(MessageLevel level, std::string text);
-  void startOpen(const Preset& preset, const std::string& baseDir, const std::string& path);
+  void startOpen(const Preset& preset, const std::string& baseDir, const std::string& path,
+                 std::shared_ptr<const HeadModel> head = nullptr);
   void takeSimFrame();
   void handle(const SimEvent& e);
   void handleKeys();

@@ -4,12 +4,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/head/head_model.h"
-#include "sim/head/obj_mesh.h"
-
 namespace csm {
 
-std::vector<std::string> crossCheck(const Config& c, const HeadModel* loaded) {
+std::vector<std::string> crossCheck(const Config& c) {
   std::vector<std::string> e;
   const HairstyleConfig& h = c.hairstyle;
   if (h.minParticles > h.maxParticles)
@@ -26,12 +23,6 @@ std::vector<std::string> crossCheck(const Config& c, const HeadModel* loaded) {
                 " pins every particle of the shortest strand");
   if (glm::length(c.wind.direction) < 1e-6f && c.wind.strength > 0.0f)
     e.push_back("wind.direction: must not be zero when wind.strength is above 0");
-  // Read and checked here when no scene holds it yet; the scene that loads it reads it again
-  // and samples its field (HeadModel::build), failing to load if it has gone since.
-  if (!c.head.mesh.empty() && !(loaded && loaded->meshPath() == headMeshPath(c))) {
-    const io::ObjReadResult mesh = io::readObjMesh(headMeshPath(c));
-    if (!mesh.mesh) e.push_back("head.mesh: " + mesh.error);
-  }
   return e;
 }
 

@@ -1,19 +1,18 @@
 // Checks of a scene beyond single values' ranges: between parameters, and of the machine's
-// capacity. Presets run them on reading; the viewer on every change.
+// capacity. Presets run them on reading; the viewer on every change. Neither reads a file: the
+// head (head.mesh) is read and checked once, when the scene's HeadModel is built (setupScene,
+// --validate, or Simulation::load for a scene opened later).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "sim/core/config.h"
-#include "sim/head/head_model.h"
 
 namespace csm {
 
-// Checks that hold between parameters. One message a problem, naming the keys. head.mesh is
-// read and checked, unless `loaded` (the running scene's head, built and checked when the scene
-// loaded) was read from that file: an edit that leaves the mesh alone reads nothing from disk.
-std::vector<std::string> crossCheck(const Config& c, const HeadModel* loaded = nullptr);
+// Checks that hold between parameters. One message a problem, naming the keys.
+std::vector<std::string> crossCheck(const Config& c);
 
 // Refuses scenes the machine cannot hold, before anything is allocated. Empty when fine.
 std::string checkCapacity(const Config& c);

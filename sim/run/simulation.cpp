@@ -10,8 +10,9 @@
 
 namespace csm {
 
-bool Simulation::load(const Config& config, const std::string& baseDir, std::string* error) {
-  if (!regrow(config, baseDir, error)) return false;
+bool Simulation::load(const Config& config, const std::string& baseDir, std::string* error,
+                      std::shared_ptr<const HeadModel> head) {
+  if (!regrow(config, baseDir, error, head.get())) return false;
   startingSolver();
   reset();
   return solverReady(error);
@@ -24,15 +25,18 @@ void Simulation::startingSolver() const {
     importProgress_("starting the solver", 1.0);
 }
 
-bool Simulation::regrow(const Config& config, const std::string& baseDir, std::string* error) {
+bool Simulation::regrow(const Config& config, const std::string& baseDir, std::string* error,
+                        const HeadModel* known) {
   std::string capacity = checkCapacity(config);
   if (!capacity.empty()) {
     if (error) *error = capacity;
     return false;
   }
-  // The scene's head, once: the solver, the generator and the renderer share it.
+  // The scene's head, once: the solver, the generator and the renderer share it. A file that
+  // `known` or the running scene already holds is not read again.
   std::string headError;
-  std::shared_ptr<const HeadModel> head = HeadModel::build(config, &headError, head_.get());
+  std::shared_ptr<const HeadModel> head =
+      HeadModel::build(config, &headError, known ? known : head_.get());
   if (!head) {
     if (error) *error = "head.mesh: " + headError;
     return false;

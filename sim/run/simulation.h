@@ -42,8 +42,11 @@ class Simulation {
   // Where a long groom import stands, while load or setConfig build one (sim/groom/scene_groom.h).
   void setImportProgress(ImportProgress progress) { importProgress_ = std::move(progress); }
 
-  // Grows the groom and resets the solver. On failure keeps what it had and says why.
-  bool load(const Config& config, const std::string& baseDir, std::string* error);
+  // Grows the groom and resets the solver. On failure keeps what it had and says why. `head`,
+  // when given, is the scene's head already built from `config` (setupScene's): its mesh, field
+  // and fitted spheres are used rather than read and made again.
+  bool load(const Config& config, const std::string& baseDir, std::string* error,
+            std::shared_ptr<const HeadModel> head = nullptr);
   // Applies a changed config: regrows when a Rebuild parameter changed, else goes live.
   // Returns false (keeping the old scene) when the new groom cannot be built.
   bool setConfig(const Config& config, std::string* error);
@@ -87,7 +90,9 @@ class Simulation {
  private:
   void save(SimulationState& out, bool withSolver) const;
   // Grows the groom for `config` and keeps it; the solver is not touched.
-  bool regrow(const Config& config, const std::string& baseDir, std::string* error);
+  // `known`: a head whose parts (mesh, fitted spheres) a new one may share; else the running one.
+  bool regrow(const Config& config, const std::string& baseDir, std::string* error,
+              const HeadModel* known = nullptr);
   void boundRoots();
   // False, saying why, when the solver could not take the groom at its reset.
   bool solverReady(std::string* error) const;

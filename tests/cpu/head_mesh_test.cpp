@@ -297,11 +297,14 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   c.head.spheres = HeadConfig{}.spheres;
   c.collision.headShape = HeadShape::Sdf;
 
+  // A bad file is refused where the head is built (once a scene), with its file and line;
+  // crossCheck reads no file.
   c.head.mesh = "bad.obj";
-  const auto problems = crossCheck(c);
-  REQUIRE(problems.size() == 1);
-  CHECK_THAT(problems[0], Catch::StartsWith("head.mesh: " + (dir.path / "bad.obj").string() +
-                                            ":15: face vertex index 9"));
+  CHECK(crossCheck(c).empty());
+  std::string headError;
+  CHECK(HeadModel::build(c, &headError) == nullptr);
+  CHECK_THAT(headError,
+             Catch::StartsWith((dir.path / "bad.obj").string() + ":15: face vertex index 9"));
 
   // A preset names it relative to its own folder.
   dir.write("good.json", R"({"head": {"mesh": "sphere.obj"}, "hairstyle": {"strands": 10}})");
@@ -311,10 +314,14 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   CHECK(loadPreset((dir.path / "good.json").string(), p, errors));
   CHECK(p.scene.head.mesh == "sphere.obj");
   CHECK(HeadModel::require(p.scene)->field()->nodes == head->grid.nodes);
+  // Reading a preset reads no head: its file is read where the scene's head is built
+  // (setupScene, --validate and a scene's load, which name the preset and the file's line:
+  // tests/cli/head_mesh.sh).
   Preset q = defaultPreset();
-  CHECK_FALSE(loadPreset((dir.path / "bad.json").string(), q, errors));
-  CHECK_THAT(errors.text(),
-             Catch::Contains("bad.json: head.mesh: " + (dir.path / "bad.obj").string() + ":15: "));
+  CHECK(loadPreset((dir.path / "bad.json").string(), q, errors));
+  headError.clear();
+  CHECK(HeadModel::build(q.scene, &headError) == nullptr);
+  CHECK_THAT(headError, Catch::StartsWith((dir.path / "bad.obj").string() + ":15: "));
 }
 
 TEST_CASE("head.mesh gone when the scene loads: an error naming the file, not the mannequin",
@@ -344,21 +351,32 @@ TEST_CASE("head.mesh gone when the scene loads: an error naming the file, not th
   CHECK_THAT(solver.failure(), Catch::Contains("no head"));
 }
 
-TEST_CASE("crossCheck reads head.mesh only when the running scene does not hold it",
+TEST_CASE("head.mesh is read once: a scene loaded with the head built from it reads nothing again",
           "[head_mesh]") {
   TempDir dir;
   dir.write("sphere.obj", objText(icosphere(2)));
   Config c = Config{};
+  c.hairstyle.strands = 20;
   c.head.mesh = "sphere.obj";
   c.head.meshDir = dir.path.string();
-  const std::shared_ptr<const HeadModel> loaded = HeadModel::require(c);
+  const std::shared_ptr<const HeadModel> built = HeadModel::require(c);  // setupScene's
   std::filesystem::remove(dir.path / "sphere.obj");
-  // The viewer's edits check against the scene that runs: its head holds the mesh, read once.
-  CHECK(crossCheck(c, loaded.get()).empty());
-  // With no scene, or one holding another head, the file is read, and found gone.
-  CHECK(crossCheck(c).size() == 1);
+  // The checks of an edit read no file.
+  CHECK(crossCheck(c).empty());
+  // The scene loaded with the head handed in uses its mesh and field: the file, gone now, is
+  // not read again.
+  Simulation sim(std::make_unique<CpuSolver>());
+  std::string error;
+  REQUIRE(sim.load(c, dir.path.string(), &error, built));
+  CHECK(sim.head().field() == built->field());
+  // Without it, or with a head of another file (the mannequin's), the scene reads the file,
+  // and finds it gone.
+  Simulation fresh(std::make_unique<CpuSolver>());
+  CHECK_FALSE(fresh.load(c, dir.path.string(), &error));
+  CHECK_THAT(error, Catch::Contains((dir.path / "sphere.obj").string()));
   Config mannequin = Config{};
-  CHECK(crossCheck(c, HeadModel::require(mannequin).get()).size() == 1);
+  Simulation other(std::make_unique<CpuSolver>());
+  CHECK_FALSE(other.load(c, dir.path.string(), &error, HeadModel::require(mannequin)));
 }
 
 // Found by fuzz_obj (tests/fuzz/regressions/obj/): a NUL byte ended tinyobjloader's line
