@@ -3,7 +3,8 @@
 # TressFX, OBJ heads, OBJ hair curves) with libFuzzer under ASan, LeakSanitizer and UBSan, in build-fuzz/
 # (clang; configured and built here when needed, clang and libFuzzer installed when missing).
 #   scripts/fuzz.sh short [SECONDS]          CI: every target SECONDS (30) on a copy of its
-#                                            seeds, after every regression input once
+#                                            seeds, after every regression input once; as many
+#                                            targets at once as there are cores (FUZZ_PARALLEL)
 #   scripts/fuzz.sh long [SECONDS|-runs=N]   every target for SECONDS or N runs (default
 #                                            -runs=10000000), one after the other, one process;
 #                                            the corpus grows in build-fuzz/corpus/<target>/
@@ -53,7 +54,6 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 # input over 10 s (a hang) or over 2 GB.
 common=(-rss_limit_mb=2048 -timeout=10 -malloc_limit_mb=2048)
 status=0
-declare -a report
 
 regressions() {
   local t=$1 dir="$fuzz/regressions/$1"
@@ -97,12 +97,13 @@ run() {
   corp=$(sed -n 's/.* corp: \([0-9]*\/[0-9]*[bKM]*\).*/\1/p' <<<"$last")
   local found=$((after - before))
   [ $rc -ne 0 ] && [ $found -eq 0 ] && found=1
-  report+=("$(printf '%-8s %12s %8s %8s %6s %7s %12s %8s' "$t" "${runs:-?}" "$((end - start))" \
-    "${eps:-?}" "${cov:-?}" "${ft:-?}" "${corp:-?}" "$found")")
+  # Its row and verdict go to files: the targets may run at once, each in a subshell.
+  printf '%-8s %12s %8s %8s %6s %7s %12s %8s\n' "$t" "${runs:-?}" "$((end - start))" \
+    "${eps:-?}" "${cov:-?}" "${ft:-?}" "${corp:-?}" "$found" >"$build/logs/row_$t"
   if [ $rc -ne 0 ]; then
     echo "fuzz: $t: FINDING (exit $rc); input in $findings/, log $log:" >&2
     grep -E 'ERROR|runtime error|fuzz target:|SUMMARY|Test unit written' "$log" | head -n 20 >&2
-    status=1
+    touch "$build/logs/found_$t"
   fi
   [ "$mode" = long ] || rm -rf "$corpus"
 }
@@ -110,9 +111,21 @@ run() {
 mkdir -p "$build/logs"
 for t in "${targets[@]}"; do regressions "$t"; done
 if [ "$mode" != regressions ]; then
-  for t in "${targets[@]}"; do run "$t"; done
+  # The short run: the targets at once, one a core, each its own SECONDS (a target is one
+  # process, libFuzzer's default). The long run: one after the other.
+  parallel=1
+  [ "$mode" = short ] && parallel=${FUZZ_PARALLEL:-$(nproc 2>/dev/null || echo 1)}
+  for t in "${targets[@]}"; do
+    rm -f "$build/logs/row_$t" "$build/logs/found_$t"
+    run "$t" &
+    while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n || true; done
+  done
+  wait
   printf '%-8s %12s %8s %8s %6s %7s %12s %8s\n' target executions time_s exec/s cov ft corpus \
     findings
-  printf '%s\n' "${report[@]}"
+  for t in "${targets[@]}"; do
+    cat "$build/logs/row_$t" 2>/dev/null || echo "$t: no report (see $build/logs/${mode}_$t.log)"
+    [ -f "$build/logs/row_$t" ] && [ ! -f "$build/logs/found_$t" ] || status=1
+  done
 fi
 exit $status
