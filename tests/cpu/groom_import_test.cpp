@@ -147,7 +147,7 @@ TEST_CASE("Import: OBJ curves written tip first are turned root first", "[import
     const bool back = s % 10 == 0;
     reversed += back;
     for (uint32_t k = 0; k < file.strandSize(s); ++k)
-      obj += " " + std::to_string(back ? file.first[s + 1] - k : file.first[s] + k + 1);
+      obj.append(" ").append(std::to_string(back ? file.first[s + 1] - k : file.first[s] + k + 1));
     obj += "\n";
   }
   c.hairstyle.file = dir.write("tips_first.obj", obj);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -241,9 +242,7 @@ TEST_CASE("malformed OBJ heads are refused with the file and the line", "[head_m
   CHECK_THAT(refusal("flipped.obj", cubeText("f 6 8 4 2")),
              Catch::Contains("flipped.obj:10: the surface is not closed"));
   // Centimetres.
-  std::string big = cube;
-  for (size_t at = 0; (at = big.find("0.05", at)) != std::string::npos; at += 2)
-    big.replace(at, 4, "50");
+  const std::string big = std::regex_replace(cube, std::regex("0\\.05"), "50");
   CHECK_THAT(refusal("cm.obj", big), Catch::Contains("cm.obj: the mesh is 100.0"));
   // Missing.
   const io::ObjReadResult missing = io::readObjMesh((dir.path / "absent.obj").string());

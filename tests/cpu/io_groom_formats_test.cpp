@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -125,7 +126,7 @@ std::string objPolylines(const Groom& g) {
   std::string t = objVertices(g) + "s off\n";
   for (size_t s = 0; s < g.strandCount(); ++s) {
     t += "l";
-    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) t += " " + std::to_string(i + 1);
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) t.append(" ").append(std::to_string(i + 1));
     t += "\n";
   }
   return t;
@@ -289,9 +290,8 @@ TEST_CASE("OBJ curves: Blender's edges and polylines read to the same strands",
   checkSame(csm::io::readObjCurves(bytesOf(objEdges(g)), "edges.obj"), g);
   checkSame(csm::io::readObjCurves(bytesOf(objPolylines(g)), "lines.obj"), g);
   // Windows tools: a byte order mark, lines ending in CR LF.
-  std::string windows = "\xEF\xBB\xBF" + objPolylines(g);
-  for (size_t at = windows.find('\n'); at != std::string::npos; at = windows.find('\n', at + 2))
-    windows.insert(at, "\r");
+  const std::string windows =
+      "\xEF\xBB\xBF" + std::regex_replace(objPolylines(g), std::regex("\n"), "\r\n");
   checkSame(csm::io::readObjCurves(bytesOf(windows), "windows.obj"), g);
   checkSame(csm::io::readTressFx(bytesOf("\xEF\xBB\xBF" + tressFxText(g, "")), "bom.tfx"), g);
   SECTION("edges in any order and either direction, negative and v/vt indices, faces aside") {

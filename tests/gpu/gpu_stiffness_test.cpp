@@ -13,7 +13,7 @@
 using namespace csm;
 
 TEST_CASE("GPU stiffness: the default scene at 5e-6, 1e-4 and 1e-2 kg/m agrees after 1 s",
-          "[gpu][stiffness]") {
+          "[gpu][stiffness][long_run]") {
   test::checkDensityCancels(test::gpuSolver);
 }
 
@@ -22,12 +22,12 @@ TEST_CASE("GPU stiffness: a clamped strand sags the same at 8 to 64 substeps", "
 }
 
 TEST_CASE("GPU stiffness: the nodding default scene converges as the step shrinks",
-          "[gpu][stiffness]") {
+          "[gpu][stiffness][long_run]") {
   test::checkSceneConverges(test::gpuSolver);
 }
 
 TEST_CASE("GPU stiffness: 30, 60 and 120 frames a second with automatic substeps agree",
-          "[gpu][stiffness]") {
+          "[gpu][stiffness][long_run]") {
   test::checkFrameRates(test::gpuSolver);
 }
 
@@ -47,7 +47,7 @@ TEST_CASE("GPU stiffness: a clamped strand bent hard by gravity settles as the e
 }
 
 TEST_CASE("GPU stiffness: at 256 steps a frame the float positions follow the CPU's double",
-          "[gpu][stiffness]") {
+          "[gpu][stiffness][long_run]") {
   // A step at 256 a frame moves a particle ~10 um while its float position rounds by ~0.02 um:
   // velocities taken as (x - x_old) / h would carry that rounding from step to step; the GPU
   // solver forms them from the step's own displacement instead (shaders/sim/strand_step.comp).

@@ -10,7 +10,7 @@
 
 using namespace csm;
 
-TEST_CASE("GPU torture map: sim.dt 1/240 and 1/24 s", "[gpu][torture][dt]") {
+TEST_CASE("GPU torture map: sim.dt 1/240 and 1/24 s", "[gpu][torture][dt][long_run]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "dt");
 }
 
@@ -18,7 +18,7 @@ TEST_CASE("GPU torture map: 1 and 8 substeps", "[gpu][torture][substeps]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "substeps");
 }
 
-TEST_CASE("GPU torture map: the narrowest and widest stiffness windows", "[gpu][torture][window]") {
+TEST_CASE("GPU torture map: the narrowest and widest stiffness windows", "[gpu][torture][window][long_run]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "window");
 }
 
@@ -27,7 +27,7 @@ TEST_CASE("GPU torture map: wind 0 and 50 m/s", "[gpu][torture][wind]") {
 }
 
 TEST_CASE("GPU torture map: every head motion at 180 deg (cm) and 10 Hz",
-          "[gpu][torture][motion]") {
+          "[gpu][torture][motion][long_run]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "motion");
 }
 
