@@ -119,7 +119,7 @@ void sphereWidgets(const PresetParam& p, Preset& config, const std::string& labe
 }
 
 // What the stiffness the solver runs with comes to: steps, alpha, window in particles, and a
-// warning when the stiffness asks for more steps than sim.max_substeps allows.
+// warning when the stiffness asks for more steps than the step budget (sim.max_substeps) allows.
 void drawStiffnessInfo(const PanelView& view) {
   const StiffnessInfo& info = view.frame.stiffness;
   if (info.strands == 0) return;

@@ -220,7 +220,7 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
   // close to tell apart.
   at("repairing", 0.35);
   io::RepairOptions repair;
-  repair.minLength = 0.5 * double(h.segmentLength);
+  repair.minLength = kMinLengthShare * double(h.segmentLength);
   repair.mergeDistance = kMergeShare * double(h.segmentLength);
   repair.name = path;
   const size_t fitStrands = g.strandCount();
@@ -228,7 +228,7 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
   if (g.strandCount() == 0) {
     if (error)
       *error = path + ": no strand is left: all " + std::to_string(fitStrands) +
-               " are shorter than half of hairstyle.segment_length (" +
+               " are shorter than a fifth of hairstyle.segment_length (" +
                std::to_string(repair.minLength) + " m) once fitted to the head (scale " +
                std::to_string(fitted.scale) +
                "); check hairstyle.import_scale, import_rotation and import_offset";

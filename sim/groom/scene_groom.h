@@ -49,7 +49,7 @@ bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseD
                 const ImportProgress& progress = {});
 
 // What buildGroom does with a groom file once read (`g`, from `path`): the strands kept, the
-// fit to the head, the roots snapped, the second repair (strands shorter than half of
+// fit to the head, the roots snapped, the second repair (strands shorter than kMinLengthShare of
 // hairstyle.segment_length dropped, points closer than kMergeShare of it merged), the
 // resampling, the particles pushed out of the head, the checks. With `findRoots` (a format that
 // does not say which end is the root: OBJ curves) each strand first starts at the end that lies
@@ -63,5 +63,11 @@ bool fitFileGroom(const Config& c, const HeadModel& head, Groom g, const std::st
 // millimetre), far above float's resolution of a position on a head (~3e-8 m), so that no
 // simulated segment is so short that float positions blur its length.
 inline constexpr double kMergeShare = 0.005;
+
+// Imported strands shorter than this share of hairstyle.segment_length are dropped (4 mm at the
+// default 2 cm): stubs a groom tool left. A real groom's short strands (a mohawk's or a fade's,
+// 5-10 mm) are kept: held by the head over their root length and stiffer than the step budget
+// resolves, they run at alpha = 1 (sim/solver/stiffness.h, planFrame) and set no steps.
+inline constexpr double kMinLengthShare = 0.2;
 
 }  // namespace csm

@@ -174,10 +174,11 @@ std::vector<Param<Config>> build() {
             "Steps per frame (paper); the fewest steps per frame (calibrated: more when the "
             "stiffness needs them, up to max substeps).",
             Effect::Live),
-      param("sim.max_substeps", "Max substeps", "Simulation", &Config::sim, &SimConfig::maxSubsteps,
+      param("sim.max_substeps", "Step budget", "Simulation", &Config::sim, &SimConfig::maxSubsteps,
             1, 256,
-            "Calibrated: the most steps per frame the stiffness may ask for. When it binds, the "
-            "stiffest strands are softer than asked, and the log and the panel say so.",
+            "Calibrated: the most steps per frame (the step budget). Strands stiffer than it "
+            "resolves, a groom's shortest, run at alpha = 1 (as stiff as the steps allow): "
+            "counted in the log and the panel. Raise it when the stiffness asks for more.",
             Effect::Live)
           .onlyWhen(calibratedModel),
       param("sim.window_length", "Stiffness window", "Simulation", &Config::sim,

@@ -451,9 +451,10 @@ std::string stiffnessWarning(const StiffnessInfo& info) {
   std::string out;
   if (info.plan.capped) {
     std::snprintf(buf, sizeof buf,
-                  "the stiffness asks for %d steps per frame but sim.max_substeps is %d: the "
-                  "stiffest strands are softer than asked (alpha = 1)",
-                  info.plan.wanted, info.plan.substeps);
+                  "the stiffness asks for %d steps per frame, over the step budget "
+                  "(sim.max_substeps) of %d: %zu of %zu strands run at alpha = 1, softer than "
+                  "asked",
+                  info.plan.wanted, info.plan.substeps, info.stifferStrands, info.strands);
     out = buf;
   } else if (info.stifferStrands > 0) {
     std::snprintf(buf, sizeof buf,

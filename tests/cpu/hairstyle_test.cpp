@@ -104,7 +104,7 @@ TEST_CASE("a groom the fit carries out of float's range, or collapses, is refuse
   Groom out;
   std::string error;
   CHECK_FALSE(fitFileGroom(c, *HeadModel::require(c), tiny, "tiny.hair", out, &error));
-  CHECK_THAT(error, Catch::Contains("tiny.hair: no strand is left: all 1 are shorter than half "
+  CHECK_THAT(error, Catch::Contains("tiny.hair: no strand is left: all 1 are shorter than a fifth "
                                     "of hairstyle.segment_length") &&
                         Catch::Contains("hairstyle.import_scale"));
   // And a sound groom still fits.

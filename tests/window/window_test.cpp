@@ -356,21 +356,27 @@ TEST_CASE("window: the stiffness window changes live; a capped stiffness is said
   CHECK(half.windowMax == 1);
   CHECK(half.rateMax > 10.0 * before.rateMax);
   CHECK(half.plan.substeps > before.plan.substeps);
+  // It asks for 16 steps: the default step budget (8) binds, said in the log once.
+  CHECK(half.plan.wanted > 8);
+  CHECK(half.plan.substeps == 8);
+  CHECK(half.plan.capped);
   runSimFrames(*v, 2);
-
-  // Capped: a warning in the log, once.
-  REQUIRE(v->setParam("sim.max_substeps", "5"));
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().stiffness.plan.capped);
   auto warnings = [&] {
     return std::count_if(v->messages().begin(), v->messages().end(), [](const ViewerMessage& m) {
       return m.level == MessageLevel::Warning && m.text.find("max_substeps") != std::string::npos;
     });
   };
   CHECK(warnings() == 1);
+
+  // A lower budget: a warning in the log, once.
+  REQUIRE(v->setParam("sim.max_substeps", "5"));
+  REQUIRE(v->sync());
+  CHECK(v->simFrame().stiffness.plan.capped);
+  CHECK(v->simFrame().stiffness.plan.substeps == 5);
+  CHECK(warnings() == 2);
   REQUIRE(v->setParam("wind.strength", "2"));  // another live change: no second warning
   REQUIRE(v->sync());
-  CHECK(warnings() == 1);
+  CHECK(warnings() == 2);
   runSimFrames(*v, 2);
   CHECK_FALSE(v->controls().nanStopped());
 
