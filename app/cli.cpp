@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cstring>
 
+#include "sim/groom/groom_file.h"
+
 namespace csm {
 namespace {
 
@@ -31,7 +33,9 @@ usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx | GROOM.obj] [options]
   --size WxH             image size (default 1280x720)
   --no-render            headless: simulate only
   --video FILE.mp4       headless: pipe frames to ffmpeg
-  --export-hair FILE     write the final strands as a cyHair .hair file
+  --export-hair FILE     write the final strands as a cyHair .hair file, or as OBJ curves
+                         (metres, y up, one \"l i j\" an edge, as Blender reads them) when
+                         FILE ends in .obj
   --export-hair-sequence DIR
                          headless: write every kept frame (--every) as DIR/frame_00001.hair,
                          ... (cyHair, the same strands in each)
@@ -129,6 +133,10 @@ std::optional<Options> parseCommandLine(int argc, char** argv, std::string* erro
       if (!value(o.exportSequence)) return fail("--export-hair-sequence needs a directory");
     } else if (arg == "--export-hair") {
       if (!value(o.exportHair)) return fail("--export-hair needs a file name");
+      // Said before anything is simulated, not after the run.
+      if (!io::isWritableGroomName(o.exportHair))
+        return fail("--export-hair " + o.exportHair +
+                    ": the name must end in .hair (cyHair) or .obj (OBJ curves)");
     } else if (arg == "--screenshot") {
       if (!value(o.screenshot)) return fail("--screenshot needs a file name");
     } else if (arg == "--exit-after") {

@@ -16,7 +16,8 @@
 #include "gl/context.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
-#include "sim/groom/cyhair.h"
+#include "sim/core/config.h"
+#include "sim/groom/groom_file.h"
 #include "sim/groom/hair_sequence.h"
 #include "sim/run/frame_driver.h"
 #include "sim/run/make_solver.h"
@@ -131,13 +132,14 @@ class HairExport {
     }
     return true;
   }
-  // The final strands in world space, as a cyHair file for other tools; then what was written.
+  // The final strands in world space, as a cyHair file for other tools (OBJ curves when the name
+  // ends in .obj); then what was written.
   bool finish(Simulation& sim) {
     if (!options_.exportHair.empty()) {
       sim.solver().readPositions(x_);
       const Groom out = io::posedGroom(sim.groom(), x_);
       std::string error;
-      if (!io::writeCyHair(options_.exportHair, out, &error)) {
+      if (!io::writeGroom(options_.exportHair, out, &error)) {
         std::fprintf(stderr, "csmhair: %s\n", error.c_str());
         return false;
       }
@@ -375,35 +377,58 @@ class Progress {
 
 // What the frames' samples said that the run must not keep silent, said at its end: lists that
 // did not fit the solver's buffers, crowds too dense for the contacts, segments too long for
-// the grid (ContactStats::add keeps the running counts), and head moves carried rigidly.
+// the grid (ContactStats::add keeps the running counts), and head moves carried rigidly. In a
+// mode without strand contacts the lists are only the crossings measure's (--metrics): what they
+// missed is said of that measure, not of contacts the mode does not have.
 class RunWarnings {
  public:
   void add(const FrameSample& sample) { seen_.add(sample.contacts); }
   void say(const Simulation& sim) const {
-    if (seen_.overflows > 0)
-      std::fprintf(stderr,
-                   "csmhair: warning: the candidate pairs of %llu frames did not fit the solver's "
-                   "buffers: those frames kept the list before them (and counted no crossings)\n",
-                   (unsigned long long)seen_.overflows);
-    if (seen_.crowded > 0)
-      std::fprintf(stderr,
-                   "csmhair: warning: up to %llu segments a frame were in too dense a crowd for "
-                   "the strand contacts (over 2,048 candidate pairs, or a grid cell the search "
-                   "could not finish): some or all of their contacts were missing\n",
-                   (unsigned long long)seen_.crowded);
+    if (!strandContacts(sim.config().collision.mode)) {
+      sayMeasure();
+    } else {
+      if (seen_.overflows > 0)
+        std::fprintf(stderr,
+                     "csmhair: warning: the candidate pairs of %llu frames did not fit the "
+                     "solver's buffers: those frames kept the list before them (and counted no "
+                     "crossings)\n",
+                     (unsigned long long)seen_.overflows);
+      if (seen_.crowded > 0)
+        std::fprintf(stderr,
+                     "csmhair: warning: up to %llu segments a frame were in too dense a crowd "
+                     "for the strand contacts (over 2,048 candidate pairs, or a grid cell the "
+                     "search could not finish): some or all of their contacts were missing\n",
+                     (unsigned long long)seen_.crowded);
+      if (seen_.oversize > 0)
+        std::fprintf(stderr,
+                     "csmhair: warning: up to %llu segments a frame were too long for the "
+                     "collision grid's cells or not finite: they had no strand contacts\n",
+                     (unsigned long long)seen_.oversize);
+    }
     if (sim.carriedFrames() > 0)
       std::fprintf(stderr,
                    "csmhair: note: in %ld frames a move of the head moved its roots faster than "
                    "%.0f m/s: the hair went with it, rigidly, for the part beyond\n",
                    sim.carriedFrames(), kMaxRootSpeed);
-    if (seen_.oversize > 0)
-      std::fprintf(stderr,
-                   "csmhair: warning: up to %llu segments a frame were too long for the "
-                   "collision grid's cells or not finite: they had no strand contacts\n",
-                   (unsigned long long)seen_.oversize);
   }
 
  private:
+  // The crossings measure's lists (a mode without strand contacts): what they could not count.
+  void sayMeasure() const {
+    const uint64_t missed = seen_.crowded + seen_.oversize;
+    if (seen_.overflows > 0)
+      std::fprintf(stderr,
+                   "csmhair: note: the hair-crossings measure (--metrics) counted no crossings in "
+                   "%llu frames: their candidate pairs did not fit the solver's buffers\n",
+                   (unsigned long long)seen_.overflows);
+    if (missed > 0)
+      std::fprintf(stderr,
+                   "csmhair: note: the hair-crossings measure (--metrics) left out up to %llu "
+                   "segments a frame (in a crowd of over 2,048 candidate pairs, or too long for "
+                   "its grid): their crossings are not counted\n",
+                   (unsigned long long)missed);
+  }
+
   ContactStats seen_;
 };
 

@@ -9,7 +9,6 @@
 #include "sim/groom/tressfx.h"
 
 namespace csm::io {
-namespace {
 
 bool hasExtension(std::string_view path, std::string_view ext) {
   if (path.size() < ext.size()) return false;
@@ -19,7 +18,9 @@ bool hasExtension(std::string_view path, std::string_view ext) {
   });
 }
 
-}  // namespace
+bool isWritableGroomName(std::string_view path) {
+  return hasExtension(path, ".hair") || hasExtension(path, ".obj");
+}
 
 GroomFormat detectGroomFormat(std::string_view path, std::span<const std::byte> bytes) {
   if (bytes.size() >= 4 && std::memcmp(bytes.data(), "HAIR", 4) == 0) return GroomFormat::CyHair;
@@ -50,8 +51,9 @@ GroomReadResult readGroom(const std::string& path) {
 }
 
 bool writeGroom(const std::string& path, const Groom& groom, std::string* error) {
+  if (hasExtension(path, ".obj")) return writeObjCurves(path, groom, error);
   if (!hasExtension(path, ".hair")) {
-    if (error) *error = path + ": can only write cyHair groom files (.hair)";
+    if (error) *error = path + ": can only write cyHair groom files (.hair) and OBJ curves (.obj)";
     return false;
   }
   return writeCyHair(path, groom, error);

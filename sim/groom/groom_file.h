@@ -23,8 +23,13 @@ GroomFormat detectGroomFormat(std::string_view path, std::span<const std::byte> 
 // Reads the file with the reader detectGroomFormat() picks; errors start with the path.
 GroomReadResult readGroom(const std::string& path);
 
-// Writes cyHair (the only writable format) atomically; other extensions are refused so a
-// ".tfx" name never gets cyHair bytes.
+// True when `path` ends in `ext` (".obj"), in any case.
+bool hasExtension(std::string_view path, std::string_view ext);
+// The names writeGroom takes: ".hair" and ".obj", in any case.
+bool isWritableGroomName(std::string_view path);
+
+// Writes cyHair (.hair) or OBJ curves (.obj: writeObjCurves), atomically; other extensions are
+// refused so a ".tfx" name never gets cyHair bytes.
 bool writeGroom(const std::string& path, const Groom& groom, std::string* error = nullptr);
 
 }  // namespace csm::io

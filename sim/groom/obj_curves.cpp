@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <charconv>
+#include <span>
+#include <string>
 #include <vector>
 
+#include "sim/base/file_io.h"
 #include "sim/base/obj_text.h"
 
 namespace csm::io {
@@ -194,6 +197,43 @@ GroomReadResult readObjCurves(const std::string& path) {
   return detail::readGroomFile(path, [](std::span<const std::byte> bytes, std::string_view name) {
     return readObjCurves(bytes, name);
   });
+}
+
+std::string encodeObjCurves(const Groom& groom) {
+  std::string out;
+  out.reserve(64 + groom.pointCount() * 48);
+  out += "# csmhair: " + std::to_string(groom.strandCount()) + " strands, " +
+         std::to_string(groom.pointCount()) + " points; metres, y up; one \"l i j\" an edge\n";
+  out += "o hair\n";
+  char buf[32];
+  // The shortest text that reads back to the same float (to_chars' round trip).
+  auto put = [&](float value) {
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
+    out += ' ';
+    out.append(buf, ec == std::errc() ? end : buf);
+  };
+  for (const glm::vec3& p : groom.points) {
+    out += 'v';
+    put(p.x);
+    put(p.y);
+    put(p.z);
+    out += '\n';
+  }
+  for (size_t s = 0; s < groom.strandCount(); ++s)
+    for (uint32_t i = groom.first[s] + 1; i < groom.first[s + 1]; ++i) {
+      out += "l ";
+      out += std::to_string(i);  // OBJ counts vertices from 1: points i - 1 and i
+      out += ' ';
+      out += std::to_string(i + 1);
+      out += '\n';
+    }
+  return out;
+}
+
+bool writeObjCurves(const std::string& path, const Groom& groom, std::string* error) {
+  const std::string text = encodeObjCurves(groom);
+  return detail::writeFileAtomically(
+      path, std::as_bytes(std::span<const char>(text.data(), text.size())), error);
 }
 
 }  // namespace csm::io

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "sim/core/groom.h"
 #include "sim/groom/read_common.h"
 
 namespace csm::io {
@@ -25,5 +26,13 @@ namespace csm::io {
 GroomReadResult readObjCurves(std::span<const std::byte> bytes,
                               std::string_view name = "OBJ curves");
 GroomReadResult readObjCurves(const std::string& path);
+
+// The strands as OBJ curves, the form Blender 3.4 writes for hair converted to a mesh and the only
+// one its importer reads as the strands: every point a `v` line (metres, y up, as the groom
+// holds them; Blender's importer turns y up into its z up), then one `l i j` an edge, root to
+// tip, strand after strand. readObjCurves reads it back to the same strands.
+std::string encodeObjCurves(const Groom& groom);
+// encodeObjCurves() written whole or not at all (path + ".tmp", then renamed over `path`).
+bool writeObjCurves(const std::string& path, const Groom& groom, std::string* error = nullptr);
 
 }  // namespace csm::io

@@ -32,6 +32,40 @@ assert worst < 1e-6, worst
 m = json.load(open(sys.argv[3]))
 assert m["groom"]["file_strands"] == 300, m["groom"]
 PY
+# The same frame as OBJ curves (the form Blender reads: one "l i j" an edge), then opened as a
+# groom: the same strands and points as the cyHair export.
+"$bin" "${common[@]}" --frames 5 --export-hair "$tmp/a.obj"
+"$bin" "$tmp/a.obj" "${common[@]}" --frames 0 --set hairstyle.import_scale=1 \
+  --set hairstyle.resample_tolerance=0 --export-hair "$tmp/c.hair"
+python3 - "$tmp/a.hair" "$tmp/a.obj" "$tmp/c.hair" <<'PY'
+import struct, sys
+def read(path):
+    data = open(path, "rb").read()
+    hairs, points, flags = struct.unpack_from("<III", data, 4)
+    off = 128
+    segs = struct.unpack_from("<%dH" % hairs, data, off) if flags & 1 else None
+    off += 2 * hairs if flags & 1 else 0
+    return hairs, points, segs, struct.unpack_from("<%df" % (3 * points), data, off)
+hair = read(sys.argv[1])
+v, l = [], []
+for line in open(sys.argv[2]):
+    t = line.split()
+    if t and t[0] == "v":  # each number read as the float it was written from
+        v.append(tuple(struct.unpack("<f", struct.pack("<f", float(x)))[0] for x in t[1:]))
+    elif t and t[0] == "l":
+        assert len(t) == 3, line  # two indices a line, never a polyline
+        l.append((int(t[1]), int(t[2])))
+assert len(v) == hair[1], (len(v), hair[1])
+assert len(l) == hair[1] - hair[0], (len(l), hair[1], hair[0])
+assert all(j == i + 1 for i, j in l)
+worst = max(abs(a - b) for p, q in zip(v, zip(*[iter(hair[3])] * 3)) for a, b in zip(p, q))
+assert worst == 0.0, worst  # the shortest text that reads back to the same float
+back = read(sys.argv[3])
+assert back[0] == hair[0] and back[1] == hair[1], (back[:2], hair[:2])
+worst = max(abs(a - b) for a, b in zip(hair[3], back[3]))
+print("OBJ:", len(v), "vertices,", len(l), "edges; read back as", back[0], "strands, largest difference (m)", worst)
+assert worst < 1e-6, worst
+PY
 # A truncated file: the reader names the byte offset.
 head -c 150 "$tmp/a.hair" >"$tmp/short.hair"
 set +e

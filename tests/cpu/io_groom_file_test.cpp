@@ -1,7 +1,9 @@
-// Groom files on disk: format detection, the atomic cyHair write, and a file round trip.
+// Groom files on disk: format detection, the atomic cyHair write, OBJ curves out, a file round
+// trip.
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@
 
 #include "sim/groom/cyhair.h"
 #include "sim/groom/groom_file.h"
+#include "sim/groom/obj_curves.h"
 
 namespace fs = std::filesystem;
 using csm::Groom;
@@ -128,4 +131,53 @@ TEST_CASE("Groom files: format detection", "[io][groom_file][quick]") {
                Catch::Contains("missing.hair: not a readable file"));
     CHECK_FALSE(csm::io::writeGroom(dir.file("out.tfx"), sampleGroom(), nullptr));
   }
+}
+
+TEST_CASE("Groom files: OBJ curves written as Blender reads them, read back to the same strands",
+          "[io][groom_file][quick]") {
+  TempDir dir;
+  Groom groom = sampleGroom();
+  groom.points[3] = {0.1f / 3.0f, -1e-7f, 0.0123456789f};  // floats whose text must round-trip
+  const std::string text = csm::io::encodeObjCurves(groom);
+  // One `v` a point and one `l i j` an edge, two indices each, root to tip, strand after strand.
+  size_t vertices = 0, edges = 0;
+  bool twoIndices = true, inOrder = true;
+  size_t expectFrom = 1;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream t(line);
+    std::string keyword;
+    t >> keyword;
+    if (keyword == "v") ++vertices;
+    if (keyword != "l") continue;
+    std::vector<size_t> index;
+    for (size_t i; t >> i;) index.push_back(i);
+    twoIndices = twoIndices && index.size() == 2;
+    if (index.size() != 2) continue;
+    // The next strand starts one point on: its root is not joined to the last tip.
+    while (expectFrom < groom.pointCount() && index[0] != expectFrom) ++expectFrom;
+    inOrder = inOrder && index[0] == expectFrom && index[1] == expectFrom + 1;
+    ++expectFrom;
+    ++edges;
+  }
+  CHECK(vertices == groom.pointCount());
+  CHECK(edges == groom.pointCount() - groom.strandCount());
+  CHECK(twoIndices);
+  CHECK(inOrder);
+  // Through the file and the dispatcher: every strand, every point to the float, root first.
+  const std::string path = dir.file("frame.obj");
+  std::string error;
+  REQUIRE(csm::io::writeGroom(path, groom, &error));
+  const csm::io::GroomReadResult back = csm::io::readGroom(path);
+  REQUIRE(back.error.empty());
+  REQUIRE(back.groom);
+  REQUIRE(back.groom->first == groom.first);
+  CHECK(std::memcmp(back.groom->points.data(), groom.points.data(),
+                    groom.points.size() * sizeof(glm::vec3)) == 0);
+  // Any case of the extension; nothing else.
+  CHECK(csm::io::isWritableGroomName("A.OBJ"));
+  CHECK(csm::io::isWritableGroomName("a.Hair"));
+  CHECK_FALSE(csm::io::isWritableGroomName("a.tfx"));
+  CHECK_FALSE(csm::io::writeGroom(dir.file("out.ply"), groom, &error));
+  CHECK_THAT(error, Catch::Contains("out.ply: can only write cyHair groom files (.hair) and OBJ"));
 }
