@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <string>
 
 #include "app/scene_setup.h"
 #include "app/sim_frame.h"
@@ -170,6 +172,7 @@ RunDescription runDescription(const SceneSetup& scene, const SimFrame& figures,
   d.source = scene.source;
   d.config = figures.config;
   d.stiffness = figures.stiffness;
+  d.memory = figures.memory;
   d.strands = figures.strands;
   d.particles = figures.particles;
   d.solver = figures.solver;
@@ -179,10 +182,29 @@ RunDescription runDescription(const SceneSetup& scene, const SimFrame& figures,
   return d;
 }
 
+uint64_t peakResidentBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0)
+      return uint64_t(std::strtoull(line.c_str() + 6, nullptr, 10)) << 10;
+  return 0;
+}
+
+nlohmann::json describeMemory(const MemoryUse& memory, std::size_t particles) {
+  nlohmann::json kinds = nlohmann::json::object();
+  for (const auto& [kind, bytes] : memory.bytes) kinds[kind] = bytes;
+  const uint64_t total = memory.total();
+  return {{"peak_rss_bytes", peakResidentBytes()},
+          {"solver_buffers_bytes", kinds},
+          {"solver_buffers_total_bytes", total},
+          {"solver_bytes_per_particle", particles > 0 ? double(total) / double(particles) : 0.0}};
+}
+
 nlohmann::json describeRun(const RunDescription& r) {
   const Config& c = r.config;
   const bool paper = c.sim.stiffnessModel == StiffnessModel::Paper;
-  return {
+  nlohmann::json j = {
       {"preset", r.preset},
       {"source", r.source},
       {"strands", r.strands},
@@ -216,6 +238,8 @@ nlohmann::json describeRun(const RunDescription& r) {
         {"repairs", r.groom.repair.notes}}},
       {"device", r.device},
   };
+  j["memory"] = describeMemory(r.memory, r.particles);
+  return j;
 }
 
 }  // namespace csm

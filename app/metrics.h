@@ -57,6 +57,7 @@ struct RunDescription {
   std::string preset, source;
   Config config;
   StiffnessInfo stiffness;
+  MemoryUse memory;  // the solver's buffers by kind
   std::size_t strands = 0, particles = 0;
   std::string solver;
   std::string solverVariant;  // Solver::variant(): the GPU solver's kernel path
@@ -72,5 +73,10 @@ struct RunDescription {
 RunDescription runDescription(const SceneSetup& scene, const SimFrame& figures,
                               const std::string& device);
 nlohmann::json describeRun(const RunDescription& run);
+// The process's peak resident memory so far (bytes; Linux's VmHWM, 0 where it cannot be read).
+uint64_t peakResidentBytes();
+// "memory" of the metrics: the peak resident size, the solver's buffers by kind, their total and
+// bytes per simulated particle.
+nlohmann::json describeMemory(const MemoryUse& memory, std::size_t particles);
 
 }  // namespace csm

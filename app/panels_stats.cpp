@@ -2,9 +2,11 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
+#include <string>
 
 #include <imgui.h>
 
+#include "app/metrics.h"
 #include "app/panels.h"
 #include "app/sim_controls.h"
 
@@ -157,6 +159,24 @@ void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);
   ImGui::Text("particles %zu", f.particles);
   ImGui::Text("strands simulated %zu, drawn %zu", f.strands, s.drawnStrands);
+  // What the scene takes: the solver's buffers by kind (on llvmpipe, process memory) and the
+  // process's peak.
+  constexpr double kMiB = 1024.0 * 1024.0;
+  if (const uint64_t bytes = f.memory.total(); bytes > 0) {
+    ImGui::Text("solver buffers %.1f MiB (%.0f B a particle)", double(bytes) / kMiB,
+                f.particles > 0 ? double(bytes) / double(f.particles) : 0.0);
+    if (ImGui::IsItemHovered()) {
+      std::string kinds;
+      for (const auto& [kind, b] : f.memory.bytes) {
+        char line[96];
+        std::snprintf(line, sizeof line, "%s%s %.2f MiB", kinds.empty() ? "" : "\n", kind.c_str(),
+                      double(b) / kMiB);
+        kinds += line;
+      }
+      ImGui::SetTooltip("%s", kinds.c_str());
+    }
+  }
+  ImGui::Text("peak memory %.0f MiB (resident)", double(peakResidentBytes()) / kMiB);
   const GroomReport& groom = f.groomReport;
   if (groom.fileStrands > 0) {
     ImGui::Text("groom file: %zu strands; resampling saved %zu of %zu points", groom.fileStrands,

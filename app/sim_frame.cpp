@@ -20,6 +20,7 @@ void takeFigures(const Simulation& sim, SimFrame& frame) {
   frame.particles = solver.particleCount();
   frame.carriedFrames = sim.carriedFrames();
   frame.stiffness = solver.stiffness();
+  frame.memory = solver.memoryUse();
 }
 
 }  // namespace csm

@@ -41,6 +41,7 @@ struct SimFrame {
   std::size_t strands = 0, particles = 0;
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)
   StiffnessInfo stiffness;
+  MemoryUse memory;           // the solver's buffers by kind (Solver::memoryUse)
   std::string solver;         // the solver's name
   std::string solverVariant;  // Solver::variant(): the GPU solver's kernel path
   // The simulation's own figures: the last step's wall time (to completion) and stages, the

@@ -88,6 +88,17 @@ struct StiffnessInfo {
   double dftl = 0.0;  // the DFTL correction it runs with
 };
 
+// What a solver's scene holds, by kind ("strands", "contacts", ...): the GPU solver's buffers
+// (on llvmpipe they are process memory). Empty for a solver that does not count them.
+struct MemoryUse {
+  std::vector<std::pair<std::string, uint64_t>> bytes;  // kind, bytes
+  uint64_t total() const {
+    uint64_t sum = 0;
+    for (const auto& [kind, b] : bytes) sum += b;
+    return sum;
+  }
+};
+
 struct StageTime {
   std::string name;  // "integrate", "shape_matching", "strain_limiting", "grid", "contacts"
   double ms = 0.0;   // per frame, all substeps

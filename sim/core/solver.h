@@ -116,6 +116,9 @@ class Solver {
   virtual void setContactMeasures(bool always) { (void)always; }
   // The stiffness it runs with: steps per frame, alpha, windows (CSM solvers).
   virtual StiffnessInfo stiffness() const { return {}; }
+  // The memory its scene holds on the device, by kind (empty: not counted; the CPU solvers'
+  // is the process's, which the metrics give as its peak resident size).
+  virtual MemoryUse memoryUse() const { return {}; }
   // Why the last reset left the solver unable to step (it then steps nothing); empty when fine.
   virtual std::string failure() const { return {}; }
 };

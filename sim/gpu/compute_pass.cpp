@@ -10,7 +10,8 @@ namespace csm::gpu {
 bool ComputePass::build(const char* path, uint32_t groupSize,
                         const std::vector<gl::Define>& defines, std::string* error) {
   std::string log;
-  std::optional<gl::Program> p = gl::buildProgram(path, {{gl::ShaderStage::Compute, path}}, defines, &log);
+  std::optional<gl::Program> p =
+      gl::buildProgram(path, {{gl::ShaderStage::Compute, path}}, defines, &log);
   if (!p) {
     if (error) *error = std::string("GPU solver: ") + path + " does not build:\n" + log;
     return false;

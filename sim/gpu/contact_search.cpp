@@ -188,9 +188,12 @@ void ContactSearch::bind() const {
   entryTex_.bind(CSM_TEX_ENTRIES);
   gridStartTex_.bind(CSM_TEX_GRID_START);
   entryTex_.bindImage(CSM_IMAGE_ENTRIES, gl::ImageAccess::WriteOnly, gl::TextureFormat::Rgba32ui);
-  pairListTex_.bindImage(CSM_IMAGE_PAIR_LIST, gl::ImageAccess::ReadWrite, gl::TextureFormat::Rgba32ui);
-  pairSidesTex_.bindImages(CSM_IMAGE_PAIR_SIDES, CSM_IMAGE_PAIR_SIDES_HIGH, gl::ImageAccess::ReadWrite);
-  candidatesTex_[half_].bindImages(CSM_IMAGE_CANDIDATES, CSM_IMAGE_CANDIDATES_HIGH, gl::ImageAccess::ReadWrite);
+  pairListTex_.bindImage(CSM_IMAGE_PAIR_LIST, gl::ImageAccess::ReadWrite,
+                         gl::TextureFormat::Rgba32ui);
+  pairSidesTex_.bindImages(CSM_IMAGE_PAIR_SIDES, CSM_IMAGE_PAIR_SIDES_HIGH,
+                           gl::ImageAccess::ReadWrite);
+  candidatesTex_[half_].bindImages(CSM_IMAGE_CANDIDATES, CSM_IMAGE_CANDIDATES_HIGH,
+                                   gl::ImageAccess::ReadWrite);
   candidatesTex_[half_ ^ 1u].bindImages(CSM_IMAGE_LAST_CANDIDATES, CSM_IMAGE_LAST_CANDIDATES_HIGH,
                                         gl::ImageAccess::ReadOnly);
 }
@@ -352,6 +355,16 @@ ContactStats contactStatsOf(const uint32_t* c) {
   static_assert(CSM_DEPTH_BINS == kDepthBins && CSM_DEPTH_BINS_PER_R == kDepthBinsPerR);
   for (int i = 0; i < kDepthBins; ++i) s.depth[i] = c[CSM_COUNTER_DEPTH + i];
   return s;
+}
+
+uint64_t ContactSearch::bytes() const {
+  uint64_t sum = 0;
+  for (const gl::Buffer* b :
+       {&gridCount_, &gridStart_, &scanBlockSums_, &entries_, &counters_, &segmentPairs_,
+        &segmentBase_, &segmentScanBlocks_, &pairList_, &pairSides_, &candidateRange_, &dispatch_,
+        &searchCounters_, &segmentOrder_, &candidates_[0], &candidates_[1]})
+    sum += uint64_t(b->size());
+  return sum;
 }
 
 }  // namespace csm::gpu

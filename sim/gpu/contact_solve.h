@@ -26,6 +26,8 @@ class ContactSolve {
   void reset(size_t particles, uint32_t segments);
   // The corrections at CSM_BIND_CORRECTION.
   void bind() const;
+  // The bytes of its buffer.
+  uint64_t bytes() const { return correction_.size(); }
   // One substep's corrections (the timer's stage is the caller's): `iterations` solves, each but
   // the last applied to the particles' positions and velocities here, the last left for the
   // strain-limit sweep. `splitViews`: the lists run past their first view.

@@ -210,6 +210,17 @@ void GpuSolver::setConfig(const Config& config) {
   }
 }
 
+MemoryUse GpuSolver::memoryUse() const {
+  MemoryUse m;
+  m.bytes = {{"strands", hair_.bytes()},
+             {"contacts", contactSearch_.bytes() + contactSolve_.bytes()},
+             {"volume", volume_.bytes()},
+             {"head and parameters", uint64_t(headField_.size() + paramsBuffer_.size() +
+                                              spheres_.size() + measure_.size())},
+             {"samples", samples_.bytes()}};
+  return m;
+}
+
 void GpuSolver::setContactMeasures(bool always) {
   const bool listed = listsCandidates(), was = measureContacts_;
   measureContacts_ = always;
@@ -659,7 +670,8 @@ std::optional<FrameSample> GpuSolver::takeSample(bool wait) {
 }
 
 std::unique_ptr<GpuSolver> GpuSolver::start(std::string* error) {
-  // Without a current context GL calls go to the dispatcher's no-op stubs: the version string is null.
+  // Without a current context GL calls go to the dispatcher's no-op stubs: the version string is
+  // null.
   if (gl::versionString() == nullptr) {
     if (error)
       *error =

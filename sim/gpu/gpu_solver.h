@@ -86,6 +86,7 @@ class GpuSolver final : public Solver {
   std::optional<FrameSample> takeSample(bool wait = false) override;
   void dropSamples() override { samples_.drop(); }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
+  MemoryUse memoryUse() const override;
 
  private:
   // Tests and tools read the buffers, and choose the passes, through it (sim/gpu/gpu_probe.h).

@@ -25,7 +25,8 @@ void SampleRing::request(long frame, uint32_t groups, const std::function<void()
   const GLsizeiptr recordBytes = GLsizeiptr(groups) * 2 * sizeof(glm::uvec4);
   const GLsizeiptr bytes = recordBytes + CSM_COUNTERS * sizeof(uint32_t);
   if (slot.staging.id() == 0) slot.staging = gl::Buffer();
-  if (slot.staging.size() < bytes) slot.staging.setData(bytes, nullptr, gl::BufferUsage::StreamRead);
+  if (slot.staging.size() < bytes)
+    slot.staging.setData(bytes, nullptr, gl::BufferUsage::StreamRead);
   if (groups > 0) {
     measure();
     gl::memoryBarrier(gl::Barrier::BufferUpdate);

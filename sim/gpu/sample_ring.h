@@ -27,6 +27,12 @@ class SampleRing {
                const gl::Buffer& records, const gl::Buffer& counters, bool contactsMeasured);
   std::optional<FrameSample> take(bool wait);
   void drop();
+  // The bytes of its staging buffers.
+  uint64_t bytes() const {
+    uint64_t sum = 0;
+    for (const Slot& s : slots_) sum += uint64_t(s.staging.size());
+    return sum;
+  }
 
  private:
   struct Slot {

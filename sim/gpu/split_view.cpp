@@ -14,7 +14,8 @@ void SplitView::attach(const gl::Buffer& buffer, uint64_t texels, uint32_t split
   const uint64_t highTexels = texels > split ? texels - split : lowTexels;
   constexpr uint64_t bytes = sizeof(glm::uvec2);
   viewRange(low, buffer, gl::TextureFormat::Rg32ui, 0, GLsizeiptr(lowTexels * bytes));
-  viewRange(high, buffer, gl::TextureFormat::Rg32ui, GLintptr(highFirst * bytes), GLsizeiptr(highTexels * bytes));
+  viewRange(high, buffer, gl::TextureFormat::Rg32ui, GLintptr(highFirst * bytes),
+            GLsizeiptr(highTexels * bytes));
 }
 
 void SplitView::bindImages(GLuint lowUnit, GLuint highUnit, gl::ImageAccess access) const {

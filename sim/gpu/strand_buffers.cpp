@@ -104,4 +104,13 @@ void StrandBuffers::bind() const {
   particleConstantsTex.bind(CSM_TEX_PARTICLE_CONSTANTS);
 }
 
+uint64_t StrandBuffers::bytes() const {
+  uint64_t sum = 0;
+  for (const gl::Buffer* b :
+       {&rest, &position, &velocity, &predicted, &rotation, &strandFirst, &particleStrand,
+        &strandOrder, &region, &strandStiffness, &particleConstants, &groupFirst})
+    sum += uint64_t(b->size());
+  return sum;
+}
+
 }  // namespace csm::gpu

@@ -23,6 +23,8 @@ struct StrandBuffers {
   void uploadRegions(const HairState& state, const Regions& regions);
   // Storage views where the shaders declare them (rest and regions are read as texels).
   void bind() const;
+  // The bytes of its buffers.
+  uint64_t bytes() const;
 
   size_t particles = 0, strands = 0;
   uint32_t segments = 0;

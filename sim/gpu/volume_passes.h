@@ -44,6 +44,8 @@ class VolumePasses {
   // Nodes the field pass ran on in the last frame: the box the splat reached (reads back the
   // indirect arguments in `dispatch`).
   size_t nodesVisited(const gl::Buffer& dispatch) const;
+  // The bytes of its buffers.
+  uint64_t bytes() const { return sums_.size() + length_.size() + rest_.size() + field_.size(); }
 
  private:
   ComputePass splatPass_, dispatchPass_, fieldPass_;

@@ -36,6 +36,15 @@ for key in ["max_strain", "mean_strain", "head_penetrations", "max_speed", "nan_
     assert key in a, key
 assert a["nan_count"] == 0
 assert a["max_speed"] > 0
+# What the scene took: the process's peak, and the GPU solver's buffers by kind, at least the
+# strands' positions, velocities, predictions and rest (4 vec4 a particle), contacts among them.
+mem = m["memory"]
+assert mem["peak_rss_bytes"] > 0, mem
+if solver == "gpu":
+    kinds = mem["solver_buffers_bytes"]
+    assert kinds["strands"] >= 64 * particles and kinds["contacts"] > 0, kinds
+    assert mem["solver_buffers_total_bytes"] == sum(kinds.values()), mem
+    assert abs(mem["solver_bytes_per_particle"] * particles - mem["solver_buffers_total_bytes"]) < 1, mem
 if solver == "cpu":
     # Float read-back of double positions: allow rounding of the last bits.
     assert a["max_strain"] <= limit + 1e-5, (a["max_strain"], limit)
