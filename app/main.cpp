@@ -36,8 +36,7 @@ int validate(const std::vector<std::string>& files) {
     csm::PresetErrors errors;
     // The head too, as the scene that loads the preset reads it: its file and line when bad.
     std::string headError;
-    if (csm::loadPreset(f, c, errors) &&
-        !csm::HeadModel::build(c.scene, &headError))
+    if (csm::loadPreset(f, c, errors) && !csm::HeadModel::build(c.scene, &headError))
       errors.messages.push_back(f + ": head.mesh: " + headError);
     if (errors.messages.empty()) {
       std::printf("%s: ok (%d strands)\n", f.c_str(), c.scene.hairstyle.strands);

@@ -68,8 +68,8 @@ bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {
     std::string headError;
     out.head = HeadModel::build(out.preset.scene, &headError);
     if (!out.head)
-      msgs += out.source + (options.sets.empty() ? ": " : " with --set: ") + "head.mesh: " +
-              headError + "\n";
+      msgs += out.source + (options.sets.empty() ? ": " : " with --set: ") +
+              "head.mesh: " + headError + "\n";
   }
   if (!msgs.empty()) {
     if (errors) *errors = msgs;

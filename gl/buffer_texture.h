@@ -24,7 +24,8 @@ class BufferTexture {
   BufferTexture(const Buffer& buffer, GLenum internalFormat);
   // A view of `size` bytes of `buffer` from `offset` (see attachRange).
   BufferTexture(const Buffer& buffer, GLenum internalFormat, GLintptr offset, GLsizeiptr size);
-  BufferTexture(const Buffer& buffer, TextureFormat format) : BufferTexture(buffer, GLenum(format)) {}
+  BufferTexture(const Buffer& buffer, TextureFormat format)
+      : BufferTexture(buffer, GLenum(format)) {}
   BufferTexture(const Buffer& buffer, TextureFormat format, GLintptr offset, GLsizeiptr size)
       : BufferTexture(buffer, GLenum(format), offset, size) {}
   ~BufferTexture();

@@ -126,7 +126,8 @@ std::string objPolylines(const Groom& g) {
   std::string t = objVertices(g) + "s off\n";
   for (size_t s = 0; s < g.strandCount(); ++s) {
     t += "l";
-    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i) t.append(" ").append(std::to_string(i + 1));
+    for (uint32_t i = g.first[s]; i < g.first[s + 1]; ++i)
+      t.append(" ").append(std::to_string(i + 1));
     t += "\n";
   }
   return t;

@@ -507,7 +507,8 @@ TEST_CASE("GPU: strand contacts add no motion to a rest groom with gravity off",
   CHECK(movedWith <= 1.1 * movedWithout);
 }
 
-TEST_CASE("GPU solver: the same preset gives bit-identical positions twice", "[gpu][solver]") {
+TEST_CASE("GPU solver: the same preset gives bit-identical positions twice",
+          "[gpu][solver][long_run]") {
   // Full collisions, wind and head motion: every float sum in a fixed order, no float atomics.
   Preset preset;
   PresetErrors errors;
@@ -584,7 +585,7 @@ TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is c
   CHECK(GpuProbe(*switched).volumeNodes() == 0);
 }
 
-TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][solver]") {
+TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][solver][long_run]") {
   Preset preset;
   PresetErrors errors;
   REQUIRE(loadPreset(std::string(CSM_SOURCE_DIR) + "/presets/long_windy.json", preset, errors));

@@ -18,7 +18,8 @@ TEST_CASE("GPU torture map: 1 and 8 substeps", "[gpu][torture][substeps]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "substeps");
 }
 
-TEST_CASE("GPU torture map: the narrowest and widest stiffness windows", "[gpu][torture][window][long_run]") {
+TEST_CASE("GPU torture map: the narrowest and widest stiffness windows",
+          "[gpu][torture][window][long_run]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "window");
 }
 
