@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Compares two folders written by scripts/export_results.sh: the exported strands byte for byte
-# and every metric but the timings (ms.*) and the file's own name (source). Prints one line per
-# run and exits non-zero when any differs.
+# and every metric but the timings (ms.*), the memory (memory.*) and the file's own name
+# (source). Prints one line per run and exits non-zero when any differs.
 #   scripts/same_results.sh BEFORE_DIR AFTER_DIR
 set -u
 a=$1
@@ -20,7 +20,8 @@ def flat(d, p=""):
         return out
     return {p: d}
 x, y = (flat(json.load(open(f))) for f in sys.argv[1:3])
-skip = lambda k: k.startswith("ms.") or k == "source"
+# Timings and memory (the process's peak varies from run to run) are the machine's, not results.
+skip = lambda k: k.startswith("ms.") or k.startswith("memory.") or k == "source"
 keys = sorted(k for k in set(x) | set(y) if not skip(k))
 diff = [k for k in keys if x.get(k) != y.get(k)]
 print("same" if not diff else "DIFFERENT: " + ", ".join(diff))
