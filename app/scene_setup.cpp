@@ -1,18 +1,17 @@
 #include "app/scene_setup.h"
 
-#include <cctype>
 #include <filesystem>
 
 #include "app/params.h"
 #include "app/preset.h"
+#include "sim/groom/groom_file.h"
 #include "sim/run/scene_checks.h"
 
 namespace csm {
 
 bool isGroomFile(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".hair" || ext == ".tfx" || ext == ".obj";
+  return io::hasExtension(path, ".hair") || io::hasExtension(path, ".tfx") ||
+         io::hasExtension(path, ".obj");
 }
 
 bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {
