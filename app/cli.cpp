@@ -39,6 +39,8 @@ usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx | GROOM.obj] [options]
   --export-hair-sequence DIR
                          headless: write every kept frame (--every) as DIR/frame_00001.hair,
                          ... (cyHair, the same strands in each)
+  --export-guides        export the simulated strands alone (hairstyle.guides), not every
+                         strand as drawn
   --screenshot FILE.png  window: save what the window shows after --exit-after frames
                          (at full quality)
   --exit-after N         window: simulate N frames as fast as they come (not paced to
@@ -137,6 +139,8 @@ std::optional<Options> parseCommandLine(int argc, char** argv, std::string* erro
       if (!io::isWritableGroomName(o.exportHair))
         return fail("--export-hair " + o.exportHair +
                     ": the name must end in .hair (cyHair) or .obj (OBJ curves)");
+    } else if (arg == "--export-guides") {
+      o.exportGuides = true;
     } else if (arg == "--screenshot") {
       if (!value(o.screenshot)) return fail("--screenshot needs a file name");
     } else if (arg == "--exit-after") {

@@ -31,6 +31,7 @@ struct Options {
   std::string video;
   std::string exportHair;
   std::string exportSequence;  // --export-hair-sequence DIR
+  bool exportGuides = false;   // --export-guides: the simulated strands alone
   // Window scripting.
   std::string screenshot;
   long exitAfter = -1;

@@ -8,6 +8,7 @@ FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned po
   v.scene = &sim.config();
   v.look = &view;
   v.groom = &sim.groom();
+  v.followers = sim.followers();
   v.generation = sim.generation();
   v.head = &sim.head();
   v.headPose = sim.headPose();

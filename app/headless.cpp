@@ -123,10 +123,10 @@ class HairExport {
   }
   bool writeFrame(Simulation& sim) {
     if (options_.exportSequence.empty()) return true;
-    sim.solver().readPositions(x_);
+    const Groom& groom = strands(sim);
     ++exported_;
     std::string error;
-    if (!io::writeSequenceFrame(options_.exportSequence, exported_, sim.groom(), x_, &error)) {
+    if (!io::writeSequenceFrame(options_.exportSequence, exported_, groom, x_, &error)) {
       std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
       return false;
     }
@@ -136,8 +136,7 @@ class HairExport {
   // ends in .obj); then what was written.
   bool finish(Simulation& sim) {
     if (!options_.exportHair.empty()) {
-      sim.solver().readPositions(x_);
-      const Groom out = io::posedGroom(sim.groom(), x_);
+      const Groom out = io::posedGroom(strands(sim), x_);
       std::string error;
       if (!io::writeGroom(options_.exportHair, out, &error)) {
         std::fprintf(stderr, "csmhair: %s\n", error.c_str());
@@ -149,11 +148,23 @@ class HairExport {
     }
     if (exported_ > 0 && !options_.quiet)
       std::fprintf(stderr, "csmhair: wrote %ld frames of %zu strands into %s\n", exported_,
-                   sim.groom().strandCount(), options_.exportSequence.c_str());
+                   strands(sim).strandCount(), options_.exportSequence.c_str());
     return true;
   }
 
  private:
+  // This frame's strands as exported, their positions into x_: every strand as drawn (a
+  // groom simulated through guides: the followers made on the CPU), or with --export-guides
+  // the simulated ones alone.
+  const Groom& strands(Simulation& sim) {
+    sim.solver().readPositions(x_);
+    if (options_.exportGuides || !sim.followers()) return sim.groom();
+    std::vector<glm::vec4> guides;
+    std::swap(guides, x_);
+    sim.drawnPositions(guides, x_);
+    return sim.followers()->drawn;
+  }
+
   const Options& options_;
   std::vector<glm::vec4> x_;
   long exported_ = 0;
@@ -247,6 +258,9 @@ class MetricsOutput {
     if (on()) log_.addSample(sample);
   }
   void addRender(double ms, const std::vector<StageTime>& stages) { log_.addRender(ms, stages); }
+  // Seconds from the start of the run to the scene loaded (the groom built, the guides bound, the
+  // solver reset).
+  void setStartup(double seconds) { startup_ = seconds; }
   // `context` and `renderer` are null when the run had none.
   bool write(const SceneSetup& scene, const Simulation& sim, const gl::HeadlessContext* context,
              const HairRenderer* renderer) const {
@@ -257,10 +271,10 @@ class MetricsOutput {
         scene, figures,
         options_.solver == "gpu" && context ? context->renderer() : std::string("cpu")));
     meta["mode"] = "headless";
+    meta["startup_s"] = startup_;
     meta["head_carried_frames"] = sim.carriedFrames();
     if (renderer) {
-      meta["drawn_strands"] =
-          drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render);
+      meta["drawn_strands"] = drawnStrandCount(sim.drawnStrands(), scene.preset.view.render);
       meta["render_size"] = {options_.width, options_.height};
       meta["render_samples"] = renderer->samples();
       meta["gl_renderer"] = context->renderer();
@@ -276,6 +290,7 @@ class MetricsOutput {
  private:
   const Options& options_;
   MetricsLog log_;
+  double startup_ = 0.0;
 };
 
 // The drawn frames: the renderer, the offscreen target it draws into and the positions it
@@ -331,7 +346,7 @@ void sayRendering(const Options& options, const SceneSetup& scene, const Simulat
                   const gl::HeadlessContext& context) {
   if (options.quiet) return;
   std::fprintf(stderr, "csmhair: rendering %zu strands (%zu simulated) at %dx%d on %s%s%s\n",
-               drawnStrandCount(sim.solver().strandCount(), scene.preset.view.render),
+               drawnStrandCount(sim.drawnStrands(), scene.preset.view.render),
                sim.solver().strandCount(), options.width, options.height,
                context.renderer().c_str(), options.outDir.empty() ? "" : " into ",
                options.outDir.c_str());
@@ -468,6 +483,7 @@ int printDeviceInfo(const Options& options) {
 }
 
 int runHeadless(const Options& options, const SceneSetup& scene) {
+  const auto start = std::chrono::steady_clock::now();
   const bool render = drawsFrames(options);
   if (options.noRender && !options.video.empty()) {
     std::fprintf(stderr, "csmhair: --video needs frames; drop --no-render\n");
@@ -491,6 +507,8 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   if (!sim) return status;
   const long frames = options.frames >= 0 ? options.frames : 60;
   MetricsOutput metrics(options);
+  metrics.setStartup(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   const bool writes = render && (images.on() || video.on());
   // The metrics measure hair-hair contacts in every mode (with hair-hair off, a candidate
   // search per sample outside the frame's timing), so modes compare on the same measures.

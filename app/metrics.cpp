@@ -175,6 +175,7 @@ RunDescription runDescription(const SceneSetup& scene, const SimFrame& figures,
   d.memory = figures.memory;
   d.strands = figures.strands;
   d.particles = figures.particles;
+  d.groomStrands = figures.drawnStrands;
   d.solver = figures.solver;
   d.solverVariant = figures.solverVariant;
   d.groom = figures.groomReport;
@@ -209,6 +210,8 @@ nlohmann::json describeRun(const RunDescription& r) {
       {"source", r.source},
       {"strands", r.strands},
       {"particles", r.particles},
+      {"groom_strands", r.groomStrands},
+      {"guides", r.config.hairstyle.guides},
       {"frame_dt", c.sim.dt},
       {"substeps", r.stiffness.plan.substeps},
       {"stiffness",

@@ -58,7 +58,8 @@ struct RunDescription {
   Config config;
   StiffnessInfo stiffness;
   MemoryUse memory;  // the solver's buffers by kind
-  std::size_t strands = 0, particles = 0;
+  std::size_t strands = 0, particles = 0;  // simulated
+  std::size_t groomStrands = 0;            // drawn: followers included, children not
   std::string solver;
   std::string solverVariant;  // Solver::variant(): the GPU solver's kernel path
   GroomReport groom;

@@ -158,7 +158,11 @@ void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state
   ImGui::Text("head penetrations %llu, max speed %.2f m/s",
               (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);
   ImGui::Text("particles %zu", f.particles);
-  ImGui::Text("strands simulated %zu, drawn %zu", f.strands, s.drawnStrands);
+  if (f.drawnStrands > f.strands)
+    ImGui::Text("strands simulated %zu (guides of %zu), drawn %zu", f.strands, f.drawnStrands,
+                s.drawnStrands);
+  else
+    ImGui::Text("strands simulated %zu, drawn %zu", f.strands, s.drawnStrands);
   // What the scene takes: the solver's buffers by kind (on llvmpipe, process memory) and the
   // process's peak.
   constexpr double kMiB = 1024.0 * 1024.0;

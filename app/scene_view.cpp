@@ -63,6 +63,7 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
       view.scene = &frame.config;
       view.look = &look;
       view.groom = frame.groom.get();
+      view.followers = frame.followers.get();
       view.generation = frame.generation;
       view.head = frame.head.get();
       view.headPose = frame.headPose;

@@ -18,6 +18,7 @@ void takeFigures(const Simulation& sim, SimFrame& frame) {
   frame.groomReport = sim.groomReport();
   frame.strands = solver.strandCount();
   frame.particles = solver.particleCount();
+  frame.drawnStrands = sim.drawnStrands();
   frame.carriedFrames = sim.carriedFrames();
   frame.stiffness = solver.stiffness();
   frame.memory = solver.memoryUse();

@@ -17,6 +17,7 @@
 #include "sim/core/groom.h"
 #include "sim/core/pose.h"
 #include "sim/core/results.h"
+#include "sim/groom/guides.h"
 #include "sim/groom/scene_groom.h"
 #include "sim/run/timeline.h"
 
@@ -34,11 +35,14 @@ struct SimFrame {
   double time = 0.0;
   long generation = 0;  // changes when the groom is regrown
   Config config;
-  std::shared_ptr<const Groom> groom;
+  std::shared_ptr<const Groom> groom;  // the strands simulated
+  // The strands drawn from the guides when the groom is simulated through guides (null: none).
+  std::shared_ptr<const FollowerBinding> followers;
   GroomReport groomReport;
   std::shared_ptr<const HeadModel> head;  // the scene's head (built with the groom)
   Pose headPose;                          // where the head was at the end of the frame
-  std::size_t strands = 0, particles = 0;
+  std::size_t strands = 0, particles = 0;  // simulated
+  std::size_t drawnStrands = 0;            // drawn: the followers' groom's, else `strands`
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)
   StiffnessInfo stiffness;
   MemoryUse memory;           // the solver's buffers by kind (Solver::memoryUse)

@@ -280,6 +280,7 @@ void SimThread::publish(long ticket) {
     f->time = sim_->time();
     f->generation = sim_->generation();
     f->groom = sim_->sharedGroom();
+    f->followers = sim_->sharedFollowers();
     f->head = sim_->sharedHead();
     f->headPose = sim_->headPose();
     f->stepMs = driver_->lastStepMs();

@@ -57,7 +57,9 @@ StateBackup::~StateBackup() {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer_));
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer_));
   glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-  glUseProgram(GLuint(program_));
+  // A program current when the backup was made but deleted since (its owner destroyed while it
+  // was current, then unbound by the passes in between) is no longer a name to restore.
+  glUseProgram(program_ != 0 && glIsProgram(GLuint(program_)) ? GLuint(program_) : 0u);
   glBindVertexArray(GLuint(vertexArray_));
   glBindBuffer(GL_ARRAY_BUFFER, GLuint(arrayBuffer_));
   for (int i = 0; i < kUnits; ++i) {

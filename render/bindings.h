@@ -24,6 +24,18 @@ inline constexpr int kChildPoints = CSM_RENDER_CHILD_POINTS;
 inline constexpr int kChildColors = CSM_RENDER_CHILD_COLORS;
 inline constexpr int kChildFirst = CSM_RENDER_CHILD_FIRST;
 inline constexpr int kChildStrand = CSM_RENDER_CHILD_STRAND;
+// The follower pass.
+inline constexpr int kFollowGuidePositions = CSM_RENDER_FOLLOW_GUIDE_POSITIONS;
+inline constexpr int kFollowDrawnRest = CSM_RENDER_FOLLOW_DRAWN_REST;
+inline constexpr int kFollowDrawnFirst = CSM_RENDER_FOLLOW_DRAWN_FIRST;
+inline constexpr int kFollowGuideStrand = CSM_RENDER_FOLLOW_GUIDE_STRAND;
+inline constexpr int kFollowGuideFirst = CSM_RENDER_FOLLOW_GUIDE_FIRST;
+inline constexpr int kFollowGuideTurns = CSM_RENDER_FOLLOW_GUIDE_TURNS;
+inline constexpr int kFollowBoundGuides = CSM_RENDER_FOLLOW_BOUND_GUIDES;
+inline constexpr int kFollowBoundWeights = CSM_RENDER_FOLLOW_BOUND_WEIGHTS;
+inline constexpr int kFollowDrawnPositions = CSM_RENDER_FOLLOW_DRAWN_POSITIONS;
+inline constexpr int kFollowHead = CSM_RENDER_FOLLOW_HEAD;
+inline constexpr int kFollowPushed = CSM_RENDER_FOLLOW_PUSHED;
 
 // Uniform blocks.
 inline constexpr int kFrameUniforms = CSM_RENDER_FRAME_UNIFORMS;

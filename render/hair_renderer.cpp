@@ -48,6 +48,8 @@ static_assert(sizeof(FrameUniforms) == 3 * 64 + 16 * 16);
 // A share of the strands is drawn wider by 1/sqrt(share), up to this: most of the coverage
 // without turning the hair into straws.
 constexpr float kMaxWidthScale = 2.0f;
+// The colour of the guides drawn alone (render.show_guides), sRGB.
+constexpr glm::vec3 kGuideHighlight(1.0f, 0.55f, 0.1f);
 // Children drawn into the deep opacity maps per guide, each standing for children / this many.
 constexpr int kShadowChildren = 1;
 // The width (m) a strand drawn render.strand_width pixels wide stands for in the shadow maps,
@@ -185,6 +187,10 @@ struct HairRenderer::Programs {
 std::unique_ptr<HairRenderer> HairRenderer::create(std::string* error) {
   std::unique_ptr<HairRenderer> r(new HairRenderer());
   std::string log;
+  if (!r->followers_.build(&log)) {
+    if (error) *error = "the renderer's shaders failed to build:\n" + log;
+    return nullptr;
+  }
   // Built for the default render.samples; others are built when first asked for.
   if (!r->programsFor(std::min(RenderConfig{}.samples, r->maxSamples_), &log)) {
     if (error) *error = "the renderer's shaders failed to build:\n" + log;
@@ -220,6 +226,8 @@ HairRenderer::Programs* HairRenderer::programsFor(int samples, std::string* log)
 
 bool HairRenderer::reloadShaders(std::string* log) {
   // Every variant in use, or none: a failed reload keeps all the old programs.
+  FollowerPass followers;
+  if (!followers.build(log)) return false;
   std::map<int, std::unique_ptr<Programs>> rebuilt;
   for (const auto& [samples, old] : programs_) {
     std::unique_ptr<Programs> p = Programs::build(samples, log);
@@ -227,6 +235,7 @@ bool HairRenderer::reloadShaders(std::string* log) {
     rebuilt.emplace(samples, std::move(p));
   }
   programs_ = std::move(rebuilt);
+  followers_.build(log);
   return true;
 }
 
@@ -295,6 +304,11 @@ void HairRenderer::updateUniforms(const FrameView& frame, int children, int draw
   const HairColors colors = hairColors(r);
   u.rootColor = glm::vec4(srgbToLinear(colors.root), r.colorVariation);
   u.tipColor = glm::vec4(srgbToLinear(colors.tip), std::clamp(r.opacity, 0.0f, 1.0f));
+  if (highlightGuides_) {
+    // The guides alone: one bright colour, whatever the groom's own.
+    u.rootColor = glm::vec4(srgbToLinear(kGuideHighlight), 0.0f);
+    u.tipColor = glm::vec4(srgbToLinear(kGuideHighlight), 1.0f);
+  }
   u.specShift =
       glm::vec4(r.specularShift1, r.specularShift2, r.specularExponent1, r.specularExponent2);
   // A width in the frame's pixels is that many of them, however small the image drawn.
@@ -316,8 +330,9 @@ void HairRenderer::updateUniforms(const FrameView& frame, int children, int draw
   u.children2 =
       glm::vec4(std::clamp(r.childLength, 0.0f, 0.9f), std::clamp(r.childInterpolation, 0.0f, 1.0f),
                 float(drawnChildren) / float(shadowChildren), 0.0f);
+  // Highlighted guides take no groom colours (flag 1).
   u.counts = glm::ivec4(geometry_->subdivision(), children, geometry_->childStride(),
-                        geometry_->strandFlags());
+                        geometry_->strandFlags() & (highlightGuides_ ? ~1 : ~0));
   u.counts2 = glm::ivec4(int(geometry_->splinePoints()), head_.sphereCount(), 0, 0);
   // A width in metres: pixels per metre at view depth 1 from the projection's vertical scale
   // (1 / tan(fov / 2) for the orbit camera), so a strand narrows with distance as it would.
@@ -344,11 +359,15 @@ void HairRenderer::render(const FrameView& frame) {
       std::clamp(amount.shadowMapSize > 0 ? amount.shadowMapSize : look.shadowMapSize, 16, 8192);
   const int subdivision =
       std::clamp(amount.subdivision > 0 ? amount.subdivision : look.subdivision, 1, 64);
-  geometryFor(subdivision)
-      .update(*frame.groom, frame.generation, subdivision, frame.head->spheres());
-  if (scalpKey_ != std::make_pair(frame.groom, frame.generation)) {
-    scalp_ = makeScalpMap(*frame.groom, scalpSpheres(*frame.head));
-    scalpKey_ = {frame.groom, frame.generation};
+  // A groom simulated through guides draws its followers: the follower pass makes them first.
+  // render.show_guides draws the guides alone, highlighted, as simulated.
+  const FollowerBinding* followers = look.showGuides ? nullptr : frame.followers;
+  highlightGuides_ = look.showGuides && frame.followers;
+  const Groom* groom = followers ? &followers->drawn : frame.groom;
+  geometryFor(subdivision).update(*groom, frame.generation, subdivision, frame.head->spheres());
+  if (scalpKey_ != std::make_pair(groom, frame.generation)) {
+    scalp_ = makeScalpMap(*groom, scalpSpheres(*frame.head));
+    scalpKey_ = {groom, frame.generation};
   }
   // Interactive quality may draw a smaller image; the post pass scales it up to the frame.
   const float scale = std::clamp(amount.resolution, 0.05f, 1.0f);
@@ -370,7 +389,8 @@ void HairRenderer::render(const FrameView& frame) {
   // 1 + n strands cover sqrt(1 + n) times the guides' area (docs/METHOD.md, section 8).
   const int children = geometry_->setChildren(look.children);
   const Selection drawn = select(geometry_->guides(), children, amount.strands);
-  drawnStrands_ = frame.positionBuffer != 0 ? drawn.guides * std::size_t(drawn.instances) : 0;
+  unsigned positions = frame.positionBuffer;
+  drawnStrands_ = positions != 0 ? drawn.guides * std::size_t(drawn.instances) : 0;
   const float childWidth = 1.0f / std::sqrt(float(1 + children));
   const int drawnChildren = drawnStrands_ > 0 ? drawn.instances - 1 : 0;
   updateUniforms(frame, children, drawnChildren, drawn.widthScale * childWidth, childWidth,
@@ -378,8 +398,13 @@ void HairRenderer::render(const FrameView& frame) {
 
   // The solver may have written the positions from a compute shader.
   gl::memoryBarrier(gl::Barrier::Storage);
+  if (followers && positions != 0) {
+    clock_.begin("followers");
+    followers_.update(*followers, frame.generation, *frame.head);
+    positions = followers_.run(positions, frame.headPose);
+  }
   frameUniforms_.bindBase(gl::BufferTarget::Uniform, bindings::kFrameUniforms);
-  gl::bindStorageBuffer(bindings::kPositions, frame.positionBuffer);
+  gl::bindStorageBuffer(bindings::kPositions, positions);
   geometry_->bind();
   head_.bind();
   Programs& p = *programs;

@@ -32,6 +32,7 @@
 #include "gl/buffer.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
+#include "render/follower_pass.h"
 #include "render/frame_target.h"
 #include "render/head_mesh.h"
 #include "render/pass_clock.h"
@@ -70,6 +71,8 @@ class HairRenderer final : public Renderer {
   // World -> light clip space of the last frame (orthographic, depth maps linearly).
   const glm::mat4& lightViewProjection() const { return lightViewProj_; }
   const StrandGeometry& geometry() const { return *geometry_; }
+  // The follower pass of the last frame that drew followers (its output, points moved out).
+  const FollowerPass& followerPass() const { return followers_; }
 
  private:
   struct Programs;
@@ -94,6 +97,7 @@ class HairRenderer final : public Renderer {
   std::map<int, std::unique_ptr<StrandGeometry>> geometries_;
   StrandGeometry* geometry_ = nullptr;
   HeadMesh head_;
+  FollowerPass followers_;
   gl::Texture scalp_{gl::NoCreate};  // RGBA8 octahedral map per sphere: root colour, coverage
   std::pair<const Groom*, long> scalpKey_{nullptr, -1};  // the groom it was made for
   gl::Buffer frameUniforms_{gl::NoCreate};
@@ -106,6 +110,7 @@ class HairRenderer final : public Renderer {
   FrameTarget* target_ = nullptr;
   glm::mat4 lightViewProj_{1.0f};
   std::size_t drawnStrands_ = 0;
+  bool highlightGuides_ = false;  // this frame draws the guides alone (render.show_guides)
 };
 
 }  // namespace csm

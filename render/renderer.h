@@ -15,6 +15,7 @@
 #include "sim/core/groom.h"
 #include "sim/core/pose.h"
 #include "sim/core/solver.h"
+#include "sim/groom/guides.h"
 #include "sim/head/head_model.h"
 
 namespace csm {
@@ -37,6 +38,9 @@ struct FrameView {
   const Config* scene = nullptr;     // head.spheres
   const ViewConfig* look = nullptr;  // render.*, camera.*, light.*
   const Groom* groom = nullptr;      // topology (strand offsets) and per-strand colours
+  // When the groom is simulated through guides: the strands drawn and how they follow `groom`
+  // (the guides, whose positions positionBuffer holds). Null: `groom` is drawn as simulated.
+  const FollowerBinding* followers = nullptr;
   long generation = 0;               // changes when the groom is regrown: rebuild topology buffers
   const HeadModel* head = nullptr;   // the scene's head: what is drawn, where hair grows
   Pose headPose;                     // where the head is this frame
@@ -62,8 +66,9 @@ class Renderer {
   virtual bool reloadShaders(std::string* log) = 0;
 };
 
-// Strands on screen for `simulatedStrands` guides: each one plus its render.children
-// children. For the stats next to the simulated count.
-std::size_t drawnStrandCount(std::size_t simulatedStrands, const RenderConfig& render);
+// Strands on screen for a groom of `strands` drawn strands (the simulated ones, or the guides and
+// their followers): each one plus its render.children children. For the stats next to the
+// simulated count.
+std::size_t drawnStrandCount(std::size_t strands, const RenderConfig& render);
 
 }  // namespace csm

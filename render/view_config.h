@@ -17,6 +17,9 @@ struct RenderConfig {
   // Children: hairs drawn around each simulated strand, made on the GPU each frame
   // (shaders/render/hair_children.comp).
   int children = 0;
+  // A groom simulated through guides (hairstyle.guides): draw the guides alone, highlighted,
+  // instead of every strand drawn from them.
+  bool showGuides = false;
   float childRadius = 0.0f;                 // from the guide at the root (m); 0: the roots' spacing
   float childClump = 0.5f;                  // share of that closed at the tip
   float childNoise = 0.002f;                // wander at the tip (m)

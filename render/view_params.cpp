@@ -41,6 +41,11 @@ std::vector<Param<ViewConfig>> build() {
             "simulated. Every strand is drawn narrower by sqrt(1 + children): 1 + n strands "
             "cover sqrt(1 + n) times the guides' area.",
             Effect::Render),
+      param("render.show_guides", "Guides alone", "Rendering", &ViewConfig::render,
+            &RenderConfig::showGuides, 0, 1,
+            "A groom simulated through guides (hairstyle.guides): draw the simulated strands "
+            "alone, highlighted, instead of every strand drawn from them.",
+            Effect::Render),
       param("render.child_radius", "Child radius", "Rendering|Children", &ViewConfig::render,
             &RenderConfig::childRadius, 0.0, 0.05,
             "Children's distance from their guide at the root (m); 0: the typical distance "

@@ -22,6 +22,18 @@
 #define CSM_RENDER_CHILD_COLORS 13  // uvec4 per child point: colour, coverage, strand id
 #define CSM_RENDER_CHILD_FIRST 14  // uint per strand + 1: first child point of strand s
 #define CSM_RENDER_CHILD_STRAND 15  // uint per child point (of one child): its strand
+// The follower pass (render/follower_pass.h): drawn strands made from their guides.
+#define CSM_RENDER_FOLLOW_GUIDE_POSITIONS 16  // vec4 per guide particle: the solver's, world
+#define CSM_RENDER_FOLLOW_DRAWN_REST 17  // vec4 per drawn point: rest (head frame), share
+#define CSM_RENDER_FOLLOW_DRAWN_FIRST 18  // uint per drawn strand + 1: its first point
+#define CSM_RENDER_FOLLOW_GUIDE_STRAND 19  // uint per guide: its drawn strand
+#define CSM_RENDER_FOLLOW_GUIDE_FIRST 20  // uint per guide + 1: its first particle
+#define CSM_RENDER_FOLLOW_GUIDE_TURNS 21  // vec4 per guide particle: its turn (quaternion)
+#define CSM_RENDER_FOLLOW_BOUND_GUIDES 22  // uvec4 per drawn strand: its guides
+#define CSM_RENDER_FOLLOW_BOUND_WEIGHTS 23  // vec4 per drawn strand: their weights
+#define CSM_RENDER_FOLLOW_DRAWN_POSITIONS 24  // vec4 per drawn point: world (the pass's output)
+#define CSM_RENDER_FOLLOW_HEAD 25  // vec4 per field node (gradient, distance) or per sphere
+#define CSM_RENDER_FOLLOW_PUSHED 26  // uint: points moved out of the head
 
 // Uniform blocks.
 #define CSM_RENDER_FRAME_UNIFORMS 0

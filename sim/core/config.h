@@ -60,6 +60,9 @@ enum class StiffnessModel : int { Paper = 0, Calibrated = 1 };
 struct HairstyleConfig {
   std::string file;  // a groom file (.hair, .tfx); empty = the generator below
   int strands = 2000;
+  // Strands simulated (guides); the others are drawn from them (sim/groom/guides.h). 0: every
+  // strand; -1: every strand up to 20,000, 4,000 guides beyond.
+  int guides = -1;
   int particlesPerStrand = 0;  // 0 = chosen per strand from its length and curl
   int minParticles = 8;
   int maxParticles = 25;

@@ -37,9 +37,16 @@ std::vector<Param<Config>> build() {
             Effect::Rebuild),
       param("hairstyle.strands", "Strands", "Hairstyle", &Config::hairstyle,
             &HairstyleConfig::strands, 1, 1000000,
-            "Number of simulated strands. A smaller count keeps the first strands of a larger one.",
+            "Number of strands drawn (a groom file's: how many of its strands are kept). A smaller "
+            "count keeps the first strands of a larger one.",
             Effect::Rebuild)
           .logScale(),
+      param("hairstyle.guides", "Simulated strands", "Hairstyle", &Config::hairstyle,
+            &HairstyleConfig::guides, -1, 1000000,
+            "Strands simulated (guides), spread over the scalp, its lengths and curls; every other "
+            "strand is drawn from the guides near it. 0: every strand is simulated; -1: every "
+            "strand up to 20,000, 4,000 guides beyond.",
+            Effect::Rebuild),
       param("hairstyle.particles_per_strand", "Particles per strand", "Hairstyle",
             &Config::hairstyle, &HairstyleConfig::particlesPerStrand, 0, 64,
             "Fixed particle count per strand; 0 chooses it per strand from its length and curl.",

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/groom/followers.h"
 #include "sim/groom/scene_groom.h"
 #include "sim/param/sim_params.h"
 #include "sim/run/scene_checks.h"
@@ -44,14 +45,39 @@ bool Simulation::regrow(const Config& config, const std::string& baseDir, std::s
   Groom groom;
   GroomReport report;
   if (!buildGroom(config, *head, baseDir, groom, error, &report, importProgress_)) return false;
+  // The guides, when fewer than every strand are simulated: the followers are bound once here.
+  std::shared_ptr<const FollowerBinding> followers;
+  const size_t guides = guideCount(config.hairstyle.guides, groom.strandCount());
+  if (guides < groom.strandCount()) {
+    if (importProgress_) importProgress_("choosing guides", 1.0);
+    std::vector<uint32_t> chosen = chooseGuides(groom, guides);
+    followers =
+        std::make_shared<const FollowerBinding>(bindFollowers(std::move(groom), std::move(chosen)));
+    groom = followers->guideGroom();
+  }
   groomReport_ = report;
   head_ = std::move(head);
   config_ = config;
   baseDir_ = baseDir;
   groom_ = std::make_shared<const Groom>(std::move(groom));
+  followers_ = std::move(followers);
   boundRoots();
   ++generation_;
   return true;
+}
+
+size_t Simulation::drawnPositions(const std::vector<glm::vec4>& simulated,
+                                  std::vector<glm::vec4>& out) const {
+  if (!followers_) {
+    out = simulated;
+    return 0;
+  }
+  std::vector<glm::vec3> guides(simulated.size()), drawn;
+  for (size_t i = 0; i < simulated.size(); ++i) guides[i] = glm::vec3(simulated[i]);
+  const size_t pushed = makeFollowers(*followers_, guides, headPose(), head_->collider(), drawn);
+  out.resize(drawn.size());
+  for (size_t i = 0; i < drawn.size(); ++i) out[i] = glm::vec4(drawn[i], 1.0f);
+  return pushed;
 }
 
 bool Simulation::setConfig(const Config& config, std::string* error) {

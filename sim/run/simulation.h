@@ -5,9 +5,13 @@
 
 #include <memory>
 #include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
 
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
+#include "sim/groom/guides.h"
 #include "sim/groom/scene_groom.h"
 #include "sim/head/head_model.h"
 #include "sim/core/pose.h"
@@ -71,10 +75,22 @@ class Simulation {
   Solver& solver() { return *solver_; }
   const Solver& solver() const { return *solver_; }
   const Config& config() const { return config_; }
+  // The strands simulated: the whole groom, or its guides (hairstyle.guides).
   const Groom& groom() const { return *groom_; }
   // The same groom, for a reader on another thread that keeps it past a regrow (the
   // viewer's renderer): a regrow makes a new one and leaves this one as it is.
   std::shared_ptr<const Groom> sharedGroom() const { return groom_; }
+  // The strands drawn and how they follow the guides; null when every strand is simulated.
+  const FollowerBinding* followers() const { return followers_.get(); }
+  std::shared_ptr<const FollowerBinding> sharedFollowers() const { return followers_; }
+  // The drawn strands' positions (world, a vec4 a point) from the simulated ones at this frame's
+  // head: the followers made on the CPU (sim/groom/followers.h), or the simulated positions as
+  // they are. Returns the points the followers' blend put inside the head, moved out.
+  size_t drawnPositions(const std::vector<glm::vec4>& simulated, std::vector<glm::vec4>& out) const;
+  // Strands drawn: the followers' groom's, or the simulated groom's.
+  size_t drawnStrands() const {
+    return followers_ ? followers_->drawn.strandCount() : groom_->strandCount();
+  }
   // The scene's head (built when the groom was), shared the same way: what the renderer draws.
   const HeadModel& head() const { return *head_; }
   std::shared_ptr<const HeadModel> sharedHead() const { return head_; }
@@ -104,6 +120,7 @@ class Simulation {
   Config config_;
   std::string baseDir_;
   std::shared_ptr<const Groom> groom_ = std::make_shared<const Groom>();
+  std::shared_ptr<const FollowerBinding> followers_;
   std::shared_ptr<const HeadModel> head_;  // built with the groom, handed to the solver
   GroomReport groomReport_;
   ImportProgress importProgress_;

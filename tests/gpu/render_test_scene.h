@@ -55,12 +55,17 @@ inline void dumpImage(const Image& image, const std::string& name) {
 
 class RenderScene {
  public:
-  explicit RenderScene(const Preset& preset, int frames = 2) : preset_(preset) {
+  // `sim`: a scene loaded already (on another solver); else the preset's on the CPU reference.
+  explicit RenderScene(const Preset& preset, int frames = 2,
+                       std::unique_ptr<Simulation> sim = nullptr)
+      : preset_(preset), sim_(std::move(sim)) {
     glContext();
     std::string error;
-    sim_ = std::make_unique<Simulation>(makeSolver("cpu", &error));
-    INFO(error);
-    REQUIRE(sim_->load(preset.scene, std::string(CSM_SOURCE_DIR) + "/presets", &error));
+    if (!sim_) {
+      sim_ = std::make_unique<Simulation>(makeSolver("cpu", &error));
+      INFO(error);
+      REQUIRE(sim_->load(preset.scene, std::string(CSM_SOURCE_DIR) + "/presets", &error));
+    }
     for (int f = 0; f < frames; ++f) sim_->stepFrame();
     renderer_ = HairRenderer::create(&error);
     INFO(error);

@@ -1,0 +1,138 @@
+#include "render/follower_pass.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec4.hpp>
+
+#include "gl/draw.h"
+#include "gl/gl.h"
+#include "gl/shader_source.h"
+#include "render/bindings.h"
+
+namespace csm {
+namespace {
+
+// One invocation per item in work groups of 64 (hair_compute.glsl), in two dimensions past the
+// 65,535 groups one may have.
+void dispatchOver(gl::Program& program, std::size_t items) {
+  const std::size_t groups = (items + 63) / 64;
+  if (groups == 0) return;
+  program.use();
+  program.setUniform("uItems", unsigned(items));
+  const std::size_t wide = std::min<std::size_t>(groups, 65535);
+  program.dispatch(GLuint(wide), GLuint((groups + wide - 1) / wide));
+  gl::memoryBarrier(gl::Barrier::Storage);
+}
+
+template <class T>
+gl::Buffer staticBuffer(std::vector<T> data) {
+  if (data.empty()) data.resize(1);
+  return gl::Buffer(data, gl::BufferUsage::StaticDraw);
+}
+
+}  // namespace
+
+bool FollowerPass::build(std::string* log) {
+  std::string all, one;
+  std::optional<gl::Program> turns =
+      gl::buildProgram("guide turns", {{gl::ShaderStage::Compute, "render/hair_followers.comp"}},
+                       {gl::Define{"GUIDE_TURNS", ""}}, &one);
+  all += one;
+  std::optional<gl::Program> followers = gl::buildProgram(
+      "followers", {{gl::ShaderStage::Compute, "render/hair_followers.comp"}}, {}, &one);
+  all += one;
+  if (log) *log = all;
+  if (!turns || !followers) return false;
+  turns_ = std::move(*turns);
+  followers_ = std::move(*followers);
+  return true;
+}
+
+void FollowerPass::update(const FollowerBinding& b, long generation, const HeadModel& head) {
+  if (&b == binding_ && generation == generation_) return;
+  binding_ = &b;
+  generation_ = generation;
+  const Groom& g = b.drawn;
+  points_ = g.pointCount();
+  strands_ = g.strandCount();
+  guides_ = b.guideCount();
+  std::vector<glm::vec4> rest(points_);
+  for (std::size_t i = 0; i < points_; ++i) rest[i] = glm::vec4(g.points[i], b.share[i]);
+  drawnRest_ = staticBuffer(std::move(rest));
+  drawnFirst_ = staticBuffer(g.first);
+  guideStrand_ = staticBuffer(b.guideStrand);
+  std::vector<std::uint32_t> guideFirst(guides_ + 1, 0);
+  for (std::size_t k = 0; k < guides_; ++k)
+    guideFirst[k + 1] = guideFirst[k] + g.strandSize(b.guideStrand[k]);
+  guideParticles_ = guideFirst.back();
+  guideFirst_ = staticBuffer(std::move(guideFirst));
+  boundGuides_ = staticBuffer(b.guides);
+  boundWeights_ = staticBuffer(b.weights);
+  turnsOut_ = gl::Buffer(GLsizeiptr(std::max<std::size_t>(guideParticles_, 1) * 16), nullptr,
+                         gl::BufferUsage::DynamicCopy);
+  positions_ = gl::Buffer(GLsizeiptr(std::max<std::size_t>(points_, 1) * 16), nullptr,
+                          gl::BufferUsage::DynamicCopy);
+  pushed_ = gl::Buffer(GLsizeiptr(sizeof(std::uint32_t)), nullptr, gl::BufferUsage::DynamicCopy);
+  // The head the followers are kept out of: the shape the solver collides with.
+  const SceneHead collider = head.collider();
+  std::vector<glm::vec4> shape;
+  if (collider.field && !collider.field->empty()) {
+    headShape_ = 1;
+    shape = collider.field->nodes;
+    fieldDims_ = collider.field->dims;
+    fieldOrigin_ = collider.field->origin;
+    fieldCell_ = collider.field->cell;
+  } else {
+    headShape_ = collider.spheres.empty() ? 0 : 2;
+    for (const Sphere& s : collider.spheres) shape.emplace_back(s.center, s.radius);
+  }
+  spheres_ = int(collider.spheres.size());
+  head_ = staticBuffer(std::move(shape));
+}
+
+unsigned FollowerPass::run(unsigned guidePositions, const Pose& head) {
+  if (!binding_ || turns_.id() == 0) return positions_.id();
+  const glm::quat q(head.rotation);
+  const glm::vec4 rotation(q.x, q.y, q.z, q.w);
+  gl::bindStorageBuffer(bindings::kFollowGuidePositions, guidePositions);
+  drawnRest_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowDrawnRest);
+  drawnFirst_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowDrawnFirst);
+  guideStrand_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowGuideStrand);
+  guideFirst_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowGuideFirst);
+  turnsOut_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowGuideTurns);
+  boundGuides_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowBoundGuides);
+  boundWeights_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowBoundWeights);
+  positions_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowDrawnPositions);
+  head_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowHead);
+  pushed_.clearToZero();
+  pushed_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kFollowPushed);
+  for (gl::Program* p : {&turns_, &followers_}) {
+    p->use();
+    p->setUniform("uGuides", unsigned(guides_));
+    p->setUniform("uStrands", unsigned(strands_));
+    p->setUniform("uHeadRotation", rotation);
+  }
+  dispatchOver(turns_, guideParticles_);
+  followers_.use();
+  followers_.setUniform("uHeadTranslation", glm::vec3(head.translation));
+  followers_.setUniform("uHeadShape", headShape_);
+  followers_.setUniform("uFieldDims", fieldDims_);
+  followers_.setUniform("uFieldOrigin", fieldOrigin_);
+  followers_.setUniform("uFieldCell", fieldCell_);
+  followers_.setUniform("uSpheres", spheres_);
+  dispatchOver(followers_, points_);
+  return positions_.id();
+}
+
+std::size_t FollowerPass::pushedPoints() const {
+  if (pushed_.id() == 0) return 0;
+  std::uint32_t n = 0;
+  pushed_.read(0, sizeof(n), &n);
+  return n;
+}
+
+}  // namespace csm

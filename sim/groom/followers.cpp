@@ -1,0 +1,148 @@
+#include "sim/groom/followers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/geometric.hpp>
+
+#include "sim/head/distance_grid.h"
+
+namespace csm {
+namespace {
+
+// Rounds of the push out of the head, and how far out of the surface a point inside it is put
+// (m): the field is no exact distance, and a sphere's surface may lie in another. The shader
+// does the same.
+constexpr int kPushRounds = 8;
+constexpr double kPushMargin = 1e-4;
+
+// a (1 - t) + b t, written out: exactly a at t = 0 and b at t = 1 (the shader does the same).
+glm::vec3 blend(const glm::vec3& a, const glm::vec3& b, float t) {
+  return a * (1.0f - t) + b * t;
+}
+
+// The way along strand points [first, first + n) at point j: central differences inside,
+// one-sided at the ends.
+glm::vec3 tangentAt(const glm::vec3* p, std::uint32_t n, std::uint32_t j) {
+  const std::uint32_t lo = j > 0 ? j - 1 : 0, hi = std::min(j + 1, n - 1);
+  return p[hi] - p[lo];
+}
+
+// The shortest rotation taking unit a to unit b; none where they are opposed.
+glm::quat shortestTurn(const glm::vec3& a, const glm::vec3& b) {
+  const float c = glm::dot(a, b);
+  if (!(c > -0.9999f)) return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+  const glm::vec3 v = glm::cross(a, b);
+  return glm::normalize(glm::quat(1.0f + c, v.x, v.y, v.z));
+}
+
+glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
+  const float l = glm::length(v);
+  return l > 1e-12f ? v / l : fallback;
+}
+
+}  // namespace
+
+std::vector<glm::quat> guideTurns(const FollowerBinding& b,
+                                  const std::vector<glm::vec3>& guidePositions, const Pose& head) {
+  const glm::quat h(head.rotation);
+  std::vector<glm::quat> turns(guidePositions.size(), h);
+  std::uint32_t first = 0;
+  for (const std::uint32_t s : b.guideStrand) {
+    const std::uint32_t n = b.drawn.strandSize(s);
+    if (first + n > guidePositions.size()) break;
+    const glm::vec3* rest = &b.drawn.points[b.drawn.first[s]];
+    const glm::vec3* now = &guidePositions[first];
+    for (std::uint32_t j = 0; j < n && n >= 2; ++j) {
+      const glm::vec3 a = unitOr(h * tangentAt(rest, n, j), glm::vec3(0.0f, -1.0f, 0.0f));
+      const glm::vec3 c = unitOr(tangentAt(now, n, j), a);
+      turns[first + j] = shortestTurn(a, c) * h;
+    }
+    first += n;
+  }
+  return turns;
+}
+
+std::size_t makeFollowers(const FollowerBinding& b, const std::vector<glm::vec3>& guidePositions,
+                          const Pose& head, const SceneHead& collider,
+                          std::vector<glm::vec3>& out) {
+  const Groom& g = b.drawn;
+  out.assign(g.pointCount(), glm::vec3(0.0f));
+  const std::vector<glm::quat> turns = guideTurns(b, guidePositions, head);
+  std::vector<std::uint32_t> guideFirst(b.guideStrand.size() + 1, 0);
+  for (std::size_t k = 0; k < b.guideStrand.size(); ++k)
+    guideFirst[k + 1] = guideFirst[k] + g.strandSize(b.guideStrand[k]);
+  if (guideFirst.back() != guidePositions.size()) return 0;
+  const glm::quat h(head.rotation);
+  const Pose toHead = inverse(head);
+  std::size_t pushed = 0;
+  for (std::size_t s = 0; s < g.strandCount(); ++s) {
+    const std::uint32_t first = g.first[s], n = g.strandSize(s);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const glm::vec3 rest = g.points[first + i];
+      const float u = b.share[first + i];
+      glm::vec3 sum(0.0f);
+      for (int k = 0; k < kFollowerGuides; ++k) {
+        const float w = b.weights[s][k];
+        if (w == 0.0f) continue;
+        const std::uint32_t guide = b.guides[s][k];
+        const std::uint32_t gs = b.guideStrand[guide], gn = g.strandSize(gs);
+        const std::uint32_t gRest = g.first[gs], gNow = guideFirst[guide];
+        // The guide's segment holding share u: the last j <= gn - 2 with share <= u.
+        const float* sh = &b.share[gRest];
+        std::uint32_t lo = 0, hi = gn - 2;
+        while (lo < hi) {
+          const std::uint32_t mid = (lo + hi + 1) / 2;
+          if (sh[mid] <= u)
+            lo = mid;
+          else
+            hi = mid - 1;
+        }
+        const std::uint32_t j = lo;
+        const float span = sh[j + 1] - sh[j];
+        const float t = span > 0.0f ? std::clamp((u - sh[j]) / span, 0.0f, 1.0f) : 0.0f;
+        const glm::vec3 offset = rest - blend(g.points[gRest + j], g.points[gRest + j + 1], t);
+        // The root's offset turns with the head alone, so that roots stay on the scalp.
+        const glm::quat ta = i == 0 ? h : turns[gNow + j], tb = i == 0 ? h : turns[gNow + j + 1];
+        const glm::vec3 turned = blend(ta * offset, tb * offset, t);
+        sum += w * (blend(guidePositions[gNow + j], guidePositions[gNow + j + 1], t) + turned);
+      }
+      out[first + i] = sum;
+    }
+    // Out of the head: the field's surface, else the spheres'.
+    for (std::uint32_t i = 1; i < n; ++i) {
+      glm::dvec3 local = toHead.apply(glm::dvec3(out[first + i]));
+      bool moved = false;
+      for (int round = 0; round < kPushRounds; ++round) {
+        bool again = false;
+        if (collider.field) {
+          glm::dvec3 gradient;
+          const double d = collider.field->sample(local, &gradient);
+          if (d < 0.0 && glm::length(gradient) > 0.0) {
+            local -= glm::normalize(gradient) * (d - kPushMargin);
+            again = true;
+          }
+        } else {
+          for (const Sphere& sp : collider.spheres) {
+            const glm::dvec3 r = local - glm::dvec3(sp.center);
+            const double l = glm::length(r);
+            if (l < sp.radius && l > 0.0) {
+              local = glm::dvec3(sp.center) + r * ((sp.radius + kPushMargin) / l);
+              again = true;
+            }
+          }
+        }
+        moved = moved || again;
+        if (!again) break;
+      }
+      if (moved) {
+        out[first + i] = glm::vec3(head.apply(local));
+        ++pushed;
+      }
+    }
+  }
+  return pushed;
+}
+
+}  // namespace csm
