@@ -21,13 +21,18 @@ def flat(d, p=""):
     return {p: d}
 x, y = (flat(json.load(open(f))) for f in sys.argv[1:3])
 # Timings and memory (the process's peak varies from run to run) are the machine's, not results.
-skip = lambda k: k.startswith("ms.") or k.startswith("memory.") or k == "source"
-keys = sorted(k for k in set(x) | set(y) if not skip(k))
+# The start-up time is a timing too.
+skip = lambda k: (k.startswith("ms.") or k.startswith("memory.") or k == "source" or
+                  k == "startup_s")
+keys = sorted(k for k in set(x) & set(y) if not skip(k))
 diff = [k for k in keys if x.get(k) != y.get(k)]
-print("same" if not diff else "DIFFERENT: " + ", ".join(diff))
+# A figure only one side has (the metrics grew a key) is said, not counted as a difference.
+new = sorted(k for k in set(x) ^ set(y) if not skip(k))
+print(("same" if not diff else "DIFFERENT: " + ", ".join(diff)) +
+      (" (in one side only: " + ", ".join(new) + ")" if new else ""))
 PY
 )
-  case $metrics in same) ;; *) fail=1 ;; esac
+  case $metrics in same*) ;; *) fail=1 ;; esac
   printf '%-28s hair %-9s metrics %s\n' "$run" "$bytes" "$metrics"
 done
 exit $fail
