@@ -12,21 +12,10 @@
 #include "gl/gl.h"
 #include "gl/shader_source.h"
 #include "render/bindings.h"
+#include "render/compute_dispatch.h"
 
 namespace csm {
 namespace {
-
-// One invocation per item in work groups of 64 (hair_compute.glsl), in two dimensions past the
-// 65,535 groups one may have.
-void dispatchOver(gl::Program& program, std::size_t items) {
-  const std::size_t groups = (items + 63) / 64;
-  if (groups == 0) return;
-  program.use();
-  program.setUniform("uItems", unsigned(items));
-  const std::size_t wide = std::min<std::size_t>(groups, 65535);
-  program.dispatch(GLuint(wide), GLuint((groups + wide - 1) / wide));
-  gl::memoryBarrier(gl::Barrier::Storage);
-}
 
 template <class T>
 gl::Buffer staticBuffer(std::vector<T> data) {

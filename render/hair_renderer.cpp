@@ -13,6 +13,7 @@
 #include "gl/shader_source.h"
 #include "gl/state_backup.h"
 #include "render/bindings.h"
+#include "render/compute_dispatch.h"
 #include "render/camera.h"
 #include "render/hair_color.h"
 #include "render/scalp_map.h"
@@ -103,19 +104,6 @@ Selection select(std::size_t guides, int children, float share) {
   s.widthScale = std::min(kMaxWidthScale, float(std::sqrt(ratio)));
   s.opacityScale = float(ratio);
   return s;
-}
-
-// One invocation per item, in work groups of 64 (hair_compute.glsl), over two dimensions
-// where one would pass the 65,535 groups a dimension may have; the item count in uItems for
-// the passes that have it; what it wrote visible to the passes after it.
-void dispatchOver(gl::Program& program, std::size_t items) {
-  const std::size_t groups = (items + 63) / 64;
-  if (groups == 0) return;
-  program.use();
-  program.setUniform("uItems", unsigned(items));
-  const std::size_t wide = std::min<std::size_t>(groups, 65535);
-  program.dispatch(GLuint(wide), GLuint((groups + wide - 1) / wide));
-  gl::memoryBarrier(gl::Barrier::Storage);
 }
 
 }  // namespace
