@@ -145,6 +145,11 @@ class HairExport {
       if (!options_.quiet)
         std::fprintf(stderr, "csmhair: wrote %zu strands to %s\n", out.strandCount(),
                      options_.exportHair.c_str());
+      if (!options_.quiet && sim.followers() && !options_.exportGuides)
+        std::fprintf(stderr,
+                     "csmhair: the followers: %zu points moved out of the head, the deepest "
+                     "left inside %.2f mm\n",
+                     last_.pushed, 1e3 * last_.deepest);
     }
     if (exported_ > 0 && !options_.quiet)
       std::fprintf(stderr, "csmhair: wrote %ld frames of %zu strands into %s\n", exported_,
@@ -161,12 +166,13 @@ class HairExport {
     if (options_.exportGuides || !sim.followers()) return sim.groom();
     std::vector<glm::vec4> guides;
     std::swap(guides, x_);
-    sim.drawnPositions(guides, x_);
+    last_ = sim.drawnPositions(guides, x_);
     return sim.followers()->drawn;
   }
 
   const Options& options_;
   std::vector<glm::vec4> x_;
+  FollowerStats last_;  // of the last frame exported
   long exported_ = 0;
 };
 
@@ -262,7 +268,7 @@ class MetricsOutput {
   // solver reset).
   void setStartup(double seconds) { startup_ = seconds; }
   // `context` and `renderer` are null when the run had none.
-  bool write(const SceneSetup& scene, const Simulation& sim, const gl::HeadlessContext* context,
+  bool write(const SceneSetup& scene, Simulation& sim, const gl::HeadlessContext* context,
              const HairRenderer* renderer) const {
     if (!on()) return true;
     SimFrame figures;
@@ -272,6 +278,17 @@ class MetricsOutput {
         options_.solver == "gpu" && context ? context->renderer() : std::string("cpu")));
     meta["mode"] = "headless";
     meta["startup_s"] = startup_;
+    if (const FollowerBinding* followers = sim.followers()) {
+      // The last frame's followers, made on the CPU as the exports make them.
+      std::vector<glm::vec4> guides, drawn;
+      sim.solver().readPositions(guides);
+      const FollowerStats stats = sim.drawnPositions(guides, drawn);
+      meta["followers"] = {{"guides", followers->guideCount()},
+                           {"drawn_strands", followers->drawn.strandCount()},
+                           {"far_followers", followers->farFollowers},
+                           {"pushed_points", stats.pushed},
+                           {"deepest_inside_m", stats.deepest}};
+    }
     meta["head_carried_frames"] = sim.carriedFrames();
     if (renderer) {
       meta["drawn_strands"] = drawnStrandCount(sim.drawnStrands(), scene.preset.view.render);

@@ -37,6 +37,15 @@ glm::quat shortestTurn(const glm::vec3& a, const glm::vec3& b) {
   return glm::normalize(glm::quat(1.0f + c, v.x, v.y, v.z));
 }
 
+// How deep a point (head frame) lies inside the head: 0 outside.
+double depthInside(const SceneHead& collider, const glm::dvec3& local) {
+  if (collider.field) return std::max(0.0, -collider.field->sample(local));
+  double deepest = 0.0;
+  for (const Sphere& sp : collider.spheres)
+    deepest = std::max(deepest, double(sp.radius) - glm::length(local - glm::dvec3(sp.center)));
+  return deepest;
+}
+
 glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
   const float l = glm::length(v);
   return l > 1e-12f ? v / l : fallback;
@@ -64,19 +73,19 @@ std::vector<glm::quat> guideTurns(const FollowerBinding& b,
   return turns;
 }
 
-std::size_t makeFollowers(const FollowerBinding& b, const std::vector<glm::vec3>& guidePositions,
-                          const Pose& head, const SceneHead& collider,
-                          std::vector<glm::vec3>& out) {
+FollowerStats makeFollowers(const FollowerBinding& b, const std::vector<glm::vec3>& guidePositions,
+                            const Pose& head, const SceneHead& collider,
+                            std::vector<glm::vec3>& out) {
   const Groom& g = b.drawn;
   out.assign(g.pointCount(), glm::vec3(0.0f));
   const std::vector<glm::quat> turns = guideTurns(b, guidePositions, head);
   std::vector<std::uint32_t> guideFirst(b.guideStrand.size() + 1, 0);
   for (std::size_t k = 0; k < b.guideStrand.size(); ++k)
     guideFirst[k + 1] = guideFirst[k] + g.strandSize(b.guideStrand[k]);
-  if (guideFirst.back() != guidePositions.size()) return 0;
+  if (guideFirst.back() != guidePositions.size()) return {};
   const glm::quat h(head.rotation);
   const Pose toHead = inverse(head);
-  std::size_t pushed = 0;
+  FollowerStats stats;
   for (std::size_t s = 0; s < g.strandCount(); ++s) {
     const std::uint32_t first = g.first[s], n = g.strandSize(s);
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -138,11 +147,12 @@ std::size_t makeFollowers(const FollowerBinding& b, const std::vector<glm::vec3>
       }
       if (moved) {
         out[first + i] = glm::vec3(head.apply(local));
-        ++pushed;
+        ++stats.pushed;
       }
+      stats.deepest = std::max(stats.deepest, depthInside(collider, local));
     }
   }
-  return pushed;
+  return stats;
 }
 
 }  // namespace csm

@@ -27,9 +27,16 @@ namespace csm {
 std::vector<glm::quat> guideTurns(const FollowerBinding& b,
                                   const std::vector<glm::vec3>& guidePositions, const Pose& head);
 
-// Every drawn point (world) into `out` (resized to the drawn groom's points). Returns the points
-// moved out of the head (`collider`: its field, else its spheres; head frame).
-std::size_t makeFollowers(const FollowerBinding& b, const std::vector<glm::vec3>& guidePositions,
-                          const Pose& head, const SceneHead& collider, std::vector<glm::vec3>& out);
+// What the follower stage did to keep the drawn points out of the head.
+struct FollowerStats {
+  std::size_t pushed = 0;  // points moved out of the head
+  double deepest = 0.0;    // the deepest a point but a root is left inside it (m; 0: none)
+};
+
+// Every drawn point (world) into `out` (resized to the drawn groom's points); the points moved
+// out of the head (`collider`: its field, else its spheres; head frame), and how deep any is left.
+FollowerStats makeFollowers(const FollowerBinding& b, const std::vector<glm::vec3>& guidePositions,
+                            const Pose& head, const SceneHead& collider,
+                            std::vector<glm::vec3>& out);
 
 }  // namespace csm

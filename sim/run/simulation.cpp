@@ -4,7 +4,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/groom/followers.h"
 #include "sim/groom/scene_groom.h"
 #include "sim/param/sim_params.h"
 #include "sim/run/scene_checks.h"
@@ -66,18 +65,19 @@ bool Simulation::regrow(const Config& config, const std::string& baseDir, std::s
   return true;
 }
 
-size_t Simulation::drawnPositions(const std::vector<glm::vec4>& simulated,
-                                  std::vector<glm::vec4>& out) const {
+FollowerStats Simulation::drawnPositions(const std::vector<glm::vec4>& simulated,
+                                         std::vector<glm::vec4>& out) const {
   if (!followers_) {
     out = simulated;
-    return 0;
+    return {};
   }
   std::vector<glm::vec3> guides(simulated.size()), drawn;
   for (size_t i = 0; i < simulated.size(); ++i) guides[i] = glm::vec3(simulated[i]);
-  const size_t pushed = makeFollowers(*followers_, guides, headPose(), head_->collider(), drawn);
+  const FollowerStats stats =
+      makeFollowers(*followers_, guides, headPose(), head_->collider(), drawn);
   out.resize(drawn.size());
   for (size_t i = 0; i < drawn.size(); ++i) out[i] = glm::vec4(drawn[i], 1.0f);
-  return pushed;
+  return stats;
 }
 
 bool Simulation::setConfig(const Config& config, std::string* error) {

@@ -11,6 +11,7 @@
 
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
+#include "sim/groom/followers.h"
 #include "sim/groom/guides.h"
 #include "sim/groom/scene_groom.h"
 #include "sim/head/head_model.h"
@@ -85,8 +86,9 @@ class Simulation {
   std::shared_ptr<const FollowerBinding> sharedFollowers() const { return followers_; }
   // The drawn strands' positions (world, a vec4 a point) from the simulated ones at this frame's
   // head: the followers made on the CPU (sim/groom/followers.h), or the simulated positions as
-  // they are. Returns the points the followers' blend put inside the head, moved out.
-  size_t drawnPositions(const std::vector<glm::vec4>& simulated, std::vector<glm::vec4>& out) const;
+  // they are. Returns what keeping the followers out of the head took (nothing without them).
+  FollowerStats drawnPositions(const std::vector<glm::vec4>& simulated,
+                               std::vector<glm::vec4>& out) const;
   // Strands drawn: the followers' groom's, or the simulated groom's.
   size_t drawnStrands() const {
     return followers_ ? followers_->drawn.strandCount() : groom_->strandCount();

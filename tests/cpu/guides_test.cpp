@@ -194,8 +194,9 @@ TEST_CASE("no follower point is left inside the head", "[guides][quick]") {
   std::vector<glm::vec3> drawn;
   SECTION("the head's field") {
     const SceneHead collider{&head->shapeField(), {}};
-    const size_t pushed = makeFollowers(b, x, Pose{}, collider, drawn);
-    CHECK(pushed > g.strandCount());
+    const FollowerStats stats = makeFollowers(b, x, Pose{}, collider, drawn);
+    CHECK(stats.pushed > g.strandCount());
+    CHECK(stats.deepest < 1e-4);
     double deepest = 0.0;
     for (size_t i = 0; i < drawn.size(); ++i)
       if (!isRoot(g, i)) deepest = std::min(deepest, collider.field->sample(drawn[i]));
@@ -204,8 +205,9 @@ TEST_CASE("no follower point is left inside the head", "[guides][quick]") {
   SECTION("the head's spheres") {
     const SceneHead collider{nullptr, head->spheres()};
     REQUIRE(!collider.spheres.empty());
-    const size_t pushed = makeFollowers(b, x, Pose{}, collider, drawn);
-    CHECK(pushed > g.strandCount());
+    const FollowerStats stats = makeFollowers(b, x, Pose{}, collider, drawn);
+    CHECK(stats.pushed > g.strandCount());
+    CHECK(stats.deepest < 1e-5);
     double deepest = 0.0;
     for (size_t i = 0; i < drawn.size(); ++i)
       for (const Sphere& sp : collider.spheres)

@@ -79,10 +79,13 @@ TEST_CASE(
   INFO(csm::groomReportText(report));
   CHECK(report.fileStrands == 30000 + 3);
   CHECK(report.repair.droppedStrands == 3);
-  CHECK(scene.sim().solver().strandCount() == 30000);
+  // Past 20,000 strands the default (hairstyle.guides -1) simulates 4,000 of them as guides and
+  // draws all 30,000.
+  CHECK(scene.sim().solver().strandCount() == csm::kAutoGuides);
+  CHECK(scene.sim().drawnStrands() == 30000);
   // Four points a strand, resampled to the scene's fewest particles a strand.
   CHECK(scene.sim().solver().particleCount() ==
-        30000u * size_t(std::max(4, p.scene.hairstyle.minParticles)));
+        csm::kAutoGuides * size_t(std::max(4, p.scene.hairstyle.minParticles)));
   std::vector<glm::vec4> x;
   scene.sim().solver().readPositions(x);
   size_t bad = 0;

@@ -33,6 +33,8 @@ TEST_CASE("every render parameter changes the picture", "[params][render]") {
   preset.view.render.shadowMapSize = 512;
   preset.view.render.samples = 1;
   preset.view.render.interactive = true;
+  // Simulated through guides, so that the guides' own setting (render.show_guides) shows too.
+  preset.scene.hairstyle.guides = 100;
   test::RenderScene scene(preset, 3);
   const int w = 160, h = 120;
   // The interactive settings show in the viewer's interactive amount, the others at full

@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# The followers against the same groom with every strand simulated: the default preset at STRANDS
+# strands (default 20,000), FRAMES frames (default 60) of its nodding motion, the GPU solver, no
+# drawing, collision.mode=head (MODE): the volume and the strand contacts push by the hair's
+# density, which the guides alone do not have, so with them the guides' own motion differs from
+# the full groom's and the comparison would measure that; the guides' own points are given too,
+# as the floor. Every strand simulated, then 1 %, 5 % and 20 % of them simulated as guides. For each,
+# the followers' points at the last frame (every strand exported as drawn, the guides found by
+# their roots in an --export-guides of the rest groom) against the same points simulated: RMS,
+# 99th percentile and largest distance; the points the followers put inside the head (moved out)
+# and the deepest left inside. A table, and a chart into OUT (docs/charts/followers_fidelity.png).
+#   scripts/bench_fidelity.sh [BIN] [STRANDS] [FRAMES] [OUT]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=${1:-"$root/build/app/csmhair"}
+strands=${2:-20000}
+frames=${3:-60}
+out=${4:-"$root/docs/charts"}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+run=(--headless --no-render --solver gpu --set hairstyle.strands="$strands"
+     --set collision.mode="${MODE:-head}")
+echo "Load before: $(uptime | sed 's/.*load average: //')"
+"$bin" "${run[@]}" --quiet --frames "$frames" --set hairstyle.guides=0 --export-hair "$tmp/all.hair"
+"$bin" "${run[@]}" --quiet --frames 0 --set hairstyle.guides=0 --export-hair "$tmp/rest.hair"
+shares="1 5 20"
+for share in $shares; do
+  guides=$((strands * share / 100))
+  "$bin" "${run[@]}" --frames "$frames" --set hairstyle.guides=$guides \
+    --export-hair "$tmp/g$share.hair" 2>"$tmp/g$share.log" >/dev/null
+  "$bin" "${run[@]}" --quiet --frames 0 --set hairstyle.guides=$guides --export-guides \
+    --export-hair "$tmp/g$share.rest.hair"
+done
+echo "Load after: $(uptime | sed 's/.*load average: //')"
+/usr/bin/python3 - "$tmp" "$out" "$strands" "$frames" $shares <<'PY'
+import re, struct, sys
+import numpy as np
+tmp, out, strands, frames = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+shares = [int(s) for s in sys.argv[5:]]
+
+def read(path):
+    data = open(path, "rb").read()
+    hairs, points, flags = struct.unpack_from("<III", data, 4)
+    off = 128
+    if flags & 1:
+        segs = np.frombuffer(data, "<u2", hairs, off) + 1
+        off += 2 * hairs
+    else:
+        segs = np.full(hairs, struct.unpack_from("<I", data, 16)[0] + 1)
+    xyz = np.frombuffer(data, "<f4", 3 * points, off).reshape(-1, 3)
+    first = np.concatenate([[0], np.cumsum(segs.astype(np.int64))]).astype(np.int64)
+    return xyz, first
+
+all_x, first = read(f"{tmp}/all.hair")
+rest_x, rest_first = read(f"{tmp}/rest.hair")
+roots = rest_x[rest_first[:-1]]
+rows = []
+for share in shares:
+    x, f = read(f"{tmp}/g{share}.hair")
+    assert len(f) == len(first) and np.array_equal(f, first), "the drawn groom is not the groom"
+    gx, gf = read(f"{tmp}/g{share}.rest.hair")
+    guide_roots = gx[gf[:-1]]
+    # The guides: the strands whose rest roots are the guides' roots.
+    is_guide = np.zeros(len(roots), bool)
+    key = {tuple(np.round(r, 5)): i for i, r in enumerate(roots)}
+    for r in guide_roots:
+        is_guide[key[tuple(np.round(r, 5))]] = True
+    follower_points = np.concatenate([np.arange(first[s], first[s + 1])
+                                      for s in range(len(roots)) if not is_guide[s]])
+    d = np.linalg.norm(x[follower_points] - all_x[follower_points], axis=1) * 1e3
+    guide_points = np.concatenate([np.arange(first[s], first[s + 1])
+                                   for s in range(len(roots)) if is_guide[s]])
+    dg = np.linalg.norm(x[guide_points] - all_x[guide_points], axis=1) * 1e3
+    log = open(f"{tmp}/g{share}.log").read()
+    m = re.search(r"the followers: (\d+) points moved out of the head, the deepest left inside ([0-9.]+) mm", log)
+    pushed, deepest = (int(m.group(1)), float(m.group(2))) if m else (-1, -1.0)
+    rows.append((share, int(is_guide.sum()), len(follower_points), np.sqrt(np.mean(d * d)),
+                 np.percentile(d, 99), d.max(), pushed, deepest, np.sqrt(np.mean(dg * dg))))
+print()
+print(f"{strands:,} strands, {frames} frames of the nodding motion; the followers' points against "
+      "the same points simulated")
+print()
+print("| guides | share | follower points | RMS mm | 99th percentile mm | largest mm | guides' own RMS mm | points moved out of the head | deepest left inside mm |")
+print("|---|---|---|---|---|---|---|---|---|")
+for share, g, n, rms, p99, mx, pushed, deepest, grms in rows:
+    print(f"| {g:,} | {share} % | {n:,} | {rms:.2f} | {p99:.2f} | {mx:.1f} | {grms:.3f} | {pushed:,} | {deepest:.3f} |")
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+fig, ax = plt.subplots(figsize=(6, 3.6))
+xs = [r[0] for r in rows]
+ax.plot(xs, [r[3] for r in rows], "o-", label="RMS")
+ax.plot(xs, [r[4] for r in rows], "s-", label="99th percentile")
+ax.set_xscale("log")
+ax.set_xticks(xs)
+ax.set_xticklabels([f"{s} %" for s in xs])
+ax.set_xlabel("strands simulated (guides)")
+ax.set_ylabel("follower point error (mm)")
+ax.set_ylim(bottom=0)
+ax.set_title(f"Followers against every strand simulated\n({strands:,} strands, {frames} frames, "
+             "head collisions only)", fontsize=10)
+ax.grid(True, alpha=0.3)
+ax.legend()
+fig.tight_layout()
+fig.savefig(f"{out}/followers_fidelity.png", dpi=110)
+with open(f"{out}/followers_fidelity.csv", "w") as c:
+    c.write("share_percent,guides,follower_points,rms_mm,p99_mm,max_mm,pushed_points,deepest_inside_mm,guides_rms_mm\n")
+    for r in rows:
+        c.write(",".join(f"{v:.4f}" if isinstance(v, float) else str(v) for v in r) + "\n")
+PY
