@@ -57,7 +57,7 @@ struct RunDescription {
   std::string preset, source;
   Config config;
   StiffnessInfo stiffness;
-  MemoryUse memory;  // the solver's buffers by kind
+  MemoryUse memory;                        // the solver's buffers by kind
   std::size_t strands = 0, particles = 0;  // simulated
   std::size_t groomStrands = 0;            // drawn: followers included, children not
   std::string solver;

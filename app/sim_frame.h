@@ -39,8 +39,8 @@ struct SimFrame {
   // The strands drawn from the guides when the groom is simulated through guides (null: none).
   std::shared_ptr<const FollowerBinding> followers;
   GroomReport groomReport;
-  std::shared_ptr<const HeadModel> head;  // the scene's head (built with the groom)
-  Pose headPose;                          // where the head was at the end of the frame
+  std::shared_ptr<const HeadModel> head;   // the scene's head (built with the groom)
+  Pose headPose;                           // where the head was at the end of the frame
   std::size_t strands = 0, particles = 0;  // simulated
   std::size_t drawnStrands = 0;            // drawn: the followers' groom's, else `strands`
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)

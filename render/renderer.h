@@ -41,13 +41,13 @@ struct FrameView {
   // When the groom is simulated through guides: the strands drawn and how they follow `groom`
   // (the guides, whose positions positionBuffer holds). Null: `groom` is drawn as simulated.
   const FollowerBinding* followers = nullptr;
-  long generation = 0;               // changes when the groom is regrown: rebuild topology buffers
-  const HeadModel* head = nullptr;   // the scene's head: what is drawn, where hair grows
-  Pose headPose;                     // where the head is this frame
-  unsigned positionBuffer = 0;       // SSBO: vec4 per particle, world positions
-  int width = 1280, height = 720;    // target size in pixels
-  unsigned targetFramebuffer = 0;    // GL framebuffer to draw into (0 = the window's)
-  DrawAmount amount;                 // all of it unless the viewer asks for less
+  long generation = 0;              // changes when the groom is regrown: rebuild topology buffers
+  const HeadModel* head = nullptr;  // the scene's head: what is drawn, where hair grows
+  Pose headPose;                    // where the head is this frame
+  unsigned positionBuffer = 0;      // SSBO: vec4 per particle, world positions
+  int width = 1280, height = 720;   // target size in pixels
+  unsigned targetFramebuffer = 0;   // GL framebuffer to draw into (0 = the window's)
+  DrawAmount amount;                // all of it unless the viewer asks for less
   // Camera: when `useCameraMatrices` is false, derived from look->camera.
   bool useCameraMatrices = false;
   glm::mat4 view{1.0f}, projection{1.0f};
