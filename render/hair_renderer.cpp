@@ -292,7 +292,8 @@ void HairRenderer::updateUniforms(const FrameView& frame, int children, int draw
   const HairColors colors = hairColors(r);
   u.rootColor = glm::vec4(srgbToLinear(colors.root), r.colorVariation);
   u.tipColor = glm::vec4(srgbToLinear(colors.tip), std::clamp(r.opacity, 0.0f, 1.0f));
-  if (highlightGuides_) {
+  const bool highlightGuides = r.showGuides && frame.followers;
+  if (highlightGuides) {
     // The guides alone: one bright colour, whatever the groom's own.
     u.rootColor = glm::vec4(srgbToLinear(kGuideHighlight), 0.0f);
     u.tipColor = glm::vec4(srgbToLinear(kGuideHighlight), 1.0f);
@@ -320,7 +321,7 @@ void HairRenderer::updateUniforms(const FrameView& frame, int children, int draw
                 float(drawnChildren) / float(shadowChildren), 0.0f);
   // Highlighted guides take no groom colours (flag 1).
   u.counts = glm::ivec4(geometry_->subdivision(), children, geometry_->childStride(),
-                        geometry_->strandFlags() & (highlightGuides_ ? ~1 : ~0));
+                        geometry_->strandFlags() & (highlightGuides ? ~1 : ~0));
   u.counts2 = glm::ivec4(int(geometry_->splinePoints()), head_.sphereCount(), 0, 0);
   // A width in metres: pixels per metre at view depth 1 from the projection's vertical scale
   // (1 / tan(fov / 2) for the orbit camera), so a strand narrows with distance as it would.
@@ -350,7 +351,6 @@ void HairRenderer::render(const FrameView& frame) {
   // A groom simulated through guides draws its followers: the follower pass makes them first.
   // render.show_guides draws the guides alone, highlighted, as simulated.
   const FollowerBinding* followers = look.showGuides ? nullptr : frame.followers;
-  highlightGuides_ = look.showGuides && frame.followers;
   const Groom* groom = followers ? &followers->drawn : frame.groom;
   geometryFor(subdivision).update(*groom, frame.generation, subdivision, frame.head->spheres());
   if (scalpKey_ != std::make_pair(groom, frame.generation)) {
@@ -505,8 +505,8 @@ std::vector<StageTime> HairRenderer::stageTimes() {
   return clock_.times();
 }
 
-std::size_t drawnStrandCount(std::size_t simulatedStrands, const RenderConfig& render) {
-  return simulatedStrands * std::size_t(1 + std::max(render.children, 0));
+std::size_t drawnStrandCount(std::size_t strands, const RenderConfig& render) {
+  return strands * std::size_t(1 + std::max(render.children, 0));
 }
 
 DrawAmount interactiveAmount(const RenderConfig& render) {

@@ -110,7 +110,6 @@ class HairRenderer final : public Renderer {
   FrameTarget* target_ = nullptr;
   glm::mat4 lightViewProj_{1.0f};
   std::size_t drawnStrands_ = 0;
-  bool highlightGuides_ = false;  // this frame draws the guides alone (render.show_guides)
 };
 
 }  // namespace csm

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <random>
 #include <string>
-#include <unordered_map>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -16,6 +15,7 @@
 
 #include "gl/draw.h"
 #include "render/bindings.h"
+#include "sim/base/point_grid.h"
 
 namespace csm {
 namespace {
@@ -29,38 +29,6 @@ void basisAround(const glm::vec3& n, glm::vec3& b1, glm::vec3& b2) {
   b1 = glm::vec3(1.0f + sgn * n.x * n.x * a, sgn * b, -sgn * n.x);
   b2 = glm::vec3(b, sgn + n.y * n.y * a, -n.y);
 }
-
-// Roots in a uniform grid of cubes `cell` wide, for neighbour queries.
-class RootGrid {
- public:
-  RootGrid(const std::vector<glm::vec3>& roots, float cell) : roots_(roots), cell_(cell) {
-    for (std::size_t i = 0; i < roots.size(); ++i) cells_[key(cellOf(roots[i]))].push_back(i);
-  }
-  // Calls f(j) for every root within `radius` (<= cell) of p.
-  template <class F>
-  void near(const glm::vec3& p, float radius, F&& f) const {
-    const glm::ivec3 c = cellOf(p);
-    for (int z = -1; z <= 1; ++z)
-      for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x) {
-          const auto it = cells_.find(key(c + glm::ivec3(x, y, z)));
-          if (it == cells_.end()) continue;
-          for (std::size_t j : it->second)
-            if (glm::length(roots_[j] - p) <= radius) f(j);
-        }
-  }
-
- private:
-  glm::ivec3 cellOf(const glm::vec3& p) const { return glm::ivec3(glm::floor(p / cell_)); }
-  static std::uint64_t key(const glm::ivec3& c) {
-    return (std::uint64_t(std::uint32_t(c.x) & 0x1fffff) << 42) |
-           (std::uint64_t(std::uint32_t(c.y) & 0x1fffff) << 21) |
-           std::uint64_t(std::uint32_t(c.z) & 0x1fffff);
-  }
-  const std::vector<glm::vec3>& roots_;
-  float cell_;
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
-};
 
 float median(std::vector<float> v) {
   if (v.empty()) return 0.0f;
@@ -112,10 +80,10 @@ GuideLinks guideLinks(const Groom& groom) {
   const float guess = std::sqrt(area / float(roots.size()));
   std::vector<float> nearest(roots.size(), 0.0f);
   {
-    const RootGrid grid(roots, 2.0f * guess);
+    const PointGrid grid(roots, 2.0f * guess);
     for (std::size_t i = 0; i < roots.size(); ++i) {
       float best = 2.0f * guess;
-      grid.near(roots[i], 2.0f * guess, [&](std::size_t j) {
+      grid.within(roots[i], 2.0f * guess, [&](std::size_t j) {
         if (j != i) best = std::min(best, glm::length(roots[j] - roots[i]));
       });
       nearest[i] = best;
@@ -124,13 +92,13 @@ GuideLinks guideLinks(const Groom& groom) {
   out.spacing = std::max(median(nearest), 1e-5f);
   // The density within three spacings, against its median: about half on an edge.
   const float radius = 3.0f * out.spacing;
-  const RootGrid grid(roots, radius);
+  const PointGrid grid(roots, radius);
   std::vector<float> counts(roots.size(), 0.0f);
   std::vector<glm::vec3> centroids(roots.size(), glm::vec3(0.0f));
   for (std::size_t i = 0; i < roots.size(); ++i) {
     float best = 2.5f * out.spacing;
     std::size_t neighbour = i;
-    grid.near(roots[i], radius, [&](std::size_t j) {
+    grid.within(roots[i], radius, [&](std::size_t j) {
       counts[i] += 1.0f;
       centroids[i] += roots[j];
       const float d = glm::length(roots[j] - roots[i]);

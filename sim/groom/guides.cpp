@@ -1,14 +1,15 @@
 #include "sim/groom/guides.h"
 
 #include <algorithm>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <queue>
-#include <unordered_map>
 #include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+
+#include "sim/base/point_grid.h"
 
 namespace csm {
 namespace {
@@ -67,48 +68,6 @@ float strandDistance(const StrandShape& a, const StrandShape& b) {
   const glm::vec3 dm = a.middle - b.middle, dt = a.tip - b.tip;
   return glm::length(a.root - b.root) + 0.5f * std::sqrt(glm::dot(dm, dm) + glm::dot(dt, dt));
 }
-
-// Points in a uniform grid of cubes, for "every point within r of p".
-class PointGrid {
- public:
-  PointGrid(std::vector<glm::vec3> points, float cell) : points_(std::move(points)), cell_(cell) {
-    for (std::size_t i = 0; i < points_.size(); ++i) cells_[key(cellOf(points_[i]))].push_back(i);
-  }
-  // f(j) for every point j within `radius` of p, in no fixed order (callers must not depend on
-  // it: they break ties by index).
-  template <class F>
-  void within(const glm::vec3& p, float radius, F&& f) const {
-    const int reach = int(std::ceil(radius / cell_));
-    const glm::ivec3 c = cellOf(p);
-    if (std::size_t(2 * reach + 1) * std::size_t(2 * reach + 1) * std::size_t(2 * reach + 1) >
-        cells_.size()) {
-      // Wider than the grid: every cell.
-      for (const auto& [k, list] : cells_)
-        for (std::size_t j : list)
-          if (glm::length(points_[j] - p) <= radius) f(j);
-      return;
-    }
-    for (int z = -reach; z <= reach; ++z)
-      for (int y = -reach; y <= reach; ++y)
-        for (int x = -reach; x <= reach; ++x) {
-          const auto it = cells_.find(key(c + glm::ivec3(x, y, z)));
-          if (it == cells_.end()) continue;
-          for (std::size_t j : it->second)
-            if (glm::length(points_[j] - p) <= radius) f(j);
-        }
-  }
-
- private:
-  glm::ivec3 cellOf(const glm::vec3& p) const { return glm::ivec3(glm::floor(p / cell_)); }
-  static std::uint64_t key(const glm::ivec3& c) {
-    return (std::uint64_t(std::uint32_t(c.x) & 0x1fffff) << 42) |
-           (std::uint64_t(std::uint32_t(c.y) & 0x1fffff) << 21) |
-           std::uint64_t(std::uint32_t(c.z) & 0x1fffff);
-  }
-  std::vector<glm::vec3> points_;
-  float cell_;
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
-};
 
 // The spacing of n roots spread over the box of `roots`' largest face.
 float spacingOf(const std::vector<glm::vec3>& roots, std::size_t n) {
