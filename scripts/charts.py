@@ -5,7 +5,7 @@ bench scripts write.
 usage: /usr/bin/python3 scripts/charts.py DIR [SECTION...]
 
 Reads DIR/{methods,stability,resolution,region_sums,scaling,scene_choices,window_coefficient,
-window_sag,modes,contact_settings,torture,soak_rss}.csv (whichever are there; with SECTIONs,
+window_sag,modes,contact_settings,torture,soak_rss,scale}.csv (whichever are there; with SECTIONs,
 only those sections': methods, stability, ..., window, modes, contact_settings, torture, soak)
 and writes PNG and SVG charts next to them. Needs only Debian's python3-matplotlib.
 """
@@ -238,6 +238,36 @@ def scaling_chart(rows, out):
     ax.set_title("Scaling: ms per step against strand count", fontsize=9)
     ax.legend(fontsize=7)
     save(fig, out, "scaling")
+
+
+def scale_chart(rows, out):
+    """scripts/bench_scale.sh: start-up, memory, sim and render ms against the strands drawn."""
+    fig, axes = plt.subplots(2, 2, figsize=(8, 6))
+    panels = (("startup_s", "start-up s", None),
+              ("peak_rss_mb", "peak RSS MB (solid), solver buffers MB (dotted)",
+               "solver_buffers_mb"),
+              ("sim_ms", "sim ms a frame", None),
+              ("render_ms", "render ms a frame (followers pass dotted)", "followers_ms"))
+    colours = {"default": "#2ca02c", "all": "#d62728"}
+    labels = {"default": "default guides (all up to 20,000, 4,000 beyond)",
+              "all": "every strand simulated"}
+    for ax, (key, title, dotted) in zip(axes.flat, panels):
+        for series in ("default", "all"):
+            pts = [r for r in rows if r["guides"] == series]
+            xs = [num(r, "strands") for r in pts]
+            ax.plot(xs, [num(r, key) for r in pts], marker="o", color=colours[series],
+                    label=labels[series])
+            if dotted:  # a pass a series has not (0) is left out of the log axis
+                some = [(x, num(r, dotted)) for x, r in zip(xs, pts) if num(r, dotted) > 0]
+                ax.plot([p[0] for p in some], [p[1] for p in some], marker=".", linestyle=":",
+                        color=colours[series])
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel("strands drawn (32 points each)")
+    axes.flat[0].legend(fontsize=7)
+    fig.suptitle(f"What a groom costs as it grows: {rows[0].get('device', '?')}", fontsize=9)
+    save(fig, out, "scale", rect=(0, 0, 1, 0.96))
 
 
 def region_chart(rows, out):
@@ -604,6 +634,7 @@ def main():
         cost_charts(methods, out, note)
     for name, section, fn in (("stability", "stability", stability_chart),
                               ("scaling", "scaling", scaling_chart),
+                              ("scale", "scale", scale_chart),
                               ("region_sums", "region_sums", region_chart),
                               ("resolution", "resolution", resolution_chart),
                               ("scene_choices", "scene_choices", scene_chart),

@@ -4,16 +4,21 @@
 # Markdown, ready for BENCHMARKS: the default preset, Fig. 1 and Fig. 3, every collision mode,
 # the solver alone and with drawing at 1920x1080, ms a frame and frames a second. On a software
 # renderer (llvmpipe) it runs too, with fewer frames, and says so at the top of the table.
-#   scripts/gpu_check.sh [BUILD_DIR]      (default: build)
+#   scripts/gpu_check.sh [BUILD_DIR] [--require-gpu]      (BUILD_DIR default: build)
+# --require-gpu: a software renderer is an error (exit 1 before any row), not a smaller run.
 # BUILD_DIR holds app/csmhair and tests/csm_tests_gpu (a build tree, or those two copied with
 # its CMakeCache.txt). Environment: FRAMES (a row's frames: 120 on a GPU, 3 in software),
 # TESTS=0 (no test tier), BENCH=0 (no table), KERNELS (the GPU solver's paths to time, each
 # a row: "auto" the one the device gets, or strand and/or particle; default "strand particle"),
-# SCENES (default, fig1, fig3), MODES (collision modes; default all five), DRAW (no, yes), JOBS (test processes at once; default the cores), LOG_DIR (where the
+# SCENES (default, fig1, fig3; groom too on request: the default hairstyle grown to GROOM_STRANDS
+# strands, default 100,000, at 32 points, written as cyHair, opened with the default guides and
+# render.children=0, its rows' strands "simulated of drawn"), MODES (collision modes; default all five), DRAW (no, yes), JOBS (test processes at once; default the cores), LOG_DIR (where the
 # tests' and runs' logs go; default a temporary folder), CSM_EGL_DEVICE (the device; see --help).
 # Exit status: 0 when the tests passed and every row ran, else 1.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+require_gpu=0
+[ "${2:-}" = --require-gpu ] && require_gpu=1
 build=$(cd "${1:-$root/build}" && pwd) || exit 1
 bin=$build/app/csmhair
 tests=$build/tests/csm_tests_gpu
@@ -56,6 +61,10 @@ grep -q "(software)" <<<"$info" && software=1
 device=$(sed -n 's/^GL renderer: *//p' <<<"$info" | sed 's/ (software)$//')
 driver=$(sed -n 's/^GL version: *//p' <<<"$info")
 frames=${FRAMES:-120}
+if [ $software -eq 1 ] && [ $require_gpu -eq 1 ]; then
+  echo "gpu_check: --require-gpu: OpenGL runs on a software renderer ($device)" >&2
+  exit 1
+fi
 if [ $software -eq 1 ]; then
   frames=${FRAMES:-3}
   echo
@@ -106,7 +115,8 @@ echo "| scene | collision | strands | particles | kernels | drawn | solver ms | 
 echo "|---|---|---|---|---|---|---|---|---|---|---|"
 row() {  # row LABEL PRESET MODE DRAW KERNELS
   local label=$1 preset=$2 mode=$3 draw=$4 kernels=$5 m="$logs/metrics.json"
-  local args=(--headless --quiet --frames "$frames" --metrics "$m" --set "collision.mode=$mode")
+  local args=(--headless --quiet --frames "$frames" --metrics "$m" --set "collision.mode=$mode"
+              "${scene_args[@]}")
   if [ "$draw" = yes ]; then args+=(--size 1920x1080); else args+=(--no-render); fi
   rm -f "$m"
   local env=()
@@ -128,16 +138,29 @@ fps = 1000.0 / total if total > 0 else 0.0
 drawn = f"{draw:.2f}" if sys.argv[4] == "yes" else "-"
 where = "1080p" if sys.argv[4] == "yes" else "no"
 kernels = m.get("solver_variant") or "?"
-print(f"| {sys.argv[2]} | {sys.argv[3]} | {m.get('strands', '?')} | {m['particles']} | {kernels} | "
+strands = m.get("strands", "?")
+if m.get("groom_strands", strands) != strands:
+    strands = f"{strands} of {m['groom_strands']}"
+print(f"| {sys.argv[2]} | {sys.argv[3]} | {strands} | {m['particles']} | {kernels} | "
       f"{where} | {sim:.2f} | {p95:.2f} | {drawn} | {total:.2f} | {fps:.3g} |")
 PY
 }
 declare -A scenes=([default]="default:$root/presets/default.json"
   [fig1]="Fig. 1:$root/presets/paper_fig1_straight.json"
-  [fig3]="Fig. 3:$root/presets/paper_fig3_curly.json")
+  [fig3]="Fig. 3:$root/presets/paper_fig3_curly.json"
+  [groom]="groom ${GROOM_STRANDS:-100000}:$root/presets/default.json")
 for name in ${SCENES:-default fig1 fig3}; do
   scene=${scenes[$name]:-}
   [ -n "$scene" ] || { echo "gpu_check: SCENES: no scene $name" >&2; exit 1; }
+  scene_args=()
+  if [ "$name" = groom ]; then
+    groom=$logs/groom.hair
+    grow=(--set hairstyle.strands="${GROOM_STRANDS:-100000}" --set hairstyle.particles_per_strand=32)
+    "$bin" --headless --no-render --quiet --solver cpu --frames 0 "${grow[@]}" \
+      --export-hair "$groom" >"$logs/groom.log" 2>&1 ||
+      { echo "gpu_check: the groom could not be made: $(tail -n1 "$logs/groom.log")" >&2; exit 1; }
+    scene_args=("${grow[@]}" --set hairstyle.file="$groom" --set render.children=0)
+  fi
   for mode in ${MODES:-off head volume strands volume+strands}; do
     for draw in ${DRAW:-no yes}; do
       for kernels in ${KERNELS:-strand particle}; do
