@@ -17,6 +17,7 @@
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
 #include "sim/core/config.h"
+#include "sim/core/measure_sample.h"
 #include "sim/groom/groom_file.h"
 #include "sim/groom/hair_sequence.h"
 #include "sim/run/frame_driver.h"
@@ -448,6 +449,12 @@ class RunWarnings {
   // The crossings measure's lists (a mode without strand contacts): what they could not count.
   void sayMeasure() const {
     const uint64_t missed = seen_.crowded + seen_.oversize;
+    if (seen_.measureStride > 1)
+      std::fprintf(stderr,
+                   "csmhair: note: the hair-hair measures (--metrics) searched 1 strand in %u "
+                   "(hair of over %u particles): their pair counts are the sample's times %u\n",
+                   unsigned(seen_.measureStride), unsigned(CSM_MEASURED_PARTICLES),
+                   unsigned(seen_.measureStride * seen_.measureStride));
     if (seen_.overflows > 0)
       std::fprintf(stderr,
                    "csmhair: note: the hair-crossings measure (--metrics) counted no crossings in "

@@ -118,28 +118,41 @@ nlohmann::json MetricsLog::toJson(nlohmann::json meta) const {
     // over the sampled frames.
     const double dt = j.value("frame_dt", 0.0);
     const double seconds = dt * double(contactSamples_);
+    // Measured on 1 strand in `stride` (sim/core/measure_sample.h): a pair is in the sample
+    // when both its strands are, so the whole hair's pair counts are about stride^2 times the
+    // sample's. Said, with the sample's own count of crossings.
+    const uint64_t stride = contactSum_.measureStride, pairScale = stride * stride;
+    const uint64_t crossings = contactSum_.crossings * pairScale;
+    const uint64_t crossingsClose = contactSum_.crossingsClose * pairScale;
     nlohmann::json& a = j["accuracy"];
-    a["hair_contacts"] = contactsLast_;
-    a["hair_penetrations"] = penetrationsLast_;
-    a["hair_penetrations_max"] = penetrationsMax_;
-    a["hair_crossings"] = contactSum_.crossings;
-    a["hair_crossings_per_s"] = seconds > 0.0 ? double(contactSum_.crossings) / seconds : 0.0;
+    a["hair_measure_stride"] = stride;
+    if (stride > 1) {
+      a["hair_pair_counts_scaled_by"] = pairScale;
+      a["hair_crossings_in_sample"] = contactSum_.crossings;
+    }
+    a["hair_contacts"] = contactsLast_ * pairScale;
+    a["hair_penetrations"] = penetrationsLast_ * pairScale;
+    a["hair_penetrations_max"] = penetrationsMax_ * pairScale;
+    a["hair_crossings"] = crossings;
+    a["hair_crossings_per_s"] = seconds > 0.0 ? double(crossings) / seconds : 0.0;
     // Of those, the pairs the groom put closer than 2r (their contact distance is the rest
     // distance): what is left is hair passing through hair that was apart.
-    a["hair_crossings_close_at_rest"] = contactSum_.crossingsClose;
+    a["hair_crossings_close_at_rest"] = crossingsClose;
     a["hair_crossings_close_at_rest_per_s"] =
-        seconds > 0.0 ? double(contactSum_.crossingsClose) / seconds : 0.0;
+        seconds > 0.0 ? double(crossingsClose) / seconds : 0.0;
     a["hair_depth_p50"] = contactSum_.depthQuantile(0.50);
     a["hair_depth_p99"] = contactSum_.depthQuantile(0.99);
     a["hair_depth_max"] = contactSum_.maxDepth;
-    a["hair_candidates_mean"] = double(contactSum_.candidates) / double(contactSamples_);
+    a["hair_candidates_mean"] =
+        double(contactSum_.candidates * pairScale) / double(contactSamples_);
     // Never silent: frames whose candidates did not fit the solver's buffers (they kept the
     // lists before them), and the most segments a sampled list left out as too long for the
     // grid's cells.
     a["hair_list_overflows"] = contactSum_.overflows;
     a["hair_oversize_segments_max"] = contactSum_.oversize;
     a["hair_crowded_segments_max"] = contactSum_.crowded;
-    if (restPenetrations_ >= 0) a["hair_penetrations_rest"] = restPenetrations_;
+    if (restPenetrations_ >= 0)
+      a["hair_penetrations_rest"] = restPenetrations_ * int64_t(pairScale);
   }
   return j;
 }

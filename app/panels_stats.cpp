@@ -129,6 +129,10 @@ void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state
                 (unsigned long long)contacts.candidates);
     ImGui::Text("penetration depth p50 %.2f r, p99 %.2f r, max %.2f r", contacts.depthQuantile(0.5),
                 contacts.depthQuantile(0.99), double(contacts.maxDepth));
+    // A large hair without strand contacts is measured on a sample of its strands.
+    if (contacts.measureStride > 1)
+      ImGui::TextDisabled("measured on 1 strand in %u: counts of the sample's pairs",
+                          unsigned(contacts.measureStride));
     // Never silent: what the GPU's lists could not hold.
     if (contacts.overflows > 0)
       warning("hair-hair lists full in %llu frames (the list before kept there)",

@@ -203,6 +203,18 @@ ivec3 cellOf(vec3 p) {
   return ivec3(clamp(floor((p - P.gridOrigin) * P.inverseCellEdge), float(kCellLow), float(kCellHigh)));
 }
 
+// Whether strand s is in the contact measures' sample of 1 in `stride` (sim/core/measure_sample.h
+// says why; the same hash there).
+bool inMeasureSample(uint s, uint stride) {
+  if (stride <= 1u) return true;
+  s ^= s >> 16;
+  s *= 0x7feb352du;
+  s ^= s >> 15;
+  s *= 0x846ca68bu;
+  s ^= s >> 16;
+  return s % stride == 0u;
+}
+
 uint cellKey(ivec3 c) {
   uvec3 u = uvec3(c - kCellLow);
   return u.x | (u.y << 10u) | (u.z << 20u);

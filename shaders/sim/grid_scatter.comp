@@ -16,12 +16,15 @@ layout(std430, binding = CSM_BIND_PARTICLE_STRAND) readonly buffer ParticleStran
   uint particleStrand[];
 };
 layout(std430, binding = CSM_BIND_GRID_COUNT) buffer GridCount { uint gridCount[]; };
+// A search for the contact measures alone takes 1 strand in measureStride (inMeasureSample).
+uniform uint measureStride;
 layout(std430, binding = CSM_BIND_GRID_START) readonly buffer GridStart { uint gridStart[]; };
 layout(binding = CSM_IMAGE_ENTRIES, rgba32ui) writeonly uniform uimageBuffer entries;
 
 void main() {
   uint i = globalIndex();
   if (i + 1u >= P.particles || particleStrand[i] != particleStrand[i + 1u]) return;
+  if (!inMeasureSample(particleStrand[i], measureStride)) return;
   vec3 p0 = readPosition(i).xyz, p1 = readPosition(i + 1u).xyz;
   ivec3 lo, hi;
   if (!segmentCells(p0, p1, lo, hi)) return;

@@ -27,6 +27,18 @@
 // sim/solver/contacts.cpp (kFullWeight, which says why) and shaders/sim/contact_solve.comp.
 #define CSM_FULL_WEIGHT 1e-6
 
+// ---- The contact measures' strand sample ------------------------------------------------------
+// A mode without strand contacts measures them only for --metrics and the Stats panel (a candidate
+// search a sampled frame, outside the step). Hair of more than CSM_MEASURED_PARTICLES particles is
+// measured on 1 strand in ceil(particles / CSM_MEASURED_PARTICLES), chosen by a hash of the strand
+// (not its index, which follows the scalp): candidate pairs grow with the square of the hair's
+// density, so the whole hair's search costs many steps at 30,000 strands (25x the run's time and
+// 6.7x its memory at 2 frames there, 2026-11-28). 40,000 particles: the default preset's hair
+// (36,369) is measured whole, and a sample is at least as large. sim/core/measure_sample.h
+// (measureStride, inMeasureSample) and shaders/sim/common.glsl (inMeasureSample), the grid passes
+// (grid_count.comp, grid_scatter.comp) and the CPU solver's measure (sim/solver/cpu_solver.cpp).
+#define CSM_MEASURED_PARTICLES 40000u
+
 // ---- The volume grid ---------------------------------------------------------------------------
 // Fixed-point units of the grid's sums: 2^-24 m of strand, 2^-24 m^2/s of length times speed
 // (sim/solver/volume.h kVolumeUnit, shaders/sim/common.glsl).

@@ -30,6 +30,7 @@ void ContactStats::add(const ContactStats& o) {
   overflows = std::max(overflows, o.overflows);  // a running count: the latest
   oversize = std::max(oversize, o.oversize);
   crowded = std::max(crowded, o.crowded);
+  measureStride = std::max(measureStride, o.measureStride);
   maxDepth = std::max(maxDepth, o.maxDepth);
   for (int i = 0; i < kDepthBins; ++i) depth[i] += o.depth[i];
 }

@@ -48,6 +48,9 @@ struct ContactStats {
   // CSM_MAX_CANDIDATES (2,048) candidates, or a grid cell so full that the driver cut the
   // search's loops short (GPU only; shaders/sim/bindings.glsl).
   uint64_t crowded = 0;
+  // The strands measured: 1 in this many (a mode without strand contacts measures a sample of
+  // a large hair's, sim/core/measure_sample.h); the counts are the sample's.
+  uint32_t measureStride = 1;
   float maxDepth = 0.0f;  // deepest penetration, in r
   std::array<uint32_t, kDepthBins> depth{};
   // Sums another list's counts and depths into these (the deepest, the running count of

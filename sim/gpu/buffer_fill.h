@@ -23,9 +23,17 @@ void fill(gl::Buffer& buffer, const std::vector<T>& data) {
     buffer.upload(data);
 }
 
+// `count` zero elements (at least one), cleared on the GPU: no copy of the buffer in process
+// memory, which the largest of them (the contact search's, hundreds of MB in dense hair) would
+// double at their peak.
 template <class T>
 void zeroed(gl::Buffer& buffer, size_t count) {
-  fill(buffer, std::vector<T>(std::max<size_t>(count, 1)));
+  const auto bytes = GLsizeiptr(std::max<size_t>(count, 1) * sizeof(T));
+  if (buffer.id() == 0)
+    buffer = gl::Buffer(bytes);
+  else if (buffer.size() != bytes)
+    buffer.setData(bytes, nullptr);
+  buffer.clearToZero();
 }
 
 // A texelFetch view of `buffer` (see gl/buffer_texture.h).

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "gl/caps.h"
+#include "sim/core/measure_sample.h"
 #include "sim/gpu/buffer_fill.h"
 #include "shaders/sim/bindings.glsl"
 
@@ -130,7 +131,7 @@ void ContactSearch::reserveFor(std::span<const glm::vec4> x, std::span<const uin
   const double cell = cellSize(reach), pad = 0.5 * reach * kPadSlack;
   uint64_t entries = 0;
   for (size_t i = 0; i + 1 < x.size(); ++i) {
-    if (strand[i] != strand[i + 1]) continue;
+    if (strand[i] != strand[i + 1] || !inMeasureSample(strand[i], measureStride_)) continue;
     const glm::dvec3 p0 = glm::dvec3(glm::vec3(x[i]) - origin);
     const glm::dvec3 p1 = glm::dvec3(glm::vec3(x[i + 1]) - origin);
     const glm::dvec3 lo = glm::floor((glm::min(p0, p1) - pad) / cell);
@@ -210,11 +211,11 @@ void ContactSearch::findCandidates(StageTimer* timer, bool measured) {
     counters_.clearToZero(CSM_COUNTER_PAIR_LIST * sizeof(uint32_t), sizeof(uint32_t));
   }
   passes_.candidates.set("measured", measured ? 1u : 0u);
-  passes_.count.run(particles);
+  passes_.count.set("measureStride", measureStride_).run(particles);
   gl::memoryBarrier(kPassBarrier);
   // Counting sort of the entries by bucket: exclusive scan of the counts, scatter.
   scan(scanBlocks_, CSM_COUNTER_ENTRIES);
-  passes_.scatter.run(particles);
+  passes_.scatter.set("measureStride", measureStride_).run(particles);
   gl::memoryBarrier(kPassBarrier);
   // One invocation per entry: how many there are is known on the GPU only (no read-back inside
   // a frame), so the dispatch is sized there.

@@ -18,6 +18,7 @@
 // metrics and the panel.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -58,6 +59,14 @@ class ContactSearch {
   // keeps the lists before it, says so in the counters, and the next frame grows them).
   void reserveFor(std::span<const glm::vec4> position, std::span<const uint32_t> strand,
                   float reach, const glm::vec3& origin);
+  // The strands a search takes: 1 in `stride` by inMeasureSample (a search for the contact
+  // measures alone, sim/core/measure_sample.h), or every strand (1: strand contacts). Set
+  // before reserveFor; a change forgets the last list (the caller measures anew).
+  void setMeasureStride(uint32_t stride) { measureStride_ = std::max<uint32_t>(1, stride); }
+  uint32_t measureStride() const { return measureStride_; }
+  // Whether reserveFor sized the buffers since the reset (a scene that lists no candidates
+  // never allocates them).
+  bool reserved() const { return capacity_.entries() > 0; }
   // After a search of the hair as it stands (a reset's, not inside a step): reads it back at
   // once, sizes the entries and the pair list a quarter over what it needed, and forgets it
   // (counters and lists as after reset). Dense hair needs more pairs per entry than
@@ -148,6 +157,7 @@ class ContactSearch {
   double cellPerSegment_ = 0.5;  // cell edge in mean rest segments (cellSize)
   uint32_t buckets_ = 0, scanBlocks_ = 0;
   uint32_t segmentScan_ = 0;       // counts in the per-segment scan (a power of two)
+  uint32_t measureStride_ = 1;     // the strands searched: 1 in this many (inMeasureSample)
   ContactCapacity capacity_;       // the entries and pairs the buffers hold, and may
   ContactSolve* solve_ = nullptr;  // told where the lists' second view starts
   uint32_t half_ = 0;              // which of candidates_ (and of candidateRange_'s halves)

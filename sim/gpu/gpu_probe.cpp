@@ -15,6 +15,7 @@ ContactStats GpuProbe::readContactStats() const {
 void GpuProbe::detectContacts() {
   GpuSolver& s = solver_;
   if (s.hair_.particles == 0) return;
+  s.reserveLists();
   // Timed as a frame of its own.
   s.timer_.beginFrame();
   s.listCandidatesNow(&s.timer_);

@@ -17,6 +17,7 @@
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_model.h"
 #include "sim/base/state_bytes.h"
+#include "sim/core/measure_sample.h"
 #include "shaders/sim/bindings.glsl"
 #include "sim/solver/contacts.h"
 
@@ -40,8 +41,10 @@ GpuSolver::GpuSolver(bool cpuClock, GpuKernels kernels, Reads reads)
     : kernels_(kernels),
       reads_(reads),
       timer_(cpuClock),
-      samples_(
-          [this](const uint32_t* counters) { sampledContacts_ = gpu::contactStatsOf(counters); }) {}
+      samples_([this](const uint32_t* counters) {
+        sampledContacts_ = gpu::contactStatsOf(counters);
+        sampledContacts_.measureStride = contactSearch_.measureStride();
+      }) {}
 
 std::vector<gl::Define> GpuSolver::withReads(std::vector<gl::Define> defines) const {
   if (reads_.uniformParams) defines.push_back({"CSM_PARAMS_UNIFORM", ""});
@@ -161,11 +164,11 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   }
   // Rest lengths set the cell edge (METHOD.md section 3.6): strain limiting keeps the current
   // ones within a few percent, and a grid fixed per groom needs no reduction on the GPU.
+  // The contact buffers are sized when a mode or the measures first list candidates
+  // (sizeLists), from the reset's state.
   contactSearch_.reset(hair_.particles, hair_.segments, hair_.meanSegment);
   contactSolve_.reset(hair_.particles, hair_.segments);
-  contactSearch_.reserveFor(state_.position, state_.particleStrand,
-                            2.0f * config.collision.radius + config.collision.margin,
-                            glm::vec3(head.translation));
+  resetOrigin_ = glm::vec3(head.translation);
   uploadRegions();
   volume_.reset(state_, config_.collision);
   uploadHeadField();
@@ -201,7 +204,10 @@ void GpuSolver::setConfig(const Config& config) {
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) volume_.reset(state_, config_.collision);
   if (shape_.field != uploadedField_) uploadHeadField();
-  const bool sized = !listed && listsCandidates();
+  // Lists anew where they begin, or where they take other strands (a mode with strand
+  // contacts lists every strand; the measures alone, a sample).
+  const bool sized =
+      listsCandidates() && (!listed || searchStride() != contactSearch_.measureStride());
   if (sized) sizeLists();
   if (remeasure) {
     // The last list measured other pairs: nothing to count crossings against.
@@ -244,8 +250,23 @@ bool GpuSolver::listsCandidates() const {
   return strandContacts(config_.collision.mode) || measureContacts_;
 }
 
+uint32_t GpuSolver::searchStride() const {
+  return strandContacts(config_.collision.mode) ? 1u : measureStride(hair_.particles);
+}
+
+void GpuSolver::reserveLists() {
+  // Buffers for the strands searched, estimated from the reset's state (they only grow).
+  const uint32_t stride = searchStride();
+  if (contactSearch_.reserved() && stride == contactSearch_.measureStride()) return;
+  contactSearch_.setMeasureStride(stride);
+  contactSearch_.reserveFor(state_.position, state_.particleStrand,
+                            2.0f * config_.collision.radius + config_.collision.margin,
+                            resetOrigin_);
+}
+
 void GpuSolver::sizeLists() {
   if (hair_.particles == 0 || !failure_.empty()) return;
+  reserveLists();
   listCandidatesNow(nullptr);
   contactSearch_.sizeForLastSearch();
   gl::memoryBarrier(gl::Barrier::All);
@@ -666,7 +687,10 @@ void GpuSolver::requestSample(long frame) {
 }
 
 std::optional<FrameSample> GpuSolver::takeSample(bool wait) {
-  return samples_.take(wait);
+  std::optional<FrameSample> sample = samples_.take(wait);
+  if (sample && sample->contactsMeasured)
+    sample->contacts.measureStride = contactSearch_.measureStride();
+  return sample;
 }
 
 std::unique_ptr<GpuSolver> GpuSolver::start(std::string* error) {

@@ -107,6 +107,11 @@ class GpuSolver final : public Solver {
   bool listsCandidates() const;
   // The grid's buffers sized for the hair as it stands (ContactSearch::sizeForLastSearch).
   void sizeLists();
+  // The strands a search takes: every strand with strand contacts, else the measures' sample
+  // (sim/core/measure_sample.h).
+  uint32_t searchStride() const;
+  // The contact buffers reserved for searchStride's strands, when not yet or for others.
+  void reserveLists();
   // The frame's parameters for steps ending at `poses` (from `before`), written into params_
   // by what they fill, then uploaded with a Substep per step.
   void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
@@ -153,6 +158,7 @@ class GpuSolver final : public Solver {
   gpu::StrandBuffers hair_;
   gpu::ContactSearch contactSearch_;  // strand contacts: the search
   gpu::ContactSolve contactSolve_;    // and the solve
+  glm::vec3 resetOrigin_{0.0f};       // the head's place at the reset (reserveLists' cells)
   gl::Buffer paramsBuffer_{gl::NoCreate}, spheres_{gl::NoCreate}, measure_{gl::NoCreate};
   gpu::VolumePasses volume_;  // the volume mode's grid and passes
   // The head's distance field (sim/head/distance_grid.h), read by texel fetches; one node when

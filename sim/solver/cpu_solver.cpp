@@ -12,6 +12,7 @@
 #include "sim/head/head_model.h"
 #include "sim/base/parallel.h"
 #include "sim/base/state_bytes.h"
+#include "sim/core/measure_sample.h"
 #include "sim/solver/wind.h"
 #include "sim/solver/accuracy.h"
 #include "sim/solver/state_io.h"
@@ -19,6 +20,10 @@
 
 namespace csm {
 namespace {
+
+// Strand ids past any strand's: a particle outside the contact measures' sample is a strand of
+// its own (measureNow).
+constexpr uint32_t kUnmeasured = 0x80000000u;
 
 using Clock = std::chrono::steady_clock;
 
@@ -209,6 +214,7 @@ void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   const size_t n = st.particleCount(), strands = st.strandCount();
   first_ = st.strandFirst;
   strandOf_ = st.particleStrand;
+  measuredStrandOf_.clear();  // made again for this hair at its first measure
   rest_.resize(n);
   mass_.resize(n);
   x_.resize(n);
@@ -726,7 +732,16 @@ void CpuSolver::measureAnew() {
 }
 
 void CpuSolver::measureNow() {
-  measured_ = findCandidates(x_, rest_, strandOf_, contactSettings(), measured_, measuredStats_);
+  const uint32_t stride = measureStride(x_.size());
+  if (stride != measureStride_ || measuredStrandOf_.size() != strandOf_.size()) {
+    measureStride_ = stride;
+    measuredStrandOf_ = strandOf_;
+    for (size_t i = 0; i < strandOf_.size(); ++i)
+      if (!inMeasureSample(strandOf_[i], stride)) measuredStrandOf_[i] = kUnmeasured + uint32_t(i);
+  }
+  measured_ =
+      findCandidates(x_, rest_, measuredStrandOf_, contactSettings(), measured_, measuredStats_);
+  measuredStats_.measureStride = stride;
   framesSinceMeasure_ = 0;
 }
 

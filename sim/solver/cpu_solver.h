@@ -128,6 +128,10 @@ class CpuSolver final : public Solver {
   // its measures, and the frames stepped since it (1: it is of where this frame started).
   ContactCandidates measured_;
   ContactStats measuredStats_;
+  // The particles' strands as the measures search them: those outside the sample
+  // (sim/core/measure_sample.h) each a strand of its own, so they have no segments.
+  std::vector<uint32_t> measuredStrandOf_;
+  uint32_t measureStride_ = 1;
   int framesSinceMeasure_ = 2;
   void measureNow();   // searches where the hair stands
   void measureAnew();  // after a reset, a restore or new settings: forgets, then measureNow

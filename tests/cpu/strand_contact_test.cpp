@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/core/measure_sample.h"
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/contacts.h"
 #include "sim/solver/cpu_solver.h"
@@ -286,6 +287,59 @@ TEST_CASE("a listed pair whose other segment is no longer finite moves nothing",
       CHECK(correction[0].w == 0.0);
     }
   }
+}
+
+TEST_CASE("the contact measures' strand sample: whole up to the budget, 1 in n beyond, by hash",
+          "[quick]") {
+  CHECK(measureStride(0) == 1);
+  CHECK(measureStride(CSM_MEASURED_PARTICLES) == 1);
+  CHECK(measureStride(CSM_MEASURED_PARTICLES + 1) == 2);
+  CHECK(measureStride(10 * CSM_MEASURED_PARTICLES) == 10);
+  for (uint32_t s = 0; s < 1000; ++s) CHECK(inMeasureSample(s, 1));
+  // About 1 strand in n, and neighbours in the strands' order (which follows the scalp) as
+  // often both in the sample as any two: a pair is in it with chance 1/n^2, not 0 or 1/n.
+  const uint32_t n = 5, strands = 200000;
+  uint32_t in = 0, pairs = 0;
+  for (uint32_t s = 0; s < strands; ++s) {
+    in += inMeasureSample(s, n);
+    pairs += inMeasureSample(s, n) && inMeasureSample(s + 1, n);
+  }
+  CHECK(double(in) == Approx(strands / n).epsilon(0.03));
+  CHECK(double(pairs) == Approx(strands / (n * n)).epsilon(0.1));
+}
+
+TEST_CASE("with hair-hair off, a hair over the budget is measured on its strand sample",
+          "[quick]") {
+  Config c;
+  c.hairstyle.strands = 4000;
+  c.collision.mode = CollisionMode::Head;
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
+  REQUIRE(g.pointCount() > CSM_MEASURED_PARTICLES);
+  const uint32_t stride = measureStride(g.pointCount());
+  REQUIRE(stride >= 2);
+  CpuSolver solver;
+  resetWithHead(solver, g, c, Pose{});
+  solver.setContactMeasures(true);
+  const std::vector<glm::dvec3> start(solver.positions().begin(), solver.positions().end());
+  solver.stepFrame(Pose{}, Pose{});
+  solver.requestSample(1);
+  const FrameSample on = solver.takeSample().value();
+  // The strands outside the sample as strands of one particle each: no segments.
+  std::vector<uint32_t> strand = test::strandOf(g), sampled = strand;
+  for (size_t i = 0; i < strand.size(); ++i)
+    if (!inMeasureSample(strand[i], stride)) sampled[i] = 0x80000000u + uint32_t(i);
+  const double r = c.collision.radius;
+  const size_t sample = findContactsGrid(start, sampled, r).size();
+  const size_t whole = findContactsGrid(start, strand, r).size();
+  INFO("pairs closer than r: " << whole << ", in the sample of 1 strand in " << stride << ": "
+                               << sample << "; measured " << on.contacts.penetrations);
+  CHECK(on.contactsMeasured);
+  CHECK(on.contacts.measureStride == stride);
+  CHECK(sample > 0);
+  CHECK(on.contacts.penetrations == sample);
+  CHECK(on.contacts.contacts == findContactsGrid(start, sampled, 2.0 * r).size());
+  // A pair is in the sample when both its strands are: about 1 in stride^2 of the whole's.
+  CHECK(double(sample) * stride * stride == Approx(double(whole)).epsilon(0.25));
 }
 
 TEST_CASE("with hair-hair off, samples measure contacts only when asked, and then all of them",

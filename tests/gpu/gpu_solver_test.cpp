@@ -10,6 +10,7 @@
 
 #include "gl/fence.h"
 #include "gl/shader_source.h"
+#include "sim/core/measure_sample.h"
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/gpu/gpu_params.h"
@@ -791,6 +792,52 @@ TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measure
   CHECK(bad->frame == 99);
   CHECK(bad->accuracy.nanCount == 1);
   CHECK_FALSE(gpu->takeSample(true));
+}
+
+TEST_CASE("GPU: a hair over the measures' budget is measured on the CPU's strand sample",
+          "[gpu][solver][sample][contacts]") {
+  Config c = smallScene(4000);
+  c.collision.mode = CollisionMode::Head;
+  const Groom g = grow(c);
+  REQUIRE(g.pointCount() > CSM_MEASURED_PARTICLES);
+  const uint32_t stride = measureStride(g.pointCount());
+  REQUIRE(stride >= 2);
+  auto gpu = test::gpuSolver();
+  resetWithHead(*gpu, g, c, Pose{});
+  gpu->setContactMeasures(true);
+  std::vector<glm::vec4> x0;
+  gpu->readPositions(x0);
+  gpu->stepFrame(Pose{}, Pose{});
+  gpu->requestSample(1);
+  const std::optional<FrameSample> on = gpu->takeSample(true);
+  REQUIRE(on);
+  // The same sample as the CPU's hash picks (sim/core/measure_sample.h): the strands outside
+  // it as strands of one particle each.
+  std::vector<uint32_t> strand = test::strandOf(g), sampled = strand;
+  for (size_t i = 0; i < strand.size(); ++i)
+    if (!inMeasureSample(strand[i], stride)) sampled[i] = 0x80000000u + uint32_t(i);
+  const double r = c.collision.radius;
+  const double sample = double(findContactsGrid(test::toDouble(x0), sampled, r).size());
+  const double whole = double(findContactsGrid(test::toDouble(x0), strand, r).size());
+  INFO("pairs closer than r: " << whole << ", in the sample of 1 strand in " << stride << ": "
+                               << sample << "; the GPU measured " << on->contacts.penetrations);
+  CHECK(on->contactsMeasured);
+  CHECK(on->contacts.measureStride == stride);
+  CHECK(sample > 0);
+  CHECK(sample < 0.5 * whole);
+  // Float against double distances: a pair at the boundary may land on either side.
+  CHECK(double(on->contacts.penetrations) == Approx(sample).epsilon(0.01));
+  // The contact buffers hold the sample's search: a mode that lists nothing holds none.
+  auto idle = test::gpuSolver();
+  resetWithHead(*idle, g, c, Pose{});
+  const auto contactBytes = [](GpuSolver& s) {
+    for (const auto& [kind, bytes] : s.memoryUse().bytes)
+      if (kind == "contacts") return bytes;
+    return uint64_t(0);
+  };
+  INFO("contact buffers: measured " << contactBytes(*gpu) << " bytes, not measured "
+                                    << contactBytes(*idle));
+  CHECK(contactBytes(*idle) < contactBytes(*gpu) / 4);
 }
 
 TEST_CASE("GPU: with hair-hair off, samples measure contacts only when asked, as the CPU does",

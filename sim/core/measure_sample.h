@@ -1,0 +1,32 @@
+// The strands a mode without strand contacts measures them on (--metrics, the Stats panel): every
+// strand up to CSM_MEASURED_PARTICLES particles, 1 in measureStride beyond, by a hash of the strand
+// (shaders/sim/shared_constants.glsl says why). The GPU's grid passes take the same hash
+// (shaders/sim/common.glsl, inMeasureSample), so both solvers measure the same strands.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+#include "shaders/sim/shared_constants.glsl"
+
+namespace csm {
+
+// 1 where every strand is measured; else the share's denominator.
+inline uint32_t measureStride(std::size_t particles) {
+  const std::size_t budget = CSM_MEASURED_PARTICLES;
+  return uint32_t(std::max<std::size_t>(1, (particles + budget - 1) / budget));
+}
+
+// Whether strand s is in the sample of 1 in `stride`.
+inline bool inMeasureSample(uint32_t s, uint32_t stride) {
+  if (stride <= 1) return true;
+  s ^= s >> 16;
+  s *= 0x7feb352du;
+  s ^= s >> 15;
+  s *= 0x846ca68bu;
+  s ^= s >> 16;
+  return s % stride == 0;
+}
+
+}  // namespace csm
