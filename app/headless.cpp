@@ -423,9 +423,11 @@ class RunWarnings {
       if (seen_.overflows > 0)
         std::fprintf(stderr,
                      "csmhair: warning: the candidate pairs of %llu frames did not fit the "
-                     "solver's buffers: those frames kept the list before them (and counted no "
-                     "crossings)\n",
-                     (unsigned long long)seen_.overflows);
+                     "solver's buffers (collision.contact_memory_mb %d MiB, or the device's "
+                     "limit): those frames kept the list before them (and counted no "
+                     "crossings); raise collision.contact_memory_mb or simulate fewer strands "
+                     "(hairstyle.guides)\n",
+                     (unsigned long long)seen_.overflows, sim.config().collision.contactMemoryMb);
       if (seen_.crowded > 0)
         std::fprintf(stderr,
                      "csmhair: warning: up to %llu segments a frame were in too dense a crowd "

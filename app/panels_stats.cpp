@@ -140,8 +140,9 @@ void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state
               "A frame whose candidate pairs do not fit the GPU's buffers keeps the list before\n"
               "it (its pairs, evaluated where the hair is now; none after a reset or a growth)\n"
               "and counts no crossings; the buffers grow to what it needed as the next frame\n"
-              "begins (up to what the device's buffer textures hold: 134 M pairs\n"
-              "on llvmpipe and NVIDIA), so the frames after it fit. Counted since the\n"
+              "begins (up to collision.contact_memory_mb, and what the device's buffer\n"
+              "textures hold: 134 M pairs on llvmpipe and NVIDIA), so the frames after it\n"
+              "fit. Counted since the\n"
               "simulation was last reset.");
     if (contacts.oversize > 0)
       warning("%llu segments too long for the grid's cells: no contacts for them",

@@ -156,6 +156,10 @@ struct CollisionConfig {
   // Candidate lists a frame (at most its substeps): the first where the frame starts, the
   // others spread over its substeps (listsBefore in sim/solver/contacts.h), each a search's cost.
   int lists = 1;
+  // The most memory (MiB) the GPU's strand-contact buffers that grow with the hair's density
+  // (the grid's entries, the pair list, its sides and both frames' lists) may take together;
+  // a frame whose candidates need more keeps the list before it, and the run says so.
+  int contactMemoryMb = 4096;
   float friction = 0.3f;      // Coulomb coefficient between strands
   float headFriction = 0.3f;  // Coulomb friction coefficient against the head
   // The volume mode (sim/solver/volume.h).

@@ -29,14 +29,22 @@ uint32_t ContactCapacity::listSplit() const {
 
 uint64_t ContactCapacity::entryLimit() const {
   // 16 bytes an entry, one RGBA32UI texel: 2 GiB at most, and what the device's views hold.
-  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, textureTexels_});
+  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, textureTexels_, budgetEntries()});
 }
 
 uint64_t ContactCapacity::pairLimit() const {
   // The sides and each frame's lists take two RG32UI texels a pair, in two views of
   // listSplit() texels each; the pair list one RGBA32UI texel a pair, within one view as
   // listSplit() is (16 bytes a pair each).
-  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, uint64_t(listSplit())});
+  return std::min({uint64_t(1) << 27, bufferBytes_ / 16, uint64_t(listSplit()), budgetPairs()});
+}
+
+uint64_t ContactCapacity::budgetEntries() const {
+  return budgetBytes_ == UINT64_MAX ? UINT64_MAX : std::max<uint64_t>(1, budgetBytes_ / 4 / 16);
+}
+
+uint64_t ContactCapacity::budgetPairs() const {
+  return budgetBytes_ == UINT64_MAX ? UINT64_MAX : std::max<uint64_t>(1, budgetBytes_ / 4 * 3 / 64);
 }
 
 bool ContactCapacity::growEntries(uint64_t needed) {

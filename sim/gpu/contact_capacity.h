@@ -16,6 +16,11 @@ class ContactCapacity {
   void setDevice(uint64_t textureTexels, uint64_t viewAlignment);
   // Caps each growing buffer at `bytes` (tests; UINT64_MAX: the device's own limit).
   void limitStorage(uint64_t bytes) { bufferBytes_ = bytes; }
+  // Caps the growing buffers together at `bytes` (collision.contact_memory_mb): a quarter for
+  // the entries (16 bytes each), the rest for the pairs (64 bytes each: the pair list, its
+  // sides and both frames' lists). Buffers already larger stay until the next clear.
+  void setBudget(uint64_t bytes) { budgetBytes_ = bytes; }
+  uint64_t budget() const { return budgetBytes_; }
   // Caps the texels of the first view of the sides and the lists (tests).
   void limitListSplit(uint64_t texels) { splitTexels_ = texels; }
 
@@ -39,9 +44,12 @@ class ContactCapacity {
   bool splitViews() const { return 2 * uint64_t(pairs_) > listSplit(); }
 
  private:
+  uint64_t budgetEntries() const;  // the entries and pairs setBudget allows
+  uint64_t budgetPairs() const;
   uint32_t entries_ = 0;               // grid entries the entry buffer holds
   uint32_t pairs_ = 0;                 // candidate pairs the pair list holds
   uint64_t bufferBytes_ = UINT64_MAX;  // the most one growing buffer may take
+  uint64_t budgetBytes_ = UINT64_MAX;  // the most the growing buffers take together
   uint64_t textureTexels_ = 0;         // the most texels one buffer texture holds
   uint64_t viewAlignment_ = 1;         // bytes: where a view of a buffer's range may start
   uint64_t splitTexels_ = UINT64_MAX;  // limitListSplit's cap

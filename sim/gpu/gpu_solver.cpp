@@ -168,6 +168,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   // (sizeLists), from the reset's state.
   contactSearch_.reset(hair_.particles, hair_.segments, hair_.meanSegment);
   contactSolve_.reset(hair_.particles, hair_.segments);
+  contactSearch_.setMemoryBudget(contactBudgetBytes(config.collision));
   resetOrigin_ = glm::vec3(head.translation);
   uploadRegions();
   volume_.reset(state_, config_.collision);
@@ -196,6 +197,7 @@ void GpuSolver::setConfig(const Config& config) {
   const bool listed = listsCandidates();
   config_ = config;
   shape_ = headModel_.collider();
+  contactSearch_.setMemoryBudget(contactBudgetBytes(config_.collision));
   if (config_.collision.model == ContactModel::Penalty && failure_.empty() &&
       !contactSolve_.buildPenalty(&failure_)) {
     if (failure_.empty()) failure_ = "the GPU solver's penalty contact shaders did not build";

@@ -331,6 +331,15 @@ std::vector<Param<Config>> build() {
             "search.",
             Effect::Live)
           .onlyWhen(strandMode),
+      param("collision.contact_memory_mb", "Contact memory (MiB)", "Simulation|Collision",
+            &Config::collision, &CollisionConfig::contactMemoryMb, 16, 65536,
+            "Strand contacts on the GPU: the most memory the buffers that grow with the hair's "
+            "density (grid entries, candidate pairs, their lists) may take together, a quarter "
+            "for the entries and the rest for the pairs. A frame whose candidates need more "
+            "keeps the list before it and is counted and said (the Stats panel, the end of a "
+            "headless run). A lower value applies from the next reset.",
+            Effect::Live)
+          .onlyWhen(strandMode),
       param("collision.friction", "Hair friction", "Simulation|Collision", &Config::collision,
             &CollisionConfig::friction, 0.0, 2.0,
             "Coulomb friction coefficient between strands: sliding is held back by at most this "

@@ -13,6 +13,7 @@
 // result does not depend on the schedule.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -75,6 +76,11 @@ bool listsBefore(int substep, int substeps, int lists);
 
 // Whether a change of settings makes the last candidate search measure something else: the
 // mode, the radius or the margin.
+// collision.contact_memory_mb in bytes: what the GPU's growing contact buffers may take.
+inline uint64_t contactBudgetBytes(const CollisionConfig& c) {
+  return uint64_t(std::max(c.contactMemoryMb, 1)) << 20;
+}
+
 inline bool contactMeasuresChanged(const CollisionConfig& a, const CollisionConfig& b) {
   return a.mode != b.mode || a.radius != b.radius || a.margin != b.margin;
 }

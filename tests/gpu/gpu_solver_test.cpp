@@ -794,6 +794,42 @@ TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measure
   CHECK_FALSE(gpu->takeSample(true));
 }
 
+TEST_CASE("GPU: strand contacts keep to collision.contact_memory_mb and count the frames over it",
+          "[gpu][solver][contacts]") {
+  Config c = smallScene(400);
+  c.collision.mode = CollisionMode::Strands;
+  const Groom g = grow(c);
+  const auto run = [&](int mb, CollisionMode mode = CollisionMode::Strands) {
+    Config k = c;
+    k.collision.contactMemoryMb = mb;
+    k.collision.mode = mode;
+    auto gpu = test::gpuSolver();
+    resetWithHead(*gpu, g, k, Pose{});
+    for (int f = 0; f < 3; ++f) gpu->stepFrame(Pose{}, Pose{});
+    gpu->requestSample(3);
+    const std::optional<FrameSample> s = gpu->takeSample(true);
+    uint64_t bytes = 0;
+    for (const auto& [kind, b] : gpu->memoryUse().bytes)
+      if (kind == "contacts") bytes = b;
+    return std::make_pair(s ? s->contacts : ContactStats{}, bytes);
+  };
+  const auto [roomy, roomyBytes] = run(4096);
+  const auto [tight, tightBytes] = run(1);
+  // Head collisions list nothing: their contact buffers are the ones that do not grow (a few
+  // per particle, the grid's buckets).
+  const uint64_t fixedBytes = run(4096, CollisionMode::Head).second;
+  const uint64_t budget = uint64_t(1) << 20;
+  INFO("contact buffers: " << roomyBytes << " bytes at 4096 MiB, " << tightBytes << " at 1 MiB, "
+                           << fixedBytes << " listing nothing; candidates " << roomy.candidates
+                           << " and " << tight.candidates);
+  CHECK(roomy.overflows == 0);
+  CHECK(roomy.candidates > 0);
+  CHECK(roomyBytes > fixedBytes + budget);  // the scene needs more than the tight budget
+  // Over the budget: the frames are counted, and the growing buffers stay within it.
+  CHECK(tight.overflows > 0);
+  CHECK(tightBytes <= fixedBytes + budget);
+}
+
 TEST_CASE("GPU: a hair over the measures' budget is measured on the CPU's strand sample",
           "[gpu][solver][sample][contacts]") {
   Config c = smallScene(4000);
