@@ -17,7 +17,7 @@
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
 #include "sim/core/config.h"
-#include "sim/core/measure_sample.h"
+#include "shaders/sim/shared_constants.glsl"
 #include "sim/groom/groom_file.h"
 #include "sim/groom/hair_sequence.h"
 #include "sim/run/frame_driver.h"

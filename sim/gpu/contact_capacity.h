@@ -18,7 +18,7 @@ class ContactCapacity {
   void limitStorage(uint64_t bytes) { bufferBytes_ = bytes; }
   // Caps the growing buffers together at `bytes` (collision.contact_memory_mb): a quarter for
   // the entries (16 bytes each), the rest for the pairs (64 bytes each: the pair list, its
-  // sides and both frames' lists). Buffers already larger stay until the next clear.
+  // sides and both frames' lists), from the next reserve on.
   void setBudget(uint64_t bytes) { budgetBytes_ = bytes; }
   uint64_t budget() const { return budgetBytes_; }
   // Caps the texels of the first view of the sides and the lists (tests).

@@ -197,7 +197,6 @@ void GpuSolver::setConfig(const Config& config) {
   const bool listed = listsCandidates();
   config_ = config;
   shape_ = headModel_.collider();
-  contactSearch_.setMemoryBudget(contactBudgetBytes(config_.collision));
   if (config_.collision.model == ContactModel::Penalty && failure_.empty() &&
       !contactSolve_.buildPenalty(&failure_)) {
     if (failure_.empty()) failure_ = "the GPU solver's penalty contact shaders did not build";

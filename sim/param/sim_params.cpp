@@ -337,8 +337,9 @@ std::vector<Param<Config>> build() {
             "density (grid entries, candidate pairs, their lists) may take together, a quarter "
             "for the entries and the rest for the pairs. A frame whose candidates need more "
             "keeps the list before it and is counted and said (the Stats panel, the end of a "
-            "headless run). A lower value applies from the next reset.",
-            Effect::Live)
+            "headless run). A memory limit, not a look: changing it starts the hair again, "
+            "its buffers sized anew.",
+            Effect::Rebuild)
           .onlyWhen(strandMode),
       param("collision.friction", "Hair friction", "Simulation|Collision", &Config::collision,
             &CollisionConfig::friction, 0.0, 2.0,
