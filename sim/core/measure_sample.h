@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "shaders/sim/shared_constants.glsl"
 
@@ -27,6 +29,18 @@ inline bool inMeasureSample(uint32_t s, uint32_t stride) {
   s *= 0x846ca68bu;
   s ^= s >> 16;
   return s % stride == 0;
+}
+
+// The particles' strands as a measure search takes them (the CPU solver; tests comparing the
+// GPU's): a particle of a strand outside the sample is a strand of its own, past every strand's
+// index, so it makes no segment.
+inline std::vector<uint32_t> sampledStrands(std::span<const uint32_t> particleStrand,
+                                            uint32_t stride) {
+  constexpr uint32_t kUnmeasured = 0x80000000u;
+  std::vector<uint32_t> out(particleStrand.begin(), particleStrand.end());
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (!inMeasureSample(out[i], stride)) out[i] = kUnmeasured + uint32_t(i);
+  return out;
 }
 
 }  // namespace csm

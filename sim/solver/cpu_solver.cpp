@@ -21,10 +21,6 @@
 namespace csm {
 namespace {
 
-// Strand ids past any strand's: a particle outside the contact measures' sample is a strand of
-// its own (measureNow).
-constexpr uint32_t kUnmeasured = 0x80000000u;
-
 using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point t0) {
@@ -735,9 +731,7 @@ void CpuSolver::measureNow() {
   const uint32_t stride = measureStride(x_.size());
   if (stride != measureStride_ || measuredStrandOf_.size() != strandOf_.size()) {
     measureStride_ = stride;
-    measuredStrandOf_ = strandOf_;
-    for (size_t i = 0; i < strandOf_.size(); ++i)
-      if (!inMeasureSample(strandOf_[i], stride)) measuredStrandOf_[i] = kUnmeasured + uint32_t(i);
+    measuredStrandOf_ = sampledStrands(strandOf_, stride);
   }
   measured_ =
       findCandidates(x_, rest_, measuredStrandOf_, contactSettings(), measured_, measuredStats_);

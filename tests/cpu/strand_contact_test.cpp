@@ -325,9 +325,7 @@ TEST_CASE("with hair-hair off, a hair over the budget is measured on its strand 
   solver.requestSample(1);
   const FrameSample on = solver.takeSample().value();
   // The strands outside the sample as strands of one particle each: no segments.
-  std::vector<uint32_t> strand = test::strandOf(g), sampled = strand;
-  for (size_t i = 0; i < strand.size(); ++i)
-    if (!inMeasureSample(strand[i], stride)) sampled[i] = 0x80000000u + uint32_t(i);
+  const std::vector<uint32_t> strand = test::strandOf(g), sampled = sampledStrands(strand, stride);
   const double r = c.collision.radius;
   const size_t sample = findContactsGrid(start, sampled, r).size();
   const size_t whole = findContactsGrid(start, strand, r).size();

@@ -849,9 +849,7 @@ TEST_CASE("GPU: a hair over the measures' budget is measured on the CPU's strand
   REQUIRE(on);
   // The same sample as the CPU's hash picks (sim/core/measure_sample.h): the strands outside
   // it as strands of one particle each.
-  std::vector<uint32_t> strand = test::strandOf(g), sampled = strand;
-  for (size_t i = 0; i < strand.size(); ++i)
-    if (!inMeasureSample(strand[i], stride)) sampled[i] = 0x80000000u + uint32_t(i);
+  const std::vector<uint32_t> strand = test::strandOf(g), sampled = sampledStrands(strand, stride);
   const double r = c.collision.radius;
   const double sample = double(findContactsGrid(test::toDouble(x0), sampled, r).size());
   const double whole = double(findContactsGrid(test::toDouble(x0), strand, r).size());
