@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/base/parallel.h"
+
 namespace csm::io {
 namespace {
 
@@ -110,20 +112,28 @@ ResampleStats resampleGroom(Groom& groom, const ResampleOptions& options) {
   ResampleStats stats;
   stats.pointsBefore = groom.pointCount();
 
-  std::vector<uint32_t> first{0};
-  first.reserve(groom.first.size());
-  std::vector<glm::vec3> points;
-  points.reserve(std::min<size_t>(groom.pointCount(), groom.strandCount() * maxCount));
-  for (size_t strandIndex = 0; strandIndex < groom.strandCount(); ++strandIndex) {
-    const std::span<const glm::vec3> strand(groom.points.data() + groom.first[strandIndex],
-                                            groom.strandSize(strandIndex));
-    const std::vector<double> s = arcLengths(strand);
-    const bool inBounds = strand.size() >= minCount && strand.size() <= maxCount;
-    if (inBounds || strand.size() < 2 || s.back() <= 0.0) {
-      // Within bounds (its own points are exact), or nothing to resample along.
-      points.insert(points.end(), strand.begin(), strand.end());
-      ++stats.strandsKept;
-    } else {
+  // Each strand on its own, in chunks of strands on the cores; the chunks' points and counts
+  // joined in strand order, so the result does not depend on the cores.
+  struct Chunk {
+    std::vector<glm::vec3> points;
+    std::vector<uint32_t> sizes;
+    ResampleStats stats;
+  };
+  std::vector<Chunk> chunks(coreCount());
+  parallelChunks(groom.strandCount(), 256, [&](size_t begin, size_t end, size_t c) {
+    Chunk& out = chunks[c];
+    for (size_t strandIndex = begin; strandIndex < end; ++strandIndex) {
+      const std::span<const glm::vec3> strand(groom.points.data() + groom.first[strandIndex],
+                                              groom.strandSize(strandIndex));
+      const std::vector<double> s = arcLengths(strand);
+      const bool inBounds = strand.size() >= minCount && strand.size() <= maxCount;
+      if (inBounds || strand.size() < 2 || s.back() <= 0.0) {
+        // Within bounds (its own points are exact), or nothing to resample along.
+        out.points.insert(out.points.end(), strand.begin(), strand.end());
+        out.sizes.push_back(uint32_t(strand.size()));
+        ++out.stats.strandsKept;
+        continue;
+      }
       // Deviation is not monotonic in the count (a curl can alias with the spacing), so
       // walk up from the minimum rather than bisect.
       std::vector<glm::vec3> best;
@@ -135,11 +145,24 @@ ResampleStats resampleGroom(Groom& groom, const ResampleOptions& options) {
         bestDeviation = localDeviation(strand, s, best, limit);
         if (bestDeviation <= options.tolerance) break;
       }
-      if (bestDeviation > options.tolerance) ++stats.strandsOverTolerance;
-      stats.maxDeviation = std::max(stats.maxDeviation, bestDeviation);
-      points.insert(points.end(), best.begin(), best.end());
+      if (bestDeviation > options.tolerance) ++out.stats.strandsOverTolerance;
+      out.stats.maxDeviation = std::max(out.stats.maxDeviation, bestDeviation);
+      out.points.insert(out.points.end(), best.begin(), best.end());
+      out.sizes.push_back(uint32_t(best.size()));
     }
-    first.push_back(static_cast<uint32_t>(points.size()));
+  });
+  std::vector<uint32_t> first{0};
+  first.reserve(groom.first.size());
+  std::vector<glm::vec3> points;
+  size_t total = 0;
+  for (const Chunk& c : chunks) total += c.points.size();
+  points.reserve(total);
+  for (const Chunk& c : chunks) {
+    points.insert(points.end(), c.points.begin(), c.points.end());
+    for (const uint32_t n : c.sizes) first.push_back(first.back() + n);
+    stats.strandsKept += c.stats.strandsKept;
+    stats.strandsOverTolerance += c.stats.strandsOverTolerance;
+    stats.maxDeviation = std::max(stats.maxDeviation, c.stats.maxDeviation);
   }
   groom.first = std::move(first);
   groom.points = std::move(points);

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "sim/base/file_io.h"
+#include "sim/base/parallel.h"
 #include "sim/head/head_model.h"
 #include "sim/groom/fit.h"
 #include "sim/groom/groom_file.h"
@@ -260,24 +261,27 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
     }
   // No particle starts inside the head: the roots are on its surface, the rest inside go out
   // to the collision radius.
+  // Each particle on its own: in chunks of strands on the cores, the counts summed after.
   const double margin = double(c.collision.radius);
-  const size_t every = std::max<size_t>(1, g.strandCount() / 100);
-  for (size_t s = 0; s < g.strandCount(); ++s) {
-    if (s % every == 0) at("placing", 0.7 + 0.3 * double(s) / double(g.strandCount()));
-    for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
-      glm::dvec3 p(g.points[i]), normal;
-      // Only a particle inside: one the hair radius from the surface is where a simulation
-      // holds it, and a groom exported from one comes back as it went out. A particle deep in
-      // the head takes more than one push along the field's gradient.
-      if (!(head.distance(p, normal) < 0.0)) continue;
-      bool pushed = false;
-      for (int k = 0; k < 8 && head.pushOut(p, margin); ++k) pushed = true;
-      if (pushed) {
-        g.points[i] = glm::vec3(p);
-        ++r.pushedParticles;
+  at("placing", 0.7);
+  std::vector<size_t> pushedIn(coreCount(), 0);
+  parallelChunks(g.strandCount(), 256, [&](size_t begin, size_t end, size_t chunk) {
+    for (size_t s = begin; s < end; ++s)
+      for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
+        glm::dvec3 p(g.points[i]), normal;
+        // Only a particle inside: one the hair radius from the surface is where a simulation
+        // holds it, and a groom exported from one comes back as it went out. A particle deep
+        // in the head takes more than one push along the field's gradient.
+        if (!(head.distance(p, normal) < 0.0)) continue;
+        bool pushed = false;
+        for (int k = 0; k < 8 && head.pushOut(p, margin); ++k) pushed = true;
+        if (pushed) {
+          g.points[i] = glm::vec3(p);
+          ++pushedIn[chunk];
+        }
       }
-    }
-  }
+  });
+  for (const size_t n : pushedIn) r.pushedParticles += n;
   at("placing", 1.0);
   if (r.pushedParticles > 0) {
     // Particles pushed from inside land on the surface nearest each: a run of them (a strand
