@@ -20,7 +20,6 @@ class ContactCapacity {
   // the entries (16 bytes each), the rest for the pairs (64 bytes each: the pair list, its
   // sides and both frames' lists), from the next reserve on.
   void setBudget(uint64_t bytes) { budgetBytes_ = bytes; }
-  uint64_t budget() const { return budgetBytes_; }
   // Caps the texels of the first view of the sides and the lists (tests).
   void limitListSplit(uint64_t texels) { splitTexels_ = texels; }
 

@@ -115,7 +115,6 @@ class ContactSearch {
   void limitStorage(uint64_t bytes) { capacity_.limitStorage(bytes); }
   // collision.contact_memory_mb, in bytes (ContactCapacity::setBudget).
   void setMemoryBudget(uint64_t bytes) { capacity_.setBudget(bytes); }
-  uint64_t memoryBudget() const { return capacity_.budget(); }
   // The bytes of its buffers: the grid, the pairs, the candidate lists (both halves).
   uint64_t bytes() const;
   // Caps the texels of the first view of the sides and of the lists at `texels` (as on a

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/groom/growth_head.h"
 #include "sim/head/distance_grid.h"
 
 namespace csm {
@@ -39,11 +40,8 @@ glm::quat shortestTurn(const glm::vec3& a, const glm::vec3& b) {
 
 // How deep a point (head frame) lies inside the head: 0 outside.
 double depthInside(const SceneHead& collider, const glm::dvec3& local) {
-  if (collider.field) return std::max(0.0, -collider.field->sample(local));
-  double deepest = 0.0;
-  for (const Sphere& sp : collider.spheres)
-    deepest = std::max(deepest, double(sp.radius) - glm::length(local - glm::dvec3(sp.center)));
-  return deepest;
+  glm::dvec3 normal;
+  return std::max(0.0, -GrowthHead{collider.spheres, collider.field}.distance(local, normal));
 }
 
 glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
