@@ -251,6 +251,7 @@ nlohmann::json describeRun(const RunDescription& r) {
         {"merged_points", r.groom.repair.mergedPoints},
         {"turned_strands", r.groom.turnedStrands},
         {"pushed_particles", r.groom.pushedParticles},
+        {"held_tips", r.groom.heldTips},
         {"repairs", r.groom.repair.notes}}},
       {"device", r.device},
   };

@@ -13,10 +13,11 @@ struct ClampField {
 };
 
 // The field of the strand whose particles start at `first` (global index), x* at `base`;
-// stiff = its CSM_BIND_STRAND_STIFFNESS entry (z pinned, w the fit's end: none when <= z).
+// stiff = its CSM_BIND_STRAND_STIFFNESS entry (z pinned (pinnedOf), w the fit's end: none when
+// <= the pinned).
 ClampField clampFieldOf(uint first, uint base, int n, vec4 stiff, mat4 head) {
   ClampField f = ClampField(vec3(0.0), 0.0, 0.0);
-  int pinned = int(stiff.z), end = min(int(stiff.w), n);
+  int pinned = pinnedOf(stiff), end = min(int(stiff.w), n);
   if (end <= pinned || n < 2) return f;
   vec4 root = readRest(first), next = readRest(first + 1u);
   f.tau0 = root.w;

@@ -36,6 +36,15 @@ layout(std430, binding = CSM_BIND_PARAMS) readonly buffer Params {
   ((gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + \
    gl_LocalInvocationID.x)
 
+// A strand's held particles, from its CSM_BIND_STRAND_STIFFNESS entry (shared_constants.glsl,
+// CSM_TIP_HELD): the pinned ones from the root, and whether the head holds its tip too.
+int pinnedOf(vec4 stiff) { return int(stiff.z) % CSM_TIP_HELD; }
+bool tipHeldOf(vec4 stiff) { return int(stiff.z) >= CSM_TIP_HELD; }
+// Whether the head holds particle j of a strand of n (csm::Regions::held).
+bool heldAt(vec4 stiff, int j, int n) {
+  return j < pinnedOf(stiff) || (tipHeldOf(stiff) && j == n - 1);
+}
+
 // --- Quaternions as vec4(x, y, z, w), Hamilton products, like Eigen::Quaternion. ---
 
 vec4 quatMul(vec4 a, vec4 b) {

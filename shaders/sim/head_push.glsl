@@ -261,6 +261,18 @@ bool pushOutOfHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxL
 // One particle after the first free one: x, v where shape matching left it, in and out; `c` the
 // strand contacts' correction sent to it (w: how many sent; applied when `contacts`); xPrev, the
 // parent's final position; vPrev, the parent's velocity, which DFTL corrects (when prevFree).
+// One segment of a strand held at both ends limited against its neighbour `anchor`, already
+// final (CpuSolver::tieStrain): x moves toward it, v with it. Whether x moved.
+bool limitToward(inout vec3 x, inout vec3 v, vec3 anchor, float restLength, float h) {
+  vec3 d = x - anchor;
+  float len = length(d), most = (1.0 + P.strainLimit) * restLength;
+  if (!(len > most)) return false;
+  vec3 to = anchor + d * (most / len);
+  v += (to - x) / h;
+  x = to;
+  return true;
+}
+
 void sweepParticle(vec3 restHere, vec3 restPrev, bool contacts, vec4 c, vec3 xPrev, bool prevFree,
                    Substep st, uint sphereBase, inout vec3 x, inout vec3 v, inout vec3 vPrev) {
   float h = st.h;

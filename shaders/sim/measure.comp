@@ -58,9 +58,9 @@ void main() {
       nonFinite = 1u;
     } else {
       speed = length(v);
-      if (int(i - a) >= int(strandStiffness[s].z) && headIsField())
+      if (int(i - a) >= pinnedOf(strandStiffness[s]) && headIsField())
         inside = headFieldSample(toHeadFrame(S[lastStep].head, x)).w < 0.0 ? 1u : 0u;
-      else if (int(i - a) >= int(strandStiffness[s].z))
+      else if (int(i - a) >= pinnedOf(strandStiffness[s]))
         for (int k = 0; k < P.headSpheres; ++k) {
           vec4 sp = spheres[sphereBase + uint(k)];
           if (length(x - sp.xyz) < sp.w * (1.0 - 1e-6)) {

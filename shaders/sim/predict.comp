@@ -25,11 +25,11 @@ void main() {
   uint i = globalIndex();
   if (i >= P.particles) return;
   uint s = particleStrand[i];
-  int pinned = int(strandStiffness[s].z);
+  uint a = strandFirst[s], b = strandFirst[s + 1u];
+  bool held = heldAt(strandStiffness[s], int(i - a), int(b - a));
   vec3 vPred;
-  pred[i] = vec4(predictParticle(i, strandFirst[s], strandFirst[s + 1u], pinned, S[substep], vPred),
-                 1.0);
+  pred[i] = vec4(predictParticle(i, a, b, held, S[substep], vPred), 1.0);
   // Each invocation has read its own velocity above; a held particle's is left for
   // shape_match.comp, which takes it from the head's motion.
-  if (int(i - strandFirst[s]) >= pinned) vel[i] = vec4(vPred, 0.0);
+  if (!held) vel[i] = vec4(vPred, 0.0);
 }

@@ -52,15 +52,15 @@ vec3 volumeVelocityChange(vec3 xWorld, vec3 v, float h) {
   return dv;
 }
 
-// x* of particle i of the strand [a, b) whose first `pinned` particles the head holds, and the
+// x* of particle i of the strand [a, b), held by the head or not (heldAt), and the
 // velocity that moved it there (vPred: x* = x + h vPred; zero for a held particle). The step's
 // velocity is vPred plus the goals' pull over h, not (x - x_old) / h: at hundreds of steps a
 // frame a step moves a particle ~10 um and its float position rounds by ~0.02 um, which that
 // difference would carry into the velocity, step after step (METHOD.md section 4.3).
-vec3 predictParticle(uint i, uint a, uint b, int pinned, Substep st, out vec3 vPred) {
+vec3 predictParticle(uint i, uint a, uint b, bool held, Substep st, out vec3 vPred) {
   vec4 r = readRest(i);
   vPred = vec3(0.0);
-  if (int(i - a) < pinned) return (st.head * vec4(r.xyz, 1.0)).xyz;
+  if (held) return (st.head * vec4(r.xyz, 1.0)).xyz;
   float h = st.h;
   vec3 x = readPosition(i).xyz;
   vec3 v = readVelocity(i).xyz;

@@ -70,7 +70,7 @@ void main() {
   vec3 D = mat3(st.head) * d;
   // The built-in end (clamp_field.glsl): the held particles and the ghosts take the free
   // strand's curvature at the clamp, continued.
-  int pinned = int(stiff.z);
+  int pinned = pinnedOf(stiff);
   ClampField field = clampFieldOf(a, a, n, stiff, st.head);
   vec3 across = clampAcross(field, D);
 
@@ -152,7 +152,7 @@ void main() {
     // The clamp's pull, zero but where the region reaches behind the clamp.
     if (int(region.z) < pinned) goal += texelFetch(constantsTex, int(p)).y * across;
     vec3 xp = texelFetch(predTex, int(p)).xyz;
-    bool fixed_ = i < pinned;
+    bool fixed_ = heldAt(stiff, i, n);
     vec3 pull = alpha * (goal - xp);
     vec3 x = fixed_ ? xp : xp + pull;
     // The step's velocity from its own displacement (predict.glsl), not from rounded positions.

@@ -57,6 +57,17 @@
 // sim/solver/stiffness.h (kClampDepth, which says why 1.5) and shaders/sim/clamp_field.glsl.
 #define CSM_CLAMP_DEPTH 1.5
 
+// ---- A strand's held particles -----------------------------------------------------------------
+// A strand's per-strand vec4 (CSM_BIND_STRAND_STIFFNESS) holds in z its pinned particles from the
+// root, plus CSM_TIP_HELD when the head holds its last particle too (Groom::tipHeld, a strand tied
+// at both ends): sim/gpu/strand_buffers.cpp and shaders/sim/common.glsl (pinnedOf, tipHeldOf).
+// Pinned counts stay below it (kMaxStrandParticles, 256).
+#define CSM_TIP_HELD 1024
+// The sweeps back from a held tip and forth from the root (pairs of them) that share out the
+// stretch the strain limit's sweep leaves such a strand, at most: CpuSolver::tieStrain
+// (sim/solver/cpu_solver.cpp), shaders/sim/strain_limit.comp and strand_group.glsl.
+#define CSM_TIED_SWEEPS 4
+
 // ---- Stiffness models (StiffnessModel, sim/core/config.h; shaders/sim/shape_match.comp) --------
 #define CSM_STIFFNESS_PAPER 0
 #define CSM_STIFFNESS_CALIBRATED 1

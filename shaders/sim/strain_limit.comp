@@ -31,9 +31,11 @@ void main() {
   uint s = strandOrder[id];
   uint a = strandFirst[s];
   int n = int(strandFirst[s + 1u] - a);
-  int pinned = int(strandStiffness[s].z);
+  vec4 stiff = strandStiffness[s];
+  int pinned = pinnedOf(stiff);
   int first = max(1, pinned);
-  if (n <= first) return;
+  int end = n - (tipHeldOf(stiff) ? 1 : 0);  // a held tip stays where the head put it
+  if (end <= first) return;
 
   Substep st = S[substep];
   bool contacts = P.strandContacts != 0u;
@@ -43,7 +45,7 @@ void main() {
   vec3 xPrev = pos[a + uint(first - 1)].xyz;
   vec3 vPrev = vel[a + uint(first - 1)].xyz;
   bool prevFree = first - 1 >= pinned;  // DFTL only corrects free particles
-  for (int i = first; i < n; ++i) {
+  for (int i = first; i < end; ++i) {
     uint p = a + uint(i);
     vec3 restHere = texelFetch(restTex, int(p)).xyz;
     vec3 x = pos[p].xyz;
@@ -61,5 +63,24 @@ void main() {
     vPrev = v;
     prevFree = i >= pinned;
   }
-  vel[a + uint(n - 1)] = vec4(vPrev, 0.0);
+  vel[a + uint(end - 1)] = vec4(vPrev, 0.0);
+  // Held at both ends: sweeps back from the tip and forth from the root (limitToward).
+  bool tied = P.strainLimiting != 0u && end < n;
+  for (int pass = 0; tied && pass < CSM_TIED_SWEEPS; ++pass) {
+    for (int back = 0; tied && back < 2; ++back) {
+      bool moved = false;
+      for (int k = 0; k < end - first; ++k) {
+        int i = back == 0 ? end - 1 - k : first + k;
+        uint p = a + uint(i), q = back == 0 ? p + 1u : p - 1u;
+        vec3 x = pos[p].xyz, v = vel[p].xyz;
+        float rest = length(texelFetch(restTex, int(p)).xyz - texelFetch(restTex, int(q)).xyz);
+        if (limitToward(x, v, pos[q].xyz, rest, st.h)) {
+          pos[p] = vec4(x, 1.0);
+          vel[p] = vec4(v, 0.0);
+          moved = true;
+        }
+      }
+      tied = moved;
+    }
+  }
 }

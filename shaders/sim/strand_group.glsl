@@ -103,9 +103,11 @@ vec4 rangeSumD(Slot o, int lo, int hi) {
 // barrier after. As strain_limit.comp's loop, particle for particle.
 void sweepStrands(Slot o, uint substep) {
   if (o.live && o.j == 0) {
-    int pinned = int(strandStiffness[o.s].z);
+    vec4 stiff = strandStiffness[o.s];
+    int pinned = pinnedOf(stiff);
     int first = max(1, pinned);
-    if (o.n > first) {
+    int end = o.n - (tipHeldOf(stiff) ? 1 : 0);  // a held tip stays where the head put it
+    if (end > first) {
       Substep st = S[substep];
       bool contacts = P.strandContacts != 0u;
       uint sphereBase = substep * uint(P.headSpheres);
@@ -114,7 +116,7 @@ void sweepStrands(Slot o, uint substep) {
       vec3 xPrev = shA[r + uint(first - 1)].xyz;
       vec3 vPrev = shB[r + uint(first - 1)].xyz;
       bool prevFree = first - 1 >= pinned;
-      for (int i = first; i < o.n; ++i) {
+      for (int i = first; i < end; ++i) {
         uint k = r + uint(i);
         vec3 restHere = shC[k].xyz;
         vec3 x = shA[k].xyz;
@@ -128,7 +130,25 @@ void sweepStrands(Slot o, uint substep) {
         vPrev = v;
         prevFree = i >= pinned;
       }
-      shB[r + uint(o.n - 1)] = vec4(vPrev, 0.0);
+      shB[r + uint(end - 1)] = vec4(vPrev, 0.0);
+      // Held at both ends: sweeps back from the tip and forth from the root (limitToward).
+      bool tied = P.strainLimiting != 0u && end < o.n;
+      for (int pass = 0; tied && pass < CSM_TIED_SWEEPS; ++pass) {
+        for (int back = 0; tied && back < 2; ++back) {
+          bool moved = false;
+          for (int k = 0; k < end - first; ++k) {
+            int i = back == 0 ? end - 1 - k : first + k;
+            uint p = r + uint(i), q = back == 0 ? p + 1u : p - 1u;
+            vec3 x = shA[p].xyz, v = shB[p].xyz;
+            if (limitToward(x, v, shA[q].xyz, length(shC[p].xyz - shC[q].xyz), st.h)) {
+              shA[p] = vec4(x, 1.0);
+              shB[p] = vec4(v, 0.0);
+              moved = true;
+            }
+          }
+          tied = moved;
+        }
+      }
     }
   }
   barrier();

@@ -41,9 +41,10 @@ void main() {
   uint lid = gl_LocalInvocationID.x;
   Substep st = S[substep];
   vec4 stiff = strandStiffness[o.s];
-  int pinned = int(stiff.z);
+  int pinned = pinnedOf(stiff);
+  bool held = heldAt(stiff, o.j, o.n);
   vec3 vPred = vec3(0.0);
-  vec3 xp = o.live ? predictParticle(o.p, o.a, o.a + uint(o.n), pinned, st, vPred) : vec3(0.0);
+  vec3 xp = o.live ? predictParticle(o.p, o.a, o.a + uint(o.n), held, st, vPred) : vec3(0.0);
   vec4 region = o.live ? readRegion(o.p) : vec4(0.0);
   // A slot past the group's end reads nothing (a fetch out of range is undefined).
   vec4 restTau = o.live ? readRest(o.p) : vec4(0.0);  // w: its tau (clamp_field.glsl)
@@ -148,7 +149,7 @@ void main() {
   // Integration (eq. 2-3): x = x* + alpha (g - x*), v = (x - x_old) / h, damped.
   float h = st.h;
   float alpha = P.stiffnessModel == CSM_STIFFNESS_CALIBRATED ? min(1.0, stiff.x * h * h) : P.alpha;
-  bool fixed_ = o.j < pinned;
+  bool fixed_ = held;
   vec3 pull = alpha * (goal - xp);
   vec3 x = fixed_ ? xp : xp + pull;
   // The step's velocity from its own displacement (predict.glsl), not from rounded positions.

@@ -22,14 +22,25 @@ struct Groom {
   // Optional per-strand data from a groom file; empty when the file has none.
   std::vector<glm::vec3> color;  // linear RGB, 0..1
   std::vector<float> thickness;  // metres
+  // 1 where the head holds the strand's last point as it holds the root (a ponytail tied at the
+  // nape, a braid, a bun: TressFX's bothEndsImmovable); empty when no strand's is held.
+  std::vector<uint8_t> tipHeld;
 
   size_t strandCount() const { return first.size() - 1; }
   size_t pointCount() const { return points.size(); }
   uint32_t strandSize(size_t s) const { return first[s + 1] - first[s]; }
+  bool holdsTip(size_t s) const { return s < tipHeld.size() && tipHeld[s] != 0; }
 
   void addStrand(const std::vector<glm::vec3>& strandPoints) {
     points.insert(points.end(), strandPoints.begin(), strandPoints.end());
     first.push_back(static_cast<uint32_t>(points.size()));
+  }
+  // Appends strand s's own data from `from` (colour, thickness, held tip: each where `from` has
+  // it), for a groom built strand by strand from another.
+  void addStrandData(const Groom& from, size_t s) {
+    if (s < from.color.size()) color.push_back(from.color[s]);
+    if (s < from.thickness.size()) thickness.push_back(from.thickness[s]);
+    if (s < from.tipHeld.size()) tipHeld.push_back(from.tipHeld[s]);
   }
 };
 

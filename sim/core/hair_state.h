@@ -20,6 +20,9 @@ struct HairState {
   std::vector<glm::vec4> rest;           // xyz rest position in the head frame, w mass (kg)
   std::vector<glm::vec4> position;       // xyz world position, w unused
   std::vector<glm::vec4> velocity;       // xyz world velocity, w unused
+  // Per strand: 1 where the head holds the last particle as it holds the root (Groom::tipHeld);
+  // empty when none is held.
+  std::vector<uint8_t> tipHeld;
 
   size_t strandCount() const { return strandFirst.size() - 1; }
   size_t particleCount() const { return rest.size(); }

@@ -9,6 +9,7 @@
 #include "sim/gpu/buffer_fill.h"
 #include "sim/gpu/strand_groups.h"
 #include "shaders/sim/bindings.glsl"
+#include "shaders/sim/shared_constants.glsl"
 
 namespace csm::gpu {
 
@@ -69,7 +70,8 @@ void StrandBuffers::uploadRegions(const HairState& state, const Regions& regions
   std::vector<glm::vec4> perStrand(strandCount);
   for (size_t s = 0; s < strandCount; ++s)
     perStrand[s] = glm::vec4(float(regions.rate[s]), float(regions.ghostMass[s]),
-                             float(regions.pinned[s]), float(regions.fitEnd[s]));
+                             float(regions.pinned[s] + (regions.tipHeld[s] ? CSM_TIP_HELD : 0)),
+                             float(regions.fitEnd[s]));
   fill(strandStiffness, perStrand);
   view(regionTex, region, gl::TextureFormat::Rgba32f);
   const std::vector<double> w = contactInverseMass(state, regions);

@@ -175,14 +175,11 @@ std::vector<std::uint32_t> chooseGuides(const Groom& groom, std::size_t count) {
 Groom FollowerBinding::guideGroom() const {
   Groom g;
   g.points.reserve(guideStrand.size() * 32);
-  const bool colors = drawn.color.size() == drawn.strandCount();
-  const bool widths = drawn.thickness.size() == drawn.strandCount();
   for (const std::uint32_t s : guideStrand) {
     g.points.insert(g.points.end(), drawn.points.begin() + drawn.first[s],
                     drawn.points.begin() + drawn.first[s + 1]);
     g.first.push_back(std::uint32_t(g.points.size()));
-    if (colors) g.color.push_back(drawn.color[s]);
-    if (widths) g.thickness.push_back(drawn.thickness[s]);
+    g.addStrandData(drawn, s);
   }
   return g;
 }

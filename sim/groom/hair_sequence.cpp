@@ -18,6 +18,7 @@ Groom posed(const Groom& groom, const std::vector<Vec>& positions) {
   for (const Vec& p : positions) out.points.emplace_back(p);
   out.color = groom.color;
   out.thickness = groom.thickness;
+  out.tipHeld = groom.tipHeld;
   return out;
 }
 

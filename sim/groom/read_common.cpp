@@ -30,6 +30,10 @@ std::string checkGroomStructure(const Groom& groom) {
     return "thickness has " + std::to_string(groom.thickness.size()) + " entries for " +
            std::to_string(groom.strandCount()) + " strands";
   }
+  if (!groom.tipHeld.empty() && groom.tipHeld.size() != groom.strandCount()) {
+    return "tipHeld has " + std::to_string(groom.tipHeld.size()) + " entries for " +
+           std::to_string(groom.strandCount()) + " strands";
+  }
   return {};
 }
 

@@ -112,8 +112,7 @@ GroomRepair repairGroom(Groom& groom, const RepairOptions& options) {
                " merged");
     }
     out.addStrand(kept);
-    if (!groom.color.empty()) out.color.push_back(groom.color[s]);
-    if (!groom.thickness.empty()) out.thickness.push_back(groom.thickness[s]);
+    out.addStrandData(groom, s);
   }
   if (!report.empty()) groom = std::move(out);
   return report;

@@ -141,8 +141,7 @@ void keepStrands(Groom& g, size_t count) {
     const size_t s = k * total / count;
     pts.assign(g.points.begin() + g.first[s], g.points.begin() + g.first[s + 1]);
     out.addStrand(pts);
-    if (!g.color.empty()) out.color.push_back(g.color[s]);
-    if (!g.thickness.empty()) out.thickness.push_back(g.thickness[s]);
+    out.addStrandData(g, s);
   }
   g = std::move(out);
 }
@@ -298,6 +297,7 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
     }
   }
   r.simulatedPoints = g.pointCount();
+  r.heldTips = size_t(std::count(g.tipHeld.begin(), g.tipHeld.end(), uint8_t(1)));
   out = std::move(g);
   return true;
 }
@@ -311,6 +311,8 @@ std::string groomReportText(const GroomReport& r) {
   };
   add(r.turnedStrands, " strand turned root first", " strands turned root first");
   add(r.pushedParticles, " particle moved out of the head", " particles moved out of the head");
+  add(r.heldTips, " strand held by the head at both ends",
+      " strands held by the head at both ends");
   if (parts.empty()) return {};
   std::string text = "the groom file: " + parts;
   for (const std::string& n : r.repair.notes) text += "\n  " + n;

@@ -23,6 +23,7 @@ struct GroomReport {
   io::GroomRepair repair;
   size_t turnedStrands = 0;    // strands read tip first (OBJ curves), turned root first
   size_t pushedParticles = 0;  // particles moved out of the head when the groom was fitted
+  size_t heldTips = 0;         // strands the head holds at both ends (Groom::tipHeld)
   size_t savedPoints() const {
     return filePoints > simulatedPoints ? filePoints - simulatedPoints : 0;
   }
@@ -34,7 +35,8 @@ struct GroomReport {
 using ImportProgress = std::function<void(std::string_view stage, double done)>;
 
 // What the import did that a user should hear of (never silent): "the groom file: dropped 3
-// strands, merged 12 points; 2 strands turned root first; 40 particles moved out of the head",
+// strands, merged 12 points; 2 strands turned root first; 40 particles moved out of the head;
+// 8 strands held by the head at both ends",
 // then the first notes, one a line; "" when there is nothing to say (the generator, a clean
 // file).
 std::string groomReportText(const GroomReport& r);

@@ -89,12 +89,8 @@ GroomReadResult readBinary(std::span<const std::byte> bytes, std::string_view na
     return fail(kVerticesAt,
                 "numVerticesPerStrand is " + std::to_string(perStrand) + "; expected at least 2");
   }
-  if (&layout == &layout3()) {
-    if (const uint32_t both = loadLE<uint32_t>(bytes, kBothEndsAt3); both != 0)
-      return fail(kBothEndsAt3, "bothEndsImmovable is " + std::to_string(both) +
-                                    ": strands held at both ends are not supported (csmhair "
-                                    "holds each strand by its root); export with it off");
-  }
+  // 3.x: one flag for the file (AMD's exporters write a bool: the byte, then padding).
+  const bool bothEnds = &layout == &layout3() && loadLE<uint8_t>(bytes, kBothEndsAt3) != 0;
   // Both counts are 32-bit, so their product fits in 64 bits; after the cap below, so does
   // every array size.
   const uint64_t vertices = strands * perStrand;
@@ -139,6 +135,20 @@ GroomReadResult readBinary(std::span<const std::byte> bytes, std::string_view na
     const uint64_t at = positionsAt + layout.positionStride * i;
     groom.points[i] = {loadLE<float>(bytes, at), loadLE<float>(bytes, at + 4),
                        loadLE<float>(bytes, at + 8)};
+  }
+  if (bothEnds) {
+    groom.tipHeld.assign(strands, 1);
+  } else if (layout.positionStride == 16) {
+    // 4.x: w is the vertex's inverse mass (0: the head holds it), written by the exporters' "both
+    // ends immovable" as 0 on each strand's last vertices too. A file whose every w is 0 holds no
+    // masses (some tools leave w unset): its tips are free.
+    std::vector<uint8_t> held(strands, 0);
+    bool masses = false;
+    for (uint64_t i = 0; i < vertices; ++i)
+      masses = masses || loadLE<float>(bytes, positionsAt + 16 * i + 12) != 0.0f;
+    for (uint64_t s = 0; masses && s < strands; ++s)
+      held[s] = loadLE<float>(bytes, positionsAt + 16 * ((s + 1) * perStrand - 1) + 12) == 0.0f;
+    if (masses && std::find(held.begin(), held.end(), 1) != held.end()) groom.tipHeld = held;
   }
   if (thicknessAt) {
     groom.thickness.resize(strands);
@@ -233,6 +243,7 @@ GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name
 
   float scale = 1.0f;
   glm::vec3 rotation(0.0f), translation(0.0f);
+  bool bothEnds = false;
   uint64_t strands = 0;
   bool haveStrands = false;
   while (!haveStrands && lines.next(line, raw)) {
@@ -249,10 +260,7 @@ GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name
       (t[0] == "rotation" ? rotation : translation) = glm::vec3(v[0], v[1], v[2]);
     } else if (t[0] == "bothEndsImmovable") {
       if (auto e = numbers(t, 1, 1, "bothEndsImmovable", v); !e.empty()) return fail(line, e);
-      if (v[0] != 0.0)
-        return fail(line, "bothEndsImmovable is " + std::string(t[1]) +
-                              ": strands held at both ends are not supported (csmhair holds "
-                              "each strand by its root); export with it off");
+      bothEnds = v[0] != 0.0;
     } else if (t[0] == "numStrands") {
       long n = 0;
       if (t.size() < 2 || !detail::parseIndex(t[1], n) || n < 1)
@@ -327,6 +335,7 @@ GroomReadResult readText(std::span<const std::byte> bytes, std::string_view name
   if (groom.strandCount() == 0)
     return fail(lines.lastNonBlank(), "no strand has 2 vertices or more");
   result.repair = shortOnes;
+  if (bothEnds) groom.tipHeld.assign(groom.strandCount(), 1);
   detail::finishGroom(
       result, std::move(groom), name,
       [pointLine](size_t point, int) {

@@ -4,7 +4,7 @@
 //   version 2.0                                   optional
 //   scale 1 / rotation x y z / translation x y z  2.x: applied as the AMD loader does
 //                                                 (scaled, turned by Ry Rx Rz, radians, moved)
-//   bothEndsImmovable 0                           1 is refused (csmhair holds the root only)
+//   bothEndsImmovable 0                           1: the head holds each strand's tip too
 //   maxNumVerticesInStrand, numFollowHairsPerGuideHair, maxRadiusAroundGuideHair: not needed
 //   numStrands N
 //   is sorted 1                                   optional
@@ -16,7 +16,7 @@
 //   byte   4  uint32  numGuideHairStrands
 //   byte   8  uint32  numVerticesPerStrand      the same for every strand
 //   byte  12  uint32  numFollowHairsPerGuideHair  follow hairs made at run time: not read
-//   byte  16  uint32  bothEndsImmovable         non-zero is refused
+//   byte  16  bool    bothEndsImmovable         non-zero: the head holds each strand's tip too
 //   byte  20  uint32  reserved1[31]
 //   byte 144  uint32  verticesOffset            float3[strands * vertices]
 //   byte 148  uint32  perStrandThicknessOffset  float[strands]
@@ -31,7 +31,9 @@
 //   byte   4  uint32  numHairStrands
 //   byte   8  uint32  numVerticesPerStrand    the same for every strand (AMD: 4..64, pow2)
 //   byte  12  uint32  offsetVertexPosition    float4[strands * vertices]: xyz, w = inverse
-//                                             mass (0 = pinned), ignored here
+//                                             mass (0 = pinned): a strand whose last w
+//                                             is 0 has its tip held by the head (unless
+//                                             every w of the file is 0: no masses)
 //   byte  16  uint32  offsetStrandUV          float2[strands]
 //   byte  20  uint32  offsetVertexUV          float2[strands * vertices]
 //   byte  24  uint32  offsetStrandThickness   float[strands]

@@ -137,9 +137,9 @@ bool listsBefore(int substep, int substeps, int lists) {
 std::vector<double> contactInverseMass(const HairState& state, const Regions& regions) {
   std::vector<double> w(state.particleCount(), 0.0);
   for (size_t s = 0; s < state.strandCount(); ++s) {
-    const uint32_t first = state.strandFirst[s];
-    for (uint32_t i = first; i < state.strandFirst[s + 1]; ++i)
-      if (int(i - first) >= regions.pinned[s]) w[i] = 1.0 / double(state.rest[i].w);
+    const uint32_t first = state.strandFirst[s], count = state.strandFirst[s + 1] - first;
+    for (uint32_t i = first; i < first + count; ++i)
+      if (!regions.held(s, int(i - first), int(count))) w[i] = 1.0 / double(state.rest[i].w);
   }
   return w;
 }

@@ -408,11 +408,10 @@ void CpuSolver::predict(double h, const Pose& head) {
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s) {
       const uint32_t a = first_[s], b = first_[s + 1];
-      const int pinned = regions_.pinned[s];
       for (uint32_t i = a; i < b; ++i) {
         xOld_[i] = x_[i];
-        if (int(i - a) < pinned) {
-          // Kinematic roots follow the head.
+        if (regions_.held(s, int(i - a), int(b - a))) {
+          // Kinematic roots (and held tips) follow the head.
           xPred_[i] = head.apply(rest_[i]);
           continue;
         }
@@ -553,7 +552,7 @@ void CpuSolver::integrate(double h) {
       const uint32_t a = first_[s], b = first_[s + 1];
       const double alpha = stepAlpha(sim, regions_.rate[s], h);
       for (uint32_t i = a; i < b; ++i) {
-        const bool pinned = int(i - a) < regions_.pinned[s];
+        const bool pinned = regions_.held(s, int(i - a), int(b - a));
         x_[i] = pinned ? xPred_[i] : xPred_[i] + alpha * (goal_[i] - xPred_[i]);
         v_[i] = (x_[i] - xOld_[i]) / h;
         if (!pinned) v_[i] *= keep;
@@ -578,8 +577,9 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
       const uint32_t a = first_[s], b = first_[s + 1];
       const int pinned = regions_.pinned[s];
       // One sweep from root to tip: each segment is fixed against an already final parent, so
-      // no iteration is needed (paper section 3.2).
-      for (uint32_t i = a + std::max(1, pinned); i < b; ++i) {
+      // no iteration is needed (paper section 3.2). A held tip stays where the head put it.
+      const uint32_t end = b - (regions_.tipHeld[s] != 0 ? 1u : 0u);
+      for (uint32_t i = a + std::max(1, pinned); i < end; ++i) {
         const double maxLength = limit ? (1.0 + sim.strainLimit) * restLength_[i - 1] : 0.0;
         if (contacts) {
           // The strand contacts' correction (sim/solver/contacts.h), a change of velocity too.
@@ -630,8 +630,35 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
         // velocity its child got from the strain-limit correction, against the heavy-tip look.
         if (dftl > 0.0 && int(i - 1 - a) >= pinned) v_[i - 1] -= dftl * (strained - start) / h;
       }
+      if (limit && end < b) tieStrain(a + std::max(1, pinned), end, h);
     }
   });
+}
+
+// A strand held at both ends: the sweep from the root leaves what stretch there is to its last
+// free segment, the one into the held tip. Sweeps back from the tip, then forth from the root,
+// each limiting a segment against its already final neighbour, share it out along the strand;
+// they stop once one moves nothing (CSM_TIED_SWEEPS pairs at most). A move is a change of
+// velocity too, as the sweep's. Twins: shaders/sim/strain_limit.comp, strand_group.glsl.
+void CpuSolver::tieStrain(uint32_t first, uint32_t tip, double h) {
+  const double stretch = 1.0 + double(config_.sim.strainLimit);
+  auto pull = [&](uint32_t i, uint32_t anchor, double rest) {
+    const glm::dvec3 d = x_[i] - x_[anchor];
+    const double len = glm::length(d), most = stretch * rest;
+    if (!(len > most)) return false;
+    const glm::dvec3 to = x_[anchor] + d * (most / len);
+    v_[i] += (to - x_[i]) / h;
+    x_[i] = to;
+    return true;
+  };
+  for (int pass = 0; pass < CSM_TIED_SWEEPS; ++pass) {
+    bool moved = false;
+    for (uint32_t i = tip; i-- > first;) moved = pull(i, i + 1, restLength_[i]) || moved;
+    if (!moved) break;
+    moved = false;
+    for (uint32_t i = first; i < tip; ++i) moved = pull(i, i - 1, restLength_[i - 1]) || moved;
+    if (!moved) break;
+  }
 }
 
 void CpuSolver::readPositions(std::vector<glm::vec4>& out) {

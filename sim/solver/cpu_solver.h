@@ -93,6 +93,9 @@ class CpuSolver final : public Solver {
   glm::dvec3 windDrag(uint32_t i, uint32_t end, double h) const;
   void shapeMatch(const Pose& head, double h);
   void integrate(double h);
+  // Shares out the stretch the sweep from the root leaves a strand held at both ends: its free
+  // particles [first, tip), then its held tip.
+  void tieStrain(uint32_t first, uint32_t tip, double h);
   void limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
                    const Pose& headBefore);
   ContactSettings contactSettings() const;

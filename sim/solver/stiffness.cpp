@@ -220,6 +220,8 @@ Regions buildRegions(const HairState& st, const SimConfig& sim) {
   r.rate.assign(strands, 0.0);
   r.window.assign(strands, 0);
   r.pinned.assign(strands, std::max(0, sim.pinned));
+  r.tipHeld.assign(strands, 0);
+  for (size_t s = 0; s < std::min(strands, st.tipHeld.size()); ++s) r.tipHeld[s] = st.tipHeld[s];
   r.ghostMass.assign(strands, 0.0);
   r.clampFit.assign(n, glm::dvec2(0.0));
   r.fitEnd.assign(strands, 0);

@@ -69,6 +69,7 @@ struct Regions {
   std::vector<double> rate;       // k (1/s^2) of the calibrated model, else 0
   std::vector<int> window;        // particles per side
   std::vector<int> pinned;        // particles from the root that follow the head
+  std::vector<uint8_t> tipHeld;   // 1: the last particle follows the head too (HairState)
   std::vector<double> ghostMass;  // per-region mass of a ghost (0: the strand has none)
   // The built-in end (calibrated model, clamped strands; ClampField below): per particle, x its
   // weight in the clamp's curvature (non-zero for the fit particles, the free ones within a
@@ -83,6 +84,11 @@ struct Regions {
   double planRate = 0.0;  // the rate the steps follow (planRate below)
 
   size_t size() const { return lo.size(); }
+  // Whether the head holds particle j of strand s (of `count`): a pinned one from the root, or
+  // the tip of a strand held at both ends.
+  bool held(size_t s, int j, int count) const {
+    return j < pinned[s] || (tipHeld[s] != 0 && j == count - 1);
+  }
 };
 
 // Paper: regions [k - w, k + w] clipped to the strand, sim.pinned pinned particles, no ghosts.

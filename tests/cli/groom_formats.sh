@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Grooms from other tools on the command line: OBJ curves in Blender's edge-per-line form and a
 # TressFX 2.x text file open directly; their flaws are repaired and counted in the metrics and
-# said on stderr; a strand that branches is refused with its line and exit status 2.
+# said on stderr; strands tied at both ends (bothEndsImmovable 1) load, counted and said; a
+# strand that branches is refused with its line and exit status 2.
 set -eu
 bin=$1
 src=$2
@@ -30,12 +31,13 @@ with open(d + "/edges.obj", "w") as f:
     f.write("l 321 322\n")
 with open(d + "/branch.obj", "w") as f:
     f.write("v 0 0 0\nv 0 -1 0\nv 0 -2 0\nv 1 -1 0\nl 1 2 3\nl 2 4\n")
-with open(d + "/text.tfx", "w") as f:
-    f.write("version 2.0\nscale 100\nrotation 0 0 0\ntranslation 0 0 0\nbothEndsImmovable 0\n")
-    f.write("numStrands %d\nis sorted 1\n" % len(strands))
-    for i, s in enumerate(strands):
-        f.write("strand %d numVerts 8 texcoord 0 0\n" % i)
-        for p in s: f.write("%f %f %f\n" % p)
+for name, both in (("text", 0), ("tied", 1)):
+    with open(d + "/" + name + ".tfx", "w") as f:
+        f.write("version 2.0\nscale 100\nrotation 0 0 0\ntranslation 0 0 0\n")
+        f.write("bothEndsImmovable %d\nnumStrands %d\nis sorted 1\n" % (both, len(strands)))
+        for i, s in enumerate(strands):
+            f.write("strand %d numVerts 8 texcoord 0 0\n" % i)
+            for p in s: f.write("%f %f %f\n" % p)
 PY
 "$bin" "$tmp/edges.obj" "${common[@]}" --metrics "$tmp/m.json" 2>"$tmp/err.txt"
 cat "$tmp/err.txt"
@@ -50,6 +52,14 @@ assert m["groom"]["file_strands"] == 41 and m["groom"]["dropped_strands"] == 1, 
 assert m["groom"]["turned_strands"] == 1, m["groom"]
 assert m["accuracy"]["nan_count"] == 0 and t["accuracy"]["nan_count"] == 0
 assert t["groom"]["dropped_strands"] == 0 and t["groom"]["merged_points"] == 0, t["groom"]
+assert m["groom"]["held_tips"] == 0 and t["groom"]["held_tips"] == 0
+PY
+"$bin" "$tmp/tied.tfx" "${common[@]}" --metrics "$tmp/tied.json" 2>"$tmp/err.txt"
+grep -q "40 strands held by the head at both ends" "$tmp/err.txt" || { cat "$tmp/err.txt"; echo "FAIL: the tied strands are not said"; exit 1; }
+python3 - "$tmp/tied.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+assert t["groom"]["held_tips"] == 40 and t["accuracy"]["nan_count"] == 0, t["groom"]
 PY
 set +e
 out=$("$bin" "$tmp/branch.obj" "${common[@]}" 2>&1)

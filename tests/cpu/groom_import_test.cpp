@@ -181,3 +181,9 @@ TEST_CASE("Import: the flawed groom's 30 frames on the CPU reference", "[import]
   CpuSolver cpu;
   test::checkImportedRun(cpu, 1e-9);
 }
+
+TEST_CASE("Import: strands tied at both ends keep both with the nodding head on the CPU reference",
+          "[import][cpu][quick]") {
+  CpuSolver cpu;
+  test::checkHeldEnds(cpu, 1e-6);
+}

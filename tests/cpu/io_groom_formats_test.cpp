@@ -161,6 +161,47 @@ TEST_CASE("TressFX 3.x and 4.x files of the same strands read to the same points
   CHECK(three.groom->color[2] == glm::vec3(0.5f, 0.25f, 0.0f));
 }
 
+TEST_CASE("TressFX strands tied at both ends: the 3.x flag, 4.x inverse masses, the text keyword",
+          "[io][tressfx][quick]") {
+  const Groom g = sampleStrands();
+  auto heldOf = [](const csm::io::GroomReadResult& r) {
+    INFO(r.error);
+    REQUIRE(r.groom);
+    return r.groom->tipHeld;
+  };
+  const std::vector<uint8_t> none, all(5, 1);
+  SECTION("3.x: bothEndsImmovable, a bool at byte 16, holds every strand's tip") {
+    Binary f = tressFx3(g, 8);
+    CHECK(heldOf(csm::io::readTressFx(f.bytes, "t.tfx")) == none);
+    f.u32(16, 1);
+    CHECK(heldOf(csm::io::readTressFx(f.bytes, "t.tfx")) == all);
+    f.u32(16, 0xCDCDCD00u);  // a bool's padding as a debug heap leaves it: the bool is false
+    CHECK(heldOf(csm::io::readTressFx(f.bytes, "t.tfx")) == none);
+  }
+  SECTION("4.x: a strand whose last vertex has inverse mass 0") {
+    Binary f = tressFx4(g, 8);
+    CHECK(heldOf(csm::io::readTressFx(f.bytes, "t.tfx")) == none);
+    const uint32_t positions = 160;  // the first array appended after the header
+    for (uint32_t s : {1u, 3u})
+      for (uint32_t v : {6u, 7u}) f.f32(positions + 16 * (8 * s + v) + 12, 0.0f);
+    CHECK(heldOf(csm::io::readTressFx(f.bytes, "t.tfx")) == std::vector<uint8_t>{0, 1, 0, 1, 0});
+    // Every w 0: the file holds no masses (some tools leave w unset), not every tip.
+    for (uint32_t v = 0; v < 40; ++v) f.f32(positions + 16 * v + 12, 0.0f);
+    CHECK(heldOf(csm::io::readTressFx(f.bytes, "t.tfx")) == none);
+  }
+  SECTION("text: bothEndsImmovable 1, kept through a dropped strand") {
+    const std::string header = "version 2.0\nbothEndsImmovable 1\n";
+    CHECK(heldOf(csm::io::readTressFx(bytesOf(tressFxText(g, header)), "t.tfx")) == all);
+    const auto r = csm::io::readTressFx(
+        bytesOf(header + "numStrands 3\nstrand 0 numVerts 1\n0 0 0\nstrand 1 numVerts 2\n0 0 nan\n"
+                         "1 1 1\nstrand 2 numVerts 2\n0 0 0\n1 1 1\n"),
+        "t.tfx");
+    CHECK(heldOf(r) == std::vector<uint8_t>{1});
+    CHECK(heldOf(csm::io::readTressFx(bytesOf(tressFxText(g, "version 2\nbothEndsImmovable 0\n")),
+                                      "t.tfx")) == none);
+  }
+}
+
 TEST_CASE("TressFX 1.x and 2.x text files read, with the 2.x transform", "[io][tressfx][quick]") {
   const Groom g = sampleStrands();
   SECTION("1.x: no version line") {
@@ -214,8 +255,8 @@ TEST_CASE("TressFX 1.x and 2.x text files read, with the 2.x transform", "[io][t
   }
   SECTION("refused, with the line") {
     CHECK_THAT(errorOf(csm::io::readTressFx(
-                   bytesOf("version 2.0\nbothEndsImmovable 1\nnumStrands 1\n"), "t.tfx")),
-               Catch::Contains("t.tfx:2: bothEndsImmovable is 1"));
+                   bytesOf("version 2.0\nbothEndsImmovable yes\nnumStrands 1\n"), "t.tfx")),
+               Catch::Contains("t.tfx:2: bothEndsImmovable: \"yes\" is not a number"));
     CHECK_THAT(errorOf(csm::io::readTressFx(bytesOf("version 2.0\nscale 1\n"), "t.tfx")),
                Catch::Contains("no \"numStrands\" line"));
     CHECK_THAT(errorOf(csm::io::readTressFx(
@@ -245,11 +286,6 @@ TEST_CASE("TressFX 3.x: every malformed header is refused with its byte", "[io][
   SECTION("one vertex a strand") {
     f.u32(8, 1);
     CHECK_THAT(error(), Catch::Contains("byte 8: numVerticesPerStrand is 1"));
-  }
-  SECTION("both ends immovable") {
-    f.u32(16, 1);
-    CHECK_THAT(error(), Catch::Contains("byte 16: bothEndsImmovable is 1: strands held at both "
-                                        "ends are not supported"));
   }
   SECTION("no position array") {
     f.u32(144, 0);

@@ -22,6 +22,12 @@ TEST_CASE("GPU: the flawed groom's 30 frames", "[gpu][import]") {
   csm::test::checkImportedRun(*gpu, 1e-4);
 }
 
+TEST_CASE("GPU: strands tied at both ends keep both with the nodding head",
+          "[gpu][import][quick]") {
+  auto gpu = csm::test::gpuSolver();
+  csm::test::checkHeldEnds(*gpu, 1e-6);
+}
+
 namespace {
 
 // A fur-like TressFX 3.x file, as the bear fur of AMD's samples has it: `strands` short strands

@@ -21,6 +21,7 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
   const size_t n = st.particleCount();
   first_ = st.strandFirst;
   strandOf_ = st.particleStrand;
+  tipHeld_ = st.tipHeld;
   rest_.resize(n);
   mass_.resize(n);
   invMass_.resize(n);

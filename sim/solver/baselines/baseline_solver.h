@@ -69,7 +69,13 @@ class BaselineSolver : public Solver {
  protected:
   virtual void onReset() {}
 
-  bool pinned(uint32_t i) const { return int(i - first_[strandOf_[i]]) < config_.sim.pinned; }
+  // Kinematic: the first sim.pinned particles of a strand, and its tip when the head holds both
+  // ends (Groom::tipHeld).
+  bool pinned(uint32_t i) const {
+    const uint32_t s = strandOf_[i];
+    return int(i - first_[s]) < config_.sim.pinned ||
+           (s < tipHeld_.size() && tipHeld_[s] != 0 && i + 1 == first_[s + 1]);
+  }
   // Gravity, wind drag across the strand (as the CSM solver applies it: implicit in the
   // velocity over a step of h, c / (1 + h c)) and nothing else.
   glm::dvec3 externalAcceleration(uint32_t i, double h) const;
@@ -91,6 +97,7 @@ class BaselineSolver : public Solver {
   double time_ = 0.0;
   std::vector<uint32_t> first_{0};
   std::vector<uint32_t> strandOf_;
+  std::vector<uint8_t> tipHeld_;  // per strand (HairState::tipHeld)
   std::vector<glm::dvec3> rest_;  // head frame
   std::vector<double> mass_, invMass_;
   std::vector<double> restLength_;  // segment i -> i+1; 0 after a strand's last particle
