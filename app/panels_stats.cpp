@@ -84,13 +84,16 @@ void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state
               double(f.timeline.budget) / (1 << 20),
               f.timeline.first >= 0 ? f.timeline.last - f.timeline.first + 1 : 0L,
               f.timeline.shown >= 0 ? ", one shown" : "");
-  ImGui::TextDisabled("picture: %s quality", view.scene.lastQuality() == DrawQuality::Interactive
-                                                 ? "interactive"
-                                                 : "full");
+  if (view.scene.lastQuality() == DrawQuality::Interactive)
+    ImGui::TextDisabled("picture: interactive quality, %.0f %% of children and followers",
+                        100.0 * double(view.scene.interactiveExtra()));
+  else
+    ImGui::TextDisabled("picture: full quality");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "While the camera moves or the hair simulates the scene is drawn with\n"
-        "Rendering > Interactive's settings; when still, and for screenshots, in full.");
+        "Rendering > Interactive's settings, as many children and followers as the\n"
+        "frame budget allows (measured); when still, and for screenshots, in full.");
 
   char overlay[96];
   std::snprintf(overlay, sizeof overlay, "UI frame time, ms (max %.1f)", s.frameMs.max());

@@ -71,11 +71,21 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
       view.width = size.width;
       view.height = size.height;
       view.targetFramebuffer = fbo_.id();
-      if (quality == DrawQuality::Interactive) view.amount = interactiveAmount(look.render);
+      if (quality == DrawQuality::Interactive) {
+        view.amount = interactiveAmount(look.render);
+        view.amount.extra = budget_.extra();
+      }
       renderer_->render(view);
       out.scene = true;
       out.stages = renderer_->stageTimes();
       out.strands = renderer_->drawnStrands();
+      if (quality == DrawQuality::Interactive) {
+        // The passes' measured times (a software renderer's at once; timer queries' a few
+        // frames late) set the next interactive frame's share.
+        double ms = 0.0;
+        for (const StageTime& s : out.stages) ms += s.ms;
+        budget_.measured(ms, double(look.render.interactiveBudgetMs));
+      }
     } else {
       fbo_.clearColor(0, std::array<float, 4>{look.render.background.x, look.render.background.y,
                                               look.render.background.z, 1.0f});

@@ -14,6 +14,7 @@
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
+#include "render/interactive_budget.h"
 #include "render/view_config.h"
 
 namespace csm {
@@ -57,6 +58,9 @@ class SceneView {
   const std::string& rendererError() const { return rendererError_; }
   long scenesDrawn() const { return scenesDrawn_; }  // pictures drawn (not shown again)
   DrawQuality lastQuality() const { return lastQuality_; }
+  // The share of children and followers interactive quality draws now
+  // (render.interactive_budget_ms).
+  float interactiveExtra() const { return budget_.extra(); }
   const std::string& shaderLog() const { return shaderLog_; }
   bool shaderReloadFailed() const { return shaderReloadFailed_; }
   void dismissShaderLog() {
@@ -84,6 +88,7 @@ class SceneView {
   long version_ = 0;
   std::chrono::steady_clock::time_point lastMotion_{};
   DrawQuality lastQuality_ = DrawQuality::Full;
+  InteractiveBudget budget_;
   long scenesDrawn_ = 0;
   std::string shaderLog_;
   bool shaderReloadFailed_ = false;

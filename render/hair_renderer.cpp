@@ -84,12 +84,17 @@ struct Selection {
   float widthScale = 1.0f, opacityScale = 1.0f;
 };
 
-Selection select(std::size_t guides, int children, float share) {
+// `guides`: the strands of the geometry drawn, `children` each; `simulated` of the `all` strands
+// the full picture draws are simulated. The amount's share of the simulated strands plus its
+// `extra` share of the rest (children, followers) is drawn.
+Selection select(std::size_t guides, int children, const DrawAmount& amount, double simulated,
+                 double all) {
   Selection s;
   const int perGuide = 1 + std::max(children, 0);
-  share = std::clamp(share, 0.0f, 1.0f);
-  const double all = double(guides) * perGuide;
-  const double wanted = std::max(1.0, std::round(double(share) * all));
+  const double share = std::clamp(double(amount.strands), 0.0, 1.0);
+  const double extra = std::clamp(double(amount.extra), 0.0, 1.0);
+  const double wanted =
+      std::max(1.0, std::round(share * (simulated + extra * std::max(all - simulated, 0.0))));
   if (wanted >= double(guides)) {
     // Children go first: whole guides with fewer of their children.
     s.guides = guides;
@@ -100,7 +105,7 @@ Selection select(std::size_t guides, int children, float share) {
     s.instances = 1;
   }
   const double drawn = double(s.guides) * s.instances;
-  const double ratio = drawn > 0.0 ? all / drawn : 1.0;
+  const double ratio = drawn > 0.0 ? std::max(all / drawn, 1.0) : 1.0;
   s.widthScale = std::min(kMaxWidthScale, float(std::sqrt(ratio)));
   s.opacityScale = float(ratio);
   return s;
@@ -239,10 +244,11 @@ FrameTarget& HairRenderer::targetFor(int width, int height, int samples) {
   return *t;
 }
 
-StrandGeometry& HairRenderer::geometryFor(int subdivision) {
-  std::unique_ptr<StrandGeometry>& g = geometries_[subdivision];
+StrandGeometry& HairRenderer::geometryFor(int subdivision, bool followers) {
+  std::unique_ptr<StrandGeometry>& g = geometries_[{subdivision, followers}];
   if (!g) g = std::make_unique<StrandGeometry>();
-  if (geometries_.size() > 2)
+  // Full and interactive quality, and the guides standing in for their followers.
+  if (geometries_.size() > 3)
     for (auto it = geometries_.begin(); it != geometries_.end();)
       it = it->second.get() != g.get() && it->second.get() != geometry_ ? geometries_.erase(it)
                                                                         : std::next(it);
@@ -349,13 +355,18 @@ void HairRenderer::render(const FrameView& frame) {
   const int subdivision =
       std::clamp(amount.subdivision > 0 ? amount.subdivision : look.subdivision, 1, 64);
   // A groom simulated through guides draws its followers: the follower pass makes them first.
-  // render.show_guides draws the guides alone, highlighted, as simulated.
-  const FollowerBinding* followers = look.showGuides ? nullptr : frame.followers;
+  // render.show_guides draws the guides alone, highlighted, as simulated; an amount with no
+  // extra strands draws them too, not highlighted, each standing for its followers.
+  const FollowerBinding* bound = look.showGuides ? nullptr : frame.followers;
+  const FollowerBinding* followers = amount.extra > 0.0f ? bound : nullptr;
   const Groom* groom = followers ? &followers->drawn : frame.groom;
-  geometryFor(subdivision).update(*groom, frame.generation, subdivision, frame.head->spheres());
-  if (scalpKey_ != std::make_pair(groom, frame.generation)) {
-    scalp_ = makeScalpMap(*groom, scalpSpheres(*frame.head));
-    scalpKey_ = {groom, frame.generation};
+  geometryFor(subdivision, groom != frame.groom)
+      .update(*groom, frame.generation, subdivision, frame.head->spheres());
+  // The scalp is painted where the whole picture's hair grows.
+  const Groom* grown = bound ? &bound->drawn : frame.groom;
+  if (scalpKey_ != std::make_pair(grown, frame.generation)) {
+    scalp_ = makeScalpMap(*grown, scalpSpheres(*frame.head));
+    scalpKey_ = {grown, frame.generation};
   }
   // Interactive quality may draw a smaller image; the post pass scales it up to the frame.
   const float scale = std::clamp(amount.resolution, 0.05f, 1.0f);
@@ -376,7 +387,10 @@ void HairRenderer::render(const FrameView& frame) {
   // Children as asked for, as many as fit; each strand narrower by sqrt(1 + children), so
   // 1 + n strands cover sqrt(1 + n) times the guides' area (docs/METHOD.md, section 8).
   const int children = geometry_->setChildren(look.children);
-  const Selection drawn = select(geometry_->guides(), children, amount.strands);
+  // The simulated strands, and all the full picture draws: the drawn strands and their children.
+  const double simulated = double(frame.groom->strandCount());
+  const double all = double(grown->strandCount()) * (1.0 + children);
+  const Selection drawn = select(geometry_->guides(), children, amount, simulated, all);
   unsigned positions = frame.positionBuffer;
   drawnStrands_ = positions != 0 ? drawn.guides * std::size_t(drawn.instances) : 0;
   const float childWidth = 1.0f / std::sqrt(float(1 + children));

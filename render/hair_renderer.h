@@ -79,7 +79,9 @@ class HairRenderer final : public Renderer {
   HairRenderer();
   Programs* programsFor(int samples, std::string* log);
   FrameTarget& targetFor(int width, int height, int samples);
-  StrandGeometry& geometryFor(int subdivision);
+  // The geometry for a subdivision, of the drawn groom or (`followers`) a guided groom's drawn
+  // strands.
+  StrandGeometry& geometryFor(int subdivision, bool followers);
   ShadowMaps& shadowFor(int size);
   // `drawnWidth` x `drawnHeight`: the image the passes draw (the frame's size times
   // DrawAmount::resolution), whose pixels set the strands' widths.
@@ -94,7 +96,7 @@ class HairRenderer final : public Renderer {
   PassClock clock_;
 
   // The groom's topology per subdivision (full and interactive quality's).
-  std::map<int, std::unique_ptr<StrandGeometry>> geometries_;
+  std::map<std::pair<int, bool>, std::unique_ptr<StrandGeometry>> geometries_;
   StrandGeometry* geometry_ = nullptr;
   HeadMesh head_;
   FollowerPass followers_;

@@ -1,5 +1,7 @@
 #include "render/pass_clock.h"
 
+#include <algorithm>
+
 #include "gl/draw.h"
 
 namespace csm {
@@ -9,6 +11,7 @@ void PassClock::beginFrame() {
 }
 
 void PassClock::begin(const char* name) {
+  if (*name) begun_.emplace_back(name);
   if (synchronous_) {
     gl::finish();
     const auto now = std::chrono::steady_clock::now();
@@ -23,6 +26,8 @@ void PassClock::begin(const char* name) {
 }
 
 void PassClock::endFrame() {
+  lastBegun_ = std::move(begun_);
+  begun_.clear();
   if (synchronous_) {
     begin("");
     open_.clear();
@@ -38,7 +43,9 @@ std::vector<StageTime> PassClock::times() {
   std::vector<StageTime> out;
   if (!queries_) return out;
   timer_.collect();
-  for (const gl::StageTimer::Stats& s : timer_.stats()) out.push_back({s.name, s.lastMs});
+  for (const gl::StageTimer::Stats& s : timer_.stats())
+    if (std::find(lastBegun_.begin(), lastBegun_.end(), s.name) != lastBegun_.end())
+      out.push_back({s.name, s.lastMs});
   return out;
 }
 

@@ -22,7 +22,8 @@ class PassClock {
   // Ends the open pass, if any, and starts `name`.
   void begin(const char* name);
   void endFrame();
-  // The latest times per pass.
+  // The latest times of the passes the last frame ran (a pass it skipped, as the follower pass
+  // when the guides stand in, is not reported with an old time).
   std::vector<StageTime> times();
 
  private:
@@ -32,6 +33,7 @@ class PassClock {
   std::string open_;
   std::chrono::steady_clock::time_point openStart_;
   std::vector<StageTime> frame_, last_;
+  std::vector<std::string> begun_, lastBegun_;  // the passes of the open and the last frame
 };
 
 }  // namespace csm

@@ -29,6 +29,10 @@ struct DrawAmount {
   int shadowMapSize = 0;    // 0: render.shadow_map_size
   bool fullHead = true;     // the head's mesh in full, else its coarser one (HeadMesh)
   float resolution = 1.0f;  // of the target's width and height: drawn smaller, scaled up
+  // Of the strands drawn beyond the simulated ones (children; a guided groom's followers): 0
+  // draws the simulated strands alone (the guides standing in for their followers), each wider
+  // to stand for those left out (InteractiveBudget).
+  float extra = 1.0f;
   bool operator==(const DrawAmount&) const = default;
 };
 // The interactive amount a look asks for (full when render.interactive is off).

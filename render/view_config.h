@@ -53,6 +53,9 @@ struct RenderConfig {
   int interactiveSamples = 1;
   int interactiveShadowMapSize = 256;
   float interactiveResolution = 0.5f;  // of the window's width and height
+  // The draw time (ms, measured) interactive quality holds by drawing fewer children and
+  // followers (render/interactive_budget.h); 0: no budget.
+  float interactiveBudgetMs = 33.0f;
 };
 
 struct CameraConfig {

@@ -146,6 +146,13 @@ std::vector<Param<ViewConfig>> build() {
             "rest are drawn wider to keep the coverage).",
             Effect::Render)
           .onlyWhen(interactiveQuality),
+      param("render.interactive_budget_ms", "Frame budget (ms)", "Rendering|Interactive",
+            &ViewConfig::render, &RenderConfig::interactiveBudgetMs, 0.0, 1000.0,
+            "Interactive quality: the time the scene's drawing may take, measured over the last "
+            "frames; over it, fewer children and followers are drawn (a guided groom's guides "
+            "stand in for all), under it more. 0: no budget.",
+            Effect::Render)
+          .onlyWhen(interactiveQuality),
       param("render.interactive_subdivision", "Subdivision", "Rendering|Interactive",
             &ViewConfig::render, &RenderConfig::interactiveSubdivision, 1, 16,
             "Interactive quality: spline segments drawn per simulated segment (1: straight "

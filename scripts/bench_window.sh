@@ -4,6 +4,7 @@
 # and the wall time the run took to simulate FRAMES frames), for the default preset and the
 # paper's Fig. 1, per binary, the binaries alternated in one run.
 #   [FIG1_FRAMES=N] [PRESETS="default ..."] scripts/bench_window.sh [FRAMES] BIN...
+# PRESETS: names under presets/, or paths to preset files (any name with a slash).
 # FIG1_FRAMES: frames for Fig. 1 (default FRAMES; its frames cost seconds each on llvmpipe).
 # --exit-after FRAMES: the window runs until FRAMES frames are simulated (a build from before
 # the simulation thread ran one simulated frame per UI frame).
@@ -27,6 +28,7 @@ for preset in ${PRESETS:-default paper_fig1_straight}; do
   for bin in "$@"; do
     rm -f "$tmp/m.json"
     file="$root/presets/$preset.json"
+    [[ "$preset" != */* ]] || file=$preset  # a path: a preset of one's own
     [ "$bin" != "${OLD_BIN:-}" ] || file="$OLD_PRESETS/$preset.json"
     xvfb-run -a -s "-screen 0 1280x800x24" "$bin" "$file" --size 1280x720 \
       --exit-after "$n" --metrics "$tmp/m.json" >"$tmp/out.txt" 2>&1 || true

@@ -93,3 +93,50 @@ TEST_CASE("render.show_guides draws the guides alone, highlighted", "[followers]
   CHECK(scene.renderer().drawnStrands() == 30);
   CHECK(after > before + 20);
 }
+
+TEST_CASE("interactive quality with no extra strands draws the guides standing in for followers",
+          "[followers][quick]") {
+  Preset preset = test::presetConfig("default.json", 300);
+  preset.view.render.children = 2;
+  preset.scene.hairstyle.guides = 30;
+  test::RenderScene scene(preset, 1);
+  auto followersRan = [&] {
+    for (const StageTime& s : scene.renderer().stageTimes())
+      if (s.name == "followers") return true;
+    return false;
+  };
+  scene.renderer().setSynchronousTiming(true);
+  DrawAmount amount;
+  scene.render(160, 90, nullptr, true, amount);
+  CHECK(scene.renderer().drawnStrands() == 900);  // 300 strands and their 600 children
+  CHECK(followersRan());
+  amount.extra = 0.0f;
+  scene.render(160, 90, nullptr, true, amount);
+  CHECK(scene.renderer().drawnStrands() == 30);  // the guides, no children
+  CHECK_FALSE(followersRan());
+  amount.strands = 0.5f;
+  scene.render(160, 90, nullptr, true, amount);
+  CHECK(scene.renderer().drawnStrands() == 15);
+  amount.extra = 0.5f;
+  scene.render(160, 90, nullptr, true, amount);
+  // Half of the 30 simulated strands and of half the 870 others: 233 of the 300 followers.
+  CHECK(scene.renderer().drawnStrands() == 233);
+  CHECK(followersRan());
+}
+
+TEST_CASE("interactive quality with no extra strands draws no children", "[render][quick]") {
+  Preset preset = test::presetConfig("default.json", 300);
+  preset.view.render.children = 4;
+  test::RenderScene scene(preset, 1);
+  DrawAmount amount;
+  amount.extra = 0.0f;
+  scene.render(160, 90, nullptr, true, amount);
+  CHECK(scene.renderer().drawnStrands() == 300);  // the simulated strands, as with no children
+  amount.extra = 0.5f;
+  scene.render(160, 90, nullptr, true, amount);
+  CHECK(scene.renderer().drawnStrands() == 900);  // and half the 1,200 children: 2 a strand
+  amount.strands = 0.3f;
+  amount.extra = 0.0f;
+  scene.render(160, 90, nullptr, true, amount);
+  CHECK(scene.renderer().drawnStrands() == 90);
+}
