@@ -8,7 +8,10 @@
 #      fitted, the guides chosen and bound, the solver reset), the wall time to the first frame
 #      stepped, peak RSS, sim ms a frame, render ms by pass, strands simulated and drawn.
 #   scripts/production_groom.sh [BIN] [FRAMES] [KEEP_DIR]
-# STRANDS and GUIDES change the sizes (default 100000 and 4000).
+# STRANDS and GUIDES change the sizes (default 100000 and 4000). STARTUP_RUNS (default 3): the
+# pair is opened again that many times, --frames 0 and nothing drawn but the context made as for
+# the drawn runs, alternated, for the start-up ratio's median (one run's start-up on a shared
+# machine moves by 20 %).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-"$root/build/app/csmhair"}
@@ -35,10 +38,17 @@ for name in groom guides; do
     --set hairstyle.guides="$guides" --set render.children=0
   rm -rf "$tmp/frames_$name"
 done
+for r in $(seq 1 "${STARTUP_RUNS:-3}"); do
+  for name in groom guides; do
+    "$bin" --headless --quiet --solver "$solver" --frames 0 --size 1280x720 \
+      --metrics "$tmp/$name.start$r.json" --set hairstyle.file="$tmp/$name.hair" \
+      --set hairstyle.strands="$strands" --set hairstyle.guides="$guides" --set render.children=0
+  done
+done
 echo "Load after: $(uptime | sed 's/.*load average: //')"
-/usr/bin/python3 - "$tmp" "$frames" <<'PY'
-import json, sys
-tmp, frames = sys.argv[1], int(sys.argv[2])
+/usr/bin/python3 - "$tmp" "$frames" "${STARTUP_RUNS:-3}" <<'PY'
+import json, statistics, sys
+tmp, frames, runs = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 stages = ["followers", "strands", "shadow", "head", "hair", "post"]
 print()
 print("| groom | strands simulated | drawn | start-up s | peak RSS MB | sim ms/frame | render ms | "
@@ -55,6 +65,15 @@ for name in ("groom", "guides"):
           f"{int(rss_kb) / 1024:.0f} | {ms['sim_mean']:.1f} | {ms.get('render_mean', 0):.0f} | "
           + " | ".join(f"{rs.get(s, 0):.1f}" for s in stages) + f" | {float(wall):.1f} |")
 g, c = rows["groom"], rows["guides"]
+if runs > 0:
+    start = {n: [json.load(open(f"{tmp}/{n}.start{r}.json"))["startup_s"] for r in range(1, runs + 1)]
+             for n in ("groom", "guides")}
+    ratios = [a / b for a, b in zip(start["groom"], start["guides"])]
+    print()
+    print("Start-up, " + str(runs) + " more runs each, alternated: groom "
+          + ", ".join(f"{v:.2f}" for v in start["groom"]) + " s; guides "
+          + ", ".join(f"{v:.2f}" for v in start["guides"]) + " s; ratios "
+          + ", ".join(f"{v:.2f}" for v in ratios) + f"; median {statistics.median(ratios):.2f}x")
 print()
 print(f"Against the guides alone: start-up {g[0] / c[0]:.2f}x, peak RSS {g[1] / c[1]:.2f}x, "
       f"sim ms {g[2] / c[2]:.2f}x, render ms {g[3] / max(c[3], 1e-9):.2f}x ({frames} frames)")
