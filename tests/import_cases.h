@@ -77,15 +77,21 @@ inline Groom importFor(const Config& c, const Groom& file, GroomReport* report =
   return out;
 }
 
-// 30 frames of the flawed import: strain within the limit (float positions: 1e-4 more), no
-// particle in the head, no NaN.
-inline void checkImportedRun(Solver& solver, double floatSlack) {
+// The imports' scene: `strands` of the hairstyle, the head's field, wind, the nodding head.
+inline Config noddingImport(int strands) {
   Config c;
-  c.hairstyle.strands = 150;
+  c.hairstyle.strands = strands;
   c.collision.mode = CollisionMode::Head;
   c.collision.headShape = HeadShape::Sdf;
   c.wind.strength = 3.0f;
   c.head.motion = HeadMotion::Nod;
+  return c;
+}
+
+// 30 frames of the flawed import: strain within the limit (float positions: 1e-4 more), no
+// particle in the head, no NaN.
+inline void checkImportedRun(Solver& solver, double floatSlack) {
+  const Config c = noddingImport(150);
   GroomReport report;
   const Groom g = importFor(c, importedGroom(c, true), &report);
   CHECK(report.repair.droppedStrands >= 2);
@@ -112,12 +118,7 @@ inline void checkImportedRun(Solver& solver, double floatSlack) {
 // places (within `tolerance`, m: float positions) while its middle moves, and the free strand's
 // tip swings.
 inline void checkHeldEnds(Solver& solver, double tolerance) {
-  Config c;
-  c.hairstyle.strands = 60;
-  c.collision.mode = CollisionMode::Head;
-  c.collision.headShape = HeadShape::Sdf;
-  c.wind.strength = 3.0f;
-  c.head.motion = HeadMotion::Nod;
+  const Config c = noddingImport(60);
   Groom file = importedGroom(c, false);
   file.tipHeld.assign(file.strandCount(), 1);
   file.tipHeld[0] = 0;

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "render/interactive_budget.h"
 #include "render/view_params.h"
 #include "sim/gpu/gpu_solver.h"
 #include "tests/gpu/gl_fixture.h"
@@ -37,11 +38,17 @@ TEST_CASE("every render parameter changes the picture", "[params][render]") {
   preset.scene.hairstyle.guides = 100;
   test::RenderScene scene(preset, 3);
   const int w = 160, h = 120;
-  // The interactive settings show in the viewer's interactive amount, the others at full
-  // quality (captures, a still view).
+  // The interactive settings show in the viewer's interactive amount (its frame budget's share
+  // after a frame measured at 20 ms), the others at full quality (captures, a still view).
+  auto interactiveOf = [](const RenderConfig& r) {
+    DrawAmount a = interactiveAmount(r);
+    InteractiveBudget budget;
+    budget.measured(20.0, double(r.interactiveBudgetMs));
+    a.extra = budget.extra();
+    return a;
+  };
   auto draw = [&](const Preset& p, bool interactive) {
-    return scene.render(w, h, &p, true,
-                        interactive ? interactiveAmount(p.view.render) : DrawAmount{});
+    return scene.render(w, h, &p, true, interactive ? interactiveOf(p.view.render) : DrawAmount{});
   };
   const test::Image full = draw(preset, false), fast = draw(preset, true);
   test::dumpImage(full, "params_full");
