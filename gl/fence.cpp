@@ -47,6 +47,10 @@ bool Fence::wait(std::uint64_t timeoutNs) const {
   return r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED;
 }
 
+void Fence::waitUncounted() const {
+  if (!passed()) glClientWaitSync(sync_, GL_SYNC_FLUSH_COMMANDS_BIT, ~std::uint64_t(0));
+}
+
 void Fence::waitOnGpu() const {
   if (sync_) glWaitSync(sync_, 0, GL_TIMEOUT_IGNORED);
 }

@@ -27,6 +27,8 @@ class Fence {
   // Waits up to `timeoutNs` for it; true when passed. Counts a wait that had to block in
   // readbackStats().waits.
   bool wait(std::uint64_t timeoutNs = ~std::uint64_t(0)) const;
+  // Waits for it, not counted: the drawing's own pacing (a software rasterizer's backlog).
+  void waitUncounted() const;
   // Makes the current context's later commands wait for it on the GPU (glWaitSync): for a
   // fence from another context of the share group, without blocking the CPU. The fence's own
   // context must have flushed it (insert() does).

@@ -201,6 +201,7 @@ HairRenderer::HairRenderer() : clock_(gl::queryCaps().timerQuery) {
   maxSamples_ = std::max(
       1, std::min({caps.maxSamples, caps.maxColorTextureSamples, caps.maxDepthTextureSamples}));
   clock_.setSynchronous(caps.software);
+  software_ = caps.software;
   emptyVao_ = gl::VertexArray();
   frameUniforms_ =
       gl::Buffer(GLsizeiptr(sizeof(FrameUniforms)), nullptr, gl::BufferUsage::DynamicDraw);
@@ -208,6 +209,11 @@ HairRenderer::HairRenderer() : clock_(gl::queryCaps().timerQuery) {
 }
 
 HairRenderer::~HairRenderer() = default;
+
+void HairRenderer::setPacedDraws(bool on) {
+  software_ = on;
+  for (auto& [key, g] : geometries_) g->setPaced(on);
+}
 
 HairRenderer::Programs* HairRenderer::programsFor(int samples, std::string* log) {
   auto it = programs_.find(samples);
@@ -246,7 +252,10 @@ FrameTarget& HairRenderer::targetFor(int width, int height, int samples) {
 
 StrandGeometry& HairRenderer::geometryFor(int subdivision, bool followers) {
   std::unique_ptr<StrandGeometry>& g = geometries_[{subdivision, followers}];
-  if (!g) g = std::make_unique<StrandGeometry>();
+  if (!g) {
+    g = std::make_unique<StrandGeometry>();
+    g->setPaced(software_);
+  }
   // Full and interactive quality, and the guides standing in for their followers.
   if (geometries_.size() > 3)
     for (auto it = geometries_.begin(); it != geometries_.end();)

@@ -60,6 +60,9 @@ class HairRenderer final : public Renderer {
   // hair pass on the pass after it. On a GPU it would stall the pipeline: queries there.
   // The viewer turns it off (it would stall every frame of the window).
   void setSynchronousTiming(bool on) { clock_.setSynchronous(on); }
+  // Long draws in chunks, each waiting for the one before the last (StrandGeometry::setPaced):
+  // on by default on a software rasterizer.
+  void setPacedDraws(bool on);
   bool synchronousTiming() const { return clock_.synchronous(); }
   // Multisampling the last frame used (render.samples clamped to what the driver offers).
   int samples() const { return target_ ? target_->samples() : 1; }
@@ -94,6 +97,7 @@ class HairRenderer final : public Renderer {
   std::map<int, std::unique_ptr<Programs>> programs_;  // by sample count
   int maxSamples_ = 1;
   PassClock clock_;
+  bool software_ = false;  // a CPU rasterizer: long draws paced (StrandGeometry::setPaced)
 
   // The groom's topology per subdivision (full and interactive quality's).
   std::map<std::pair<int, bool>, std::unique_ptr<StrandGeometry>> geometries_;

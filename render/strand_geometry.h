@@ -48,6 +48,12 @@ class StrandGeometry {
   int setChildren(int children);
   static constexpr std::size_t kMaxChildBytes = std::size_t(768) << 20;
   int children() const { return children_; }
+  // On a software rasterizer long draws go in chunks, each waiting for the one before the last:
+  // its binned triangles (llvmpipe keeps every flushed chunk's until its threads have drawn it)
+  // stay a few chunks' worth.
+  void setPaced(bool paced) { paced_ = paced; }
+  // The most indices a paced draw issues at once (whole triangles and lines: a multiple of 6).
+  static constexpr std::size_t kDrawChunk = std::size_t(6) << 16;
 
   // Binds every buffer the hair shaders and compute passes read or write.
   void bind() const;
@@ -110,6 +116,7 @@ class StrandGeometry {
   std::size_t splinePoints_ = 0, childRun_ = 0;
   int children_ = -1;  // children per guide laid out; -1: none yet
   int subdivision_ = 1, shadowStride_ = 1, childStride_ = 1, strandFlags_ = 0;
+  bool paced_ = false;
   std::size_t guides_ = 0;
   glm::vec3 boundCenter_{0.0f};
   float boundRadius_ = 0.5f;

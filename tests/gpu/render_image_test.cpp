@@ -102,6 +102,17 @@ TEST_CASE("Render: the same preset and frame give the same image twice", "[rende
   CHECK(differ == 0);
 }
 
+TEST_CASE("Render: draws paced in chunks give the image drawn whole", "[render][image][quick]") {
+  // 3,000 strands at subdivision 4: ribbons of three chunks (StrandGeometry::kDrawChunk), the
+  // third waiting for the first.
+  test::RenderScene scene(test::presetConfig("default.json", 3000), 1);
+  scene.renderer().setPacedDraws(false);
+  const std::vector<std::uint8_t> whole = scene.render(160, 90).rgb;
+  REQUIRE(scene.renderer().geometry().splinePoints() * 6 > 2 * StrandGeometry::kDrawChunk);
+  scene.renderer().setPacedDraws(true);
+  CHECK(scene.render(160, 90).rgb == whole);
+}
+
 TEST_CASE("Render: groom colours reach the screen", "[render][image]") {
   test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 1500));
   const test::Image bare = scene.render(320, 180, nullptr, false);
