@@ -201,7 +201,7 @@ HairRenderer::HairRenderer() : clock_(gl::queryCaps().timerQuery) {
   maxSamples_ = std::max(
       1, std::min({caps.maxSamples, caps.maxColorTextureSamples, caps.maxDepthTextureSamples}));
   clock_.setSynchronous(caps.software);
-  software_ = caps.software;
+  pacedDraws_ = caps.software;
   emptyVao_ = gl::VertexArray();
   frameUniforms_ =
       gl::Buffer(GLsizeiptr(sizeof(FrameUniforms)), nullptr, gl::BufferUsage::DynamicDraw);
@@ -211,7 +211,7 @@ HairRenderer::HairRenderer() : clock_(gl::queryCaps().timerQuery) {
 HairRenderer::~HairRenderer() = default;
 
 void HairRenderer::setPacedDraws(bool on) {
-  software_ = on;
+  pacedDraws_ = on;
   for (auto& [key, g] : geometries_) g->setPaced(on);
 }
 
@@ -254,7 +254,7 @@ StrandGeometry& HairRenderer::geometryFor(int subdivision, bool followers) {
   std::unique_ptr<StrandGeometry>& g = geometries_[{subdivision, followers}];
   if (!g) {
     g = std::make_unique<StrandGeometry>();
-    g->setPaced(software_);
+    g->setPaced(pacedDraws_);
   }
   // Full and interactive quality, and the guides standing in for their followers.
   if (geometries_.size() > 3)

@@ -97,7 +97,7 @@ class HairRenderer final : public Renderer {
   std::map<int, std::unique_ptr<Programs>> programs_;  // by sample count
   int maxSamples_ = 1;
   PassClock clock_;
-  bool software_ = false;  // a CPU rasterizer: long draws paced (StrandGeometry::setPaced)
+  bool pacedDraws_ = false;  // long draws paced (StrandGeometry::setPaced): a CPU rasterizer
 
   // The groom's topology per subdivision (full and interactive quality's).
   std::map<std::pair<int, bool>, std::unique_ptr<StrandGeometry>> geometries_;
