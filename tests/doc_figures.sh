@@ -76,10 +76,10 @@ if sorted(script_targets) != sorted(built_targets):
     problems.append(f"scripts/fuzz.sh runs {' '.join(script_targets)} but "
                     f"tests/fuzz/CMakeLists.txt builds {' '.join(built_targets)}")
 figures["fuzz.targets"] = len(built_targets)
-m = re.search(r"^\s*short\)\s*limit=\(-max_total_time=\"\$\{2:-(\d+)\}\"\)", fuzz_sh, re.M)
+m = re.search(r"^\s*seconds=\$\{2:-(\d+)\}", fuzz_sh, re.M)
 if not m:
     sys.exit("doc_figures: scripts/fuzz.sh: no default for the short run's seconds "
-             "(short) limit=(-max_total_time=\"${2:-N}\"))")
+             "(seconds=${2:-N})")
 figures["fuzz.short_seconds"] = int(m.group(1))
 
 MARK = re.compile(r"<!-- fig:([\w.-]+) -->(.*?)<!-- /fig -->")

@@ -230,7 +230,8 @@ TEST_CASE("GPU lists: each run of segments is taken longest list first",
   CHECK(reordered > order.size() / 2);
 }
 
-TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu][collision]") {
+TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force",
+          "[gpu][collision][one_path]") {
   // Hair fallen under gravity and wind: dense near the scalp, where most pairs are.
   auto gpu = test::gpuSolver();
   Config c;
@@ -250,7 +251,7 @@ TEST_CASE("GPU grid: pairs of a simulated head of hair match brute force", "[gpu
   CHECK(cmp.extra == 0);
 }
 
-TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision]") {
+TEST_CASE("GPU hair-hair collision keeps strands apart", "[gpu][collision][one_path]") {
   // The CPU test's scene (tests/cpu/cpu_solver_test.cpp): strands shaken through each other.
   // Penetrations are segment pairs closer than the hair radius, counted by brute force on
   // the read-back positions.

@@ -473,7 +473,7 @@ TEST_CASE("GPU: lists within the frame catch a strand that closes in faster than
 }
 
 TEST_CASE("GPU: strand contacts add no motion to a rest groom with gravity off",
-          "[gpu][contacts]") {
+          "[gpu][contacts][one_path]") {
   // The float solver itself drifts at rest (shape matching's rounding: measured 0.13 mm in
   // 1 s here with head collisions only; the CPU reference stays within 0.1 mm with strand
   // contacts on, tests/cpu/strand_contact_test.cpp): contacts must not add to it.

@@ -14,7 +14,7 @@ TEST_CASE("GPU torture map: sim.dt 1/240 and 1/24 s", "[gpu][torture][dt][long_r
   test::checkTortureAxis(test::gpuSolver, "gpu", "dt");
 }
 
-TEST_CASE("GPU torture map: 1 and 8 substeps", "[gpu][torture][substeps]") {
+TEST_CASE("GPU torture map: 1 and 8 substeps", "[gpu][torture][substeps][one_path]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "substeps");
 }
 
@@ -23,7 +23,7 @@ TEST_CASE("GPU torture map: the narrowest and widest stiffness windows",
   test::checkTortureAxis(test::gpuSolver, "gpu", "window");
 }
 
-TEST_CASE("GPU torture map: wind 0 and 50 m/s", "[gpu][torture][wind]") {
+TEST_CASE("GPU torture map: wind 0 and 50 m/s", "[gpu][torture][wind][one_path]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "wind");
 }
 

@@ -25,7 +25,7 @@ namespace csm::test {
 inline Preset presetConfig(const std::string& name, int strands) {
   Preset c = defaultPreset();
   PresetErrors errors;
-  const std::string path = std::string(CSM_SOURCE_DIR) + "/presets/" + name;
+  const std::string path = CSM_SOURCE_DIR "/presets/" + name;
   INFO(errors.text());
   REQUIRE(loadPreset(path, c, errors));
   c.scene.hairstyle.strands = strands;
@@ -64,7 +64,7 @@ class RenderScene {
     if (!sim_) {
       sim_ = std::make_unique<Simulation>(makeSolver("cpu", &error));
       INFO(error);
-      REQUIRE(sim_->load(preset.scene, std::string(CSM_SOURCE_DIR) + "/presets", &error));
+      REQUIRE(sim_->load(preset.scene, CSM_SOURCE_DIR "/presets", &error));
     }
     for (int f = 0; f < frames; ++f) sim_->stepFrame();
     renderer_ = HairRenderer::create(&error);
