@@ -517,11 +517,13 @@ TEST_CASE("GPU solver: the same preset gives bit-identical positions twice",
   Config c = preset.scene;
   c.hairstyle.strands = 800;
   const Groom g = grow(c);
+  // 15 frames (30 until the suite's time was cut): contacts from the first frames on, each a
+  // substep's sums to differ in if any were taken in no fixed order.
   auto run = [&] {
     auto gpu = test::gpuSolver();
     resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
     double t = 0.0;
-    for (int f = 0; f < 30; ++f, t += c.sim.dt)
+    for (int f = 0; f < 15; ++f, t += c.sim.dt)
       gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
     std::vector<glm::vec4> x, v;
     gpu->readPositions(x);
@@ -591,7 +593,7 @@ TEST_CASE("GPU solver: no NaN after 1,000 steps of the windy preset", "[gpu][sol
   PresetErrors errors;
   REQUIRE(loadPreset(std::string(CSM_SOURCE_DIR) + "/presets/long_windy.json", preset, errors));
   Config c = preset.scene;
-  c.hairstyle.strands = 600;
+  c.hairstyle.strands = 300;  // 600 until the suite's time was cut
   REQUIRE(c.collision.mode == CollisionMode::Strands);
   const Groom g = grow(c);
   auto gpu = test::gpuSolver();
