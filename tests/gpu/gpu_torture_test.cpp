@@ -32,6 +32,7 @@ TEST_CASE("GPU torture map: every head motion at 180 deg (cm) and 10 Hz",
   test::checkTortureAxis(test::gpuSolver, "gpu", "motion");
 }
 
-TEST_CASE("GPU torture map: the head turned 90 deg between two frames", "[gpu][torture][jump]") {
+TEST_CASE("GPU torture map: the head turned 90 deg between two frames",
+          "[gpu][torture][jump][one_path]") {
   test::checkTortureAxis(test::gpuSolver, "gpu", "jump");
 }
