@@ -279,7 +279,7 @@ TEST_CASE("GPU lists: sides and lists past one view's texels are read and writte
   CHECK(x == y);
 }
 
-TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][contacts]") {
+TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][contacts][one_path]") {
   // A contact starts or not by a hair's breadth, and float and double decide a grazing one
   // differently: from then on the two runs part (measured on the scene below: 1e-5 m after
   // 3 frames, 0.3 mm after 4, centimetres after 20, with the same contact counts; on the
