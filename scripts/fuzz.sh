@@ -2,10 +2,9 @@
 # Fuzzes the readers of everything csmhair takes from outside (tests/fuzz: presets, cyHair,
 # TressFX, OBJ heads, OBJ hair curves) with libFuzzer under ASan, LeakSanitizer and UBSan, in build-fuzz/
 # (clang; configured and built here when needed, clang and libFuzzer installed when missing).
-#   scripts/fuzz.sh short [SECONDS]          CI: every target SECONDS (30) of a core on a copy
-#                                            of its seeds, after every regression input once;
-#                                            all at once, for SECONDS x targets / cores of the
-#                                            clock (FUZZ_PARALLEL: how many cores to count)
+#   scripts/fuzz.sh short [SECONDS]          CI: every target SECONDS (30) on a copy of its
+#                                            seeds, after every regression input once; as many
+#                                            targets at once as there are cores (FUZZ_PARALLEL)
 #   scripts/fuzz.sh long [SECONDS|-runs=N]   every target for SECONDS or N runs (default
 #                                            -runs=10000000), one after the other, one process;
 #                                            the corpus grows in build-fuzz/corpus/<target>/
@@ -26,12 +25,11 @@ targets=(${FUZZ_TARGETS:-preset cyhair tressfx obj curves})
 
 case "$mode" in
   short)
-    # Every target at once (a target is one process, libFuzzer's default), each for SECONDS of
-    # a core: with more targets than cores, for SECONDS x targets / cores of the clock, which
-    # keeps every core busy to the end (one a core took whole rounds, the last one half idle).
-    seconds=${2:-30} cores=${FUZZ_PARALLEL:-$(nproc 2>/dev/null || echo 1)}
-    wall=$(( ${#targets[@]} > cores ? (seconds * ${#targets[@]} + cores - 1) / cores : seconds ))
-    limit=(-max_total_time="$wall") ;;
+    # One target a core at once (a target is one process, libFuzzer's default), each its own
+    # SECONDS. (All five at once on two cores, for 75 s of the clock, ran 10-27 % fewer
+    # executions a target than these three rounds of 30 s: five processes contend.)
+    seconds=${2:-30}
+    limit=(-max_total_time="$seconds") ;;
   long)
     arg=${2:--runs=10000000}
     if [[ "$arg" == -runs=* ]]; then limit=("$arg"); else limit=(-max_total_time="$arg"); fi ;;
@@ -64,15 +62,15 @@ cmake --build "$build" -j "${FUZZ_JOBS:-$(nproc 2>/dev/null || echo 2)}" \
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 # A finding: a crash, a sanitizer report (UBSan aborts: -fno-sanitize-recover=all), a leak, one
-# input over 10 s of a core (a hang) or over 2 GB. Targets that run at once share the cores, so
-# the clock's limit grows by targets / cores (a full preset's scene alone takes 5 s here).
+# input over 10 s of a core (a hang) or over 2 GB. The regression inputs of every target run at
+# once, sharing the cores, so their clock's limit grows by targets / cores (a full preset's
+# scene alone takes 5 s here).
 cores=${FUZZ_PARALLEL:-$(nproc 2>/dev/null || echo 1)}
-timeout=10
-[ "$mode" = long ] || [ ${#targets[@]} -le "$cores" ] ||
-  timeout=$(( (10 * ${#targets[@]} + cores - 1) / cores ))
+shared=10
+[ ${#targets[@]} -le "$cores" ] || shared=$(( (10 * ${#targets[@]} + cores - 1) / cores ))
 # (libFuzzer keeps an input over -report_slow_units, 10 s by default, as a "slow unit": not a
 # finding, and kept only past the limit.)
-common=(-rss_limit_mb=2048 -timeout="$timeout" -report_slow_units="$timeout" -malloc_limit_mb=2048)
+limits() { echo "-rss_limit_mb=2048 -timeout=$1 -report_slow_units=$1 -malloc_limit_mb=2048"; }
 status=0
 
 regressions() {
@@ -80,7 +78,8 @@ regressions() {
   compgen -G "$dir/*" >/dev/null || return 0
   local log="$build/logs/regressions_$t.log"
   rm -f "$build/logs/failed_$t"
-  if "$build/tests/fuzz/fuzz_$t" "${common[@]}" "$dir"/* >"$log" 2>&1; then
+  # shellcheck disable=SC2046
+  if "$build/tests/fuzz/fuzz_$t" $(limits "$shared") "$dir"/* >"$log" 2>&1; then
     echo "fuzz: $t: $(find "$dir" -type f | wc -l) regression inputs pass"
   else
     echo "fuzz: $t: a regression input fails again; see $log" >&2
@@ -100,7 +99,8 @@ run() {
   mkdir -p "$corpus"
   cp -n "$fuzz/corpus/$t"/* "$corpus"/
   [ "$t" = preset ] && cp -n "$root/presets"/*.json "$corpus"/
-  local opts=("${common[@]}" "${limit[@]}" -print_final_stats=1 -artifact_prefix="$findings/"
+  # shellcheck disable=SC2207
+  local opts=($(limits 10) "${limit[@]}" -print_final_stats=1 -artifact_prefix="$findings/"
               -max_len=$([ "$t" = preset ] && echo 8192 || echo 4096))
   [ -f "$fuzz/$t.dict" ] && opts+=(-dict="$fuzz/$t.dict")
   local before after start end rc=0
@@ -131,15 +131,17 @@ run() {
 
 mkdir -p "$build/logs"
 for t in "${targets[@]}"; do rm -f "$build/logs/row_$t" "$build/logs/found_$t"; done
-# Every target's regression inputs at once, then the fuzzing: the short run every target at
-# once (above), the long run one after the other. (Each target's inputs and then its run, all
-# at once, ended 5 s later: the preset's inputs, whole scenes, held its run back.)
+# Every target's regression inputs at once, then the fuzzing: the short run one target a core
+# at once, the long run one after the other.
 for t in "${targets[@]}"; do regressions "$t" & done
 wait
 for t in "${targets[@]}"; do [ ! -f "$build/logs/failed_$t" ] || status=1; done
 if [ "$mode" != regressions ]; then
+  parallel=1
+  [ "$mode" = short ] && parallel=$cores
   for t in "${targets[@]}"; do
-    if [ "$mode" = short ]; then run "$t" & else run "$t"; fi
+    run "$t" &
+    while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n || true; done
   done
   wait
   printf '%-8s %12s %8s %8s %6s %7s %12s %8s\n' target executions time_s exec/s cov ft corpus \
