@@ -70,7 +70,7 @@ shared=10
 [ ${#targets[@]} -le "$cores" ] || shared=$(( (10 * ${#targets[@]} + cores - 1) / cores ))
 # (libFuzzer keeps an input over -report_slow_units, 10 s by default, as a "slow unit": not a
 # finding, and kept only past the limit.)
-limits() { echo "-rss_limit_mb=2048 -timeout=$1 -report_slow_units=$1 -malloc_limit_mb=2048"; }
+memory=(-rss_limit_mb=2048 -malloc_limit_mb=2048)
 status=0
 
 regressions() {
@@ -78,8 +78,8 @@ regressions() {
   compgen -G "$dir/*" >/dev/null || return 0
   local log="$build/logs/regressions_$t.log"
   rm -f "$build/logs/failed_$t"
-  # shellcheck disable=SC2046
-  if "$build/tests/fuzz/fuzz_$t" $(limits "$shared") "$dir"/* >"$log" 2>&1; then
+  if "$build/tests/fuzz/fuzz_$t" "${memory[@]}" -timeout="$shared" -report_slow_units="$shared" \
+    "$dir"/* >"$log" 2>&1; then
     echo "fuzz: $t: $(find "$dir" -type f | wc -l) regression inputs pass"
   else
     echo "fuzz: $t: a regression input fails again; see $log" >&2
@@ -99,8 +99,7 @@ run() {
   mkdir -p "$corpus"
   cp -n "$fuzz/corpus/$t"/* "$corpus"/
   [ "$t" = preset ] && cp -n "$root/presets"/*.json "$corpus"/
-  # shellcheck disable=SC2207
-  local opts=($(limits 10) "${limit[@]}" -print_final_stats=1 -artifact_prefix="$findings/"
+  local opts=("${memory[@]}" -timeout=10 -report_slow_units=10 "${limit[@]}" -print_final_stats=1 -artifact_prefix="$findings/"
               -max_len=$([ "$t" = preset ] && echo 8192 || echo 4096))
   [ -f "$fuzz/$t.dict" ] && opts+=(-dict="$fuzz/$t.dict")
   local before after start end rc=0

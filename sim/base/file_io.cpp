@@ -1,5 +1,7 @@
 #include "sim/base/file_io.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -51,7 +53,9 @@ std::optional<std::vector<std::byte>> readFileBytes(const std::string& path, uin
 
 bool writeFileAtomically(const std::string& path, std::span<const std::byte> bytes,
                          std::string* error) {
-  const std::string tmp = path + ".tmp";
+  // A name of this process's own: two processes writing one path never share a half-written
+  // temporary file.
+  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
   auto fail = [&](const std::string& message) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);

@@ -38,8 +38,9 @@ std::string floatText(float value);
 std::optional<std::vector<std::byte>> readFileBytes(const std::string& path, uint64_t maxBytes,
                                                     std::string* error);
 
-// Writes `bytes` to path + ".tmp", then renames it over `path`, so a reader never sees a
-// half-written groom and a failed write leaves the old file intact.
+// Writes `bytes` to path + ".tmp<pid>", then renames it over `path`, so a reader never sees a
+// half-written file, a failed write leaves the old file intact, and processes writing one path
+// at once each write their own.
 bool writeFileAtomically(const std::string& path, std::span<const std::byte> bytes,
                          std::string* error);
 

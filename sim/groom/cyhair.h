@@ -50,7 +50,7 @@ GroomReadResult readCyHair(const std::string& path);
 // for a structurally broken groom, non-finite points or a strand of more than 65536 points.
 std::optional<std::vector<std::byte>> encodeCyHair(const Groom& groom, std::string* error);
 
-// encodeCyHair() written to path + ".tmp", then renamed over `path`.
+// encodeCyHair() written to path + ".tmp<pid>", then renamed over `path`.
 bool writeCyHair(const std::string& path, const Groom& groom, std::string* error = nullptr);
 
 }  // namespace csm::io

@@ -32,7 +32,7 @@ GroomReadResult readObjCurves(const std::string& path);
 // holds them; Blender's importer turns y up into its z up), then one `l i j` an edge, root to
 // tip, strand after strand. readObjCurves reads it back to the same strands.
 std::string encodeObjCurves(const Groom& groom);
-// encodeObjCurves() written whole or not at all (path + ".tmp", then renamed over `path`).
+// encodeObjCurves() written whole or not at all (path + ".tmp<pid>", then renamed over `path`).
 bool writeObjCurves(const std::string& path, const Groom& groom, std::string* error = nullptr);
 
 }  // namespace csm::io

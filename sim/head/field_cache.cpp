@@ -1,14 +1,12 @@
 #include "sim/head/field_cache.h"
 
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <span>
 #include <system_error>
 #include <vector>
@@ -99,7 +97,7 @@ bool read(const std::string& path, const Key& key, DistanceGrid& grid) {
   return true;
 }
 
-// Written under a name of this process's own, then renamed over `path`.
+// Header and nodes in one file, written whole or not at all (io::detail::writeFileAtomically).
 bool write(const std::string& path, const Key& key, const DistanceGrid& grid) {
   Header h{};
   std::memcpy(h.magic, kMagic, sizeof(kMagic));
@@ -111,27 +109,12 @@ bool write(const std::string& path, const Key& key, const DistanceGrid& grid) {
   }
   h.cell = grid.cell;
   h.nodes = grid.nodes.size();
-  const std::span<const std::byte> payload(reinterpret_cast<const std::byte*>(grid.nodes.data()),
-                                           grid.nodes.size() * sizeof(glm::vec4));
-  h.checksum = checksum(payload);
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-  bool ok = false;
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (out) {
-      out.write(reinterpret_cast<const char*>(&h), sizeof(h));
-      out.write(reinterpret_cast<const char*>(payload.data()), std::streamsize(payload.size()));
-      out.flush();
-      ok = bool(out);
-    }
-  }
-  std::error_code ec;
-  if (ok) fs::rename(tmp, path, ec);
-  if (!ok || ec) {
-    fs::remove(tmp, ec);
-    return false;
-  }
-  return true;
+  const size_t payload = grid.nodes.size() * sizeof(glm::vec4);
+  std::vector<std::byte> bytes(sizeof(Header) + payload);
+  std::memcpy(bytes.data() + sizeof(Header), grid.nodes.data(), payload);
+  h.checksum = checksum(std::span<const std::byte>(bytes).subspan(sizeof(Header)));
+  std::memcpy(bytes.data(), &h, sizeof(Header));
+  return io::detail::writeFileAtomically(path, bytes, nullptr);
 }
 
 // Keeps the newest kKeepPerName entries named `<name>-*.field`.

@@ -62,7 +62,7 @@ TEST_CASE("Groom files: write, read back through the dispatcher", "[io][groom_fi
   const Groom groom = sampleGroom();
   std::string error;
   REQUIRE(csm::io::writeGroom(path, groom, &error));
-  CHECK_FALSE(fs::exists(path + ".tmp"));
+  CHECK_FALSE(fs::exists(path + ".tmp" + std::to_string(::getpid())));
 
   const auto result = csm::io::readGroom(path);
   INFO(result.error);
