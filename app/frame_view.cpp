@@ -19,4 +19,10 @@ FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned po
   return v;
 }
 
+unsigned positionsToDraw(const Simulation& sim, PositionSource& upload) {
+  if (const unsigned own = sim.positionBuffer(); own != 0) return own;
+  sim.readPositions(upload.scratch());
+  return upload.upload(upload.scratch());
+}
+
 }  // namespace csm

@@ -2,6 +2,7 @@
 // (render/renderer.h) from the Simulation, so that render/ knows frames, not simulations.
 #pragma once
 
+#include "render/position_source.h"
 #include "render/renderer.h"
 #include "sim/run/simulation.h"
 
@@ -11,5 +12,9 @@ namespace csm {
 // `framebuffer` at width x height.
 FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
                       int width, int height, unsigned framebuffer = 0);
+
+// The SSBO with the simulation's current positions: the solver's own, or (a solver that keeps
+// none on the GPU) its positions read back and uploaded into `upload`'s buffer.
+unsigned positionsToDraw(const Simulation& sim, PositionSource& upload);
 
 }  // namespace csm

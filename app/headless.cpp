@@ -14,13 +14,13 @@
 #include "app/sim_frame.h"
 #include "gl/caps.h"
 #include "gl/context.h"
+#include "gl/pass_profile.h"
 #include "render/hair_renderer.h"
 #include "render/position_source.h"
 #include "sim/core/config.h"
 #include "shaders/sim/shared_constants.glsl"
 #include "sim/groom/groom_file.h"
 #include "sim/groom/hair_sequence.h"
-#include "sim/run/frame_driver.h"
 #include "sim/run/make_solver.h"
 #include "sim/run/simulation.h"
 #include "sim/solver/stiffness.h"
@@ -163,7 +163,7 @@ class HairExport {
   // groom simulated through guides: the followers made on the CPU), or with --export-guides
   // the simulated ones alone.
   const Groom& strands(Simulation& sim) {
-    sim.solver().readPositions(x_);
+    sim.readPositions(x_);
     if (options_.exportGuides || !sim.followers()) return sim.groom();
     std::vector<glm::vec4> guides;
     std::swap(guides, x_);
@@ -208,13 +208,12 @@ std::unique_ptr<gl::HeadlessContext> openContext(const Options& options, bool re
 std::unique_ptr<Simulation> loadSimulation(const Options& options, const SceneSetup& scene,
                                            int* status) {
   std::string error;
-  std::unique_ptr<Solver> solver = makeSolver(options.solver, &error);
-  if (!solver) {
+  std::unique_ptr<Simulation> sim = makeSimulation(options.solver, &error);
+  if (!sim) {
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
     *status = 1;
     return nullptr;
   }
-  auto sim = std::make_unique<Simulation>(std::move(solver));
   if (!options.quiet) sim->setImportProgress(ImportProgressPrinter());
   if (!sim->load(scene.preset.scene, scene.baseDir, &error, scene.head)) {
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
@@ -227,15 +226,14 @@ std::unique_ptr<Simulation> loadSimulation(const Options& options, const SceneSe
 // What runs, on stderr: the counts and the solver (not with --quiet), and, even with --quiet,
 // what the import changed of the file and hair softer than asked.
 void sayScene(const Options& options, const SceneSetup& scene, const Simulation& sim, long frames) {
-  const Solver& solver = sim.solver();
-  const StiffnessInfo stiffness = solver.stiffness();
+  const StiffnessInfo stiffness = sim.diagnostics().stiffness();
+  const std::string variant = sim.diagnostics().variant();
   if (!options.quiet)
-    std::fprintf(stderr,
-                 "csmhair: %s: %zu strands, %zu particles, solver %s%s%s%s, %ld frames; %s\n",
-                 scene.source.c_str(), solver.strandCount(), solver.particleCount(),
-                 std::string(solver.name()).c_str(), solver.variant().empty() ? "" : " (",
-                 solver.variant().c_str(), solver.variant().empty() ? "" : ")", frames,
-                 stiffnessText(stiffness).c_str());
+    std::fprintf(
+        stderr, "csmhair: %s: %zu strands, %zu particles, solver %s%s%s%s, %ld frames; %s\n",
+        scene.source.c_str(), sim.counts().strands, sim.counts().particles,
+        std::string(sim.solverName()).c_str(), variant.empty() ? "" : " (", variant.c_str(),
+        variant.empty() ? "" : ")", frames, stiffnessText(stiffness).c_str());
   if (const std::string groom = groomReportText(sim.groomReport()); !groom.empty())
     std::fprintf(stderr, "csmhair: warning: %s\n", groom.c_str());
   if (const std::string warning = stiffnessWarning(stiffness); !warning.empty())
@@ -244,12 +242,12 @@ void sayScene(const Options& options, const SceneSetup& scene, const Simulation&
 
 // Nothing is read back per frame but the samples: every frame's with --metrics, otherwise one
 // in ten, for the NaN check; a frame written out (`writes`) waits for its own first.
-DriverOptions drivingOptions(bool metrics, bool writes) {
-  DriverOptions driving;
-  driving.sampleEvery = metrics ? 1 : 10;
-  driving.waitForSamples = writes;
-  driving.timeToCompletion = metrics;
-  return driving;
+Sampling samplingOf(bool metrics, bool writes) {
+  Sampling sampling;
+  sampling.every = metrics ? 1 : 10;
+  sampling.wait = writes;
+  sampling.timeToCompletion = metrics;
+  return sampling;
 }
 
 // --metrics: every frame's wall and stage times, every frame's sample, the drawn frames'
@@ -282,7 +280,7 @@ class MetricsOutput {
     if (const FollowerBinding* followers = sim.followers()) {
       // The last frame's followers, made on the CPU as the exports make them.
       std::vector<glm::vec4> guides, drawn;
-      sim.solver().readPositions(guides);
+      sim.readPositions(guides);
       const FollowerStats stats = sim.drawnPositions(guides, drawn);
       meta["followers"] = {{"guides", followers->guideCount()},
                            {"drawn_strands", followers->drawn.strandCount()},
@@ -331,7 +329,7 @@ class FrameCapture {
   int height() const { return target_.height(); }
   // Draws the simulation's current frame; with --metrics, waits for it and adds its times.
   void draw(Simulation& sim, const ViewConfig& view, MetricsOutput& metrics) {
-    const unsigned buffer = positions_.update(sim.solver());
+    const unsigned buffer = positionsToDraw(sim, positions_);
     const auto start = Clock::now();
     renderer_->render(
         frameViewOf(sim, view, buffer, target_.width(), target_.height(), target_.framebuffer()));
@@ -364,16 +362,15 @@ void sayRendering(const Options& options, const SceneSetup& scene, const Simulat
                   const gl::HeadlessContext& context) {
   if (options.quiet) return;
   std::fprintf(stderr, "csmhair: rendering %zu strands (%zu simulated) at %dx%d on %s%s%s\n",
-               drawnStrandCount(sim.drawnStrands(), scene.preset.view.render),
-               sim.solver().strandCount(), options.width, options.height,
-               context.renderer().c_str(), options.outDir.empty() ? "" : " into ",
-               options.outDir.c_str());
+               drawnStrandCount(sim.drawnStrands(), scene.preset.view.render), sim.counts().strands,
+               options.width, options.height, context.renderer().c_str(),
+               options.outDir.empty() ? "" : " into ", options.outDir.c_str());
 }
 
-// CSM_PASS_PROFILE=1: the GPU solver's passes over the run's `frames` frames, each timed
-// between two waits (sim/run/make_solver.h).
+// CSM_PASS_PROFILE=1: the compute passes of the GPU solver and of the renderer over the run's
+// `frames` frames, each timed between two waits (gl/pass_profile.h).
 void sayPassProfile(long frames) {
-  const std::string passes = passProfileTable(frames);
+  const std::string passes = gl::pass_profile::table(frames);
   if (!passes.empty())
     std::fprintf(stderr, "csmhair: CSM_PASS_PROFILE, %ld frames, each pass between two waits:\n%s",
                  frames, passes.c_str());
@@ -384,16 +381,16 @@ void sayPassProfile(long frames) {
 class Progress {
  public:
   Progress(const Options& options, long frames) : quiet_(options.quiet), frames_(frames) {}
-  void frame(long f, long simulated, const FrameDriver& driver, const FrameCapture* capture,
+  void frame(long f, long simulated, const Simulation& sim, const FrameCapture* capture,
              bool metrics) {
     const auto now = Clock::now();
     if (quiet_ || (now - lastReport_ <= std::chrono::seconds(2) && f + 1 != frames_)) return;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame", f + 1, frames_,
                  1000.0 * elapsed / double(simulated));
-    if (driver.latestSample())
-      std::fprintf(stderr, "  max strain %.4f (frame %ld)",
-                   driver.latestSample()->accuracy.maxStrain, driver.latestSample()->frame);
+    if (sim.latestSample())
+      std::fprintf(stderr, "  max strain %.4f (frame %ld)", sim.latestSample()->accuracy.maxStrain,
+                   sim.latestSample()->frame);
     std::fprintf(stderr, "  %.0f s elapsed", elapsed);
     if (capture && metrics)
       std::fprintf(stderr, "  render %.1f ms  %ld written", capture->lastMs(),
@@ -473,19 +470,19 @@ class RunWarnings {
   ContactStats seen_;
 };
 
-// The samples the driver has taken, to the warnings and the metrics.
-void takeSamples(FrameDriver& driver, RunWarnings& warnings, MetricsOutput& metrics) {
-  for (const FrameSample& sample : driver.takeSamples()) {
+// The samples the simulation has taken, to the warnings and the metrics.
+void takeSamples(Simulation& sim, RunWarnings& warnings, MetricsOutput& metrics) {
+  for (const FrameSample& sample : sim.takeSamples()) {
     warnings.add(sample);
     metrics.addSample(sample);
   }
 }
 
-void sayNan(const FrameDriver& driver) {
+void sayNan(const Simulation& sim) {
   std::fprintf(stderr,
                "csmhair: error: the simulation produced NaN at frame %ld (%llu particles); "
                "stopping\n",
-               driver.nanFrame(), (unsigned long long)driver.nanParticles());
+               sim.nanFrame(), (unsigned long long)sim.nanParticles());
 }
 
 }  // namespace
@@ -538,8 +535,8 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   const bool writes = render && (images.on() || video.on());
   // The metrics measure hair-hair contacts in every mode (with hair-hair off, a candidate
   // search per sample outside the frame's timing), so modes compare on the same measures.
-  sim->solver().setContactMeasures(metrics.on());
-  FrameDriver driver(*sim, drivingOptions(metrics.on(), writes));
+  sim->diagnostics().setContactMeasures(metrics.on());
+  sim->setSampling(samplingOf(metrics.on(), writes));
   Progress progress(options, frames);
   sayScene(options, scene, *sim, frames);
 
@@ -552,15 +549,15 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
 
   RunWarnings warnings;
   bool nan = false;
-  clearPassProfile();  // CSM_PASS_PROFILE: the frames only, not the set-up
+  gl::pass_profile::clear();  // CSM_PASS_PROFILE: the frames only, not the set-up
   long simulated = 0;
   for (long f = 0; f < frames; ++f) {
-    driver.step();
+    sim->stepFrame();
     ++simulated;
-    metrics.addFrame(driver.lastStepMs(), sim->solver().stageTimes());
-    takeSamples(driver, warnings, metrics);
-    if (driver.stopped()) {
-      sayNan(driver);
+    metrics.addFrame(sim->lastStepMs(), sim->diagnostics().stageTimes());
+    takeSamples(*sim, warnings, metrics);
+    if (sim->stopped()) {
+      sayNan(*sim);
       nan = true;
       break;
     }
@@ -576,14 +573,14 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
         if (video.on() && !video.write(rgb)) return 1;
       }
     }
-    progress.frame(f, simulated, driver, capture.get(), metrics.on());
+    progress.frame(f, simulated, *sim, capture.get(), metrics.on());
   }
   // The samples still in flight: the last frames' NaN check and measures.
   if (!nan) {
-    driver.drain();
-    takeSamples(driver, warnings, metrics);
-    if (driver.stopped()) {
-      sayNan(driver);
+    sim->drainSamples();
+    takeSamples(*sim, warnings, metrics);
+    if (sim->stopped()) {
+      sayNan(*sim);
       nan = true;
     }
   }

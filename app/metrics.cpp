@@ -112,7 +112,7 @@ nlohmann::json MetricsLog::toJson(nlohmann::json meta) const {
       {"nan_count", worst_.nanCount},
   };
   // Hair-hair measures only where a sample measured them (a mode without hair-hair measures
-  // them only when asked: Solver::setContactMeasures), never zeros for "not measured".
+  // them only when asked: SolverDiagnostics::setContactMeasures), never zeros for "not measured".
   if (contactSamples_ > 0) {
     // Each sample's crossings are those of its frame (against the frame before): per second
     // over the sampled frames.

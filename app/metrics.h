@@ -61,7 +61,7 @@ struct RunDescription {
   std::size_t strands = 0, particles = 0;  // simulated
   std::size_t groomStrands = 0;            // drawn: followers included, children not
   std::string solver;
-  std::string solverVariant;  // Solver::variant(): the GPU solver's kernel path
+  std::string solverVariant;  // the GPU solver's kernel path (SolverDiagnostics::variant)
   GroomReport groom;
   // Where the solver ran: the GL renderer string for the GPU solver (e.g. "llvmpipe (LLVM
   // 15.0.6, 256 bits)" or "NVIDIA H100 80GB HBM3/PCIe/SSE2"), "cpu" otherwise.

@@ -350,9 +350,9 @@ void drawBanners(const PanelView& view, PanelRequests& ask, const PanelLayout& l
     }
     ImGui::End();
   }
-  if (!view.scene.hasRenderer())
+  if (!view.picture.hasRenderer)
     banner("##renderer", "The renderer did not start, so the hair is simulated but not drawn:\n" +
-                             view.scene.rendererError());
+                             view.picture.rendererError);
 
   // The latest message, for a few seconds at the bottom: a refused edit or a saved file
   // should not need the Messages section opened to be seen.
@@ -398,7 +398,7 @@ void drawBanners(const PanelView& view, PanelRequests& ask, const PanelLayout& l
     ImGui::End();
     ImGui::PopStyleColor(2);
   }
-  if (view.scene.shaderReloadFailed()) {
+  if (view.picture.shaderReloadFailed) {
     ImGui::SetNextWindowSize(ImVec2(640.0f, 300.0f), ImGuiCond_Appearing);
     if (ImGui::Begin("Shader reload failed: the old shaders are still in use")) {
       if (ImGui::Button("Dismiss")) ask.dismissShaderLog();
@@ -406,7 +406,7 @@ void drawBanners(const PanelView& view, PanelRequests& ask, const PanelLayout& l
       if (ImGui::Button("Try again (F5)")) ask.reloadShaders();
       ImGui::BeginChild("log", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
       ImGui::PushStyleColor(ImGuiCol_Text, kRed);
-      ImGui::TextUnformatted(view.scene.shaderLog().c_str());
+      ImGui::TextUnformatted(view.picture.shaderLog.c_str());
       ImGui::PopStyleColor();
       ImGui::EndChild();
     }

@@ -28,7 +28,7 @@ struct PanelView {
   const std::vector<ViewerMessage>& messages;    // oldest first
   const std::vector<std::string>& presetErrors;  // the preset problems window's lines
   const std::string& presetErrorsNote;           // and its title
-  const SceneView& scene;                        // the renderer's state, quality, shader log
+  const PictureStatus& picture;                  // the renderer's state, quality, shader log
   SimThread::ImportStatus import;                // a long groom import's stage and share done
   const std::string& renderer;                   // the window's GL renderer
   bool loading = false;                          // a preset is being opened

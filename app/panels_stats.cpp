@@ -84,9 +84,9 @@ void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state
               double(f.timeline.budget) / (1 << 20),
               f.timeline.first >= 0 ? f.timeline.last - f.timeline.first + 1 : 0L,
               f.timeline.shown >= 0 ? ", one shown" : "");
-  if (view.scene.lastQuality() == DrawQuality::Interactive)
+  if (view.picture.lastQuality == DrawQuality::Interactive)
     ImGui::TextDisabled("picture: interactive quality, %.0f %% of children and followers",
-                        100.0 * double(view.scene.interactiveExtra()));
+                        100.0 * double(view.picture.interactiveExtra));
   else
     ImGui::TextDisabled("picture: full quality");
   if (ImGui::IsItemHovered())

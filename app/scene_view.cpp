@@ -19,7 +19,9 @@ constexpr double kStillSeconds = 0.3;
 }  // namespace
 
 SceneView::SceneView() {
-  renderer_ = HairRenderer::create(&rendererError_);
+  renderer_ = HairRenderer::create(&status_.rendererError);
+  status_.hasRenderer = renderer_ != nullptr;
+  status_.interactiveExtra = budget_.extra();
   // Pass timings by glFinish would stall every frame of the window.
   if (renderer_) renderer_->setSynchronousTiming(false);
 }
@@ -85,13 +87,14 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
         double ms = 0.0;
         for (const StageTime& s : out.stages) ms += s.ms;
         budget_.measured(ms, double(look.render.interactiveBudgetMs));
+        status_.interactiveExtra = budget_.extra();
       }
     } else {
       fbo_.clearColor(0, std::array<float, 4>{look.render.background.x, look.render.background.y,
                                               look.render.background.z, 1.0f});
     }
     drawn_ = key;
-    lastQuality_ = quality;
+    status_.lastQuality = quality;
     ++scenesDrawn_;
   }
   fbo_.blitTo(0, {0, 0, size.width, size.height}, {0, 0, size.width, size.height});
@@ -101,7 +104,7 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
 
 bool SceneView::reloadShaders(std::string* message) {
   if (!renderer_) {
-    *message = "no renderer to reload: " + rendererError_;
+    *message = "no renderer to reload: " + status_.rendererError;
     return false;
   }
   // From the source tree, unless a folder was chosen (CSM_SHADER_DIR, setShaderDirectory),
@@ -115,14 +118,14 @@ bool SceneView::reloadShaders(std::string* message) {
   std::string buildLog;
   changed();
   if (renderer_->reloadShaders(&buildLog)) {
-    shaderReloadFailed_ = false;
-    shaderLog_ = buildLog;
+    status_.shaderReloadFailed = false;
+    status_.shaderLog = buildLog;
     *message = "shaders reloaded from " + gl::shaderDirectory().string() +
                (buildLog.empty() ? "" : " (with warnings)");
     return true;
   }
-  shaderReloadFailed_ = true;
-  shaderLog_ = buildLog;
+  status_.shaderReloadFailed = true;
+  status_.shaderLog = buildLog;
   *message = "shader reload failed; the old shaders are still in use";
   return false;
 }

@@ -24,6 +24,20 @@ class HairRenderer;
 // How the last scene picture was drawn.
 enum class DrawQuality { Full, Interactive };
 
+// What the panels show of the picture (PanelView): whether there is a renderer and why not,
+// the quality and share of the last picture, the shader log of the last reload. Plain values, so
+// that the panels run without a window or a renderer (tests/app/panels_test.cpp).
+struct PictureStatus {
+  bool hasRenderer = false;
+  std::string rendererError;
+  DrawQuality lastQuality = DrawQuality::Full;
+  // The share of children and followers interactive quality draws now
+  // (render.interactive_budget_ms).
+  float interactiveExtra = 1.0f;
+  std::string shaderLog;
+  bool shaderReloadFailed = false;
+};
+
 class SceneView {
  public:
   // Starts the renderer; without one (rendererError() says why) the hair is simulated, not drawn.
@@ -54,18 +68,15 @@ class SceneView {
   // stay when that fails. *message says which and where.
   bool reloadShaders(std::string* message);
 
-  bool hasRenderer() const { return renderer_ != nullptr; }
-  const std::string& rendererError() const { return rendererError_; }
+  const PictureStatus& status() const { return status_; }
+  bool hasRenderer() const { return status_.hasRenderer; }
   long scenesDrawn() const { return scenesDrawn_; }  // pictures drawn (not shown again)
-  DrawQuality lastQuality() const { return lastQuality_; }
-  // The share of children and followers interactive quality draws now
-  // (render.interactive_budget_ms).
-  float interactiveExtra() const { return budget_.extra(); }
-  const std::string& shaderLog() const { return shaderLog_; }
-  bool shaderReloadFailed() const { return shaderReloadFailed_; }
+  DrawQuality lastQuality() const { return status_.lastQuality; }
+  const std::string& shaderLog() const { return status_.shaderLog; }
+  bool shaderReloadFailed() const { return status_.shaderReloadFailed; }
   void dismissShaderLog() {
-    shaderLog_.clear();
-    shaderReloadFailed_ = false;
+    status_.shaderLog.clear();
+    status_.shaderReloadFailed = false;
   }
 
  private:
@@ -79,7 +90,7 @@ class SceneView {
   unsigned positions(const SimFrame& frame);
 
   std::unique_ptr<HairRenderer> renderer_;
-  std::string rendererError_;
+  PictureStatus status_;
   gl::Buffer uploaded_{gl::NoCreate};  // a CPU solver's positions
   long uploadedSerial_ = -1;
   gl::Texture color_{gl::NoCreate};
@@ -87,11 +98,8 @@ class SceneView {
   Key drawn_;
   long version_ = 0;
   std::chrono::steady_clock::time_point lastMotion_{};
-  DrawQuality lastQuality_ = DrawQuality::Full;
   InteractiveBudget budget_;
   long scenesDrawn_ = 0;
-  std::string shaderLog_;
-  bool shaderReloadFailed_ = false;
 };
 
 }  // namespace csm

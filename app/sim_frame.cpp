@@ -1,6 +1,5 @@
 #include "app/sim_frame.h"
 
-#include "sim/core/solver.h"
 #include "sim/run/simulation.h"
 
 namespace csm {
@@ -11,17 +10,17 @@ std::string solverLabel(const SimFrame& frame) {
 }
 
 void takeFigures(const Simulation& sim, SimFrame& frame) {
-  const Solver& solver = sim.solver();
-  frame.solver = std::string(solver.name());
-  frame.solverVariant = solver.variant();
+  const SolverDiagnostics& diagnostics = sim.diagnostics();
+  frame.solver = std::string(sim.solverName());
+  frame.solverVariant = diagnostics.variant();
   frame.config = sim.config();
   frame.groomReport = sim.groomReport();
-  frame.strands = solver.strandCount();
-  frame.particles = solver.particleCount();
+  frame.strands = sim.counts().strands;
+  frame.particles = sim.counts().particles;
   frame.drawnStrands = sim.drawnStrands();
   frame.carriedFrames = sim.carriedFrames();
-  frame.stiffness = solver.stiffness();
-  frame.memory = solver.memoryUse();
+  frame.stiffness = diagnostics.stiffness();
+  frame.memory = diagnostics.memoryUse();
 }
 
 }  // namespace csm

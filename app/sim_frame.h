@@ -45,9 +45,9 @@ struct SimFrame {
   std::size_t drawnStrands = 0;            // drawn: the followers' groom's, else `strands`
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)
   StiffnessInfo stiffness;
-  MemoryUse memory;           // the solver's buffers by kind (Solver::memoryUse)
+  MemoryUse memory;           // the solver's buffers by kind (SolverDiagnostics::memoryUse)
   std::string solver;         // the solver's name
-  std::string solverVariant;  // Solver::variant(): the GPU solver's kernel path
+  std::string solverVariant;  // the GPU solver's kernel path (SolverDiagnostics::variant)
   // The simulation's own figures: the last step's wall time (to completion) and stages, the
   // latest sample (a few frames old) and one max strain per sample.
   double stepMs = 0.0;

@@ -1,7 +1,6 @@
 #include "app/sim_thread.h"
 
 #include "app/import_progress.h"
-#include "sim/run/frame_driver.h"
 #include "sim/run/simulation.h"
 
 namespace csm {
@@ -48,23 +47,21 @@ SimThread::~SimThread() {
 
 // --- The thread ----------------------------------------------------------------------------
 
-bool SimThread::makeSolver(std::string* error, Started* started) {
+bool SimThread::makeSimulation(std::string* error, Started* started) {
   std::string why;
-  std::unique_ptr<Solver> solver;
   if (options_.solver != "gpu" || gl_)
-    solver = options_.makeSolver(options_.solver, &why);
+    sim_ = csm::makeSimulation(options_.solver, &why, options_.makeSolver);
   else
     why = "no GL context for the simulation thread";
-  if (!solver && options_.solver == "gpu") {
+  if (!sim_ && options_.solver == "gpu") {
     started->warning = "The GPU solver did not start (" + why + "); using the CPU solver.";
-    solver = options_.makeSolver("cpu", &why);
+    sim_ = csm::makeSimulation("cpu", &why, options_.makeSolver);
   }
-  if (!solver) {
+  if (!sim_) {
     *error = "no solver: " + why;
     return false;
   }
-  started->solver = std::string(solver->name());
-  sim_ = std::make_unique<Simulation>(std::move(solver));
+  started->solver = std::string(sim_->solverName());
   sim_->setImportProgress(
       [this, say = ImportProgressPrinter()](std::string_view stage, double done) mutable {
         if (options_.sayImportProgress) say(stage, done);
@@ -74,20 +71,20 @@ bool SimThread::makeSolver(std::string* error, Started* started) {
         }
         if (options_.wake) options_.wake();
       });
-  DriverOptions driving;
+  Sampling sampling;
   // Every frame sampled: a few numbers per work group, fenced; the Stats panel's strain and
   // the NaN check follow each frame a few frames late.
-  driving.sampleEvery = 1;
+  sampling.every = 1;
   // This thread may wait for its own GPU work: the wall times are then honest, and the
   // commands it queues stay one frame deep.
-  driving.timeToCompletion = true;
-  driver_ = std::make_unique<FrameDriver>(*sim_, driving);
+  sampling.timeToCompletion = true;
+  sim_->setSampling(sampling);
   return true;
 }
 
 void SimThread::run(std::string* startError, Started* started) {
   gl_ = options_.context && options_.context->makeCurrent();
-  const bool ok = makeSolver(startError, started);
+  const bool ok = makeSimulation(startError, started);
   if (ok) publish(0);  // the empty frame: start() returns
   if (!ok) {
     std::lock_guard lock(mutex_);
@@ -139,7 +136,6 @@ void SimThread::run(std::string* startError, Started* started) {
     running_ = false;
     published_.notify_all();
   }
-  driver_.reset();
   sim_.reset();
   if (gl_) options_.context->releaseCurrent();
 }
@@ -184,7 +180,6 @@ void SimThread::apply(Pending& p, long ticket) {
   steps_ += p.steps;
   const bool restarted = sim_->generation() != generation || (p.reset && loaded_) || opened;
   if (restarted) {
-    driver_->restart();
     maxStrain_.clear();
     timeline_.restarted(*sim_);
   }
@@ -205,7 +200,6 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
   if (p.timeline.resume && loaded_) {
     std::string message;
     if (timeline_.resume(*sim_, *p.timeline.resume, &message)) {
-      driver_->restart();
       maxStrain_.clear();
       paused_ = true;
       resumed = true;
@@ -229,33 +223,33 @@ bool SimThread::applyTimeline(const Pending& p, long ticket) {
 }
 
 bool SimThread::canStep() const {
-  if (!loaded_ || driver_->stopped() || timeline_.showing()) return false;
+  if (!loaded_ || sim_->stopped() || timeline_.showing()) return false;
   if (options_.frameLimit >= 0 && sim_->frame() >= options_.frameLimit) return false;
   return !paused_ || steps_ > 0;
 }
 
 void SimThread::stepFrame() {
   if (paused_ && steps_ > 0) --steps_;
-  driver_->step();
+  sim_->stepFrame();
   if (timeline_.stepped(*sim_)) paused_ = true;  // a bake's last frame
-  std::vector<FrameSample> samples = driver_->takeSamples();
+  std::vector<FrameSample> samples = sim_->takeSamples();
   for (const FrameSample& s : samples) maxStrain_.push(float(s.accuracy.maxStrain));
   if (options_.recordMetrics) {
     std::lock_guard lock(mutex_);
-    metricsLog_.addFrame(driver_->lastStepMs(), sim_->solver().stageTimes());
+    metricsLog_.addFrame(sim_->lastStepMs(), sim_->diagnostics().stageTimes());
     for (const FrameSample& s : samples) metricsLog_.addSample(s);
   }
   // canStep() held before this step, so a stop now is new.
-  if (driver_->stopped()) {
+  if (sim_->stopped()) {
     event(SimEvent::Kind::Nan, applied_,
-          "the simulation produced NaN at frame " + std::to_string(driver_->nanFrame()) + " (" +
-              std::to_string(driver_->nanParticles()) + " particles)");
+          "the simulation produced NaN at frame " + std::to_string(sim_->nanFrame()) + " (" +
+              std::to_string(sim_->nanParticles()) + " particles)");
   }
 }
 
 std::string SimThread::counts() const {
-  return std::to_string(sim_->solver().strandCount()) + " strands, " +
-         std::to_string(sim_->solver().particleCount()) + " particles";
+  return std::to_string(sim_->counts().strands) + " strands, " +
+         std::to_string(sim_->counts().particles) + " particles";
 }
 
 void SimThread::event(SimEvent::Kind kind, long ticket, std::string text) {
@@ -267,12 +261,11 @@ void SimThread::publish(long ticket) {
   auto f = std::make_shared<SimFrame>();
   f->ticket = ticket;
   f->loaded = loaded_;
-  Solver& solver = sim_->solver();
   // takeFigures names a loaded scene's solver with its other figures; before a scene loads the
   // panels name it all the same.
   if (!loaded_) {
-    f->solver = std::string(solver.name());
-    f->solverVariant = solver.variant();
+    f->solver = std::string(sim_->solverName());
+    f->solverVariant = sim_->diagnostics().variant();
   }
   if (loaded_) {
     takeFigures(*sim_, *f);
@@ -283,16 +276,16 @@ void SimThread::publish(long ticket) {
     f->followers = sim_->sharedFollowers();
     f->head = sim_->sharedHead();
     f->headPose = sim_->headPose();
-    f->stepMs = driver_->lastStepMs();
-    f->stages = solver.stageTimes();
-    f->sample = driver_->latestSample();
+    f->stepMs = sim_->lastStepMs();
+    f->stages = sim_->diagnostics().stageTimes();
+    f->sample = sim_->latestSample();
     f->maxStrain = maxStrain_;
-    f->nanFrame = driver_->nanFrame();
-    f->nanParticles = driver_->nanParticles();
+    f->nanFrame = sim_->nanFrame();
+    f->nanParticles = sim_->nanParticles();
     f->idle = !canStep();
     f->timeline = timeline_.status(*sim_);
     const FrameRecording::Shown* shown = timeline_.shownFrame();
-    const unsigned buffer = gl_ ? solver.positionBuffer() : 0;
+    const unsigned buffer = gl_ ? sim_->positionBuffer() : 0;
     if (shown) {
       // A recorded frame on show: its positions, time and head instead of the live ones.
       f->frame = shown->frame;
@@ -307,7 +300,7 @@ void SimThread::publish(long ticket) {
       f->positionBuffer = buffers_.buffer(f->slot);
     } else {
       auto host = std::make_shared<std::vector<glm::vec4>>();
-      solver.readPositions(*host);
+      sim_->readPositions(*host);
       f->hostPositions = std::move(host);
     }
   }

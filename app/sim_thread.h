@@ -1,7 +1,7 @@
 // The window's simulation on a thread of its own, with a GL context shared with the window's:
 // the UI draws at display rate whatever a frame of simulation costs, and shows the latest
-// frame the simulation finished. The thread steps a FrameDriver, the loop headless runs
-// step, so the window samples the same measures under the same NaN policy.
+// frame the simulation finished. The thread steps its Simulation's frames as headless runs step
+// theirs, so the window samples the same measures under the same NaN policy.
 //
 // Commands from the UI (open, set the config, reset, pause, ...) are applied between frames
 // in the order they were posted. Each returns a ticket, and every published frame carries
@@ -39,7 +39,6 @@
 
 namespace csm {
 
-class FrameDriver;
 class Simulation;
 
 // What the thread has to say, in order; the UI shows them and keeps its own state in step.
@@ -182,7 +181,7 @@ class SimThread {
 
   explicit SimThread(Options options);
   void run(std::string* startError, Started* started);
-  bool makeSolver(std::string* error, Started* started);
+  bool makeSimulation(std::string* error, Started* started);
   long post(const std::function<void(Pending&, long ticket)>& edit);
   void apply(Pending& p, long ticket);
   bool applyTimeline(const Pending& p, long ticket);  // true when it resumed
@@ -211,7 +210,6 @@ class SimThread {
   // The thread's own.
   bool gl_ = false;  // its context is current
   std::unique_ptr<Simulation> sim_;
-  std::unique_ptr<FrameDriver> driver_;
   bool loaded_ = false;
   bool paused_ = false;
   int steps_ = 0;

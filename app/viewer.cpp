@@ -14,16 +14,10 @@
 
 #include "app/camera_control.h"
 #include "app/panels.h"
-#include "app/params.h"
-#include "app/preset.h"
 #include "app/window.h"
 #include "gl/caps.h"
 #include "gl/debug.h"
 #include "gl/fence.h"
-#include "sim/run/make_solver.h"
-#include "sim/param/sim_params.h"
-#include "sim/run/scene_checks.h"
-#include "sim/solver/stiffness.h"
 
 namespace csm {
 namespace {
@@ -34,11 +28,36 @@ const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 }  // namespace
 
+// What the panels ask: the scene's requests go to the session, the window's to the viewer.
+class Viewer::Requests final : public PanelRequests {
+ public:
+  explicit Requests(Viewer& v) : v_(v) {}
+  SimControls& controls() override { return s().controls(); }
+  Preset& editedPreset() override { return s().editedPreset(); }
+  bool applyConfig(const Preset& next) override { return s().applyConfig(next); }
+  bool loadPreset(const std::string& path) override { return s().loadPreset(path); }
+  bool save() override { return s().save(); }
+  bool saveAs(const std::string& path) override { return s().saveAs(path); }
+  void revert() override { s().revert(); }
+  void frameHead() override { s().frameHead(); }
+  void resetView() override { s().resetView(); }
+  void resetHead() override { s().resetHead(); }
+  void dismissPresetErrors() override { s().dismissPresetErrors(); }
+  bool reloadShaders() override { return v_.reloadShaders(); }
+  void screenshot() override { v_.requestScreenshot(v_.defaultScreenshotName()); }
+  void dismissShaderLog() override { v_.view_->dismissShaderLog(); }
+  void setVsync(bool on) override { v_.window_->setVsync(on); }
+
+ private:
+  ViewerSession& s() { return *v_.session_; }
+  Viewer& v_;
+};
+
+Viewer::Viewer() = default;
+
 std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string* error) {
   std::unique_ptr<Viewer> v(new Viewer());
   v->options_ = options;
-  v->uiThread_ = std::this_thread::get_id();
-  if (!v->options_.makeSolver) v->options_.makeSolver = csm::makeSolver;
 
   GlfwWindow::Options wo;
   wo.width = options.width;
@@ -53,14 +72,6 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
     return nullptr;
   }
 
-  // Messages from gl (shader logs, GL errors), of either thread, go to the Messages panel.
-  gl::setLogSink([raw = v.get()](gl::LogLevel level, std::string_view text) {
-    raw->log(level == gl::LogLevel::Error     ? MessageLevel::Error
-             : level == gl::LogLevel::Warning ? MessageLevel::Warning
-                                              : MessageLevel::Info,
-             std::string(text));
-  });
-
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
@@ -71,36 +82,39 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
   ImGui_ImplOpenGL3_Init("#version 430 core");
   v->imguiReady_ = true;
 
-  if (software) v->log(MessageLevel::Warning, gl::softwareRendererWarning(v->window_->renderer()));
-
   v->view_ = std::make_unique<SceneView>();
-  if (!v->view_->hasRenderer())
-    v->log(MessageLevel::Error,
-           "The renderer did not start; the hair is simulated but not drawn: " +
-               v->view_->rendererError());
-
-  SimThread::Options so;
-  so.makeSolver = v->options_.makeSolver;
+  SessionOptions so;
   so.solver = options.solver;
+  so.makeSolver = options.makeSolver;
   so.paced = options.paced;
   so.frameLimit = options.frameLimit;
   so.recordMetrics = options.recordMetrics;
+  so.quiet = options.quiet;
   so.wake = [] { glfwPostEmptyEvent(); };
-  // The first scene opens before the window shows: its import says where it stands on stderr.
-  so.sayImportProgress = !options.quiet;
-  if (options.solver == "gpu") {
-    std::string why;
-    so.context = v->window_->createShared(&why);
-    if (!so.context) v->log(MessageLevel::Warning, "no context for the simulation thread: " + why);
-  }
-  SimThread::Started started;
-  v->sim_ = SimThread::start(std::move(so), &started, error);
-  if (!v->sim_) return nullptr;
-  if (!started.warning.empty()) v->log(MessageLevel::Warning, started.warning);
-  v->controls_ = std::make_unique<SimControls>(
-      *v->sim_, v->frame_, v->doc_,
-      [raw = v.get()](MessageLevel level, std::string text) { raw->log(level, std::move(text)); });
-  v->takeSimFrame();
+  std::string noContext;
+  if (options.solver == "gpu") so.context = v->window_->createShared(&noContext);
+  v->session_ = ViewerSession::create(std::move(so), error);
+  if (!v->session_) return nullptr;
+  ViewerSession& session = *v->session_;
+  session.onChange([raw = v.get()] {
+    raw->view_->changed();
+    raw->updateTitle();
+  });
+  // Messages from gl (shader logs, GL errors), of either thread, go to the Messages panel.
+  gl::setLogSink([&session](gl::LogLevel level, std::string_view text) {
+    session.log(level == gl::LogLevel::Error     ? MessageLevel::Error
+                : level == gl::LogLevel::Warning ? MessageLevel::Warning
+                                                 : MessageLevel::Info,
+                std::string(text));
+  });
+  if (software) session.log(MessageLevel::Warning, gl::softwareRendererWarning(v->renderer()));
+  if (!v->view_->hasRenderer())
+    session.log(MessageLevel::Error,
+                "The renderer did not start; the hair is simulated but not drawn: " +
+                    v->view_->status().rendererError);
+  if (!noContext.empty())
+    session.log(MessageLevel::Warning, "no context for the simulation thread: " + noContext);
+  v->requests_ = std::make_unique<Requests>(*v);
   v->panels_ = std::make_unique<PanelState>();
   v->lastFrameStart_ = v->fpsWindowStart_ = Clock::now();
   return v;
@@ -108,9 +122,8 @@ std::unique_ptr<Viewer> Viewer::create(const ViewerOptions& options, std::string
 
 Viewer::~Viewer() {
   // The simulation first: its thread uses the shared context and the buffers drawn from.
-  controls_.reset();
-  sim_.reset();
-  frame_.reset();
+  gl::setLogSink({});
+  session_.reset();
   if (window_) window_->makeCurrent();
   // GL objects go before the context.
   view_.reset();
@@ -119,324 +132,46 @@ Viewer::~Viewer() {
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
   }
-  gl::setLogSink({});
   window_.reset();
 }
 
-void Viewer::log(MessageLevel level, std::string text) {
-  if (!options_.quiet && level != MessageLevel::Info)
-    std::fprintf(stderr, "csmhair: %s\n", text.c_str());
-  ViewerMessage m{level, std::move(text), Clock::now()};
-  if (std::this_thread::get_id() != uiThread_) {
-    std::lock_guard lock(inboxMutex_);
-    inbox_.push_back(std::move(m));
-    return;
-  }
-  messages_.push_back(std::move(m));
-  if (messages_.size() > 200) messages_.erase(messages_.begin(), messages_.begin() + 100);
-}
-
-void Viewer::drainInbox() {
-  std::vector<ViewerMessage> in;
-  {
-    std::lock_guard lock(inboxMutex_);
-    in.swap(inbox_);
-  }
-  for (ViewerMessage& m : in) messages_.push_back(std::move(m));
-  if (messages_.size() > 200) messages_.erase(messages_.begin(), messages_.begin() + 100);
+const std::string& Viewer::renderer() const {
+  return window_->renderer();
 }
 
 MetricsLog Viewer::metrics() const {
-  MetricsLog m = sim_->metrics();
+  MetricsLog m = session_->metrics();
   for (double ms : uiMs_) m.addUiFrame(ms);
   return m;
 }
 
-// --- The simulation's frames ---------------------------------------------------------------
-
-void Viewer::takeSimFrame() {
-  // Events first: the frame taken after them is at least as new as each.
-  const std::vector<SimEvent> events = sim_->takeEvents();
-  if (std::shared_ptr<const SimFrame> f = sim_->acquire()) frame_ = std::move(f);
-  for (const SimEvent& e : events) handle(e);
-  drainInbox();
-  checkStiffness();
-}
-
-void Viewer::handle(const SimEvent& e) {
-  switch (e.kind) {
-    case SimEvent::Kind::Opened:
-      if (pendingOpen_ && pendingOpen_->ticket == e.ticket) {
-        doc_.opened(pendingOpen_->preset, pendingOpen_->path);
-        pendingOpen_.reset();
-        userPose_ = Pose{};
-        afterSceneChange();
-        log(MessageLevel::Info, "opened " +
-                                    (doc_.path().empty() ? "the built-in preset" : doc_.path()) +
-                                    ": " + e.text);
-        stiffnessWarning_.clear();
-      }
-      break;
-    case SimEvent::Kind::OpenFailed:
-      if (pendingOpen_ && pendingOpen_->ticket == e.ticket) {
-        const std::string what = pendingOpen_->path.empty() ? "the preset" : pendingOpen_->path;
-        openError_ = e.text;
-        presetErrors_ = {what + ": " + e.text};
-        presetErrorsNote_ = "not loaded; the scene shown is the one that was running";
-        log(MessageLevel::Error, what + ": " + e.text);
-        pendingOpen_.reset();
-      }
-      break;
-    case SimEvent::Kind::ConfigRefused:
-      // The frames carry the config that still runs: the widgets show it again.
-      log(MessageLevel::Error, "not applied: " + e.text);
-      {
-        Preset running = doc_.current();
-        running.scene = frame_->config;
-        doc_.applied(running);
-      }
-      updateTitle();
-      break;
-    case SimEvent::Kind::Regrew:
-      log(MessageLevel::Info, "regrew the hair: " + e.text);
-      break;
-    case SimEvent::Kind::Resumed:
-      log(MessageLevel::Info, e.text + "; paused (Space goes on)");
-      break;
-    case SimEvent::Kind::ResumeFailed:
-    case SimEvent::Kind::ExportFailed:
-      log(MessageLevel::Error, e.text);
-      break;
-    case SimEvent::Kind::Exported:
-      log(MessageLevel::Info, e.text);
-      break;
-    case SimEvent::Kind::Nan:
-      if (controls_->current(e.ticket)) {
-        controls_->setPaused(true);
-        log(MessageLevel::Error, e.text + "; paused. R resets the hair to rest.");
-      }
-      break;
-  }
-}
-
-bool Viewer::sync(double timeoutSeconds) {
-  const bool ok = sim_->sync(timeoutSeconds);
-  takeSimFrame();
-  return ok;
-}
-
-bool Viewer::waitForSimFrame(long frame, double timeoutSeconds) {
-  const bool ok =
-      sim_->waitFor([frame](const SimFrame& f) { return f.frame >= frame; }, timeoutSeconds);
-  takeSimFrame();
-  return ok;
-}
-
-// --- The scene -------------------------------------------------------------------------
-
-void Viewer::startOpen(const Preset& preset, const std::string& baseDir, const std::string& path,
-                       std::shared_ptr<const HeadModel> head) {
-  PendingOpen p;
-  p.preset = preset;
-  p.baseDir = baseDir;
-  p.path = path;
-  // Running, from the new scene's first frame on (posted first: the open is the last
-  // command open() waits for).
-  controls_->setPaused(false);
-  p.ticket = sim_->open(preset.scene, baseDir, std::move(head));
-  pendingOpen_ = std::move(p);
-  // A NaN of the old scene goes with it.
-  controls_->opened(pendingOpen_->ticket);
-}
-
-bool Viewer::open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
-                  std::string* error, std::shared_ptr<const HeadModel> head) {
-  openError_.clear();
-  startOpen(preset, baseDir, presetPath, std::move(head));
-  const long ticket = pendingOpen_->ticket;
-  const bool answered = sim_->waitForTicket(ticket);
-  takeSimFrame();
-  if (!answered) {
-    if (error) *error = "the simulation thread did not answer";
-    return false;
-  }
-  if (pendingOpen_ && pendingOpen_->ticket == ticket) {  // no event: cannot happen
-    pendingOpen_.reset();
-    if (error) *error = "the simulation did not open the preset";
-    return false;
-  }
-  if (!openError_.empty()) {
-    if (error) *error = openError_;
-    // Said by the caller: not the preset problems window.
-    presetErrors_.clear();
-    return false;
-  }
-  return true;
-}
-
-bool Viewer::loadPreset(const std::string& path) {
-  Preset c = defaultPreset();
-  PresetErrors errors;
-  if (!csm::loadPreset(path, c, errors)) {
-    presetErrors_ = errors.messages;
-    presetErrorsNote_ = "not loaded; the scene shown is the one that was running";
-    log(MessageLevel::Error, path + " is not a valid preset; the current scene stays");
-    return false;
-  }
-  presetErrors_.clear();
-  startOpen(c, std::filesystem::absolute(path).parent_path().string(), path);
-  return true;
-}
-
-void Viewer::showPresetErrors(const std::string& text, const std::string& note) {
-  presetErrors_.clear();
-  presetErrorsNote_ = note;
-  size_t start = 0;
-  while (start < text.size()) {
-    size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    if (end > start) presetErrors_.push_back(text.substr(start, end - start));
-    start = end + 1;
-  }
-}
-
-bool Viewer::applyConfig(const Preset& next) {
-  // Nothing is read from disk here: a changed head.mesh is read by the simulation thread as it
-  // regrows, which refuses a bad one (ConfigRefused) and keeps the scene that runs.
-  std::vector<std::string> problems = crossCheck(next.scene);
-  const std::string capacity = checkCapacity(next.scene);
-  if (!capacity.empty()) problems.push_back(capacity);
-  if (!problems.empty()) {
-    for (const std::string& p : problems) log(MessageLevel::Error, "not applied: " + p);
-    doc_.discardEdits();  // the widgets show what runs
-    return false;
-  }
-  const bool sceneChanged = !sameScene(doc_.current().scene, next.scene);
-  if (sceneChanged && pendingOpen_) {
-    // The edit would land on the preset being replaced; the view may change meanwhile.
-    log(MessageLevel::Warning, "not applied: a preset is loading; change it once it shows");
-    doc_.discardEdits();
-    return false;
-  }
-  if (sceneChanged) sim_->setConfig(next.scene);
-  doc_.applied(next);
-  view_->changed();
-  updateTitle();
-  return true;
-}
-
-void Viewer::checkStiffness() {
-  if (!frame_->loaded) return;
-  if (const std::string groom = groomReportText(frame_->groomReport); groom != groomWarning_) {
-    groomWarning_ = groom;
-    if (!groom.empty()) log(MessageLevel::Warning, groom);
-  }
-  const std::string warning = stiffnessWarning(frame_->stiffness);
-  if (warning == stiffnessWarning_) return;
-  stiffnessWarning_ = warning;
-  if (!warning.empty()) log(MessageLevel::Warning, warning);
-}
-
-bool Viewer::setParam(std::string_view key, std::string_view text, std::string* error) {
-  const PresetParam* p = findParam(key);
-  std::string why;
-  if (!p) {
-    why = std::string(key) + ": unknown parameter";
-  } else {
-    Preset next = doc_.current();
-    why = paramFromText(*p, next, text);
-    if (why.empty()) {
-      if (applyConfig(next)) return true;
-      // applyConfig has said why.
-      if (error) *error = messages_.empty() ? "not applied" : messages_.back().text;
-      return false;
-    } else {
-      why = std::string(key) + "=" + std::string(text) + ": " + why;
-    }
-  }
-  log(MessageLevel::Error, why);
-  if (error) *error = why;
-  return false;
-}
-
-bool Viewer::save() {
-  if (doc_.path().empty()) {
-    log(MessageLevel::Warning, "the built-in preset has no file: use Save as");
-    return false;
-  }
-  return saveAs(doc_.path());
-}
-
-bool Viewer::saveAs(const std::string& path) {
-  std::string error;
-  if (!doc_.saveAs(path, &error)) {
-    log(MessageLevel::Error, "save failed: " + error);
-    return false;
-  }
-  log(MessageLevel::Info, "saved " + path);
-  updateTitle();
-  return true;
-}
-
-void Viewer::revert() {
-  if (applyConfig(doc_.loaded())) log(MessageLevel::Info, "reverted to the loaded preset");
-}
-
-void Viewer::afterSceneChange() {
-  view_->changed();
-  updateTitle();
-}
-
 void Viewer::updateTitle() {
-  const std::string t = doc_.title();
+  const std::string t = session_->document().title();
   if (t != title_) {
     title_ = t;
     window_->setTitle(t);
   }
 }
 
-// --- Running ---------------------------------------------------------------------------
-
-void Viewer::resetView() {
-  Preset next = doc_.current();
-  next.view.camera = doc_.loaded().view.camera;
-  applyConfig(next);
-}
-
-void Viewer::frameHead() {
-  if (!frame_->head) return;  // nothing loaded yet
-  Preset next = doc_.current();
-  csm::frameHead(next.view.camera, next.scene, *frame_->head, frame_->headPose);
-  applyConfig(next);
-}
-
-void Viewer::resetHead() {
-  userPose_ = Pose{};
-  sim_->setUserPose(userPose_);
-}
-
 bool Viewer::reloadShaders() {
   std::string message;
   const bool ok = view_->reloadShaders(&message);
-  log(ok ? MessageLevel::Info : MessageLevel::Error, message);
+  session_->log(ok ? MessageLevel::Info : MessageLevel::Error, message);
   return ok;
 }
 
-void Viewer::setVsync(bool on) {
-  window_->setVsync(on);
-}
-
 PanelView Viewer::panelView() const {
-  return PanelView{.frame = *frame_,
-                   .document = doc_,
+  const ViewerSession& s = *session_;
+  return PanelView{.frame = s.simFrame(),
+                   .document = s.document(),
                    .stats = stats_,
-                   .messages = messages_,
-                   .presetErrors = presetErrors_,
-                   .presetErrorsNote = presetErrorsNote_,
-                   .scene = *view_,
-                   .import = sim_->importStatus(),
+                   .messages = s.messages(),
+                   .presetErrors = s.presetErrors(),
+                   .presetErrorsNote = s.presetErrorsNote(),
+                   .picture = view_->status(),
+                   .import = s.importStatus(),
                    .renderer = window_->renderer(),
-                   .loading = pendingOpen_.has_value(),
+                   .loading = s.loading(),
                    .vsync = window_->vsync()};
 }
 
@@ -449,7 +184,7 @@ std::string Viewer::defaultScreenshotName() const {
 
 void Viewer::requestScreenshot(const std::string& path, long minFrame) {
   screenshotPath_ = path;
-  screenshotTicket_ = sim_->ticket();
+  screenshotTicket_ = session_->ticket();
   screenshotFrame_ = minFrame;
 }
 
@@ -457,28 +192,26 @@ bool Viewer::screenshotDue() const {
   if (screenshotPath_.empty()) return false;
   // Every change made before the request shows, and the frame asked for is there (or will
   // never come: stopped or paused).
-  if (frame_->ticket < screenshotTicket_ || pendingOpen_) return false;
-  return screenshotFrame_ < 0 || frame_->frame >= screenshotFrame_ || frame_->idle;
-}
-
-void Viewer::viewChanged() {
-  view_->moved();
+  const SimFrame& frame = session_->simFrame();
+  if (frame.ticket < screenshotTicket_ || session_->loading()) return false;
+  return screenshotFrame_ < 0 || frame.frame >= screenshotFrame_ || frame.idle;
 }
 
 void Viewer::handleKeys() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantCaptureKeyboard) return;  // typing in a text field
+  SimControls& controls = session_->controls();
   auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-  if (pressed(GLFW_KEY_SPACE)) controls_->setPaused(!controls_->paused());
-  if (pressed(GLFW_KEY_N) || pressed(GLFW_KEY_PERIOD)) controls_->stepOnce();
-  if (pressed(GLFW_KEY_R)) controls_->resetHair();
+  if (pressed(GLFW_KEY_SPACE)) controls.setPaused(!controls.paused());
+  if (pressed(GLFW_KEY_N) || pressed(GLFW_KEY_PERIOD)) controls.stepOnce();
+  if (pressed(GLFW_KEY_R)) controls.resetHair();
   if (pressed(GLFW_KEY_F12) || pressed(GLFW_KEY_P)) requestScreenshot(defaultScreenshotName());
-  if (pressed(GLFW_KEY_F)) frameHead();
-  if (pressed(GLFW_KEY_HOME)) resetView();
-  if (pressed(GLFW_KEY_G)) resetHead();
+  if (pressed(GLFW_KEY_F)) session_->frameHead();
+  if (pressed(GLFW_KEY_HOME)) session_->resetView();
+  if (pressed(GLFW_KEY_G)) session_->resetHead();
   if (pressed(GLFW_KEY_F5)) reloadShaders();
   if (pressed(GLFW_KEY_F1)) panels_->showHelp = !panels_->showHelp;
-  if (io.KeyCtrl && pressed(GLFW_KEY_S)) save();
+  if (io.KeyCtrl && pressed(GLFW_KEY_S)) session_->save();
 }
 
 void Viewer::handleMouse() {
@@ -487,40 +220,40 @@ void Viewer::handleMouse() {
   const ImVec2 d = io.MouseDelta;
   const bool moved = d.x != 0.0f || d.y != 0.0f;
   const bool left = io.MouseDown[0], right = io.MouseDown[1], middle = io.MouseDown[2];
+  ViewerSession& s = *session_;
   if (moved && (right || (left && io.KeyCtrl))) {
     // Turn the head about the neck: the hair reacts on the next step.
-    userPose_ =
-        dragHead(userPose_, doc_.current().view.camera, doc_.current().scene.head, d.x, d.y);
-    sim_->setUserPose(userPose_);
-    viewChanged();
+    s.dragHead(d.x, d.y);
+    view_->moved();
   } else if (moved && (middle || (left && io.KeyShift))) {
-    Preset next = doc_.current();
+    Preset next = s.document().current();
     panCamera(next.view.camera, d.x, d.y, window_->framebufferSize().height);
-    applyConfig(next);
-    viewChanged();
+    s.applyConfig(next);
+    view_->moved();
   } else if (moved && left) {
-    Preset next = doc_.current();
+    Preset next = s.document().current();
     orbitCamera(next.view.camera, d.x, d.y);
-    applyConfig(next);
-    viewChanged();
+    s.applyConfig(next);
+    view_->moved();
   }
   if (io.MouseWheel != 0.0f) {
-    Preset next = doc_.current();
+    Preset next = s.document().current();
     zoomCamera(next.view.camera, io.MouseWheel);
-    applyConfig(next);
-    viewChanged();
+    s.applyConfig(next);
+    view_->moved();
   }
 }
 
 // --- Drawing -------------------------------------------------------------------------------
 
 void Viewer::renderScene(bool capture) {
-  const bool running = !controls_->paused() && !frame_->idle;
-  const SceneView::Drawn drawn =
-      view_->draw(*frame_, doc_.current().view, window_->framebufferSize(), running, capture);
+  const SimFrame& frame = session_->simFrame();
+  const bool running = !session_->controls().paused() && !frame.idle;
+  const SceneView::Drawn drawn = view_->draw(frame, session_->document().current().view,
+                                             window_->framebufferSize(), running, capture);
   if (drawn.scene) {
     // The simulation may write this frame's buffer again once these draws are done.
-    sim_->drawn();
+    session_->drawn();
     stats_.renderStages = drawn.stages;
     stats_.drawnStrands = drawn.strands;
   }
@@ -532,9 +265,9 @@ void Viewer::takeScreenshot() {
   std::string error;
   if (writePng(screenshotPath_, lastScreenshot_, &error)) {
     lastScreenshotPath_ = screenshotPath_;
-    log(MessageLevel::Info, "screenshot saved: " + screenshotPath_);
+    session_->log(MessageLevel::Info, "screenshot saved: " + screenshotPath_);
   } else {
-    log(MessageLevel::Error, "screenshot failed: " + error);
+    session_->log(MessageLevel::Error, "screenshot failed: " + error);
   }
   screenshotPath_.clear();
 }
@@ -560,11 +293,11 @@ void Viewer::runFrame() {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
 
-  takeSimFrame();
-  controls_->advancePlayback();
+  session_->update();
+  session_->controls().advancePlayback();
   handleKeys();
   handleMouse();
-  drawPanels(panelView(), *this, *panels_);
+  drawPanels(panelView(), *requests_, *panels_);
   ImGui::Render();
   const bool capture = screenshotDue();
   renderScene(capture);
@@ -581,9 +314,10 @@ int Viewer::run() {
   const auto busyBudget = seconds(options_.maxFps > 0.0 ? 1.0 / options_.maxFps : 0.0);
   const auto idleBudget =
       std::max(busyBudget, seconds(options_.idleFps > 0.0 ? 1.0 / options_.idleFps : 0.0));
+  ViewerSession& s = *session_;
   while (!window_->shouldClose()) {
-    if (options_.frameLimit >= 0 && frame_->idle && !screenshotPending() && !pendingOpen_ &&
-        frame_->ticket >= sim_->ticket())
+    if (options_.frameLimit >= 0 && s.simFrame().idle && !screenshotPending() && !s.loading() &&
+        s.simFrame().ticket >= s.ticket())
       break;
     const auto start = Clock::now();
     runFrame();
@@ -594,8 +328,8 @@ int Viewer::run() {
     for (;;) {
       const auto now = Clock::now();
       const bool busy = now - window_->lastInput() < std::chrono::seconds(1) || view_->moving() ||
-                        screenshotPending() || pendingOpen_ || controls_->playingRecording() ||
-                        sim_->latestSerial() != frame_->serial;
+                        screenshotPending() || s.loading() || s.controls().playingRecording() ||
+                        s.latestSerial() != s.simFrame().serial;
       const auto next = start + (busy ? busyBudget : idleBudget);
       if (now >= next || window_->shouldClose()) break;
       glfwWaitEventsTimeout(std::chrono::duration<double>(next - now).count());
@@ -625,7 +359,8 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
     std::fprintf(stderr, "csmhair: %s\n", error.c_str());
     return startupErrors.empty() ? 1 : 2;
   }
-  if (!viewer->open(scene.preset, scene.baseDir, startupErrors.empty() ? options.preset : "",
+  ViewerSession& session = viewer->session();
+  if (!session.open(scene.preset, scene.baseDir, startupErrors.empty() ? options.preset : "",
                     &error, scene.head)) {
     std::fprintf(stderr, "csmhair: %s: %s\n", scene.source.c_str(), error.c_str());
     return 2;
@@ -633,7 +368,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
   // A preset that fails validation opens the window anyway, on the built-in scene, with its
   // messages in front: the artist sees what to fix instead of a closed terminal.
   if (!startupErrors.empty())
-    viewer->showPresetErrors(startupErrors, "not loaded; showing the built-in preset instead");
+    session.showPresetErrors(startupErrors, "not loaded; showing the built-in preset instead");
 
   const auto start = Clock::now();
   gl::resetReadbackStats();
@@ -643,7 +378,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
   viewer->run();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!scripted) return 0;
-  const SimFrame& f = viewer->simFrame();
+  const SimFrame& f = session.simFrame();
   const ViewerStats& s = viewer->stats();
   const MetricsLog m = viewer->metrics();
   if (!options.quiet) {
@@ -653,10 +388,10 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
                  "solver %s, %s\n",
                  f.frame, seconds, f.frame > 0 ? 1000.0 * seconds / double(f.frame) : 0.0, f.stepMs,
                  viewer->framesDrawn(), s.frameMs.mean(), f.strands, f.particles,
-                 solverLabel(f).c_str(), viewer->window().renderer().c_str());
+                 solverLabel(f).c_str(), viewer->renderer().c_str());
   }
   if (!options.metrics.empty()) {
-    nlohmann::json meta = describeRun(runDescription(scene, f, viewer->window().renderer()));
+    nlohmann::json meta = describeRun(runDescription(scene, f, viewer->renderer()));
     meta["mode"] = "window";
     meta["wall_seconds"] = seconds;
     meta["sim_frames"] = f.frame;
@@ -670,7 +405,7 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
     }
   }
   if (!startupErrors.empty()) return 2;
-  if (viewer->controls().nanStopped()) return 1;
+  if (session.controls().nanStopped()) return 1;
   if (!options.screenshot.empty() && viewer->lastScreenshotPath() != options.screenshot) return 1;
   return 0;
 }

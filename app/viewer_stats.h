@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "app/history.h"
-#include "sim/core/solver.h"
+#include "sim/core/results.h"
 
 namespace csm {
 

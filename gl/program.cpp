@@ -1,11 +1,13 @@
 #include "gl/program.h"
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/debug.h"
+#include "gl/pass_profile.h"
 #include "gl/shader.h"
 
 namespace csm::gl {
@@ -188,12 +190,27 @@ void Program::dispatch(GLuint x, GLuint y, GLuint z) const {
   maybeCheckErrors("Program::dispatch");
 }
 
+void Program::dispatchItems(GLuint items, GLuint groupSize) const {
+  const GLuint groups = groupsFor(items, groupSize);
+  if (groups == 0) return;
+  const GLuint x = std::min<GLuint>(groups, 65535u), y = (groups + x - 1) / x;
+  if (!pass_profile::enabled()) {
+    glUseProgram(id_);
+    glDispatchCompute(x, y, 1);
+    maybeCheckErrors("Program::dispatchItems");
+    return;
+  }
+  pass_profile::run(name_, [&] { dispatch(x, y); });
+}
+
 void Program::dispatchIndirect(GLuint args, GLintptr offset) const {
-  glUseProgram(id_);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, args);
-  glDispatchComputeIndirect(offset);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  maybeCheckErrors("Program::dispatchIndirect");
+  pass_profile::run(name_, [&] {
+    glUseProgram(id_);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, args);
+    glDispatchComputeIndirect(offset);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    maybeCheckErrors("Program::dispatchIndirect");
+  });
 }
 
 std::array<GLint, 3> Program::workGroupSize() const {

@@ -63,8 +63,14 @@ class Program {
 
   // use() and glDispatchCompute. Counts are work groups, not invocations; see groupsFor().
   void dispatch(GLuint x, GLuint y = 1, GLuint z = 1) const;
+  // Enough groups of `groupSize` for `items` invocations (none for 0): beyond GL 4.3's 65,535
+  // groups a dimension, a 2D grid of groups that the shader flattens (globalIndex in
+  // shaders/sim/common.glsl, invocationIndex in shaders/render/hair_compute.glsl). The one
+  // dispatch of a count of items, the solver's and the renderer's; timed under the program's
+  // name by the pass profile (gl/pass_profile.h).
+  void dispatchItems(GLuint items, GLuint groupSize) const;
   // use() and glDispatchComputeIndirect with the work group counts (three GLuints) at
-  // `offset` in buffer `args`.
+  // `offset` in buffer `args`; timed by the pass profile as dispatchItems is.
   void dispatchIndirect(GLuint args, GLintptr offset) const;
   // local_size_x/y/z of a compute program.
   std::array<GLint, 3> workGroupSize() const;

@@ -1,10 +1,9 @@
 // How the render's compute passes are dispatched: one invocation per item, in work groups of 64
-// (shaders/render/hair_compute.glsl), over two dimensions where one would pass the 65,535 groups
-// a dimension may have; the item count in uItems; what the pass wrote made visible to the passes
-// after it.
+// (shaders/render/hair_compute.glsl), through gl::Program::dispatchItems (the 2D grid past 65,535
+// groups, the pass profile); the item count in uItems; what the pass wrote made visible to the
+// passes after it.
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 
 #include "gl/gl.h"
@@ -13,12 +12,9 @@
 namespace csm {
 
 inline void dispatchOver(gl::Program& program, std::size_t items) {
-  const std::size_t groups = (items + 63) / 64;
-  if (groups == 0) return;
-  program.use();
+  if (items == 0) return;
   program.setUniform("uItems", unsigned(items));
-  const std::size_t wide = std::min<std::size_t>(groups, 65535);
-  program.dispatch(GLuint(wide), GLuint((groups + wide - 1) / wide));
+  program.dispatchItems(GLuint(items), 64);
   gl::memoryBarrier(gl::Barrier::Storage);
 }
 

@@ -28,11 +28,13 @@ gl::Buffer staticBuffer(std::vector<T> data) {
 bool FollowerPass::build(std::string* log) {
   std::string all, one;
   std::optional<gl::Program> turns =
-      gl::buildProgram("guide turns", {{gl::ShaderStage::Compute, "render/hair_followers.comp"}},
+      gl::buildProgram("render/hair_followers.comp GUIDE_TURNS",
+                       {{gl::ShaderStage::Compute, "render/hair_followers.comp"}},
                        {gl::Define{"GUIDE_TURNS", ""}}, &one);
   all += one;
-  std::optional<gl::Program> followers = gl::buildProgram(
-      "followers", {{gl::ShaderStage::Compute, "render/hair_followers.comp"}}, {}, &one);
+  std::optional<gl::Program> followers =
+      gl::buildProgram("render/hair_followers.comp",
+                       {{gl::ShaderStage::Compute, "render/hair_followers.comp"}}, {}, &one);
   all += one;
   if (log) *log = all;
   if (!turns || !followers) return false;

@@ -14,6 +14,7 @@
 #include "gl/state_backup.h"
 #include "render/bindings.h"
 #include "render/compute_dispatch.h"
+#include "render/frame_uniforms.h"
 #include "render/camera.h"
 #include "render/hair_color.h"
 #include "render/scalp_map.h"
@@ -22,29 +23,7 @@
 namespace csm {
 namespace {
 
-// Mirrors FrameUniforms in shaders/render/frame.glsl (std140: only mat4, vec4 and ivec4).
-struct FrameUniforms {
-  glm::mat4 viewProj;
-  glm::mat4 lightViewProj;
-  glm::mat4 headRotation;
-  glm::vec4 eye;
-  glm::vec4 lightDir;
-  glm::vec4 lightColor;
-  glm::vec4 rootColor;
-  glm::vec4 tipColor;
-  glm::vec4 specShift;
-  glm::vec4 specStrength;
-  glm::vec4 headColor;
-  glm::vec4 background;
-  glm::vec4 viewport;
-  glm::vec4 lightRange;
-  glm::vec4 children;
-  glm::vec4 children2;
-  glm::ivec4 counts;
-  glm::ivec4 counts2;
-  glm::vec4 width;
-};
-static_assert(sizeof(FrameUniforms) == 3 * 64 + 16 * 16);
+using render_block::FrameUniforms;  // render/frame_uniforms.h
 
 // A share of the strands is drawn wider by 1/sqrt(share), up to this: most of the coverage
 // without turning the hair into straws.
@@ -146,20 +125,21 @@ struct HairRenderer::Programs {
       else
         ok = false;
     };
-    auto compute = [&](gl::Program& out, const char* name, const char* source) {
+    // Named by their file, as the solver's passes are: the pass profile's rows.
+    auto compute = [&](gl::Program& out, const char* source) {
       std::string l;
       std::optional<gl::Program> made =
-          gl::buildProgram(name, {{gl::ShaderStage::Compute, source}}, defines, &l);
+          gl::buildProgram(source, {{gl::ShaderStage::Compute, source}}, defines, &l);
       if (!l.empty()) all += l + "\n";
       if (made)
         out = std::move(*made);
       else
         ok = false;
     };
-    compute(p->points, "hair points", "render/hair_points.comp");
-    compute(p->children, "hair children", "render/hair_children.comp");
-    compute(p->shade, "hair shade", "render/hair_shade.comp");
-    compute(p->childShade, "child shade", "render/hair_child_shade.comp");
+    compute(p->points, "render/hair_points.comp");
+    compute(p->children, "render/hair_children.comp");
+    compute(p->shade, "render/hair_shade.comp");
+    compute(p->childShade, "render/hair_child_shade.comp");
     one(p->hairDepth, "hair depth", "render/hair.vert", "render/depth_only.frag", shadowDefines);
     one(p->hairOpacity, "hair opacity", "render/hair.vert", "render/hair_opacity.frag",
         shadowDefines);
@@ -190,10 +170,6 @@ std::unique_ptr<HairRenderer> HairRenderer::create(std::string* error) {
     return nullptr;
   }
   return r;
-}
-
-std::unique_ptr<Renderer> Renderer::create(std::string* error) {
-  return HairRenderer::create(error);
 }
 
 HairRenderer::HairRenderer() : clock_(gl::queryCaps().timerQuery) {

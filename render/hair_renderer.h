@@ -1,6 +1,7 @@
 // The renderer: deep opacity maps (Yuksel & Keyser 2008), Kajiya-Kay hair (1989) with
-// shifted highlights (Scheuermann 2004), the head, the backdrop. See renderer.h for the
-// interface; this header adds what tests and debug views read back.
+// shifted highlights (Scheuermann 2004), the head, the backdrop, drawing what a FrameView
+// (render/renderer.h) holds; tests read its maps and geometry through RendererProbe
+// (render/renderer_probe.h).
 //
 // Passes, each timed as a stage, over parts that each do one job:
 //   shadow  (ShadowMaps) light-space depth of the nearest hair (z0); the head's depth (back
@@ -42,15 +43,17 @@
 
 namespace csm {
 
-class HairRenderer final : public Renderer {
+class HairRenderer final {
  public:
   // Needs a current GL 4.3 core context. Null with the compiler's log when shaders fail.
   static std::unique_ptr<HairRenderer> create(std::string* error);
-  ~HairRenderer() override;
+  ~HairRenderer();
 
-  void render(const FrameView& frame) override;
-  std::vector<StageTime> stageTimes() override;
-  bool reloadShaders(std::string* log) override;
+  void render(const FrameView& frame);
+  // GPU time per pass of recent frames: "shadow", "hair", "head" (timer queries).
+  std::vector<StageTime> stageTimes();
+  // Recompiles the shaders from disk; on failure keeps the old programs, `log` says why.
+  bool reloadShaders(std::string* log);
 
   // Strands drawn by the last render(): guides drawn times (1 + children drawn).
   std::size_t drawnStrands() const { return drawnStrands_; }
@@ -60,24 +63,16 @@ class HairRenderer final : public Renderer {
   // hair pass on the pass after it. On a GPU it would stall the pipeline: queries there.
   // The viewer turns it off (it would stall every frame of the window).
   void setSynchronousTiming(bool on) { clock_.setSynchronous(on); }
-  // Long draws in chunks, each waiting for the one before the last (StrandGeometry::setPaced):
-  // on by default on a software rasterizer.
-  void setPacedDraws(bool on);
-  bool synchronousTiming() const { return clock_.synchronous(); }
   // Multisampling the last frame used (render.samples clamped to what the driver offers).
   int samples() const { return target_ ? target_->samples() : 1; }
 
-  // The deep opacity maps of the last frame, for tests and debug views (ShadowMaps).
-  const gl::Texture& lightDepth() const { return shadow_->lightDepth(); }
-  const gl::Texture& opacityLayers() const { return shadow_->opacityLayers(); }
-  const gl::Texture& headShadow() const { return shadow_->headShadow(); }
-  // World -> light clip space of the last frame (orthographic, depth maps linearly).
-  const glm::mat4& lightViewProjection() const { return lightViewProj_; }
-  const StrandGeometry& geometry() const { return *geometry_; }
-  // The follower pass of the last frame that drew followers (its output, points moved out).
-  const FollowerPass& followerPass() const { return followers_; }
-
  private:
+  // Tests read the maps, the geometry and the follower pass, and choose the paced draws,
+  // through it (render/renderer_probe.h).
+  friend class RendererProbe;
+  // Long draws in chunks, each waiting for the one before the last (StrandGeometry::setPaced):
+  // on by default on a software rasterizer.
+  void setPacedDraws(bool on);
   struct Programs;
   HairRenderer();
   Programs* programsFor(int samples, std::string* log);

@@ -2,12 +2,10 @@
 
 namespace csm {
 
-unsigned PositionSource::update(Solver& solver) {
-  if (unsigned gpu = solver.positionBuffer(); gpu != 0) return gpu;
-  solver.readPositions(scratch_);
+unsigned PositionSource::upload(const std::vector<glm::vec4>& positions) {
   if (buffer_.id() == 0) buffer_ = gl::Buffer();
-  if (scratch_.empty()) return buffer_.id();
-  buffer_.upload(scratch_);
+  if (positions.empty()) return buffer_.id();
+  buffer_.upload(positions);
   return buffer_.id();
 }
 

@@ -1,6 +1,6 @@
-// Where the renderer reads this frame's positions. The GPU solver keeps them in an SSBO of
-// its own, which is drawn from directly; the CPU solver has none, so its positions are read
-// back and uploaded into a buffer here each frame.
+// Where the renderer reads this frame's positions when the solver keeps none on the GPU (the
+// CPU solvers): the positions read back are uploaded into a buffer here each frame. The GPU
+// solver's own SSBO is drawn from directly.
 #pragma once
 
 #include <vector>
@@ -8,14 +8,15 @@
 #include <glm/vec4.hpp>
 
 #include "gl/buffer.h"
-#include "sim/core/solver.h"
 
 namespace csm {
 
 class PositionSource {
  public:
-  // The GL name of an SSBO with `solver`'s current positions (vec4 per particle).
-  unsigned update(Solver& solver);
+  // The GL name of an SSBO holding `positions` (vec4 per particle).
+  unsigned upload(const std::vector<glm::vec4>& positions);
+  // Where a reader of positions writes them before upload(scratch()).
+  std::vector<glm::vec4>& scratch() { return scratch_; }
 
  private:
   gl::Buffer buffer_{gl::NoCreate};

@@ -1,5 +1,7 @@
-// The picture: deep opacity maps (Yuksel & Keyser 2008), Kajiya-Kay hair (1989), the head.
-// Hair is drawn straight from a positions SSBO (the GPU solver's own buffer): no CPU copy.
+// What the renderer (render/hair_renderer.h: deep opacity maps, Yuksel & Keyser 2008; Kajiya-Kay
+// hair, 1989; the head) draws of a frame: the FrameView the app builds from a simulation
+// (app/frame_view.h), and how much of the look. Hair is drawn straight from a positions SSBO (the
+// GPU solver's own buffer): no CPU copy.
 #pragma once
 
 #include <cstddef>
@@ -14,7 +16,7 @@
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
 #include "sim/core/pose.h"
-#include "sim/core/solver.h"
+#include "sim/core/results.h"
 #include "sim/groom/guides.h"
 #include "sim/head/head_model.h"
 
@@ -55,19 +57,6 @@ struct FrameView {
   // Camera: when `useCameraMatrices` is false, derived from look->camera.
   bool useCameraMatrices = false;
   glm::mat4 view{1.0f}, projection{1.0f};
-};
-
-class Renderer {
- public:
-  virtual ~Renderer() = default;
-  // Needs a current GL 4.3 core context. Null with a message when shaders fail.
-  static std::unique_ptr<Renderer> create(std::string* error);
-
-  virtual void render(const FrameView& frame) = 0;
-  // GPU time per pass of recent frames: "shadow", "hair", "head" (timer queries).
-  virtual std::vector<StageTime> stageTimes() = 0;
-  // Recompiles the shaders from disk; on failure keeps the old programs, `log` says why.
-  virtual bool reloadShaders(std::string* log) = 0;
 };
 
 // Strands on screen for a groom of `strands` drawn strands (the simulated ones, or the guides and

@@ -4,7 +4,7 @@
 # A document marks such a figure as <!-- fig:NAME -->VALUE<!-- /fig --> (README.md and
 # docs/*.md). The names and where their values come from:
 #   tests, tests.LABEL   ctest -N in BUILD_DIR ("Total Tests: N"), and ctest -N -L '^LABEL$' for
-#                        each of cpu, gpu, cli, window and quick that ctest --print-labels lists
+#                        each of cpu, gpu, app, cli, window and quick that ctest --print-labels lists
 #   fuzz.targets         the fuzz targets: scripts/fuzz.sh's default list, which must name the
 #                        same targets as tests/fuzz/CMakeLists.txt builds
 #   fuzz.short_seconds   the seconds each target gets in `scripts/fuzz.sh short`
@@ -26,7 +26,7 @@ import glob, os, re, shlex, subprocess, sys
 
 src, build, write = sys.argv[1], sys.argv[2], sys.argv[3] == "1"
 ctest = shlex.split(os.environ.get("CTEST", "ctest"))
-LABELS = ("cpu", "gpu", "cli", "window", "quick")
+LABELS = ("cpu", "gpu", "app", "cli", "window", "quick")
 problems = []
 
 

@@ -106,8 +106,8 @@ inline void checkImportedRun(Solver& solver, double floatSlack) {
   FrameSample last;
   for (int f = 0; f < 30; ++f, t += c.sim.dt) {
     solver.stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
-    solver.requestSample(f);
-    while (auto s = solver.takeSample(f == 29)) last = *s;
+    solver.diagnostics().requestSample(f);
+    while (auto s = solver.diagnostics().takeSample(f == 29)) last = *s;
   }
   const Accuracy& a = last.accuracy;
   INFO(solver.name() << ": max strain " << a.maxStrain << ", inside the head " << a.headPenetrations
@@ -179,9 +179,9 @@ inline void checkHeldEnds(Solver& solver, double tolerance, int version) {
   for (int f = 0; f < 30; ++f, t += c.sim.dt) {
     const Pose to = headPose(c.head, t + c.sim.dt);
     solver.stepFrame(headPose(c.head, t), to);
-    solver.requestSample(f);
-    while (auto s = solver.takeSample(f == 29)) last = *s;
-    solver.readPositions(x);
+    solver.diagnostics().requestSample(f);
+    while (auto s = solver.diagnostics().takeSample(f == 29)) last = *s;
+    solver.state().readPositions(x);
     auto away = [&](uint32_t i) {
       return glm::length(glm::dvec3(glm::vec3(x[i])) - to.apply(glm::dvec3(g.points[i])));
     };

@@ -6,7 +6,11 @@
 # sim/gpu in the app (it has the solver factory), on GL outside sim/gpu, on the CPU library of
 # sim/run reaching the GPU solver, on the panels including the viewer, on a GL_ constant outside
 # gl/ (the simulation, the app, the renderer), on two modules (a header and its source) that
-# include each other, and on a CPU test binary that links a GL, window or GUI library.
+# include each other, on the app or the tools naming the Solver (they run scenes through
+# Simulation and sim/verify's runners), on a second copy in a shader of a constant or a function
+# both languages share, on a parameter block written out by hand beside the list both languages
+# expand (a field added on one side only), and on a CPU test binary that links a GL, window or
+# GUI library. tests/layers_scratch.sh makes a scratch edit of each kind and sees this fail.
 #   tests/layers.sh SOURCE_DIR CPU_TEST_BINARY
 set -u
 src=$1
@@ -43,6 +47,11 @@ check render '#include "sim/run/' "render/ includes nothing of sim/run"
 # The app makes its solvers, and reads the GPU one's pass profile, through the solver factory:
 # nothing of sim/gpu's own headers.
 check app '#include "sim/gpu/' "app/ reaches sim/gpu only through sim/run/make_solver.h"
+# The app and the tools hold no solver: they run scenes through Simulation (the solver's state
+# and diagnostics read through it) and sim/verify's SceneRunner, and make solvers by name
+# (sim/run/make_solver.h).
+check app '\bSolver\b' "app/ names no Solver"
+check tools '\bSolver\b' "tools/ names no Solver"
 # sim/run's CPU library needs no GL: only the solver factory (its own library) knows the GPU one.
 hits=$(grep -rnE '#include "sim/gpu/' "$src/sim/run" --include='*.h' --include='*.cpp' | grep -v "^$src/sim/run/make_solver\.")
 if [ -n "$hits" ]; then echo "FAIL: sim/run reaches sim/gpu outside make_solver:"; echo "$hits"; fail=1; else echo "ok: sim/run reaches sim/gpu only in make_solver"; fi
@@ -84,6 +93,74 @@ for a, b in pairs:
 if not pairs:
     print(f"ok: no two modules include each other ({len(uses)} modules)")
 sys.exit(1 if pairs else 0)
+PY
+then
+  fail=1
+fi
+# What the C++ and the shaders share is written once: the constants of
+# shaders/sim/shared_constants.glsl (a distinctive one, of five digits or 10,000 or more, copied
+# as a literal into another shader), pi (CSM_PI), the functions of shaders/sim/shared_functions.glsl and
+# head_field_sample.glsl (defined again in another shader or C++ file), and the parameter blocks
+# both languages expand from one list (a struct or block of that name with more in it than the
+# list's expansion, or declared anywhere else).
+if ! python3 - "$src" <<'PY'
+import os, re, sys
+src = sys.argv[1]
+shaders = os.path.join(src, "shaders")
+shared = {"sim/shared_constants.glsl", "sim/shared_functions.glsl", "sim/head_field_sample.glsl",
+          "render/frame_uniforms.glsl"}
+def files(top, ends):
+    for root, _, names in os.walk(top):
+        for n in names:
+            if n.endswith(ends):
+                yield os.path.join(root, n)
+def code(text):
+    return re.sub(r"//[^\n]*|/\*.*?\*/", "", text, flags=re.S)
+glsl = {os.path.relpath(f, shaders): code(open(f).read())
+        for f in files(shaders, (".glsl", ".comp", ".vert", ".frag"))}
+cpp = {os.path.relpath(f, src): code(open(f).read())
+       for top in ("app", "sim", "render", "gl", "tools")
+       for f in files(os.path.join(src, top), (".h", ".cpp"))}
+fail = []
+# Constants: a literal of five significant digits or more, or of 10,000 or more, and pi.
+defines = re.findall(r"#define (CSM_\w+) ([0-9][0-9.eE+-]*)u?\b", glsl["sim/shared_constants.glsl"])
+def digits(v):
+    return len(re.sub(r"[^0-9]", "", re.sub(r"[eE][+-]?[0-9]+$", "", v)).strip("0"))
+distinct = [(n, v.rstrip(".0") if "." in v else v) for n, v in defines
+            if digits(v) >= 5 or float(v) >= 10000]
+for path, text in glsl.items():
+    if path in shared or path.startswith("test/"):
+        continue
+    for name, value in distinct:
+        if re.search(r"(?<![\w.])" + re.escape(value) + r"(\.0*)?u?(?![\w.])", text):
+            fail.append(f"{path}: a copy of {name} ({value}); use {name}")
+    if re.search(r"3\.14159", text):
+        fail.append(f"{path}: a copy of pi; use CSM_PI")
+# Functions: each shared one defined once.
+names = set()
+for f in ("sim/shared_functions.glsl", "sim/head_field_sample.glsl"):
+    names.update(re.findall(r"^(?:CSM_SHARED\s+)?[\w]+\s+(\w+)\s*\(", glsl[f], re.M))
+names.discard("if")
+for path, text in list(glsl.items()) + list(cpp.items()):
+    if path in shared:
+        continue
+    for name in names:
+        if re.search(r"^\s*(?:inline\s+|static\s+)?[\w:<>]+\s+" + name + r"\s*\([^;]*\)\s*\{", text, re.M):
+            fail.append(f"{path}: defines {name}() again (shaders/sim/shared_functions.glsl or head_field_sample.glsl has it)")
+# Parameter blocks: nothing but the list's expansion.
+lists = {"FrameUniforms": "CSM_FRAME_UNIFORMS", "SimParams": "CSM_SIM_PARAMS", "Substep": "CSM_SUBSTEP"}
+for path, text in list(glsl.items()) + list(cpp.items()):
+    for block, macro in lists.items():
+        for m in re.finditer(r"\b(?:struct|uniform|buffer)\s+" + block + r"\s*\{([^}]*)\}", text):
+            body = " ".join(m.group(1).split())
+            if not re.fullmatch(macro + r"\(\w+\)", body):
+                fail.append(f"{path}: {block} holds more than the list {macro} ({body[:80]})")
+for f in fail:
+    print("FAIL: " + f)
+if not fail:
+    print(f"ok: shared constants, functions and parameter blocks written once "
+          f"({len(distinct)} constants, {len(names)} functions, {len(lists)} blocks)")
+sys.exit(1 if fail else 0)
 PY
 then
   fail=1

@@ -58,7 +58,7 @@ inline std::vector<glm::vec4> runLive(Simulation& sim, const Config& base, const
   REQUIRE(sim.setConfig(changed, &error));
   for (int f = 0; f < after; ++f) sim.stepFrame();
   std::vector<glm::vec4> x;
-  sim.solver().readPositions(x);
+  sim.readPositions(x);
   return x;
 }
 

@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include "sim/solver/cpu_probe.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/core/hair_state.h"
 #include "sim/groom/hairstyle.h"
@@ -41,7 +42,7 @@ inline std::vector<glm::vec4> runFor(const SolverMaker& make, const Scene& scene
   SceneRunner run(*solver, scene);
   run.runTo(seconds);
   std::vector<glm::vec4> x;
-  solver->readPositions(x);
+  solver->state().readPositions(x);
   return x;
 }
 
@@ -99,7 +100,7 @@ inline double clampedSag(const SolverMaker& make, int particles, int substeps = 
   while (run.time() < 2.0 - 0.5 * frameDt) {
     run.frame();
     if (run.time() <= 1.75) continue;
-    solver->readPositions(x);
+    solver->state().readPositions(x);
     sum += double(x.front().y) - double(x.back().y);
     ++count;
   }
@@ -122,7 +123,7 @@ inline ClampedShape clampedShape(const SolverMaker& make, float windowLength, do
   SceneRunner run(*solver, s);
   run.runTo(2.0);
   std::vector<glm::vec4> x;
-  solver->readPositions(x);
+  solver->state().readPositions(x);
   ClampedShape shape;
   shape.sag = double(x.front().y) - double(x.back().y);
   shape.turn = clampTurnDegrees(s, x);
@@ -146,7 +147,7 @@ inline std::vector<glm::dvec3> swingTip(const SolverMaker& make, int particles) 
   std::vector<glm::vec4> x;
   while (run.time() < 1.0 - 0.5 * s.config.sim.dt) {
     run.frame();
-    solver->readPositions(x);
+    solver->state().readPositions(x);
     tip.emplace_back(x.back().x, x.back().y, x.back().z);
   }
   return tip;
@@ -202,15 +203,16 @@ inline double momentumDrift(const SolverMaker& make, int steps) {
     v[i] = glm::vec4(0.3f + 0.2f * std::sin(t), -0.1f + 0.15f * std::cos(1.7f * t),
                      0.2f + 0.1f * std::sin(2.3f * t), 0.0f);
   }
-  solver->writeState(x, v);
+  solver->state().write(x, v);
   auto momentum = [&] {
     glm::dvec3 p(0.0);
-    if (const auto* cpu = dynamic_cast<const CpuSolver*>(solver.get())) {
-      for (size_t i = 0; i < cpu->velocities().size(); ++i) p += mass[i] * cpu->velocities()[i];
+    if (auto* cpu = dynamic_cast<CpuSolver*>(solver.get())) {
+      const std::vector<glm::dvec3>& v = CpuProbe(*cpu).velocities();
+      for (size_t i = 0; i < v.size(); ++i) p += mass[i] * v[i];
       return p;
     }
     std::vector<glm::vec4> vel;
-    solver->readVelocities(vel);
+    solver->state().readVelocities(vel);
     for (size_t i = 0; i < vel.size(); ++i) p += mass[i] * glm::dvec3(glm::vec3(vel[i]));
     return p;
   };
@@ -394,7 +396,7 @@ inline void checkLargeDeflection(const SolverMaker& make) {
   SceneRunner run(*solver, s);
   run.runTo(4.0);
   std::vector<glm::vec4> x;
-  solver->readPositions(x);
+  solver->state().readPositions(x);
   const glm::dvec2 elastica =
       elasticaTip(length - held, double(s.config.sim.bendingStiffness), 9.81);
   // The clamp sits at arc `held` on the strand's rest line (x from the root, y = 0).

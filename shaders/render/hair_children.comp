@@ -68,7 +68,7 @@ void main() {
 
   // The disc at the root, its centre moved into the hair where the density falls.
   float r = radius * sqrt(hashToUnit(pcgHash(h + 2u)));
-  float phi = 2.0 * kPi * hashToUnit(pcgHash(h + 3u));
+  float phi = 2.0 * CSM_PI * hashToUnit(pcgHash(h + 3u));
   vec2 offset = r * vec2(cos(phi), sin(phi));
   offset += hairline.xy * radius * clamp(2.0 * (1.0 - density), 0.0, 1.0);
   offset *= 1.0 - uChildren.y * s;

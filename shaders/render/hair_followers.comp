@@ -7,6 +7,7 @@
 // the head out to the surface.
 #include "render/bindings.glsl"
 #include "render/hair_compute.glsl"
+#include "sim/shared_constants.glsl"
 
 layout(std430, binding = CSM_RENDER_FOLLOW_GUIDE_POSITIONS) readonly buffer GuidePositions {
   vec4 guidePositions[];
@@ -120,22 +121,12 @@ uniform vec3 uFieldOrigin;
 uniform float uFieldCell;
 uniform int uSpheres;
 
-// The field's gradient (xyz) and distance (w) at p (head frame), as DistanceGrid::sample.
+// The field's gradient (xyz) and distance (w) at p (head frame): the solver's sample
+// (shaders/sim/head_field_sample.glsl) of the nodes in head[].
+#define headFieldNode(i) head[i]
+#include "sim/head_field_sample.glsl"
 vec4 fieldAt(vec3 p) {
-  ivec3 dims = uFieldDims;
-  vec3 f = (p - uFieldOrigin) / uFieldCell;
-  vec3 inside = clamp(f, vec3(0.0), vec3(dims - 1));
-  float beyond = length(f - inside) * uFieldCell;
-  ivec3 c = min(ivec3(floor(inside)), dims - 2);
-  vec3 t = inside - vec3(c);
-  int base = c.x + dims.x * (c.y + dims.y * c.z);
-  int dy = dims.x, dz = dims.x * dims.y;
-  vec4 v = mix(mix(mix(head[base], head[base + 1], t.x), mix(head[base + dy], head[base + dy + 1], t.x), t.y),
-               mix(mix(head[base + dz], head[base + dz + 1], t.x),
-                   mix(head[base + dz + dy], head[base + dz + dy + 1], t.x), t.y),
-               t.z);
-  v.w += beyond;
-  return v;
+  return headFieldAt(uFieldDims, uFieldOrigin, uFieldCell, p);
 }
 
 void main() {
@@ -174,14 +165,15 @@ void main() {
     vec4 inverse = vec4(-uHeadRotation.xyz, uHeadRotation.w);
     vec3 local = turn(inverse, sum - uHeadTranslation);
     bool moved = false;
-    // A few rounds, each putting the point 0.1 mm out of the surface: the field is no exact
-    // distance, and a sphere's surface may lie in another (followers.cpp does the same).
-    for (int round = 0; round < 8; ++round) {
+    // A few rounds, each putting the point CSM_FOLLOWER_PUSH_MARGIN out of the surface: the
+    // field is no exact distance, and a sphere's surface may lie in another (followers.cpp does
+    // the same).
+    for (int round = 0; round < CSM_FOLLOWER_PUSH_ROUNDS; ++round) {
       bool again = false;
       if (uHeadShape == 1) {
         vec4 v = fieldAt(local);
         if (v.w < 0.0 && dot(v.xyz, v.xyz) > 0.0) {
-          local -= normalize(v.xyz) * (v.w - 1e-4);
+          local -= normalize(v.xyz) * (v.w - CSM_FOLLOWER_PUSH_MARGIN);
           again = true;
         }
       } else {
@@ -189,7 +181,7 @@ void main() {
           vec3 r = local - head[k].xyz;
           float l = length(r);
           if (l < head[k].w && l > 0.0) {
-            local = head[k].xyz + r * ((head[k].w + 1e-4) / l);
+            local = head[k].xyz + r * ((head[k].w + CSM_FOLLOWER_PUSH_MARGIN) / l);
             again = true;
           }
         }

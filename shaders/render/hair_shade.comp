@@ -50,7 +50,7 @@ void main() {
   // Ambient is dimmed inside the hair volume too: the deep layers see less of the sky.
   float ambient = uLightColor.a * mix(0.4, 1.0, light);
   vec3 albedo = hairAlbedo(guide, guideStrandId(guide), s);
-  guideShade[2u * i] = vec4(ambient + lightColor * diffuse / kPi, 0.0);
+  guideShade[2u * i] = vec4(ambient + lightColor * diffuse / CSM_PI, 0.0);
   guideShade[2u * i + 1u] =
-      vec4(lightColor * (spec1 + spec2 * normalize(albedo + 1e-4)) / kPi, 0.0);
+      vec4(lightColor * (spec1 + spec2 * normalize(albedo + 1e-4)) / CSM_PI, 0.0);
 }

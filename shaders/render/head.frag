@@ -36,6 +36,6 @@ void main() {
   vec3 albedo = mix(uHeadColor.rgb, rootColour * 0.7, scalp.a);
   spec *= 1.0 - scalp.a;
   vec3 light = uLightColor.rgb * uLightDir.w * visibility;
-  vec3 color = albedo * uLightColor.a * sky + light * (albedo * diffuse / kPi + spec);
+  vec3 color = albedo * uLightColor.a * sky + light * (albedo * diffuse / CSM_PI + spec);
   fragColor = vec4(color, 1.0);
 }

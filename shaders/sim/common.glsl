@@ -4,6 +4,7 @@
 // sim/gpu/gpu_params.h; a test compares the two layouts through GL's program introspection.
 #include "sim/bindings.glsl"
 #include "sim/shared_constants.glsl"
+#include "sim/shared_functions.glsl"
 
 // The parameter block, declared once for C++ and GLSL (shaders/sim/shared_constants.glsl says
 // what each field holds).
@@ -212,17 +213,7 @@ ivec3 cellOf(vec3 p) {
   return ivec3(clamp(floor((p - P.gridOrigin) * P.inverseCellEdge), float(kCellLow), float(kCellHigh)));
 }
 
-// Whether strand s is in the contact measures' sample of 1 in `stride` (sim/core/measure_sample.h
-// says why; the same hash there).
-bool inMeasureSample(uint s, uint stride) {
-  if (stride <= 1u) return true;
-  s ^= s >> 16;
-  s *= 0x7feb352du;
-  s ^= s >> 15;
-  s *= 0x846ca68bu;
-  s ^= s >> 16;
-  return s % stride == 0u;
-}
+// inMeasureSample(s, stride): shared_functions.glsl, the same text the C++ compiles.
 
 uint cellKey(ivec3 c) {
   uvec3 u = uvec3(c - kCellLow);

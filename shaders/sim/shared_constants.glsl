@@ -5,6 +5,19 @@
 #ifndef CSM_SIM_SHARED_CONSTANTS_GLSL
 #define CSM_SIM_SHARED_CONSTANTS_GLSL
 
+// ---- Numbers -----------------------------------------------------------------------------------
+// Pi to more digits than a double holds, so that C++ rounds it to M_PI and GLSL to the nearest
+// float: the wind field (shared_functions.glsl) and the render shaders' lighting and children.
+#define CSM_PI 3.14159265358979323846
+
+// ---- The follower push ------------------------------------------------------------------------
+// A follower point the blend of its guides put inside the head is moved out along the field's
+// normal (or a sphere's radius) to this far (m) outside the surface, in at most this many rounds
+// (the field is no exact distance, and a sphere's surface may lie in another):
+// sim/groom/followers.cpp (the CPU's followers) and shaders/render/hair_followers.comp.
+#define CSM_FOLLOWER_PUSH_ROUNDS 8
+#define CSM_FOLLOWER_PUSH_MARGIN 1e-4
+
 // ---- Strand contacts --------------------------------------------------------------------------
 // Near a held end a pair asks the free end for its depth over the lever arm; no end moves further
 // than this many times the pair's depth in one sweep: sim/solver/contacts.cpp (kLever, which

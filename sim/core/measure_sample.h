@@ -1,7 +1,8 @@
 // The strands a mode without strand contacts measures them on (--metrics, the Stats panel): every
 // strand up to CSM_MEASURED_PARTICLES particles, 1 in measureStride beyond, by a hash of the strand
-// (shaders/sim/shared_constants.glsl says why). The GPU's grid passes take the same hash
-// (shaders/sim/common.glsl, inMeasureSample), so both solvers measure the same strands.
+// (shaders/sim/shared_constants.glsl says why), by a hash of the strand both languages compile from
+// one text (inMeasureSample, shaders/sim/shared_functions.glsl), so both solvers measure the same
+// strands.
 #pragma once
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "shaders/sim/shared_constants.glsl"
+#include "sim/base/shared_functions.h"
 
 namespace csm {
 
@@ -21,15 +23,7 @@ inline uint32_t measureStride(std::size_t particles) {
 }
 
 // Whether strand s is in the sample of 1 in `stride`.
-inline bool inMeasureSample(uint32_t s, uint32_t stride) {
-  if (stride <= 1) return true;
-  s ^= s >> 16;
-  s *= 0x7feb352du;
-  s ^= s >> 15;
-  s *= 0x846ca68bu;
-  s ^= s >> 16;
-  return s % stride == 0;
-}
+using shared::inMeasureSample;
 
 // The particles' strands as a measure search takes them (the CPU solver; tests comparing the
 // GPU's): a particle of a strand outside the sample is a strand of its own, past every strand's

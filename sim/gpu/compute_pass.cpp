@@ -1,9 +1,6 @@
 #include "sim/gpu/compute_pass.h"
 
-#include <algorithm>
 #include <optional>
-
-#include "sim/gpu/pass_profile.h"
 
 namespace csm::gpu {
 
@@ -23,20 +20,16 @@ bool ComputePass::build(const char* path, uint32_t groupSize,
 }
 
 void ComputePass::run(uint32_t items) const {
-  const uint32_t groups = gl::Program::groupsFor(items, groupSize_);
-  if (groups == 0) return;
-  const uint32_t x = std::min<uint32_t>(groups, 65535u);
-  pass_profile::run(path_, [&] { program_.dispatch(x, (groups + x - 1) / x); });
+  program_.dispatchItems(items, groupSize_);
 }
 
 void ComputePass::runIndirect(const gl::Buffer& args, uint32_t slot) const {
-  pass_profile::run(
-      path_, [&] { program_.dispatchIndirect(args.id(), GLintptr(slot) * 4 * sizeof(GLuint)); });
+  program_.dispatchIndirect(args.id(), GLintptr(slot) * 4 * sizeof(GLuint));
 }
 
 void ComputePass::runSubstep(uint32_t items, unsigned substep) {
   program_.setUniform("substep", substep);
-  run(items);
+  program_.dispatchItems(items, groupSize_);
 }
 
 }  // namespace csm::gpu

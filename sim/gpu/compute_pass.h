@@ -26,9 +26,8 @@ class ComputePass {
   bool build(const char* path, uint32_t groupSize, const std::vector<gl::Define>& defines,
              std::string* error);
 
-  // Enough groups for `items` invocations (none for 0); beyond GL 4.3's 65535 groups per
-  // dimension, a 2D grid of groups that globalIndex() in common.glsl flattens (the same
-  // layout as dispatch_size.comp writes for runIndirect).
+  // Enough groups for `items` invocations (gl::Program::dispatchItems: a 2D grid of groups
+  // beyond 65,535, the layout dispatch_size.comp writes for runIndirect too).
   void run(uint32_t items) const;
   // As many groups as slot `slot` (a CSM_DISPATCH_*) of `args` says: a count of items only the
   // GPU knows, sized there by dispatch_size.comp (after a Command barrier).
@@ -45,7 +44,7 @@ class ComputePass {
  private:
   gl::Program program_{gl::NoCreate};
   uint32_t groupSize_ = 1;
-  std::string path_;  // shaders/<path_>, for the pass profile (sim/gpu/pass_profile.h)
+  std::string path_;  // shaders/<path_>, the program's name (the pass profile's row)
 };
 
 }  // namespace csm::gpu

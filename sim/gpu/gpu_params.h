@@ -33,4 +33,8 @@ static_assert(offsetof(SimParams, cellEdge) == 10 * 16);
 static_assert(offsetof(SimParams, listHalf) == offsetof(SimParams, bucketMask) + 12);
 static_assert(sizeof(Substep) == 144);
 
+// The parameter block read as a uniform block: the frame's parameters and CSM_MAX_SUBSTEPS
+// steps, the size the shaders declare (common.glsl), used or not.
+constexpr size_t kParamBlockBytes = sizeof(SimParams) + CSM_MAX_SUBSTEPS * sizeof(Substep);
+
 }  // namespace csm::gpu

@@ -11,12 +11,10 @@
 #include "gl/caps.h"
 #include "gl/debug.h"
 #include "gl/draw.h"
-#include "gl/fence.h"
 #include "sim/gpu/buffer_fill.h"
 #include "sim/gpu/strand_groups.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_model.h"
-#include "sim/base/state_bytes.h"
 #include "sim/core/measure_sample.h"
 #include "shaders/sim/bindings.glsl"
 #include "sim/solver/contacts.h"
@@ -26,10 +24,6 @@ namespace {
 
 // Strand lengths are rounded up to this step for MAX_N, so a regrown groom rarely recompiles.
 constexpr int kMaxNStep = 8;
-// The parameter block read as a uniform block: the frame's parameters and CSM_MAX_SUBSTEPS
-// steps, the size the shaders declare (common.glsl), used or not.
-constexpr size_t kParamBlockBytes =
-    sizeof(gpu::SimParams) + CSM_MAX_SUBSTEPS * sizeof(gpu::Substep);
 
 }  // namespace
 
@@ -38,13 +32,7 @@ const char* gpuKernelsName(GpuKernels k) {
 }
 
 GpuSolver::GpuSolver(bool cpuClock, GpuKernels kernels, Reads reads)
-    : kernels_(kernels),
-      reads_(reads),
-      timer_(cpuClock),
-      samples_([this](const uint32_t* counters) {
-        sampledContacts_ = gpu::contactStatsOf(counters);
-        sampledContacts_.measureStride = contactSearch_.measureStride();
-      }) {}
+    : kernels_(kernels), reads_(reads), timer_(cpuClock) {}
 
 std::vector<gl::Define> GpuSolver::withReads(std::vector<gl::Define> defines) const {
   if (reads_.uniformParams) defines.push_back({"CSM_PARAMS_UNIFORM", ""});
@@ -56,7 +44,7 @@ std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
   const gl::Caps caps = gl::queryCaps();
   const bool software = caps.software;
   Reads reads;
-  reads.uniformParams = !software && size_t(caps.maxUniformBlockSize) >= kParamBlockBytes;
+  reads.uniformParams = !software && size_t(caps.maxUniformBlockSize) >= gpu::kParamBlockBytes;
   reads.storage = !software;
   if (const char* env = std::getenv("CSM_GPU_READS"); env && *env) {
     const std::string want = env;
@@ -64,7 +52,7 @@ std::unique_ptr<GpuSolver> GpuSolver::create(std::string* error) {
       reads = Reads{};
     } else if (want == "storage") {
       reads.storage = true;
-      reads.uniformParams = size_t(caps.maxUniformBlockSize) >= kParamBlockBytes;
+      reads.uniformParams = size_t(caps.maxUniformBlockSize) >= gpu::kParamBlockBytes;
     } else {
       if (error) *error = "CSM_GPU_READS=" + want + " is not one of texture, storage";
       return nullptr;
@@ -177,7 +165,6 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   if (spheres_.id() == 0) spheres_ = gl::Buffer();
 
   if (listsCandidates()) sizeLists();
-  sampledContacts_ = ContactStats{};
   samples_.drop();
   gpu::zeroed<glm::uvec4>(measure_,
                           2 * ((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP));
@@ -217,36 +204,6 @@ void GpuSolver::setConfig(const Config& config) {
   }
 }
 
-MemoryUse GpuSolver::memoryUse() const {
-  MemoryUse m;
-  m.bytes = {{"strands", hair_.bytes()},
-             {"contacts", contactSearch_.bytes() + contactSolve_.bytes()},
-             {"volume", volume_.bytes()},
-             {"head and parameters", uint64_t(headField_.size() + paramsBuffer_.size() +
-                                              spheres_.size() + measure_.size())},
-             {"samples", samples_.bytes()}};
-  return m;
-}
-
-void GpuSolver::setContactMeasures(bool always) {
-  const bool listed = listsCandidates(), was = measureContacts_;
-  measureContacts_ = always;
-  if (!listed && listsCandidates()) sizeLists();
-  if (always && !was) measureAnew();
-}
-
-void GpuSolver::measureAnew() {
-  framesSinceMeasure_ = 2;
-  if (measureContacts_ && !strandContacts(config_.collision.mode)) measureNow();
-}
-
-void GpuSolver::measureNow() {
-  if (hair_.particles == 0 || !failure_.empty()) return;
-  listCandidatesNow(nullptr);
-  gl::memoryBarrier(gl::Barrier::All);
-  framesSinceMeasure_ = 0;
-}
-
 bool GpuSolver::listsCandidates() const {
   return strandContacts(config_.collision.mode) || measureContacts_;
 }
@@ -280,130 +237,6 @@ void GpuSolver::uploadHeadField() {
   gpu::view(headFieldTex_, headField_, gl::TextureFormat::Rgba32f);
   uploadedField_ = field;
   uploadedHead_ = headModel_.shared();  // keeps the field uploaded alive, so its address names it
-}
-
-void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before) {
-  writeStepParams(params_);
-  writeHeadParams(params_);
-  writeContactParams(params_, poses.back());
-  volume_.writeParams(params_, config_.collision, head_);
-  uploadParams(poses, before);
-}
-
-void GpuSolver::writeStepParams(gpu::SimParams& p) const {
-  const SimConfig& sim = config_.sim;
-  const WindConfig& wind = config_.wind;
-  p.gravity = sim.gravity;
-  const glm::dvec3 dir = glm::normalize(glm::dvec3(wind.direction));
-  p.windDirection = glm::vec3(dir);
-  p.windStrength = wind.strength;
-  p.gusts = wind.gusts;
-  p.gustFrequency = wind.gustFrequency;
-  p.turbulence = wind.turbulence;
-  p.turbulenceScale = wind.turbulenceScale;
-  p.alpha = sim.stiffness;
-  p.strainLimit = sim.strainLimit;
-  p.dftl = sim.dftl;
-  p.windDrag = wind.drag;
-  static_assert(int(StiffnessModel::Paper) == CSM_STIFFNESS_PAPER &&
-                int(StiffnessModel::Calibrated) == CSM_STIFFNESS_CALIBRATED);
-  p.stiffnessModel = int(sim.stiffnessModel);
-  p.rotationIterations = sim.rotationIterations;
-  p.strainLimiting = sim.strainLimiting;
-  p.windOn = wind.strength > 0.0f && wind.drag > 0.0f;
-  p.particles = hair_.particles;
-  p.strands = hair_.strands;
-  p.segments = hair_.segments;
-}
-
-void GpuSolver::writeHeadParams(gpu::SimParams& p) const {
-  const CollisionConfig& col = config_.collision;
-  p.radius = col.radius;
-  p.headFriction = col.headFriction;
-  p.headSpheres = int(shape_.spheres.size());
-  p.headCollision = collidesWithHead(col.mode);
-  if (const DistanceGrid* field = uploadedField_) {
-    p.headFieldOrigin = field->origin;
-    p.headFieldCell = field->cell;
-    p.headFieldDims = glm::uvec3(field->dims);
-    p.headIsField = 1u;
-  } else {
-    p.headFieldOrigin = glm::vec3(0.0f);
-    p.headFieldCell = 1.0f;
-    p.headFieldDims = glm::uvec3(2u);
-    p.headIsField = 0u;
-  }
-}
-
-void GpuSolver::writeContactParams(gpu::SimParams& p, const Pose& frameEnd) const {
-  const CollisionConfig& col = config_.collision;
-  const float reach = 2.0f * col.radius + col.margin;
-  p.candidateDistance = reach;
-  p.compliance = col.compliance;
-  p.friction = col.friction;
-  p.sweepSolve = col.solve == ContactSolve::Sweep ? 1.0f : 0.0f;
-  // The strain limit's sweep applies the constraints' corrections; penalties go to velocities.
-  p.strandContacts = strandContacts(col.mode) && col.model == ContactModel::Constraints;
-  p.penaltyStiffness = col.penaltyStiffness;
-  p.penaltyDamping = col.penaltyDamping;
-  contactSearch_.writeParams(p, reach);
-  // Cells count from the head, so the clamped 10-bit cell coordinates (common.glsl) cover
-  // +-512 cells around it wherever it moves.
-  p.gridOrigin = glm::vec3(frameEnd.translation);
-}
-
-void GpuSolver::uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before) {
-  const SimConfig& sim = config_.sim;
-  const gpu::SimParams& p = params_;
-  const int substeps = int(poses.size());
-  substepsWritten_ = substeps;
-  const double h = double(sim.dt) / substeps;
-  const double keep = std::exp(-double(sim.damping) * h);
-  std::vector<unsigned char> blob(sizeof(gpu::SimParams) + substeps * sizeof(gpu::Substep));
-  std::memcpy(blob.data(), &p, sizeof(p));
-  std::vector<glm::vec4> spheres;
-  double t = time_;
-  for (int k = 0; k < substeps; ++k) {
-    gpu::Substep s;
-    s.head = poses[k].matrix();
-    // Where a point on the head at the end of the step was at its start (head friction),
-    // composed in double: before * inverse(now).
-    glm::dmat4 now = glm::mat4_cast(poses[k].rotation), was = glm::mat4_cast(before[k].rotation);
-    now[3] = glm::dvec4(poses[k].translation, 1.0);
-    was[3] = glm::dvec4(before[k].translation, 1.0);
-    s.headDelta = glm::mat4(was * glm::inverse(now));
-    s.stepStart = float(t);
-    s.h = float(h);
-    s.twistStep = float(twistStepOf(sim, h, sim.rotationIterations));
-    s.velocityKept = float(keep);
-    std::memcpy(blob.data() + sizeof(p) + k * sizeof(s), &s, sizeof(s));
-    for (const Sphere& sp : worldSpheres(shape_.spheres, poses[k]))
-      spheres.emplace_back(sp.center, sp.radius);
-    t += h;  // as CpuSolver advances its clock, step by step
-  }
-  if (reads_.uniformParams) {
-    // A uniform block is read whole: the buffer holds CSM_MAX_SUBSTEPS steps, used or not.
-    if (size_t(paramsBuffer_.size()) < kParamBlockBytes)
-      paramsBuffer_.setData(GLsizeiptr(kParamBlockBytes), nullptr, gl::BufferUsage::DynamicDraw);
-    paramsBuffer_.setSubData(0, GLsizeiptr(blob.size()), blob.data());
-  } else {
-    paramsBuffer_.upload(blob);
-  }
-  gpu::fill(spheres_, spheres);
-}
-
-void GpuSolver::bindAll() {
-  const gl::BufferTarget ssbo = gl::BufferTarget::ShaderStorage;
-  hair_.bind();
-  contactSearch_.bind();
-  contactSolve_.bind();
-  paramsBuffer_.bindBase(ssbo, CSM_BIND_PARAMS);
-  if (reads_.uniformParams) paramsBuffer_.bindBase(gl::BufferTarget::Uniform, CSM_UNIFORM_PARAMS);
-  volume_.bind();
-  headFieldTex_.bind(CSM_TEX_HEAD_FIELD);
-  headField_.bindBase(ssbo, CSM_BIND_HEAD_FIELD);
-  spheres_.bindBase(ssbo, CSM_BIND_SPHERES);
-  measure_.bindBase(ssbo, CSM_BIND_MEASURE);
 }
 
 void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
@@ -511,187 +344,6 @@ void GpuSolver::listCandidatesNow(gpu::StageTimer* timer) {
   writeParams({head_}, {head_});
   bindAll();
   contactSearch_.findCandidates(timer);
-}
-
-void GpuSolver::finish() {
-  gl::finish();
-}
-
-void GpuSolver::readPositions(std::vector<glm::vec4>& out) {
-  out = hair_.position.download<glm::vec4>(hair_.particles);
-}
-
-void GpuSolver::readVelocities(std::vector<glm::vec4>& out) {
-  out = hair_.velocity.download<glm::vec4>(hair_.particles);
-}
-
-void GpuSolver::writeState(const std::vector<glm::vec4>& positions,
-                           const std::vector<glm::vec4>& velocities) {
-  if (hair_.particles == 0) return;
-  std::vector<glm::vec4> x(positions), v(velocities);
-  x.resize(hair_.particles, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-  v.resize(hair_.particles, glm::vec4(0.0f));
-  for (glm::vec4& p : x) p.w = 1.0f;
-  hair_.position.upload(x);
-  hair_.velocity.upload(v);
-}
-
-namespace {
-
-// The GPU solver's state (saveState, and a frame copy's): the particle count, the positions,
-// velocities and rotations the passes step, as the GPU holds them (float, bit for bit), the
-// time and the head. restoreState reads it.
-void writeGpuState(std::vector<std::byte>& bytes, const std::vector<glm::vec4>& position,
-                   const std::vector<glm::vec4>& velocity, const std::vector<glm::vec4>& rotation,
-                   double time, const Pose& head) {
-  StateWriter w(bytes);
-  w.put(position.size());
-  w.putVector(position);
-  w.putVector(velocity);
-  w.putVector(rotation);
-  w.put(time);
-  w.put(head);
-}
-
-}  // namespace
-
-void GpuSolver::saveState(SolverState& out) {
-  const size_t n = hair_.particles;
-  auto all = [n](const gl::Buffer& b) {
-    return n ? b.download<glm::vec4>(n) : std::vector<glm::vec4>{};
-  };
-  writeGpuState(out.bytes, all(hair_.position), all(hair_.velocity), all(hair_.rotation), time_,
-                head_);
-}
-
-namespace {
-
-class GpuFrameCopy final : public FrameCopy {
- public:
-  gl::Buffer staging{gl::NoCreate};
-  gl::Fence fence;
-  size_t particles = 0;
-  bool withState = false;
-  double time = 0.0;
-  Pose head;
-
-  bool ready() const override { return fence.passed(); }
-  void read(std::vector<glm::vec3>& positions, SolverState* state) override {
-    fence.wait();
-    const size_t n = particles;
-    const std::vector<glm::vec4> all =
-        n ? staging.download<glm::vec4>(n * (withState ? 3 : 1)) : std::vector<glm::vec4>{};
-    positions.assign(all.begin(), all.begin() + std::ptrdiff_t(n));
-    if (!state || !withState) return;
-    auto part = [&](size_t k) {
-      return std::vector<glm::vec4>(all.begin() + std::ptrdiff_t(k * n),
-                                    all.begin() + std::ptrdiff_t((k + 1) * n));
-    };
-    writeGpuState(state->bytes, part(0), part(1), part(2), time, head);
-  }
-};
-
-}  // namespace
-
-std::unique_ptr<FrameCopy> GpuSolver::copyFrame(bool withState) {
-  auto copy = std::make_unique<GpuFrameCopy>();
-  const size_t n = hair_.particles;
-  const GLsizeiptr bytes = GLsizeiptr(n * sizeof(glm::vec4));
-  copy->particles = n;
-  copy->withState = withState;
-  copy->time = time_;
-  copy->head = head_;
-  if (n > 0) {
-    copy->staging = gl::Buffer(bytes * (withState ? 3 : 1), nullptr, gl::BufferUsage::StreamRead);
-    gl::memoryBarrier(gl::Barrier::BufferUpdate);
-    hair_.position.copyTo(copy->staging, 0, 0, bytes);
-    if (withState) {
-      hair_.velocity.copyTo(copy->staging, 0, bytes, bytes);
-      hair_.rotation.copyTo(copy->staging, 0, 2 * bytes, bytes);
-    }
-  }
-  copy->fence = gl::Fence::insert();
-  return copy;
-}
-
-bool GpuSolver::restoreState(const SolverState& in, std::string* error) {
-  const size_t n = hair_.particles;
-  StateReader r(in.bytes);
-  std::vector<glm::vec4> x, v, q;
-  double time = 0.0;
-  Pose head;
-  if (!r.expectCount(n, "particles", error)) return false;
-  if (!r.getVector(x, n) || !r.getVector(v, n) || !r.getVector(q, n) || !r.get(time) ||
-      !r.get(head) || !r.done(error)) {
-    if (error && error->empty()) *error = "a saved state of another solver";
-    return false;
-  }
-  if (n > 0) {
-    hair_.position.upload(x);
-    hair_.velocity.upload(v);
-    hair_.rotation.upload(q);
-  }
-  time_ = time;
-  head_ = head;
-  // Lists sized for the hair restored (a denser state than the reset's overflowed its first
-  // frame), and no last list: the one kept is of another state, nothing to count crossings
-  // against (as after a reset).
-  if (listsCandidates()) sizeLists();
-  measureAnew();
-  return true;
-}
-
-void GpuSolver::carry(const Pose& by) {
-  if (hair_.particles == 0) return;
-  // Positions, velocities and each region's rotation (the warm start of its next extraction)
-  // turn with the hair, on the GPU (carry.comp).
-  const glm::dquat q = glm::normalize(by.rotation);
-  hair_.bind();
-  gl::memoryBarrier(gpu::kPassBarrier);
-  passes_.carry.set("turn", glm::vec4(float(q.x), float(q.y), float(q.z), float(q.w)))
-      .set("shift", glm::vec3(by.translation))
-      .set("count", uint32_t(hair_.particles))
-      .run(uint32_t(hair_.particles));
-  gl::memoryBarrier(gl::Barrier::All);
-  head_ = compose(by, head_);
-}
-
-unsigned GpuSolver::lastSubstepSpheres() const {
-  // The spheres buffer holds the head's spheres for each step of the last writeParams: the
-  // measures use the last step's.
-  if (shape_.spheres.empty()) return 0;
-  const size_t uploaded = size_t(spheres_.size()) / sizeof(glm::vec4);
-  return unsigned(uploaded - std::min(uploaded, shape_.spheres.size()));
-}
-
-void GpuSolver::requestSample(long frame) {
-  const bool listed = strandContacts(config_.collision.mode);
-  // With hair-hair off, the contact measures are of where this frame started, as a strand
-  // mode's list measures it: the search made when the last frame ended (after its sample, or
-  // when the measures or the settings changed). With frames stepped since and no sample
-  // between, of where this one ends (the crossings of the frames before it that no sample
-  // reported are lost).
-  const bool measuring = !listed && measureContacts_ && hair_.particles > 0;
-  if (measuring && framesSinceMeasure_ > 1) measureNow();
-  const uint32_t groups = uint32_t((hair_.particles + CSM_MEASURE_GROUP - 1) / CSM_MEASURE_GROUP);
-  samples_.request(
-      frame, groups,
-      [&] {
-        bindAll();
-        passes_.measure.set("sphereBase", lastSubstepSpheres())
-            .set("lastStep", unsigned(std::max(substepsWritten_ - 1, 0)))
-            .run(uint32_t(hair_.particles));
-      },
-      measure_, contactSearch_.counters(), listed || measureContacts_);
-  // The next frame's start, searched here, outside its timing (the sample has its copy).
-  if (measuring && framesSinceMeasure_ != 0) measureNow();
-}
-
-std::optional<FrameSample> GpuSolver::takeSample(bool wait) {
-  std::optional<FrameSample> sample = samples_.take(wait);
-  if (sample && sample->contactsMeasured)
-    sample->contacts.measureStride = contactSearch_.measureStride();
-  return sample;
 }
 
 std::unique_ptr<GpuSolver> GpuSolver::start(std::string* error) {

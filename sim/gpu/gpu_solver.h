@@ -44,7 +44,7 @@ namespace csm {
 enum class GpuKernels { PerStrand, PerParticle };
 const char* gpuKernelsName(GpuKernels k);
 
-class GpuSolver final : public Solver {
+class GpuSolver final : public Solver, public SolverState, public SolverDiagnostics {
  public:
   // Needs a current GL 4.3 context; compiles the shaders. Null, with the compiler's log in
   // `error`, when they do not build.
@@ -52,39 +52,41 @@ class GpuSolver final : public Solver {
   // The same, after checking that a context is current and runs GL 4.3 compute shaders: null
   // with a message that says what to do instead (--solver cpu) otherwise.
   static std::unique_ptr<GpuSolver> start(std::string* error);
-  ~GpuSolver() override;
+  ~GpuSolver();
 
+  // Solver (gpu_solver.cpp)
   std::string_view name() const override { return "gpu"; }
-  std::string variant() const override { return gpuKernelsName(kernels_); }
-  std::string failure() const override { return failure_; }
-  void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
+  void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setConfig(const Config& config) override;
   void stepFrame(const Pose& from, const Pose& to) override;
-
-  size_t strandCount() const override { return hair_.strands; }
-  size_t particleCount() const override { return hair_.particles; }
+  SolverCounts counts() const override { return {hair_.strands, hair_.particles}; }
   double time() const override { return time_; }
+  SolverState& state() override { return *this; }
+  SolverDiagnostics& diagnostics() override { return *this; }
 
-  void finish() override;
+  // SolverState (gpu_solver_state.cpp)
   void readPositions(std::vector<glm::vec4>& out) override;
   void readVelocities(std::vector<glm::vec4>& out) override;
-  void carry(const Pose& by) override;
-  void saveState(SolverState& out) override;
-  bool restoreState(const SolverState& in, std::string* error) override;
+  void write(const std::vector<glm::vec4>& positions,
+             const std::vector<glm::vec4>& velocities) override;
+  void save(SavedState& out) override;
+  bool restore(const SavedState& in, std::string* error) override;
   // Positions (and velocities and rotations with the state) copied on the GPU into a staging
   // buffer behind a fence: no wait now, none in read() once the fence has passed.
   std::unique_ptr<FrameCopy> copyFrame(bool withState) override;
-  void writeState(const std::vector<glm::vec4>& positions,
-                  const std::vector<glm::vec4>& velocities) override;
+  void carry(const Pose& by) override;
   unsigned positionBuffer() override { return hair_.position.id(); }
-  std::vector<StageTime> stageTimes() override { return timer_.times(); }
-  // Those of the latest sample taken: nothing is read back for them.
-  ContactStats contactStats() override { return sampledContacts_; }
-  void setContactMeasures(bool always) override;
+
+  // SolverDiagnostics (gpu_solver_diagnostics.cpp)
+  std::string variant() const override { return gpuKernelsName(kernels_); }
+  std::string failure() const override { return failure_; }
+  void finish() override;
   void requestSample(long frame) override;
-  std::optional<FrameSample> takeSample(bool wait = false) override;
+  std::optional<FrameSample> takeSample(bool wait) override;
   void dropSamples() override { samples_.drop(); }
+  void setContactMeasures(bool always) override;
+  std::vector<StageTime> stageTimes() override { return timer_.times(); }
   StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
   MemoryUse memoryUse() const override;
 
@@ -176,7 +178,6 @@ class GpuSolver final : public Solver {
   void measureNow();   // searches where the hair stands
   void measureAnew();  // after a reset, a restore or new settings (the lists already forgotten)
   gpu::SampleRing samples_;
-  ContactStats sampledContacts_;
 };
 
 }  // namespace csm

@@ -82,7 +82,6 @@ FrameSample SampleRing::readOldest() {
   }
   const uint32_t* c = reinterpret_cast<const uint32_t*>(&data[size_t(slot.groups) * 2]);
   sample.contacts = contactStatsOf(c);
-  seen_(c);
   return sample;
 }
 

@@ -17,10 +17,6 @@ namespace csm::gpu {
 
 class SampleRing {
  public:
-  // Called with the counters (CSM_COUNTERS of them) of every slot read.
-  using CountersSeen = std::function<void(const uint32_t* counters)>;
-  explicit SampleRing(CountersSeen seen) : seen_(std::move(seen)) {}
-
   // Copies `groups` measure records (two uvec4 each) and the counters, then fences. `measure`
   // runs the measure pass first (only when there are records).
   void request(long frame, uint32_t groups, const std::function<void()>& measure,
@@ -45,7 +41,6 @@ class SampleRing {
   static constexpr int kSlots = 4;
   FrameSample readOldest();  // its fence has passed
 
-  CountersSeen seen_;
   std::array<Slot, kSlots> slots_;
   std::deque<int> pending_;        // oldest first
   std::deque<FrameSample> ready_;  // read off a full ring, not taken yet

@@ -8,15 +8,10 @@
 
 #include "sim/groom/growth_head.h"
 #include "sim/head/distance_grid.h"
+#include "shaders/sim/shared_constants.glsl"
 
 namespace csm {
 namespace {
-
-// Rounds of the push out of the head, and how far out of the surface a point inside it is put
-// (m): the field is no exact distance, and a sphere's surface may lie in another. The shader
-// does the same.
-constexpr int kPushRounds = 8;
-constexpr double kPushMargin = 1e-4;
 
 // a (1 - t) + b t, written out: exactly a at t = 0 and b at t = 1 (the shader does the same).
 glm::vec3 blend(const glm::vec3& a, const glm::vec3& b, float t) {
@@ -121,13 +116,13 @@ FollowerStats makeFollowers(const FollowerBinding& b, const std::vector<glm::vec
     for (std::uint32_t i = 1; i < n; ++i) {
       glm::dvec3 local = toHead.apply(glm::dvec3(out[first + i]));
       bool moved = false;
-      for (int round = 0; round < kPushRounds; ++round) {
+      for (int round = 0; round < CSM_FOLLOWER_PUSH_ROUNDS; ++round) {
         bool again = false;
         if (collider.field) {
           glm::dvec3 gradient;
           const double d = collider.field->sample(local, &gradient);
           if (d < 0.0 && glm::length(gradient) > 0.0) {
-            local -= glm::normalize(gradient) * (d - kPushMargin);
+            local -= glm::normalize(gradient) * (d - CSM_FOLLOWER_PUSH_MARGIN);
             again = true;
           }
         } else {
@@ -135,7 +130,7 @@ FollowerStats makeFollowers(const FollowerBinding& b, const std::vector<glm::vec
             const glm::dvec3 r = local - glm::dvec3(sp.center);
             const double l = glm::length(r);
             if (l < sp.radius && l > 0.0) {
-              local = glm::dvec3(sp.center) + r * ((sp.radius + kPushMargin) / l);
+              local = glm::dvec3(sp.center) + r * ((sp.radius + CSM_FOLLOWER_PUSH_MARGIN) / l);
               again = true;
             }
           }

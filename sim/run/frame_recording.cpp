@@ -8,9 +8,9 @@
 namespace csm {
 namespace {
 
-std::vector<glm::vec3> positionsOf(Solver& solver) {
+std::vector<glm::vec3> positionsOf(const Simulation& sim) {
   std::vector<glm::vec4> x;
-  solver.readPositions(x);
+  sim.readPositions(x);
   return std::vector<glm::vec3>(x.begin(), x.end());
 }
 
@@ -136,10 +136,10 @@ bool FrameRecording::resume(Simulation& sim, long frame, std::string* error, dou
   // Stepped again with the parameters it ran with; from there on, today's.
   const Config today = sim.config();
   if (!sim.restore(*frames_[key].key, error)) return false;
-  for (long f = frames_[key].shown.frame; f < frame; ++f) sim.stepFrame();
+  for (long f = frames_[key].shown.frame; f < frame; ++f) sim.replayFrame();
   if (!sim.setConfig(today, error)) return false;
   if (mismatch) {
-    const std::vector<glm::vec3> now = positionsOf(sim.solver());
+    const std::vector<glm::vec3> now = positionsOf(sim);
     const std::vector<glm::vec3>& then = frames_[at].shown.positions;
     double worst = now.size() == then.size() ? 0.0 : INFINITY;
     for (size_t i = 0; i < now.size() && i < then.size(); ++i)

@@ -1,10 +1,10 @@
 // The viewer's timeline: the frames a simulation ran, kept within a memory budget, to show
 // again, step through, export and resume from.
 //
-// Nothing waits for the GPU: record() asks the solver for a copy of the frame (Solver::copyFrame:
-// on the GPU a copy behind a fence) and the frame joins the recording when its copy has arrived,
-// a frame or two later (collect(), called by record(); flush() waits for them all). What the
-// accessors see is the frames arrived.
+// Nothing waits for the GPU: record() asks the solver for a copy of the frame
+// (SolverState::copyFrame: on the GPU a copy behind a fence) and the frame joins the recording when
+// its copy has arrived, a frame or two later (collect(), called by record(); flush() waits for them
+// all). What the accessors see is the frames arrived.
 //
 // Every recorded frame keeps its positions (xyz a particle: what the renderer and the export
 // need); every keyframeEvery-th frame also the whole SimulationState. Resuming from frame k

@@ -1,8 +1,8 @@
 #include "sim/run/make_solver.h"
 
+#include "sim/solver/baselines/make_baseline.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/gpu/gpu_solver.h"
-#include "sim/gpu/pass_profile.h"
 
 namespace csm {
 
@@ -13,12 +13,21 @@ std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error) 
   return nullptr;
 }
 
-void clearPassProfile() {
-  gpu::pass_profile::clear();
+SolverMaker solverMaker(const std::string& name, const BaselineParams& params) {
+  return [name, params]() -> std::unique_ptr<Solver> {
+    if (name == "cpu" || name == "csm")
+      return std::make_unique<CpuSolver>(CpuSolver::RegionSums::Prefix);
+    if (name == "csm-direct") return std::make_unique<CpuSolver>(CpuSolver::RegionSums::Direct);
+    if (name == "gpu") return GpuSolver::start(nullptr);
+    return makeBaseline(name, params);
+  };
 }
 
-std::string passProfileTable(long frames) {
-  return gpu::pass_profile::table(frames);
+std::unique_ptr<Simulation> makeSimulation(const std::string& name, std::string* error,
+                                           const SolverByName& make) {
+  std::unique_ptr<Solver> solver = make(name, error);
+  if (!solver) return nullptr;
+  return std::make_unique<Simulation>(std::move(solver));
 }
 
 }  // namespace csm

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "sim/core/solver.h"
+#include "sim/solver/baselines/baseline_solver.h"
+#include "sim/run/simulation.h"
 
 namespace csm {
 
@@ -19,12 +21,14 @@ using SolverByName =
 // Null with a message when the name is unknown or the solver cannot start.
 std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error);
 
-// The GPU solver's pass profile (CSM_PASS_PROFILE=1 in the environment, sim/gpu/pass_profile.h),
-// here so that a program reaches the GPU solver only through this factory. Forgets what was timed
-// so far: a run calls it after its set-up, so that the table holds its frames only.
-void clearPassProfile();
-// Every pass's ms a frame over `frames` frames, slowest first; empty when nothing was timed (the
-// profile off, or no GPU solver ran).
-std::string passProfileTable(long frames);
+// Every kind of solver by name, for the benchmarks and the measures: "cpu" (or "csm"), "csm-direct"
+// (the CPU solver summing its regions directly), "gpu" (none without a context), and the
+// baselines (sim/solver/baselines/make_baseline.h) with `params`; none for an unknown name.
+SolverMaker solverMaker(const std::string& name, const BaselineParams& params = {});
+
+// A simulation (no scene loaded yet) on the solver `make` makes by `name`: what the app runs, so
+// that it never holds a solver. Null with the maker's message when there is none.
+std::unique_ptr<Simulation> makeSimulation(const std::string& name, std::string* error,
+                                           const SolverByName& make = makeSolver);
 
 }  // namespace csm

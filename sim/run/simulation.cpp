@@ -1,6 +1,7 @@
 #include "sim/run/simulation.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include <glm/geometric.hpp>
 
@@ -89,6 +90,7 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     startingSolver();
     solver_->setHead(head_);
     solver_->reset(*groom_, config_, lastPose_);
+    restartSamples();
     return solverReady(error);
   }
   config_ = config;
@@ -97,7 +99,7 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
 }
 
 bool Simulation::solverReady(std::string* error) const {
-  const std::string failure = solver_->failure();
+  const std::string failure = solver_->diagnostics().failure();
   if (failure.empty()) return true;
   if (error) *error = std::string(solver_->name()) + " solver: " + failure;
   return false;
@@ -147,6 +149,7 @@ void Simulation::reset() {
   lastUserPose_ = userPose_;
   solver_->setHead(head_);
   solver_->reset(*groom_, config_, lastPose_);
+  restartSamples();
 }
 
 Pose Simulation::headPoseAt(double t) const {
@@ -154,6 +157,57 @@ Pose Simulation::headPoseAt(double t) const {
 }
 
 void Simulation::stepFrame() {
+  using Clock = std::chrono::steady_clock;
+  if (stopped()) return;
+  SolverDiagnostics& diagnostics = solver_->diagnostics();
+  // Timed to completion, the frame's time starts when the GPU has done what came before it
+  // (the last sample's measures among them).
+  if (sampling_.timeToCompletion) diagnostics.finish();
+  const auto t0 = Clock::now();
+  advance();
+  if (sampling_.timeToCompletion) diagnostics.finish();
+  lastStepMs_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  const bool due = sampling_.wait || sampling_.every == 1 ||
+                   (sampling_.every > 1 && frame_ % sampling_.every == 0);
+  if (due) diagnostics.requestSample(frame_);
+  takeReady(sampling_.wait);
+}
+
+void Simulation::replayFrame() {
+  advance();
+}
+
+void Simulation::takeReady(bool wait) {
+  while (std::optional<FrameSample> s = solver_->diagnostics().takeSample(wait)) accept(*s);
+}
+
+void Simulation::accept(const FrameSample& sample) {
+  latest_ = sample;
+  taken_.push_back(sample);
+  if (sample.accuracy.nanCount > 0 && !stopped()) {
+    nanFrame_ = sample.frame;
+    nanParticles_ = sample.accuracy.nanCount;
+  }
+}
+
+void Simulation::drainSamples() {
+  takeReady(true);
+}
+
+std::vector<FrameSample> Simulation::takeSamples() {
+  std::vector<FrameSample> out;
+  out.swap(taken_);
+  return out;
+}
+
+void Simulation::restartSamples() {
+  solver_->diagnostics().dropSamples();
+  latest_.reset();
+  nanFrame_ = -1;
+  nanParticles_ = 0;
+}
+
+void Simulation::advance() {
   const double next = time_ + config_.sim.dt;
   // The user's move of the head this frame (a drag, a reset of it), beyond the preset's motion.
   const Pose motion = csm::headPose(config_.head, next);
@@ -161,7 +215,7 @@ void Simulation::stepFrame() {
   const Pose jump = jumpOf(compose(lastUserPose_, motion), to);
   if (jump.rotation != glm::dquat(1.0, 0.0, 0.0, 0.0) || jump.translation != glm::dvec3(0.0)) {
     // The hair goes with the head for the part of its motion too fast to simulate.
-    solver_->carry(jump);
+    solver_->state().carry(jump);
     lastPose_ = compose(jump, lastPose_);
     ++carried_;
   }
@@ -176,7 +230,7 @@ std::unique_ptr<FrameCopy> Simulation::copyFrame(SimulationState* state) {
   if (state) {
     save(*state, false);
   }
-  return solver_->copyFrame(state != nullptr);
+  return solver_->state().copyFrame(state != nullptr);
 }
 
 void Simulation::save(SimulationState& out) const {
@@ -192,7 +246,7 @@ void Simulation::save(SimulationState& out, bool withSolver) const {
   out.lastUserPose = lastUserPose_;
   out.lastPose = lastPose_;
   out.config = config_;
-  if (withSolver) solver_->saveState(out.solver);
+  if (withSolver) solver_->state().save(out.solver);
 }
 
 bool Simulation::restore(const SimulationState& in, std::string* error) {
@@ -205,7 +259,7 @@ bool Simulation::restore(const SimulationState& in, std::string* error) {
   const Config now = config_;
   config_ = in.config;
   solver_->setConfig(config_);
-  if (!solver_->restoreState(in.solver, error)) {
+  if (!solver_->state().restore(in.solver, error)) {
     config_ = now;
     solver_->setConfig(config_);
     return false;
@@ -216,6 +270,7 @@ bool Simulation::restore(const SimulationState& in, std::string* error) {
   userPose_ = in.userPose;
   lastUserPose_ = in.lastUserPose;
   lastPose_ = in.lastPose;
+  restartSamples();
   return true;
 }
 

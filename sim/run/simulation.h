@@ -1,9 +1,14 @@
-// A running scene: the config, the groom grown from it, a solver and the head's motion.
-// The headless loop and the viewer both drive one of these; a changed parameter either takes
-// effect on the next step or, when it changes the hair's shape, regrows the groom.
+// A running scene: the config, the groom grown from it, a solver and the head's motion, and the
+// frame loop the headless runs, the window's simulation thread and the benchmarks share: a frame
+// stepped, its measures sampled without waiting (the solver's fenced ring, read a few frames
+// late), a stop on NaN. A changed parameter either takes effect on the next step or, when it
+// changes the hair's shape, regrows the groom. The solver stays inside: what is drawn and shown
+// of it (positions, counts, diagnostics) is read through here.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,13 +41,27 @@ struct SimulationState {
   long carried = 0;
   Pose userPose, lastUserPose, lastPose;
   Config config;
-  SolverState solver;
+  SavedState solver;
   size_t bytes() const { return sizeof(*this) + solver.bytes.size(); }
+};
+
+// How a simulation samples its frames' measures and times them.
+struct Sampling {
+  // Frames between samples; 1 samples every frame (metrics), more only watches for NaN, 0
+  // takes none (timing runs, and runs that check their results themselves).
+  int every = 0;
+  // Take each frame's sample before the next frame (waiting for it): for runs that write
+  // frames out, so that none is written before its NaN check.
+  bool wait = false;
+  // Wait for each frame's GPU work to end before timing it (glFinish): honest wall times for
+  // the metrics, a stall otherwise.
+  bool timeToCompletion = false;
 };
 
 class Simulation {
  public:
-  explicit Simulation(std::unique_ptr<Solver> solver) : solver_(std::move(solver)) {}
+  explicit Simulation(std::unique_ptr<Solver> solver, const Sampling& sampling = {})
+      : solver_(std::move(solver)), sampling_(sampling) {}
 
   // Where a long groom import stands, while load or setConfig build one (sim/groom/scene_groom.h).
   void setImportProgress(ImportProgress progress) { importProgress_ = std::move(progress); }
@@ -58,7 +77,26 @@ class Simulation {
   // Back to the rest shape, time 0.
   void reset();
 
+  // One frame, unless stopped on NaN: the head's pose at the next time, the solver's frame,
+  // the sample when one is due; then the samples that are ready (with Sampling::wait, this
+  // frame's), whose NaN count stops the simulation.
   void stepFrame();
+  // One frame as stepFrame steps it, neither timed nor sampled: frames already stepped once,
+  // stepped again from a restored state (sim/run/frame_recording.h).
+  void replayFrame();
+  void setSampling(const Sampling& sampling) { sampling_ = sampling; }
+  // Takes every sample still in flight, waiting for them (the end of a run).
+  void drainSamples();
+  // Samples taken since the last call, oldest first.
+  std::vector<FrameSample> takeSamples();
+  const std::optional<FrameSample>& latestSample() const { return latest_; }
+  // The NaN policy: a sample that counts non-finite particles stops the simulation until the
+  // hair starts again (a reset, a regrow, a restore).
+  bool stopped() const { return nanFrame_ >= 0; }
+  long nanFrame() const { return nanFrame_; }
+  uint64_t nanParticles() const { return nanParticles_; }
+  // Wall time of the last stepFrame, ms.
+  double lastStepMs() const { return lastStepMs_; }
   // Saves where the scene is; restores it, config included, so that the frames after run as
   // they did from there. Fails (false, *error set) for a state of another groom (a regrow in
   // between) and then changes nothing.
@@ -73,8 +111,16 @@ class Simulation {
   Pose headPoseAt(double t) const;
   Pose headPose() const { return headPoseAt(time_); }
 
-  Solver& solver() { return *solver_; }
-  const Solver& solver() const { return *solver_; }
+  // The solver's name, its counts (the simulated strands and their particles) and what it says of
+  // itself (stage times, stiffness, memory, failure, its kernel path).
+  std::string_view solverName() const { return solver_->name(); }
+  SolverCounts counts() const { return solver_->counts(); }
+  SolverDiagnostics& diagnostics() const { return solver_->diagnostics(); }
+  // The simulated positions (world, a vec4 a particle) and velocities read back, and the GL
+  // buffer that holds the positions where the solver keeps them on the GPU (0: read them).
+  void readPositions(std::vector<glm::vec4>& out) const { solver_->state().readPositions(out); }
+  void readVelocities(std::vector<glm::vec4>& out) const { solver_->state().readVelocities(out); }
+  unsigned positionBuffer() const { return solver_->state().positionBuffer(); }
   const Config& config() const { return config_; }
   // The strands simulated: the whole groom, or its guides (hairstyle.guides).
   const Groom& groom() const { return *groom_; }
@@ -127,6 +173,18 @@ class Simulation {
   GroomReport groomReport_;
   ImportProgress importProgress_;
   void startingSolver() const;
+  // The head's move and the solver's frame (stepFrame, replayFrame).
+  void advance();
+  // The samples of the hair before are moot: dropped, and the NaN stop cleared.
+  void restartSamples();
+  void takeReady(bool wait);
+  void accept(const FrameSample& sample);
+  Sampling sampling_;
+  std::vector<FrameSample> taken_;
+  std::optional<FrameSample> latest_;
+  long nanFrame_ = -1;
+  uint64_t nanParticles_ = 0;
+  double lastStepMs_ = 0.0;
   Pose userPose_;
   Pose lastUserPose_;  // the user's pose the last frame ran with
   Pose lastPose_;

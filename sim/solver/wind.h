@@ -1,5 +1,6 @@
-// The wind field u(x, t): direction x strength x (1 + gusts(t)) + spatial turbulence.
-// shaders/sim/wind.glsl evaluates the same formula in float; keep the two in step.
+// The wind field u(x, t): direction x strength x (1 + gusts(t)) + spatial turbulence, in double
+// from the text shaders/sim/wind.glsl compiles in float (windField,
+// shaders/sim/shared_functions.glsl).
 #pragma once
 
 #include <glm/vec3.hpp>

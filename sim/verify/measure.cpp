@@ -1,11 +1,13 @@
 #include "sim/verify/measure.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "sim/verify/points.h"
 #include "sim/core/segment_pairs.h"
 #include "sim/core/hair_state.h"
 #include "sim/core/pose.h"
@@ -14,28 +16,31 @@
 #include "sim/verify/solver_head.h"
 
 namespace csm {
-namespace {
 
-glm::dvec3 d3(const glm::vec4& p) {
-  return glm::dvec3(p.x, p.y, p.z);
+SceneRunner::SceneRunner(Solver& solver, const Scene& scene) : solver_(&solver), scene_(scene) {
+  resetWithHead(*solver_, scene.groom, scene.config, headPose(scene.config.head, 0.0));
 }
 
-bool finite(const glm::vec4& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
-}  // namespace
-
-SceneRunner::SceneRunner(Solver& solver, const Scene& scene) : solver_(solver), scene_(scene) {
-  resetWithHead(solver_, scene.groom, scene.config, headPose(scene.config.head, 0.0));
+SceneRunner::SceneRunner(const SolverMaker& make, const Scene& scene)
+    : owned_(make()), solver_(owned_.get()), scene_(scene) {
+  if (solver_) resetWithHead(*solver_, scene.groom, scene.config, headPose(scene.config.head, 0.0));
 }
 
 void SceneRunner::frame() {
   const double dt = scene_.config.sim.dt;
   const Pose from = headPose(scene_.config.head, frames_ * dt);
   const Pose to = headPose(scene_.config.head, (frames_ + 1) * dt);
-  solver_.stepFrame(from, to);
+  solver_->stepFrame(from, to);
   ++frames_;
+}
+
+double SceneRunner::timedFrame() {
+  using Clock = std::chrono::steady_clock;
+  solver_->diagnostics().finish();
+  const auto t0 = Clock::now();
+  frame();
+  solver_->diagnostics().finish();
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
 void SceneRunner::runTo(double t) {
@@ -70,8 +75,8 @@ PositionError timeStepError(const SolverMaker& make, const Scene& scene,
   for (double t : times) {
     coarse.runTo(t);
     reference.runTo(t);
-    coarseSolver->readPositions(a);
-    fineSolver->readPositions(b);
+    coarse.readPositions(a);
+    reference.readPositions(b);
     acc.add(a, b);
   }
   return acc.result();
@@ -191,14 +196,15 @@ StabilityResult checkStability(Solver& solver, const Scene& scene, double durati
   const EnergyMeter energy(scene.groom, scene.config.sim);
   const std::vector<double> rest = restLengths(scene.groom);
   std::vector<glm::vec4> x, v;
-  solver.readPositions(x);
-  solver.readVelocities(v);
+  run.readPositions(x);
+  run.readVelocities(v);
   const double e0 = std::max(energy(x, v), 1e-300);
   StabilityResult r;
+  r.stiffness = run.diagnostics().stiffness();
   while (run.time() < duration - 0.5 * scene.config.sim.dt) {
     run.frame();
-    solver.readPositions(x);
-    solver.readVelocities(v);
+    run.readPositions(x);
+    run.readVelocities(v);
     r.time = run.time();
     const Accuracy acc = measureAccuracy(x, v, scene.groom, rest, {}, scene.config.sim.pinned);
     if (acc.nanCount > 0) {
@@ -222,6 +228,13 @@ StabilityResult checkStability(Solver& solver, const Scene& scene, double durati
     }
   }
   return r;
+}
+
+StabilityResult checkStability(const SolverMaker& make, const Scene& scene, double duration,
+                               double maxStretch, double maxEnergyRatio) {
+  std::unique_ptr<Solver> solver = make();
+  if (!solver) return {};
+  return checkStability(*solver, scene, duration, maxStretch, maxEnergyRatio);
 }
 
 double rodPendulumPeriod(double length, double gravity, double amplitude) {
@@ -277,12 +290,12 @@ PendulumResult measurePendulum(Solver& solver, const Scene& scene, double period
     const glm::dvec3 d = com / m - d3(x[a]);
     return std::atan2(d.x, -d.y);
   };
-  solver.readPositions(x);
+  run.readPositions(x);
   double prev = angle(), prevT = 0.0;
   std::vector<double> crossings;
   while (run.time() < periods * r.expected) {
     run.frame();
-    solver.readPositions(x);
+    run.readPositions(x);
     if (!finite(x[b - 1])) {
       r.finite = false;
       return r;
@@ -300,6 +313,12 @@ PendulumResult measurePendulum(Solver& solver, const Scene& scene, double period
     r.relativeError = (r.period - r.expected) / r.expected;
   }
   return r;
+}
+
+PendulumResult measurePendulum(const SolverMaker& make, const Scene& scene, double periods) {
+  std::unique_ptr<Solver> solver = make();
+  if (!solver) return {};
+  return measurePendulum(*solver, scene, periods);
 }
 
 uint64_t closeSegmentPairs(std::span<const glm::vec4> x, const Groom& groom, double distance) {

@@ -25,18 +25,30 @@ struct Scene {
   Config config;
 };
 
-// Drives a solver through a scene frame by frame, the head following config.head's motion.
+// Drives a solver through a scene frame by frame, the head following config.head's motion: the
+// solver handed the scene's head and reset at rest, then stepped. On a solver of the caller's,
+// or on one it makes and owns (the benchmarks, which hold no solver).
 class SceneRunner {
  public:
   SceneRunner(Solver& solver, const Scene& scene);
+  // Null when `make` makes none (the GPU solver without a context): ok() says.
+  SceneRunner(const SolverMaker& make, const Scene& scene);
+  bool ok() const { return solver_ != nullptr; }
   void frame();          // one frame of config.sim.dt
   void runTo(double t);  // frames until time() >= t (within half a frame)
+  // One frame timed to its completion (the solver's work waited for before and after), ms.
+  double timedFrame();
   double time() const { return double(frames_) * scene_.config.sim.dt; }
   long frames() const { return frames_; }
-  Solver& solver() { return solver_; }
+
+  // The solver's state and what it says of itself.
+  void readPositions(std::vector<glm::vec4>& out) { solver_->state().readPositions(out); }
+  void readVelocities(std::vector<glm::vec4>& out) { solver_->state().readVelocities(out); }
+  SolverDiagnostics& diagnostics() { return solver_->diagnostics(); }
 
  private:
-  Solver& solver_;
+  std::unique_ptr<Solver> owned_;
+  Solver* solver_ = nullptr;
   const Scene& scene_;
   long frames_ = 0;
 };
@@ -126,6 +138,7 @@ struct StabilityResult {
   double maxStrain = 0.0;    // largest stretch seen over the run
   double energyRatio = 0.0;  // largest energy over the run / energy at the start
   double time = 0.0;         // when it blew up (or the run's length)
+  StiffnessInfo stiffness;   // what the solver ran with
 };
 
 // Runs the scene for `duration` seconds and reports the first blow-up: a non-finite position
@@ -133,6 +146,9 @@ struct StabilityResult {
 // `maxEnergyRatio` times its start (the scene must start at rest with energy > 0 and have no
 // driving: no head motion, no wind).
 StabilityResult checkStability(Solver& solver, const Scene& scene, double duration,
+                               double maxStretch = 1.0, double maxEnergyRatio = 1.25);
+// The same on a solver `make` makes (none: an empty result).
+StabilityResult checkStability(const SolverMaker& make, const Scene& scene, double duration,
                                double maxStretch = 1.0, double maxEnergyRatio = 1.25);
 
 // ---- Pendulum -------------------------------------------------------------------------------
@@ -158,6 +174,7 @@ Scene pendulumScene(int particles, double length, double amplitude, double frame
 // Runs the scene `periods` expected periods and measures the period from the zero crossings of
 // the angle between the vertical and the line from the root to the strand's centre of mass.
 PendulumResult measurePendulum(Solver& solver, const Scene& scene, double periods = 4.0);
+PendulumResult measurePendulum(const SolverMaker& make, const Scene& scene, double periods = 4.0);
 
 // ---- Hair-hair ----------------------------------------------------------------------------
 

@@ -9,23 +9,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/verify/points.h"
 #include "sim/run/simulation.h"
 #include "sim/solver/accuracy.h"
 #include "sim/verify/torture.h"
 
 namespace csm {
-
-namespace {
-
-glm::dvec3 d3(const glm::vec4& p) {
-  return {p.x, p.y, p.z};
-}
-
-bool finite(const glm::vec4& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
-}  // namespace
 
 namespace {
 
@@ -106,7 +95,7 @@ SoakResult runSoak(const SolverMaker& make, const Config& base, const SoakOption
       return r;
     }
     for (long f = 0; f < stillFrames; ++f) rest.stepFrame();
-    rest.solver().readPositions(settled);
+    rest.readPositions(settled);
     r.restWallSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
   }
 
@@ -127,8 +116,8 @@ SoakResult runSoak(const SolverMaker& make, const Config& base, const SoakOption
   for (long f = 0; f < o.frames; ++f) {
     if (f == o.movingFrames) sim.setConfig(still, nullptr);
     sim.stepFrame();
-    sim.solver().readPositions(x);
-    sim.solver().readVelocities(v);
+    sim.readPositions(x);
+    sim.readVelocities(v);
     r.frames = f + 1;
     double strain = 0.0;
     for (size_t i = 0; i < x.size(); ++i) {
@@ -157,7 +146,7 @@ SoakResult runSoak(const SolverMaker& make, const Config& base, const SoakOption
       if (progress) progress(r.frames, r);
     }
   }
-  sim.solver().finish();
+  sim.diagnostics().finish();
   r.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.framesPerSecond = r.frames / std::max(1e-9, r.wallSeconds);
   r.rssEndKb = residentKb();

@@ -9,6 +9,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/base/format.h"
+#include "sim/verify/points.h"
 #include "sim/core/hair_state.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_model.h"
@@ -19,21 +21,6 @@
 
 namespace csm {
 namespace {
-
-template <class... A>
-std::string format(const char* f, A... a) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, f, a...);
-  return buf;
-}
-
-glm::dvec3 d3(const glm::vec4& p) {
-  return {p.x, p.y, p.z};
-}
-
-bool finite(const glm::vec4& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
 
 // The far ends: the for the step (1/240-1/24 s) and the substeps (1-8), the parameter
 // table's (sim/param/sim_params.cpp) for the rest; tests/cpu/torture_test.cpp checks them against
@@ -227,8 +214,8 @@ TortureResult runTorture(const SolverMaker& make, const TortureCell& cell,
     for (const glm::vec3& p : groom.points)
       r.rigidSpeed = std::max(r.rigidSpeed, arcLength(from, to, glm::dvec3(p)) / dt);
     sim.stepFrame();
-    sim.solver().readPositions(x);
-    sim.solver().readVelocities(v);
+    sim.readPositions(x);
+    sim.readVelocities(v);
     r.frames = f + 1;
     const Pose pose = sim.headPose();
     uint64_t inside = 0;
@@ -261,9 +248,9 @@ TortureResult runTorture(const SolverMaker& make, const TortureCell& cell,
     r.maxInside = std::max(r.maxInside, inside);
     r.insideFrames += inside > 0;
   }
-  sim.solver().finish();
+  sim.diagnostics().finish();
   r.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-  r.stepsPerFrame = sim.solver().stiffness().plan.substeps;
+  r.stepsPerFrame = sim.diagnostics().stiffness().plan.substeps;
   r.speedBound = criteria.speedFactor * (r.rigidSpeed + r.windSpeed) + r.fallSpeed;
   r.stretchOk = r.maxStrain <= config.sim.strainLimit + criteria.strainTolerance;
   r.headOk = !r.headChecked || r.deepestMm <= criteria.penetrationMm;

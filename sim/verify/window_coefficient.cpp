@@ -5,7 +5,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "sim/solver/cpu_solver.h"
+#include "sim/solver/cpu_probe.h"
 #include "sim/verify/solver_head.h"
 
 namespace csm {
@@ -35,17 +35,19 @@ double measureWindowCoefficient(int w) {
     const double amplitude = 1e-6 / kappa;
     CpuSolver solver;
     resetWithHead(solver, straight, c, Pose{});
-    // The wave is set in double, as the solver holds it (writeState would round it to float and
-    // move the measure off the table's digits): this function is the solver's friend for that.
-    std::vector<glm::dvec3>& x = solver.x_;
+    // The wave is set in double, as the solver holds it (SolverState::write would round it to
+    // float and move the measure off the table's digits).
+    CpuProbe probe(solver);
+    std::vector<glm::dvec3> x = probe.positions();
     for (int i = 0; i < n; ++i) x[i] = glm::dvec3(i * l, amplitude * std::sin(kappa * i * l), 0.0);
-    solver.step(1e-3, Pose{});
+    probe.setPositions(x);
+    probe.step(1e-3, Pose{});
     // The middle particles, whose goals no clipped region and no clipped per-region mass
     // reaches (3w from either end): there g = (1 - mu) u exactly.
     double gu = 0.0, uu = 0.0;
     for (int i = 3 * w + 1; i < n - 3 * w - 1; ++i) {
       const double u = amplitude * std::sin(kappa * i * l);
-      gu += solver.positions()[i].y * u;
+      gu += probe.positions()[i].y * u;
       uu += u * u;
     }
     return (1.0 - gu / uu) / std::pow(kwl, 4.0);

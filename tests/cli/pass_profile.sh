@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# CSM_PASS_PROFILE=1: a headless run ends with its GPU passes' ms a frame, one row a shader and
-# the sum (sim/gpu/pass_profile.h); the strand contacts' passes appear in a strand mode, the
-# penalty model's with collision.contact_model = penalty; without the variable, no table.
+# CSM_PASS_PROFILE=1: a headless run ends with its compute passes' ms a frame, one row a shader
+# and the sum (gl/pass_profile.h); the strand contacts' passes appear in a strand mode, the
+# penalty model's with collision.contact_model = penalty, the renderer's when it draws; without
+# the variable, no table.
 set -u
 bin=$1
 src=$2
@@ -15,6 +16,11 @@ CSM_PASS_PROFILE=1 expect 0 "| sim/contact_solve.comp |" -- "${run[@]}" \
   --set collision.mode=strands
 CSM_PASS_PROFILE=1 expect 0 "| sim/contact_penalty.comp |" -- "${run[@]}" \
   --set collision.mode=strands --set collision.contact_model=penalty
+# The renderer's compute passes, drawn frames: the spline points, the children, the followers.
+CSM_PASS_PROFILE=1 expect 0 "| render/hair_points.comp |" -- --headless --quiet --frames 2 \
+  --every 2 --size 64x36 --set hairstyle.strands=40 --out "$(mktemp -d)"
+CSM_PASS_PROFILE=1 expect 0 "| render/hair_followers.comp |" -- --headless --quiet --frames 2 \
+  --every 2 --size 64x36 --set hairstyle.strands=40 --set hairstyle.guides=10 --out "$(mktemp -d)"
 # Unset or 0: nothing printed.
 out=$("$bin" "${run[@]}" 2>&1)
 if grep -q "CSM_PASS_PROFILE" <<<"$out"; then echo "FAIL: a table without CSM_PASS_PROFILE"; fail=1; fi

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/solver/cpu_probe.h"
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/core/pose.h"
@@ -59,7 +60,7 @@ TEST_CASE("region sums by prefix differences equal direct sums for every w and l
       direct.stepFrame(from, to);
     }
     INFO("w = " << w);
-    CHECK(maxDistance(prefix.positions(), direct.positions()) < 1e-10);
+    CHECK(maxDistance(CpuProbe(prefix).positions(), CpuProbe(direct).positions()) < 1e-10);
   }
 }
 
@@ -70,9 +71,9 @@ TEST_CASE("with no forces the hair keeps its rest shape", "[quick]") {
   const Groom g = test::growFor(c);
   CpuSolver solver;
   resetWithHead(solver, g, c, Pose{});
-  const std::vector<glm::dvec3> rest = solver.positions();
+  const std::vector<glm::dvec3> rest = CpuProbe(solver).positions();
   for (int f = 0; f < 100; ++f) solver.stepFrame(Pose{}, Pose{});
-  CHECK(maxDistance(solver.positions(), rest) < 1e-9);
+  CHECK(maxDistance(CpuProbe(solver).positions(), rest) < 1e-9);
 }
 
 TEST_CASE("a rigid motion of the head moves settled hair rigidly", "[quick]") {
@@ -93,14 +94,14 @@ TEST_CASE("a rigid motion of the head moves settled hair rigidly", "[quick]") {
     a.stepFrame(Pose{}, Pose{});
     b.stepFrame(motion, motion);
   }
-  std::vector<glm::dvec3> expected = a.positions();
+  std::vector<glm::dvec3> expected = CpuProbe(a).positions();
   for (glm::dvec3& p : expected) p = motion.apply(p);
   // Rounding differs between the two frames and contact decisions amplify it a little.
-  CHECK(maxDistance(b.positions(), expected) < 1e-6);
+  CHECK(maxDistance(CpuProbe(b).positions(), expected) < 1e-6);
   // And the hair did settle: it moved away from its rest shape under gravity.
   CpuSolver rest;
   resetWithHead(rest, g, c, Pose{});
-  CHECK(maxDistance(a.positions(), rest.positions()) > 1e-3);
+  CHECK(maxDistance(CpuProbe(a).positions(), CpuProbe(rest).positions()) > 1e-3);
 }
 
 TEST_CASE("strain after limiting never exceeds epsilon", "[quick]") {
@@ -119,11 +120,12 @@ TEST_CASE("strain after limiting never exceeds epsilon", "[quick]") {
   const double h = c.sim.dt / c.sim.substeps;
   double worst = 0.0;
   for (int k = 0; k < 240; ++k) {
-    solver.step(h, headPose(c.head, (k + 1) * h));
-    const auto& x = solver.positions();
+    CpuProbe(solver).step(h, headPose(c.head, (k + 1) * h));
+    const auto& x = CpuProbe(solver).positions();
     for (size_t s = 0; s < g.strandCount(); ++s)
       for (uint32_t i = g.first[s]; i + 1 < g.first[s + 1]; ++i)
-        worst = std::max(worst, glm::length(x[i + 1] - x[i]) / solver.restLength(i) - 1.0);
+        worst =
+            std::max(worst, glm::length(x[i + 1] - x[i]) / CpuProbe(solver).restLength(i) - 1.0);
   }
   CHECK(worst <= c.sim.strainLimit + 1e-9);
   CHECK(worst > 0.5 * c.sim.strainLimit);  // the scene does pull on the hair
@@ -144,9 +146,9 @@ TEST_CASE("no particle ends a step inside a head sphere", "[quick]") {
   int inside = 0;
   for (int k = 0; k < 240; ++k) {
     const Pose pose = headPose(c.head, (k + 1) * h);
-    solver.step(h, pose);
+    CpuProbe(solver).step(h, pose);
     const auto spheres = worldSpheres(c.head.spheres, pose);
-    const auto& x = solver.positions();
+    const auto& x = CpuProbe(solver).positions();
     for (size_t s = 0; s < g.strandCount(); ++s)
       for (uint32_t i = g.first[s] + c.sim.pinned; i < g.first[s + 1]; ++i)
         for (const Sphere& sp : spheres)
@@ -169,7 +171,8 @@ TEST_CASE("without head collisions the same scene does go inside the head", "[qu
   for (size_t s = 0; s < g.strandCount(); ++s)
     for (uint32_t i = g.first[s] + c.sim.pinned; i < g.first[s + 1]; ++i)
       for (const Sphere& sp : c.head.spheres)
-        if (glm::length(solver.positions()[i] - glm::dvec3(sp.center)) < sp.radius) ++inside;
+        if (glm::length(CpuProbe(solver).positions()[i] - glm::dvec3(sp.center)) < sp.radius)
+          ++inside;
   CHECK(inside > 0);
 }
 
@@ -185,7 +188,7 @@ TEST_CASE("the same preset gives bit-identical results twice", "[quick]") {
     double t = 0.0;
     for (int f = 0; f < 40; ++f, t += c.sim.dt)
       solver.stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
-    return solver.positions();
+    return CpuProbe(solver).positions();
   };
   const auto a = run(), b = run();
   REQUIRE(a.size() == b.size());
@@ -206,7 +209,8 @@ TEST_CASE("hair-hair collision keeps strands apart") {
     double t = 0.0;
     for (int f = 0; f < 90; ++f, t += m.sim.dt)
       solver.stepFrame(headPose(m.head, t), headPose(m.head, t + m.sim.dt));
-    const auto pairs = findContactsGrid(solver.positions(), test::strandOf(g), m.collision.radius);
+    const auto pairs =
+        findContactsGrid(CpuProbe(solver).positions(), test::strandOf(g), m.collision.radius);
     return pairs.size();
   };
   const size_t without = penetrations(CollisionMode::Head);

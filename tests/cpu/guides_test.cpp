@@ -223,13 +223,13 @@ TEST_CASE("a scene simulated through guides draws every strand", "[guides][quick
   std::string error;
   Simulation sim(std::make_unique<CpuSolver>());
   REQUIRE(sim.load(c, "", &error));
-  CHECK(sim.solver().strandCount() == 40);
+  CHECK(sim.counts().strands == 40);
   CHECK(sim.groom().strandCount() == 40);
   REQUIRE(sim.followers());
   CHECK(sim.drawnStrands() == 400);
   for (int f = 0; f < 5; ++f) sim.stepFrame();
   std::vector<glm::vec4> x, drawn;
-  sim.solver().readPositions(x);
+  sim.readPositions(x);
   sim.drawnPositions(x, drawn);
   REQUIRE(drawn.size() == sim.followers()->drawn.pointCount());
   for (const glm::vec4& p : drawn) REQUIRE(std::isfinite(p.x + p.y + p.z));
@@ -242,6 +242,6 @@ TEST_CASE("a scene simulated through guides draws every strand", "[guides][quick
   // 0: every strand simulated, as before guides existed.
   c.hairstyle.guides = 0;
   REQUIRE(sim.setConfig(c, &error));
-  CHECK(sim.solver().strandCount() == 400);
+  CHECK(sim.counts().strands == 400);
   CHECK(!sim.followers());
 }

@@ -29,7 +29,7 @@ TEST_CASE("Hair sequence: every frame reopens with the solver's points of that f
   for (long f = 1; f <= 4; ++f) {
     sim.stepFrame();
     std::vector<glm::vec4> x;
-    sim.solver().readPositions(x);
+    sim.readPositions(x);
     INFO(error);
     REQUIRE(io::writeSequenceFrame(dir.string(), f, sim.groom(), x, &error));
     frames.push_back(std::move(x));

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include "sim/solver/cpu_probe.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/head/distance_grid.h"
@@ -192,7 +193,7 @@ TEST_CASE("Mannequin: no particle ends a frame inside the head by more than the 
   for (int f = 0; f < 40; ++f, t += c.sim.dt) {
     const Pose to = headPose(c.head, t + c.sim.dt);
     cpu.stepFrame(headPose(c.head, t), to);
-    const std::vector<glm::dvec3>& x = cpu.positions();
+    const std::vector<glm::dvec3>& x = CpuProbe(cpu).positions();
     for (size_t s = 0; s < g.strandCount(); ++s)
       for (uint32_t i = g.first[s] + 2; i < g.first[s + 1]; ++i) {
         const double d = field.sample(glm::inverse(to.rotation) * (x[i] - to.translation));
@@ -213,7 +214,7 @@ TEST_CASE("Mannequin: no particle ends a frame inside the head by more than the 
   for (int f = 0; f < 40; ++f, t += c.sim.dt) {
     const Pose to = headPose(c.head, t + c.sim.dt);
     free.stepFrame(headPose(c.head, t), to);
-    for (const glm::dvec3& p : free.positions())
+    for (const glm::dvec3& p : CpuProbe(free).positions())
       freeDeepest =
           std::min(freeDeepest, field.sample(glm::inverse(to.rotation) * (p - to.translation)));
   }
@@ -281,7 +282,7 @@ TEST_CASE("Mannequin: the face stays open once the hair has settled", "[head][cp
     // root leaving along the normal: 26 strands for the left parting, 118 of 3000 for the
     // centre).
     INFO("parting " << int(parting) << ", fall " << fall << ", volume " << volume);
-    CHECK(strandsOverFace(g, cpu.positions()) <= g.strandCount() / 250);
+    CHECK(strandsOverFace(g, CpuProbe(cpu).positions()) <= g.strandCount() / 250);
   }
 }
 

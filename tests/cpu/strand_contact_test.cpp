@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/solver/cpu_probe.h"
 #include "sim/core/measure_sample.h"
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/contacts.h"
@@ -26,7 +27,7 @@ namespace {
 
 std::vector<glm::vec4> positions(Solver& s) {
   std::vector<glm::vec4> x;
-  s.readPositions(x);
+  s.state().readPositions(x);
   return x;
 }
 
@@ -102,9 +103,10 @@ TEST_CASE("with gravity off the rest groom stays still for 1 s with strand conta
   double moved = 0.0;
   for (size_t i = 0; i < x.size(); ++i)
     moved = std::max(moved, double(glm::length(glm::vec3(x[i]) - glm::vec3(rest[i]))));
-  INFO("farthest particle moved " << moved * 1e3 << " mm; " << solver.contactStats().candidates
+  INFO("farthest particle moved " << moved * 1e3 << " mm; "
+                                  << CpuProbe(solver).contactStats().candidates
                                   << " candidate pairs");
-  CHECK(solver.contactStats().candidates > 0);
+  CHECK(CpuProbe(solver).contactStats().candidates > 0);
   CHECK(moved < 1e-4);
 }
 
@@ -320,10 +322,11 @@ TEST_CASE("with hair-hair off, a hair over the budget is measured on its strand 
   CpuSolver solver;
   resetWithHead(solver, g, c, Pose{});
   solver.setContactMeasures(true);
-  const std::vector<glm::dvec3> start(solver.positions().begin(), solver.positions().end());
+  const std::vector<glm::dvec3> start(CpuProbe(solver).positions().begin(),
+                                      CpuProbe(solver).positions().end());
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(1);
-  const FrameSample on = solver.takeSample().value();
+  const FrameSample on = solver.takeSample(false).value();
   // The strands outside the sample as strands of one particle each: no segments.
   const std::vector<uint32_t> strand = test::strandOf(g), sampled = sampledStrands(strand, stride);
   const double r = c.collision.radius;
@@ -350,21 +353,22 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   resetWithHead(solver, g, c, Pose{});
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(1);
-  const FrameSample off = solver.takeSample().value();
+  const FrameSample off = solver.takeSample(false).value();
   CHECK_FALSE(off.contactsMeasured);
   CHECK(off.contacts.contacts == 0);
 
   // Measured where the frame starts, as a strand mode's list is: every mode the same state.
   solver.setContactMeasures(true);
-  const std::vector<glm::dvec3> start(solver.positions().begin(), solver.positions().end());
+  const std::vector<glm::dvec3> start(CpuProbe(solver).positions().begin(),
+                                      CpuProbe(solver).positions().end());
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(2);
-  const FrameSample on = solver.takeSample().value();
+  const FrameSample on = solver.takeSample(false).value();
   const std::vector<uint32_t> strand = test::strandOf(g);
   const double r = c.collision.radius;
   const size_t within2r = findContactsGrid(start, strand, 2.0 * r).size();
   const size_t withinR = findContactsGrid(start, strand, r).size();
-  const size_t endWithinR = findContactsGrid(solver.positions(), strand, r).size();
+  const size_t endWithinR = findContactsGrid(CpuProbe(solver).positions(), strand, r).size();
   INFO("pairs closer than 2r " << within2r << ", than r " << withinR << " where the frame "
                                << "starts; closer than r where it ends " << endWithinR);
   CHECK(on.contactsMeasured);
@@ -381,25 +385,26 @@ TEST_CASE("with hair-hair off, samples measure contacts only when asked, and the
   CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)) == 0);
 
   // The next frame: measured by the search its sample before made of where it starts.
-  const std::vector<glm::dvec3> start3 = solver.positions();
+  const std::vector<glm::dvec3> start3 = CpuProbe(solver).positions();
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(3);
-  const FrameSample third = solver.takeSample().value();
+  const FrameSample third = solver.takeSample(false).value();
   CHECK(third.contacts.penetrations == findContactsGrid(start3, strand, r).size());
   CHECK(third.contacts.contacts == findContactsGrid(start3, strand, 2.0 * r).size());
   // Frames stepped with no sample between: the sample measures where its frame ends.
   solver.stepFrame(Pose{}, Pose{});
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(5);
-  const FrameSample fifth = solver.takeSample().value();
-  CHECK(fifth.contacts.penetrations == findContactsGrid(solver.positions(), strand, r).size());
+  const FrameSample fifth = solver.takeSample(false).value();
+  CHECK(fifth.contacts.penetrations ==
+        findContactsGrid(CpuProbe(solver).positions(), strand, r).size());
   // A new radius measures other pairs: the next sample, of where its frame starts, with them.
   c.collision.radius *= 1.5f;
   solver.setConfig(c);
-  const std::vector<glm::dvec3> start6 = solver.positions();
+  const std::vector<glm::dvec3> start6 = CpuProbe(solver).positions();
   solver.stepFrame(Pose{}, Pose{});
   solver.requestSample(6);
-  const FrameSample sixth = solver.takeSample().value();
+  const FrameSample sixth = solver.takeSample(false).value();
   CHECK(sixth.contacts.penetrations == findContactsGrid(start6, strand, c.collision.radius).size());
   CHECK(sixth.contacts.crossings == 0);  // nothing measured before it with this radius
 }
@@ -430,9 +435,9 @@ TEST_CASE("more contact iterations hold dense hair in the wind apart better") {
     Run out;
     for (int f = 0; f < 16; ++f) {
       solver.stepFrame(Pose{}, Pose{});
-      out.crossings += solver.contactStats().crossings;
+      out.crossings += CpuProbe(solver).contactStats().crossings;
     }
-    out.penetrations = solver.contactStats().penetrations;
+    out.penetrations = CpuProbe(solver).contactStats().penetrations;
     return out;
   };
   const Run one = run(1), four = run(4);
@@ -460,7 +465,7 @@ TEST_CASE("lists within the frame catch a strand that closes in faster than the 
     resetWithHead(solver, test::thrownGroom(), test::thrownConfig(lists), Pose{});
     REQUIRE(solver.stiffness().plan.substeps == 4);
     const std::vector<glm::vec4> x = positions(solver);
-    solver.writeState(x, test::throwDown(x));
+    solver.write(x, test::throwDown(x));
     Thrown out;
     for (int f = 0; f < 6; ++f) {
       solver.stepFrame(Pose{}, Pose{});
@@ -510,7 +515,7 @@ TEST_CASE("lists within the frame: where they come, and what they measure", "[qu
     CpuSolver solver;
     resetWithHead(solver, g, cl, Pose{});
     solver.stepFrame(Pose{}, Pose{});
-    return solver.contactStats();
+    return CpuProbe(solver).contactStats();
   };
   const ContactStats one = first(1), four = first(4);
   CHECK(four.candidates == one.candidates);

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "sim/solver/cpu_probe.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/solver/volume.h"
@@ -124,7 +125,7 @@ TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is 
   CpuSolver headOnly, switched;
   resetWithHead(headOnly, g, c, Pose{});
   resetWithHead(switched, g, c, Pose{});
-  CHECK(switched.volumeNodes() == 0);
+  CHECK(CpuProbe(switched).volumeNodes() == 0);
   for (int f = 0; f < 5; ++f) {
     headOnly.stepFrame(Pose{}, Pose{});
     switched.stepFrame(Pose{}, Pose{});
@@ -132,19 +133,20 @@ TEST_CASE("volume mode: only a volume mode keeps a grid, built when the mode is 
   Config volume = c;
   volume.collision.mode = CollisionMode::Volume;
   switched.setConfig(volume);
-  CHECK(switched.volumeNodes() > 1000);
+  CHECK(CpuProbe(switched).volumeNodes() > 1000);
   for (int f = 0; f < 20; ++f) {
     headOnly.stepFrame(Pose{}, Pose{});
     switched.stepFrame(Pose{}, Pose{});
   }
   // The grid built mid-run acts: the hair ends elsewhere than with the head alone.
   double apart = 0.0;
-  for (size_t i = 0; i < headOnly.positions().size(); ++i)
-    apart = std::max(apart, glm::length(headOnly.positions()[i] - switched.positions()[i]));
+  for (size_t i = 0; i < CpuProbe(headOnly).positions().size(); ++i)
+    apart = std::max(
+        apart, glm::length(CpuProbe(headOnly).positions()[i] - CpuProbe(switched).positions()[i]));
   INFO("farthest particle apart " << apart * 1e3 << " mm");
   CHECK(apart > 1e-4);
   switched.setConfig(c);
-  CHECK(switched.volumeNodes() == 0);
+  CHECK(CpuProbe(switched).volumeNodes() == 0);
 }
 
 TEST_CASE("volume mode: with gravity off the rest groom stays still", "[quick]") {
@@ -156,11 +158,11 @@ TEST_CASE("volume mode: with gravity off the rest groom stays still", "[quick]")
   const Groom g = growHairstyle(c, *HeadModel::require(c));
   CpuSolver solver;
   resetWithHead(solver, g, c, Pose{});
-  const std::vector<glm::dvec3> rest = solver.positions();
+  const std::vector<glm::dvec3> rest = CpuProbe(solver).positions();
   for (int f = 0; f < 60; ++f) solver.stepFrame(Pose{}, Pose{});
   double moved = 0.0;
   for (size_t i = 0; i < rest.size(); ++i)
-    moved = std::max(moved, glm::length(solver.positions()[i] - rest[i]));
+    moved = std::max(moved, glm::length(CpuProbe(solver).positions()[i] - rest[i]));
   INFO("farthest particle moved " << moved * 1e3 << " mm");
   CHECK(moved < 1e-4);
 }
@@ -184,8 +186,8 @@ TEST_CASE("volume mode: hair falling onto itself ends less dense than without it
     std::vector<glm::dvec3> x0;
     for (const glm::vec3& p : g.points) x0.emplace_back(p);
     grid.reset(x0, g.first, m.collision.volumeCell, m.collision.radius);
-    grid.splat(solver.positions(), std::vector<glm::dvec3>(x0.size(), glm::dvec3(0.0)), Pose{},
-               m.collision.volumeFraction);
+    grid.splat(CpuProbe(solver).positions(), std::vector<glm::dvec3>(x0.size(), glm::dvec3(0.0)),
+               Pose{}, m.collision.volumeFraction);
     int64_t most = 0;
     for (size_t n = 0; n < grid.nodes(); ++n) most = std::max(most, grid.sums()[4 * n]);
     return double(most) * grid.fillPerUnit();

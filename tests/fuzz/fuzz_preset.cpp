@@ -105,11 +105,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (error.empty()) fail("Simulation::load failed without a message");
     return 0;
   }
-  if (sim.solver().particleCount() != sim.groom().pointCount())
+  if (sim.counts().particles != sim.groom().pointCount())
     fail("the solver holds another particle count than the groom");
   sim.stepFrame();
   std::vector<glm::vec4> x;
-  sim.solver().readPositions(x);
+  sim.readPositions(x);
   for (const glm::vec4& p : x)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       fail("a particle is not finite after one frame");

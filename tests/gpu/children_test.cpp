@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
+#include "render/renderer_probe.h"
 #include "tests/gpu/render_test_scene.h"
 
 using namespace csm;
@@ -32,7 +33,7 @@ struct ChildCheck {
 
 // Every child point of the last frame against its guide's points.
 ChildCheck checkChildren(const HairRenderer& renderer, const RenderConfig& look) {
-  const StrandGeometry& g = renderer.geometry();
+  const StrandGeometry& g = RendererProbe(renderer).geometry();
   const std::vector<glm::vec4> guides = g.guidePoints().download<glm::vec4>(g.splinePoints());
   const int children = g.children();
   const std::vector<glm::vec4> kids =
@@ -140,10 +141,10 @@ TEST_CASE("Children: the count and the width take effect live, and the same fram
   CHECK(scene.renderer().drawnStrands() == 150 * 9);
   CHECK(drawnStrandCount(150, more.view.render) == 1350);
   const std::vector<glm::vec4> first =
-      scene.renderer().geometry().childPointBuffer().download<glm::vec4>();
+      RendererProbe(scene.renderer()).geometry().childPointBuffer().download<glm::vec4>();
   const test::Image again = scene.render(480, 270, &more);
   const std::vector<glm::vec4> second =
-      scene.renderer().geometry().childPointBuffer().download<glm::vec4>();
+      RendererProbe(scene.renderer()).geometry().childPointBuffer().download<glm::vec4>();
   REQUIRE(first.size() == second.size());
   CHECK(std::memcmp(first.data(), second.data(), first.size() * sizeof(glm::vec4)) == 0);
   CHECK(again.rgb == withChildren.rgb);

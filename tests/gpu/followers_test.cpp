@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
+#include "render/renderer_probe.h"
 #include "sim/groom/followers.h"
 #include "tests/gpu/render_test_scene.h"
 
@@ -19,10 +20,12 @@ namespace {
 float passAgainstCpu(test::RenderScene& scene) {
   Simulation& sim = scene.sim();
   const FollowerBinding& b = *sim.followers();
-  const std::vector<glm::vec4> gpu =
-      scene.renderer().followerPass().positions().download<glm::vec4>(b.drawn.pointCount());
+  const std::vector<glm::vec4> gpu = RendererProbe(scene.renderer())
+                                         .followerPass()
+                                         .positions()
+                                         .download<glm::vec4>(b.drawn.pointCount());
   std::vector<glm::vec4> guides, cpu;
-  sim.solver().readPositions(guides);
+  sim.readPositions(guides);
   sim.drawnPositions(guides, cpu);
   REQUIRE(cpu.size() == gpu.size());
   float worst = 0.0f;
@@ -48,7 +51,7 @@ TEST_CASE("the follower pass makes the CPU's followers, driven by either solver"
     for (int f = 0; f < 8; ++f) scene.sim().stepFrame();
     scene.render(160, 90);
     CHECK(scene.renderer().drawnStrands() == 600);
-    CHECK(scene.renderer().followerPass().drawnPoints() ==
+    CHECK(RendererProbe(scene.renderer()).followerPass().drawnPoints() ==
           scene.sim().followers()->drawn.pointCount());
     CHECK(passAgainstCpu(scene) < 2e-5f);
   }
@@ -66,7 +69,7 @@ TEST_CASE("guides drawn alone: hairstyle.guides = 0 draws the groom as simulated
   preset.scene.hairstyle.guides = 30;
   test::RenderScene guided(preset, 1);
   guided.render(160, 90);
-  CHECK(guided.sim().solver().strandCount() == 30);
+  CHECK(guided.sim().counts().strands == 30);
   CHECK(guided.renderer().drawnStrands() == 300);
 }
 

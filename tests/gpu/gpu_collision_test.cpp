@@ -606,12 +606,12 @@ TEST_CASE("GPU grid: a restored state sizes the lists for the hair it restores",
   const Config c = contactConfig(true);
   auto source = test::gpuSolver(), restored = test::gpuSolver();
   resetWithHead(*source, packed, c, Pose{});
-  SolverState state;
-  source->saveState(state);
+  SavedState state;
+  source->save(state);
   resetWithHead(*restored, spread, c, Pose{});
   const uint32_t reserved = GpuProbe(*restored).gridStats().pairCapacity;
   std::string error;
-  REQUIRE(restored->restoreState(state, &error));
+  REQUIRE(restored->restore(state, &error));
   restored->stepFrame(Pose{}, Pose{});
   source->stepFrame(Pose{}, Pose{});
   const GpuProbe::GridStats grid = GpuProbe(*restored).gridStats();

@@ -89,13 +89,13 @@ TEST_CASE(
   CHECK(report.repair.droppedStrands == 3);
   // Past 20,000 strands the default (hairstyle.guides -1) simulates 4,000 of them as guides and
   // draws all 30,000.
-  CHECK(scene.sim().solver().strandCount() == csm::kAutoGuides);
+  CHECK(scene.sim().counts().strands == csm::kAutoGuides);
   CHECK(scene.sim().drawnStrands() == 30000);
   // Four points a strand, resampled to the scene's fewest particles a strand.
-  CHECK(scene.sim().solver().particleCount() ==
+  CHECK(scene.sim().counts().particles ==
         csm::kAutoGuides * size_t(std::max(4, p.scene.hairstyle.minParticles)));
   std::vector<glm::vec4> x;
-  scene.sim().solver().readPositions(x);
+  scene.sim().readPositions(x);
   size_t bad = 0;
   for (const glm::vec4& q : x) bad += !std::isfinite(q.x + q.y + q.z);
   CHECK(bad == 0);

@@ -10,6 +10,7 @@
 
 #include "gl/fence.h"
 #include "gl/shader_source.h"
+#include "sim/solver/cpu_probe.h"
 #include "sim/core/measure_sample.h"
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/cpu_solver.h"
@@ -96,7 +97,7 @@ Difference runBoth(const Config& c, int frames, double limit) {
   CHECK(gpu->time() == cpu.time());
   std::vector<glm::vec4> x;
   gpu->readPositions(x);
-  return difference(x, cpu.positions(), limit);
+  return difference(x, CpuProbe(cpu).positions(), limit);
 }
 
 }  // namespace
@@ -314,14 +315,15 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
     for (int f = 0; f < 25; ++f) {
       cpu.stepFrame(Pose{}, Pose{});
       gpu->stepFrame(Pose{}, Pose{});
-      const ContactStats onCpu = cpu.contactStats(), onGpu = GpuProbe(*gpu).readContactStats();
+      const ContactStats onCpu = CpuProbe(cpu).contactStats(),
+                         onGpu = GpuProbe(*gpu).readContactStats();
       INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates
                     << ", closer than r CPU " << onCpu.penetrations << " GPU "
                     << onGpu.penetrations);
       if (f < 2) {
         std::vector<glm::vec4> x;
         gpu->readPositions(x);
-        const Difference d = difference(x, cpu.positions(), tolerance(20));
+        const Difference d = difference(x, CpuProbe(cpu).positions(), tolerance(20));
         INFO("max " << d.max << " m, rms " << d.rms << " m");
         CHECK(d.over == 0);
       }
@@ -378,13 +380,14 @@ TEST_CASE("GPU and CPU solvers agree with the penalty model, GPU runs are bit-id
     cpu.stepFrame(Pose{}, Pose{});
     gpu->stepFrame(Pose{}, Pose{});
     again->stepFrame(Pose{}, Pose{});
-    const ContactStats onCpu = cpu.contactStats(), onGpu = GpuProbe(*gpu).readContactStats();
+    const ContactStats onCpu = CpuProbe(cpu).contactStats(),
+                       onGpu = GpuProbe(*gpu).readContactStats();
     INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates);
     penetrations += onGpu.penetrations;
     if (f < 2) {
       std::vector<glm::vec4> x;
       gpu->readPositions(x);
-      const Difference d = difference(x, cpu.positions(), tolerance(20));
+      const Difference d = difference(x, CpuProbe(cpu).positions(), tolerance(20));
       INFO("max " << d.max << " m, rms " << d.rms << " m");
       CHECK(d.over == 0);
       CHECK(onGpu.candidates == onCpu.candidates);
@@ -456,7 +459,7 @@ TEST_CASE("GPU: lists within the frame catch a strand that closes in faster than
     resetWithHead(*gpu, test::thrownGroom(), test::thrownConfig(lists), Pose{});
     std::vector<glm::vec4> x;
     gpu->readPositions(x);
-    gpu->writeState(x, test::throwDown(x));
+    gpu->write(x, test::throwDown(x));
     double out = 1e30;
     for (int f = 0; f < 6; ++f) {
       gpu->stepFrame(Pose{}, Pose{});
@@ -563,7 +566,7 @@ TEST_CASE("GPU solver: only a volume mode keeps a grid, built when the mode is c
   switched->setConfig(volume);
   CpuSolver cpu;
   resetWithHead(cpu, g, volume, Pose{});
-  CHECK(GpuProbe(*switched).volumeNodes() == cpu.volumeNodes());
+  CHECK(GpuProbe(*switched).volumeNodes() == CpuProbe(cpu).volumeNodes());
   CHECK(GpuProbe(*switched).volumeNodes() > 1000);
   for (int f = 0; f < 10; ++f) {
     headOnly->stepFrame(Pose{}, Pose{});
@@ -787,7 +790,7 @@ TEST_CASE("GPU solver: a sample measures on the GPU what measureAccuracy measure
 
   // A non-finite particle is counted.
   x[17].y = std::nanf("");
-  gpu->writeState(x, v);
+  gpu->write(x, v);
   gpu->requestSample(99);
   const std::optional<FrameSample> bad = gpu->takeSample(true);
   REQUIRE(bad);

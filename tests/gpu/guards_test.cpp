@@ -34,27 +34,30 @@ bool allFinite(const std::vector<glm::vec4>& x) {
   return true;
 }
 
-size_t nonFinite(Solver& solver) {
+// Of a solver's state or a simulation's: whatever reads positions and velocities.
+template <class State>
+size_t nonFinite(State& state) {
   std::vector<glm::vec4> x;
-  solver.readPositions(x);
+  state.readPositions(x);
   size_t n = 0;
   for (const glm::vec4& p : x)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) ++n;
   return n;
 }
 
-double fastest(Solver& solver) {
+template <class State>
+double fastest(State& state) {
   std::vector<glm::vec4> v;
-  solver.readVelocities(v);
+  state.readVelocities(v);
   double top = 0.0;
   for (const glm::vec4& u : v) top = std::max(top, double(glm::length(glm::vec3(u))));
   return top;
 }
 
 // Positions in the head's frame: what a head that carries its hair leaves unchanged.
-std::vector<glm::dvec3> inHeadFrame(Solver& solver, const Pose& head) {
+std::vector<glm::dvec3> inHeadFrame(const Simulation& sim, const Pose& head) {
   std::vector<glm::vec4> x;
-  solver.readPositions(x);
+  sim.readPositions(x);
   std::vector<glm::dvec3> out;
   const Pose back = inverse(head);
   for (const glm::vec4& p : x) out.push_back(back.apply(glm::dvec3(glm::vec3(p))));
@@ -74,21 +77,21 @@ TEST_CASE("Guard: a NaN once in the state does not stay in the region rotations"
   resetWithHead(*solver, g, c, Pose{});
   for (int f = 0; f < 5; ++f) solver->stepFrame(Pose{}, Pose{});
   std::vector<glm::vec4> x, v;
-  solver->readPositions(x);
-  solver->readVelocities(v);
+  solver->state().readPositions(x);
+  solver->state().readVelocities(v);
   REQUIRE(allFinite(x));
 
   // One particle goes non-finite for a frame (its strand's regions see a NaN matrix)...
   std::vector<glm::vec4> poisoned = x;
   const uint32_t victim = g.first[3] + 4;
   poisoned[victim].y = std::nanf("");
-  solver->writeState(poisoned, v);
+  solver->state().write(poisoned, v);
   solver->stepFrame(Pose{}, Pose{});
   // ...then the state is put back. Without the guard the strand's warm-started rotations stay
   // NaN and take it back to NaN on the next step.
-  solver->writeState(x, v);
+  solver->state().write(x, v);
   for (int f = 0; f < 3; ++f) solver->stepFrame(Pose{}, Pose{});
-  CHECK(nonFinite(*solver) == 0);
+  CHECK(nonFinite(solver->state()) == 0);
 }
 
 TEST_CASE("Guard: a zero-length segment in the wind gives no NaN", "[guard][gpu][quick]") {
@@ -110,12 +113,12 @@ TEST_CASE("Guard: a zero-length segment in the wind gives no NaN", "[guard][gpu]
   }
   resetWithHead(*solver, repeated, c, Pose{});
   for (int f = 0; f < 10; ++f) solver->stepFrame(Pose{}, Pose{});
-  CHECK(nonFinite(*solver) == 0);
+  CHECK(nonFinite(solver->state()) == 0);
   // A NaN there is not always seen as one: the head's collision puts a NaN particle on the
   // top of the head (its fallback normal), tearing it from its strand. Every segment keeps
   // within the strain limit of its rest length.
   std::vector<glm::vec4> x;
-  solver->readPositions(x);
+  solver->state().readPositions(x);
   double worst = 0.0;
   for (size_t s = 0; s < repeated.strandCount(); ++s)
     for (uint32_t i = repeated.first[s] + 1; i < repeated.first[s + 1]; ++i) {
@@ -146,9 +149,9 @@ TEST_CASE("Guard: the largest damping and wind drag at the longest frame stay bo
   double top = 0.0;
   for (int f = 0; f < 20; ++f) {
     solver->stepFrame(Pose{}, Pose{});
-    top = std::max(top, fastest(*solver));
+    top = std::max(top, fastest(solver->state()));
   }
-  CHECK(nonFinite(*solver) == 0);
+  CHECK(nonFinite(solver->state()) == 0);
   // Drag pulls toward the wind's 50 m/s and damping slows: c h = 10 in each, which an
   // explicit step turns into a factor -9 a step (10^19 in 20 frames). Implicit, the speeds
   // stay of the wind's order (the velocity the shape matching gives a strand blown 5 m in a
@@ -156,7 +159,7 @@ TEST_CASE("Guard: the largest damping and wind drag at the longest frame stay bo
   // of its root.
   CHECK(top < 100.0);
   std::vector<glm::vec4> x;
-  solver->readPositions(x);
+  solver->state().readPositions(x);
   for (const glm::vec4& p : x) CHECK(glm::length(glm::vec3(p)) < 1.0f);
 }
 
@@ -171,14 +174,14 @@ TEST_CASE("Guard: a head that jumps 90 degrees in a frame carries its hair, no f
   std::string error;
   REQUIRE(sim.load(c, ".", &error));
   for (int f = 0; f < 30; ++f) sim.stepFrame();
-  const double settled = fastest(sim.solver());
-  const std::vector<glm::dvec3> before = inHeadFrame(sim.solver(), sim.headPose());
+  const double settled = fastest(sim);
+  const std::vector<glm::dvec3> before = inHeadFrame(sim, sim.headPose());
 
   // A right drag let go, a reset of the drag: the head turns 90 degrees about the neck at once.
   sim.setUserPose(rotationAbout(glm::dvec3(c.head.pivot), {0, 1, 0}, 90.0));
   sim.stepFrame();
   CHECK(sim.carriedFrames() == 1);
-  const std::vector<glm::dvec3> after = inHeadFrame(sim.solver(), sim.headPose());
+  const std::vector<glm::dvec3> after = inHeadFrame(sim, sim.headPose());
   double moved = 0.0;
   for (size_t i = 0; i < before.size(); ++i)
     moved = std::max(moved, glm::length(after[i] - before[i]));
@@ -187,13 +190,13 @@ TEST_CASE("Guard: a head that jumps 90 degrees in a frame carries its hair, no f
   // turn (8 cm at 60 fps), nothing is thrown. Without the guard the tips swing out by the
   // whole turn, tens of centimetres.
   CHECK(moved < 0.1);
-  double top = fastest(sim.solver());
+  double top = fastest(sim);
   for (int f = 0; f < 30; ++f) {
     sim.stepFrame();
-    top = std::max(top, fastest(sim.solver()));
+    top = std::max(top, fastest(sim));
   }
   INFO("fastest after the jump " << top << " m/s");
-  CHECK(nonFinite(sim.solver()) == 0);
+  CHECK(nonFinite(sim) == 0);
   // Bounded: the roots moved at most kMaxRootSpeed; a whip doubles that at the tips.
   CHECK(top < 2.0 * kMaxRootSpeed);
   CHECK(sim.carriedFrames() == 1);
@@ -221,11 +224,11 @@ TEST_CASE("Guard: hair driven through the head comes out within reach of its par
   glm::dvec3 centre(0.0);
   for (const Sphere& sp : spheres) centre += glm::dvec3(sp.center) / double(spheres.size());
   std::vector<glm::vec4> x, v;
-  solver->readPositions(x);
-  solver->readVelocities(v);
+  solver->state().readPositions(x);
+  solver->state().readVelocities(v);
   for (size_t i = 0; i < x.size(); ++i)
     v[i] = glm::vec4(40.0f * glm::normalize(glm::vec3(centre) - glm::vec3(x[i])), 0.0f);
-  solver->writeState(x, v);
+  solver->state().write(x, v);
 
   const auto depth = [&](const glm::dvec3& p) {
     if (shape == HeadShape::Sdf) return -model->shapeField().sample(p);
@@ -237,7 +240,7 @@ TEST_CASE("Guard: hair driven through the head comes out within reach of its par
   double stretch = 0.0, deepest = 0.0;
   for (int f = 0; f < 3; ++f) {
     solver->stepFrame(Pose{}, Pose{});
-    solver->readPositions(x);
+    solver->state().readPositions(x);
     REQUIRE(allFinite(x));
     for (size_t s = 0; s < g.strandCount(); ++s)
       for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {

@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl/fence.h"
+#include "sim/solver/cpu_probe.h"
 #include "sim/gpu/gpu_probe.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/run/frame_recording.h"
@@ -41,7 +42,7 @@ Config busyScene() {
 
 std::vector<glm::vec3> positionsOf(Simulation& sim) {
   std::vector<glm::vec4> x;
-  sim.solver().readPositions(x);
+  sim.readPositions(x);
   return std::vector<glm::vec3>(x.begin(), x.end());
 }
 
@@ -183,7 +184,7 @@ TEST_CASE("FrameRecording: on the GPU nothing waits for a frame's copy, keyframe
   CHECK(stats.waits == 0);
   CHECK(recorder.lastFrame() == 40 - long(recorder.inFlight()));
   // Once the GPU is done, collecting takes them all without waiting.
-  sim.solver().finish();
+  sim.diagnostics().finish();
   recorder.collect();
   CHECK(recorder.inFlight() == 0);
   CHECK(recorder.lastFrame() == 40);
@@ -231,17 +232,17 @@ TEST_CASE("Solvers: the first frame after a restore counts no crossings against 
   std::unique_ptr<Solver> solver = solverNamed(name);
   auto contacts = [&] {
     return name == "gpu" ? GpuProbe(static_cast<GpuSolver&>(*solver)).readContactStats()
-                         : static_cast<CpuSolver&>(*solver).contactStats();
+                         : CpuProbe(static_cast<CpuSolver&>(*solver)).contactStats();
   };
   resetWithHead(*solver, g, c, Pose{});
   for (int f = 0; f < 10; ++f) solver->stepFrame(Pose{}, Pose{});
-  SolverState saved;
-  solver->saveState(saved);
+  SavedState saved;
+  solver->state().save(saved);
   solver->stepFrame(Pose{}, Pose{});
   const uint64_t along = contacts().crossings;  // as the run went on
   for (int f = 0; f < 9; ++f) solver->stepFrame(Pose{}, Pose{});
   std::string error;
-  REQUIRE(solver->restoreState(saved, &error));
+  REQUIRE(solver->state().restore(saved, &error));
   solver->stepFrame(Pose{}, Pose{});
   INFO(along << " crossings in the frame after the saved one as the run went on");
   CHECK(contacts().crossings == 0);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "render/renderer_probe.h"
 #include "app/params.h"
 #include "gl/shader_source.h"
 #include "tests/gpu/render_test_scene.h"
@@ -106,10 +107,11 @@ TEST_CASE("Render: draws paced in chunks give the image drawn whole", "[render][
   // 3,000 strands at subdivision 4: ribbons of three chunks (StrandGeometry::kDrawChunk), the
   // third waiting for the first.
   test::RenderScene scene(test::presetConfig("default.json", 3000), 1);
-  scene.renderer().setPacedDraws(false);
+  RendererProbe::setPacedDraws(scene.renderer(), false);
   const std::vector<std::uint8_t> whole = scene.render(160, 90).rgb;
-  REQUIRE(scene.renderer().geometry().splinePoints() * 6 > 2 * StrandGeometry::kDrawChunk);
-  scene.renderer().setPacedDraws(true);
+  REQUIRE(RendererProbe(scene.renderer()).geometry().splinePoints() * 6 >
+          2 * StrandGeometry::kDrawChunk);
+  RendererProbe::setPacedDraws(scene.renderer(), true);
   CHECK(scene.render(160, 90).rgb == whole);
 }
 
@@ -122,7 +124,7 @@ TEST_CASE("Render: groom colours reach the screen", "[render][image]") {
     CaptureTarget target(320, 180);
     PositionSource positions;
     FrameView view =
-        frameViewOf(scene.sim(), scene.preset().view, positions.update(scene.sim().solver()), 320,
+        frameViewOf(scene.sim(), scene.preset().view, positionsToDraw(scene.sim(), positions), 320,
                     180, target.framebuffer());
     view.groom = &green;
     view.generation += 1000;  // a different groom: topology buffers are rebuilt
@@ -273,7 +275,7 @@ TEST_CASE("Render: the GL state the UI depends on is put back", "[render][state]
 
   PositionSource positions;
   scene.renderer().render(frameViewOf(scene.sim(), scene.preset().view,
-                                      positions.update(scene.sim().solver()), 160, 90,
+                                      positionsToDraw(scene.sim(), positions), 160, 90,
                                       target.framebuffer()));
 
   GLint fb = 0, viewport[4] = {}, src = 0, dst = 0, texture = 0, active = 0;

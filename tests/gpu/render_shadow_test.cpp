@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/renderer_probe.h"
 #include "tests/gpu/render_test_scene.h"
 
 using namespace csm;
@@ -15,8 +16,8 @@ TEST_CASE("Render: deep opacity layers hold opacity that grows with depth", "[re
   test::RenderScene scene(test::presetConfig("paper_fig1_straight.json", 2000));
   scene.render(320, 180);
   const HairRenderer& r = scene.renderer();
-  const gl::Texture& layers = r.opacityLayers();
-  const gl::Texture& depth = r.lightDepth();
+  const gl::Texture& layers = RendererProbe(r).opacityLayers();
+  const gl::Texture& depth = RendererProbe(r).lightDepth();
   REQUIRE(layers.width() == scene.preset().view.render.shadowMapSize);
   const std::vector<float> o = layers.read<float>(GL_RGBA, GL_FLOAT, 4);
   const std::vector<float> z = depth.read<float>(GL_DEPTH_COMPONENT, GL_FLOAT, 1);
@@ -143,12 +144,12 @@ TEST_CASE("Render: shadow darkness does not depend on the shadow map's size", "[
     const test::Image img = scene.render(w, h, &p);
     test::dumpImage(img, "shadow_size_" + std::to_string(size));
     const HairRenderer& r = scene.renderer();
-    REQUIRE(r.opacityLayers().width() == size);
-    const std::vector<float> o = r.opacityLayers().read<float>(GL_RGBA, GL_FLOAT, 4);
+    REQUIRE(RendererProbe(r).opacityLayers().width() == size);
+    const std::vector<float> o = RendererProbe(r).opacityLayers().read<float>(GL_RGBA, GL_FLOAT, 4);
     double sum = 0.0;
     for (std::size_t i = 3; i < o.size(); i += 4) sum += o[i];
     // The light's box is 2R across: the projection's first row is (1/R) times a unit vector.
-    const glm::mat4& m = r.lightViewProjection();
+    const glm::mat4& m = RendererProbe(r).lightViewProjection();
     const double texel = 2.0 / (glm::length(glm::vec3(m[0][0], m[1][0], m[2][0])) * size);
     readings.push_back({size, litSideLuma(img), sum * texel * texel});
   }

@@ -83,7 +83,7 @@ class RenderScene {
                const DrawAmount& amount = {}) {
     if (!target_ || target_->width() != width || target_->height() != height)
       target_ = std::make_unique<CaptureTarget>(width, height);
-    const unsigned buffer = withHair ? positions_.update(sim_->solver()) : 0;
+    const unsigned buffer = withHair ? positionsToDraw(*sim_, positions_) : 0;
     FrameView view =
         frameViewOf(*sim_, preset_.view, buffer, width, height, target_->framebuffer());
     if (preset) {

@@ -28,8 +28,10 @@
 #include "app/panels.h"
 #include "app/viewer.h"
 #include "app/viewer_presets.h"
+#include "tests/window/viewer_probe.h"
 #include "gl/shader_source.h"
 #include "sim/solver/cpu_solver.h"
+#include "tests/test_solvers.h"
 #include "sim/groom/cyhair.h"
 #include "sim/param/sim_params.h"
 #include "app/preset.h"
@@ -82,23 +84,24 @@ void runFrames(Viewer& v, int n) {
 // UI frames until the simulation, on its own thread, has stepped `n` frames more (or can go
 // no further: paused, stopped on NaN).
 void runSimFrames(Viewer& v, long n) {
-  REQUIRE(v.sync());
-  const long target = v.simFrame().frame + n;
+  REQUIRE(v.session().sync());
+  const long target = v.session().simFrame().frame + n;
   const auto deadline = Clock::now() + std::chrono::minutes(2);
-  while (v.simFrame().frame < target && !v.simFrame().idle && Clock::now() < deadline) {
+  while (v.session().simFrame().frame < target && !v.session().simFrame().idle &&
+         Clock::now() < deadline) {
     v.runFrame();
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  REQUIRE((v.simFrame().frame >= target || v.simFrame().idle));
+  REQUIRE((v.session().simFrame().frame >= target || v.session().simFrame().idle));
 }
 
 // A screenshot of the first frame that shows every change made so far.
 Image screenshot(Viewer& v, const fs::path& path) {
   v.requestScreenshot(path.string());
   const auto deadline = Clock::now() + std::chrono::minutes(2);
-  while (v.screenshotPending() && Clock::now() < deadline) v.runFrame();
+  while (ViewerProbe(v).screenshotPending() && Clock::now() < deadline) v.runFrame();
   REQUIRE(v.lastScreenshotPath() == path.string());
-  return v.lastScreenshot();
+  return ViewerProbe(v).lastScreenshot();
 }
 
 std::array<int, 3> rgb8(const ImVec4& c) {
@@ -152,95 +155,6 @@ std::pair<int, int> pngSize(const fs::path& path) {
   return size;
 }
 
-// A CPU solver whose positions turn to NaN after `badFrame` frames: what a blown-up
-// simulation looks like to the viewer.
-class NanAfter final : public Solver {
- public:
-  explicit NanAfter(long badFrame) : badFrame_(badFrame) {}
-  std::string_view name() const override { return "nan-after"; }
-  void reset(const Groom& g, const Config& c, const Pose& h) override {
-    frames_ = 0;
-    inner_.reset(g, c, h);
-  }
-  void setHead(std::shared_ptr<const HeadModel> head) override { inner_.setHead(std::move(head)); }
-  std::string failure() const override { return inner_.failure(); }
-  void setConfig(const Config& c) override { inner_.setConfig(c); }
-  void stepFrame(const Pose& from, const Pose& to) override {
-    ++frames_;
-    inner_.stepFrame(from, to);
-  }
-  size_t strandCount() const override { return inner_.strandCount(); }
-  size_t particleCount() const override { return inner_.particleCount(); }
-  double time() const override { return inner_.time(); }
-  void readPositions(std::vector<glm::vec4>& out) override {
-    inner_.readPositions(out);
-    if (frames_ >= badFrame_ && out.size() > 10) out[10].x = std::nanf("");
-  }
-  void readVelocities(std::vector<glm::vec4>& out) override { inner_.readVelocities(out); }
-  void requestSample(long frame) override { inner_.requestSample(frame); }
-  std::optional<FrameSample> takeSample(bool wait) override {
-    std::optional<FrameSample> s = inner_.takeSample(wait);
-    if (s && s->frame >= badFrame_) s->accuracy.nanCount = 1;
-    return s;
-  }
-  void dropSamples() override { inner_.dropSamples(); }
-  void writeState(const std::vector<glm::vec4>& x, const std::vector<glm::vec4>& v) override {
-    inner_.writeState(x, v);
-  }
-
- private:
-  CpuSolver inner_;
-  long badFrame_;
-  long frames_ = 0;
-};
-
-// A CPU solver whose frames wait for the test to let them through: a simulation as slow as
-// the test likes.
-class GatedSolver final : public Solver {
- public:
-  struct Gate {
-    std::mutex m;
-    std::condition_variable cv;
-    long allowed = 0;  // frames that may run
-    std::atomic<long> started{0};
-  };
-  explicit GatedSolver(std::shared_ptr<Gate> gate) : gate_(std::move(gate)) {}
-  std::string_view name() const override { return "gated"; }
-  void reset(const Groom& g, const Config& c, const Pose& h) override { inner_.reset(g, c, h); }
-  void setHead(std::shared_ptr<const HeadModel> head) override { inner_.setHead(std::move(head)); }
-  std::string failure() const override { return inner_.failure(); }
-  void setConfig(const Config& c) override { inner_.setConfig(c); }
-  void stepFrame(const Pose& from, const Pose& to) override {
-    const long n = ++gate_->started;
-    std::unique_lock lock(gate_->m);
-    gate_->cv.wait(lock, [&] { return gate_->allowed >= n; });
-    inner_.stepFrame(from, to);
-  }
-  size_t strandCount() const override { return inner_.strandCount(); }
-  size_t particleCount() const override { return inner_.particleCount(); }
-  double time() const override { return inner_.time(); }
-  void readPositions(std::vector<glm::vec4>& out) override { inner_.readPositions(out); }
-  void readVelocities(std::vector<glm::vec4>& out) override { inner_.readVelocities(out); }
-  void requestSample(long frame) override { inner_.requestSample(frame); }
-  std::optional<FrameSample> takeSample(bool wait) override { return inner_.takeSample(wait); }
-  void dropSamples() override { inner_.dropSamples(); }
-  void writeState(const std::vector<glm::vec4>& x, const std::vector<glm::vec4>& v) override {
-    inner_.writeState(x, v);
-  }
-
- private:
-  std::shared_ptr<Gate> gate_;
-  CpuSolver inner_;
-};
-
-void allow(GatedSolver::Gate& gate, long frames) {
-  {
-    std::lock_guard lock(gate.m);
-    gate.allowed += frames;
-  }
-  gate.cv.notify_all();
-}
-
 }  // namespace
 
 TEST_CASE(
@@ -249,43 +163,43 @@ TEST_CASE(
     "[window]") {
   const fs::path dir = tempDir();
   std::unique_ptr<Viewer> v = makeViewer();
-  REQUIRE(v->loadPreset((kSource / "presets/short_shake.json").string()));
-  REQUIRE(v->sync());
-  REQUIRE(v->presetErrors().empty());
+  REQUIRE(v->session().loadPreset((kSource / "presets/short_shake.json").string()));
+  REQUIRE(v->session().sync());
+  REQUIRE(v->session().presetErrors().empty());
   runSimFrames(*v, 3);
-  const size_t before = v->simFrame().strands;
+  const size_t before = v->session().simFrame().strands;
   CHECK(before == 6000);
-  const CameraConfig camera = v->document().current().view.camera;
+  const CameraConfig camera = v->session().document().current().view.camera;
   // Paused, so the clock can be compared across the change.
-  v->controls().setPaused(true);
-  REQUIRE(v->sync());
-  const double t = v->simFrame().time;
+  v->session().controls().setPaused(true);
+  REQUIRE(v->session().sync());
+  const double t = v->session().simFrame().time;
 
   // The same setter the panels call (Viewer::applyConfig), by parameter name.
-  REQUIRE(v->setParam("hairstyle.strands", "1500"));
-  REQUIRE(v->setParam("wind.strength", "8"));
-  REQUIRE(v->setParam("wind.direction", "0,0,1"));
+  REQUIRE(v->session().setParam("hairstyle.strands", "1500"));
+  REQUIRE(v->session().setParam("wind.strength", "8"));
+  REQUIRE(v->session().setParam("wind.direction", "0,0,1"));
   // Strand count is live within a frame: no restart, same camera, same clock.
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().strands == 1500);
-  CHECK(v->simFrame().config.hairstyle.strands == 1500);
-  CHECK(v->simFrame().config.wind.strength == 8.0f);
-  const CameraConfig& now = v->document().current().view.camera;
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().strands == 1500);
+  CHECK(v->session().simFrame().config.hairstyle.strands == 1500);
+  CHECK(v->session().simFrame().config.wind.strength == 8.0f);
+  const CameraConfig& now = v->session().document().current().view.camera;
   CHECK((now.target == camera.target && now.distance == camera.distance && now.yaw == camera.yaw &&
          now.pitch == camera.pitch && now.fov == camera.fov));
-  CHECK(v->simFrame().time == Approx(t));
-  const auto changed = v->document().modifiedKeys();
+  CHECK(v->session().simFrame().time == Approx(t));
+  const auto changed = v->session().document().modifiedKeys();
   CHECK(std::find(changed.begin(), changed.end(), "hairstyle.strands") != changed.end());
   CHECK(std::find(changed.begin(), changed.end(), "wind.strength") != changed.end());
 
-  v->controls().setPaused(false);
+  v->session().controls().setPaused(false);
   runSimFrames(*v, 10);
-  CHECK(v->simFrame().strands == 1500);
-  CHECK(v->simFrame().particles > 1500);
-  REQUIRE(v->simFrame().sample.has_value());
-  CHECK(v->simFrame().sample->frame > 0);
-  CHECK(std::isfinite(v->simFrame().sample->accuracy.maxStrain));
-  CHECK_FALSE(v->controls().nanStopped());
+  CHECK(v->session().simFrame().strands == 1500);
+  CHECK(v->session().simFrame().particles > 1500);
+  REQUIRE(v->session().simFrame().sample.has_value());
+  CHECK(v->session().simFrame().sample->frame > 0);
+  CHECK(std::isfinite(v->session().simFrame().sample->accuracy.maxStrain));
+  CHECK_FALSE(v->session().controls().nanStopped());
 
   const fs::path shot = dir / "viewer.png";
   const Image img = screenshot(*v, shot);
@@ -304,10 +218,10 @@ TEST_CASE(
 
   // Hair, not just the head: paused, the same frame with one strand instead of 1500 differs
   // in the scene area between the panels.
-  v->controls().setPaused(true);
+  v->session().controls().setPaused(true);
   runFrames(*v, 1);
   const Image withHair = screenshot(*v, dir / "with_hair.png");
-  REQUIRE(v->setParam("hairstyle.strands", "1"));
+  REQUIRE(v->session().setParam("hairstyle.strands", "1"));
   const Image bald = screenshot(*v, dir / "one_strand.png");
   const double diff = share(withHair, 430, 60, 880, 640, [&](const uint8_t* p) {
     const size_t at = size_t(p - withHair.rgb.data());
@@ -335,81 +249,27 @@ TEST_CASE(
   removeTemp(dir);
 }
 
-TEST_CASE("window: the stiffness window changes live; a capped stiffness is said", "[window]") {
-  std::unique_ptr<Viewer> v = makeViewer();
-  REQUIRE(v->loadPreset((kSource / "presets/default.json").string()));
-  REQUIRE(v->sync());
-  REQUIRE(v->setParam("hairstyle.strands", "300"));
-  runSimFrames(*v, 2);
-  const long generation = v->simFrame().generation;
-  const StiffnessInfo before = v->simFrame().stiffness;
-  CHECK(before.model == StiffnessModel::Calibrated);
-  CHECK(before.windowMax == 2);  // 4 cm on 2 cm segments
-  CHECK(before.plan.substeps == 4);
-  CHECK_FALSE(before.plan.capped);
-
-  // Half the window: one particle a side, a stiffer rate, more steps; live, not regrown.
-  REQUIRE(v->setParam("sim.window_length", "0.02"));
-  REQUIRE(v->sync());
-  const StiffnessInfo half = v->simFrame().stiffness;
-  CHECK(v->simFrame().generation == generation);
-  CHECK(half.windowMax == 1);
-  CHECK(half.rateMax > 10.0 * before.rateMax);
-  CHECK(half.plan.substeps > before.plan.substeps);
-  // It asks for 16 steps: the default step budget (8) binds, said in the log once.
-  CHECK(half.plan.wanted > 8);
-  CHECK(half.plan.substeps == 8);
-  CHECK(half.plan.capped);
-  runSimFrames(*v, 2);
-  auto warnings = [&] {
-    return std::count_if(v->messages().begin(), v->messages().end(), [](const ViewerMessage& m) {
-      return m.level == MessageLevel::Warning && m.text.find("max_substeps") != std::string::npos;
-    });
-  };
-  CHECK(warnings() == 1);
-
-  // A lower budget: a warning in the log, once.
-  REQUIRE(v->setParam("sim.max_substeps", "5"));
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().stiffness.plan.capped);
-  CHECK(v->simFrame().stiffness.plan.substeps == 5);
-  CHECK(warnings() == 2);
-  REQUIRE(v->setParam("wind.strength", "2"));  // another live change: no second warning
-  REQUIRE(v->sync());
-  CHECK(warnings() == 2);
-  runSimFrames(*v, 2);
-  CHECK_FALSE(v->controls().nanStopped());
-
-  // The paper model takes its window in particles and sim.substeps as they are.
-  REQUIRE(v->setParam("sim.stiffness_model", "paper"));
-  REQUIRE(v->sync());
-  const StiffnessInfo paper = v->simFrame().stiffness;
-  CHECK(paper.model == StiffnessModel::Paper);
-  CHECK(paper.plan.substeps == v->simFrame().config.sim.substeps);
-  CHECK(paper.windowMax == v->simFrame().config.sim.stiffnessWindow);
-}
-
 TEST_CASE("window: a broken preset shows its messages and the scene keeps running", "[window]") {
   const fs::path dir = tempDir();
   std::unique_ptr<Viewer> v = makeViewer();
-  REQUIRE(v->loadPreset((kSource / "presets/short_shake.json").string()));
-  REQUIRE(v->sync());
-  REQUIRE(v->setParam("hairstyle.strands", "500"));
-  const std::string opened = v->document().path();
+  REQUIRE(v->session().loadPreset((kSource / "presets/short_shake.json").string()));
+  REQUIRE(v->session().sync());
+  REQUIRE(v->session().setParam("hairstyle.strands", "500"));
+  const std::string opened = v->session().document().path();
   const fs::path broken = dir / "broken.json";
   std::ofstream(broken) << R"({"sim": {"substeps": 0}, "wind": {"strenght": 3}})";
 
-  CHECK_FALSE(v->loadPreset(broken.string()));
-  REQUIRE(v->presetErrors().size() >= 2);
+  CHECK_FALSE(v->session().loadPreset(broken.string()));
+  REQUIRE(v->session().presetErrors().size() >= 2);
   std::string all;
-  for (const std::string& m : v->presetErrors()) all += m + "\n";
+  for (const std::string& m : v->session().presetErrors()) all += m + "\n";
   INFO(all);
   CHECK(all.find("sim.substeps") != std::string::npos);
   CHECK(all.find("strenght") != std::string::npos);
   CHECK(all.find("broken.json") != std::string::npos);
-  CHECK(v->document().path() == opened);
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().strands == 500);
+  CHECK(v->session().document().path() == opened);
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().strands == 500);
 
   runSimFrames(*v, 2);
   const Image img = screenshot(*v, dir / "broken.png");
@@ -423,33 +283,34 @@ TEST_CASE("window: a broken preset shows its messages and the scene keeps runnin
         }) > 0.002);
 
   // A value the panel could hold but the scene cannot: refused with a message, nothing lost.
-  CHECK_FALSE(v->setParam("hairstyle.min_particles", "40"));
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().config.hairstyle.minParticles == 5);
-  CHECK(v->document().current().scene.hairstyle.minParticles == 5);
-  v->dismissPresetErrors();
-  CHECK(v->presetErrors().empty());
+  CHECK_FALSE(v->session().setParam("hairstyle.min_particles", "40"));
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().config.hairstyle.minParticles == 5);
+  CHECK(v->session().document().current().scene.hairstyle.minParticles == 5);
+  v->session().dismissPresetErrors();
+  CHECK(v->session().presetErrors().empty());
   removeTemp(dir);
 }
 
 TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[window]") {
   const fs::path dir = tempDir();
-  std::unique_ptr<Viewer> v = makeViewer(
-      [](const std::string&, std::string*) { return std::unique_ptr<Solver>(new NanAfter(4)); });
+  std::unique_ptr<Viewer> v = makeViewer([](const std::string&, std::string*) {
+    return std::unique_ptr<Solver>(new test::NanAfter(4));
+  });
   Preset c = defaultPreset();
   c.scene.hairstyle.strands = 300;
   std::string error;
-  REQUIRE(v->open(c, "", "", &error));
+  REQUIRE(v->session().open(c, "", "", &error));
   // The samples come a few frames late: the thread stops within a few frames of the bad one.
-  REQUIRE(v->waitForSimFrame(40));
-  REQUIRE(v->controls().nanStopped());
-  CHECK(v->controls().paused());
-  CHECK(v->simFrame().nanFrame >= 4);
-  const long frame = v->simFrame().frame;
+  REQUIRE(v->session().waitForSimFrame(40));
+  REQUIRE(v->session().controls().nanStopped());
+  CHECK(v->session().controls().paused());
+  CHECK(v->session().simFrame().nanFrame >= 4);
+  const long frame = v->session().simFrame().frame;
   CHECK(frame < 40);
   runFrames(*v, 3);
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().frame == frame);  // stopped: no garbage steps
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().frame == frame);  // stopped: no garbage steps
 
   const Image img = screenshot(*v, dir / "nan.png");
   // The red banner at the top centre.
@@ -457,8 +318,8 @@ TEST_CASE("window: NaN from the simulation pauses the viewer and says so", "[win
   CHECK(share(img, img.width / 2 - 200, 0, img.width / 2 + 200, 120,
               [&](const uint8_t* p) { return near(p, bannerish, 25); }) > 0.05);
 
-  v->controls().resetHair();
-  CHECK_FALSE(v->controls().nanStopped());
+  v->session().controls().resetHair();
+  CHECK_FALSE(v->session().controls().nanStopped());
   removeTemp(dir);
 }
 
@@ -473,16 +334,16 @@ TEST_CASE("window: a shader that fails to reload keeps the old program and shows
   Preset c = defaultPreset();
   c.scene.hairstyle.strands = 400;
   std::string error;
-  REQUIRE(v->open(c, "", "", &error));
-  REQUIRE(v->sceneView().hasRenderer());
-  v->controls().setPaused(true);
+  REQUIRE(v->session().open(c, "", "", &error));
+  REQUIRE(ViewerProbe(*v).sceneView().hasRenderer());
+  v->session().controls().setPaused(true);
   runFrames(*v, 2);
   const Image before = screenshot(*v, dir / "before_reload.png");
 
   std::ofstream(shaders / "render/hair.frag", std::ios::app) << "\nthis is not GLSL\n";
-  CHECK_FALSE(v->reloadShaders());
-  CHECK(v->sceneView().shaderReloadFailed());
-  CHECK(v->sceneView().shaderLog().find("hair.frag") != std::string::npos);
+  CHECK_FALSE(ViewerProbe(*v).reloadShaders());
+  CHECK(ViewerProbe(*v).sceneView().shaderReloadFailed());
+  CHECK(ViewerProbe(*v).sceneView().shaderLog().find("hair.frag") != std::string::npos);
   // The old programs still draw: the scene area below the log window is as it was.
   const Image after = screenshot(*v, dir / "after_failed_reload.png");
   const double changed = share(before, 430, 380, 880, 640, [&](const uint8_t* p) {
@@ -494,38 +355,10 @@ TEST_CASE("window: a shader that fails to reload keeps the old program and shows
 
   fs::copy_file(kSource / "shaders/render/hair.frag", shaders / "render/hair.frag",
                 fs::copy_options::overwrite_existing);
-  CHECK(v->reloadShaders());
-  CHECK_FALSE(v->sceneView().shaderReloadFailed());
+  CHECK(ViewerProbe(*v).reloadShaders());
+  CHECK_FALSE(ViewerProbe(*v).sceneView().shaderReloadFailed());
   v.reset();
   gl::setShaderDirectory({});
-  removeTemp(dir);
-}
-
-TEST_CASE("window: save as writes the preset and clears the modified marker", "[window]") {
-  const fs::path dir = tempDir();
-  std::unique_ptr<Viewer> v = makeViewer();
-  Preset c = defaultPreset();
-  c.scene.hairstyle.strands = 200;
-  std::string error;
-  REQUIRE(v->open(c, "", "", &error));
-  REQUIRE(v->setParam("wind.gusts", "1.25"));
-  CHECK(v->document().modified());
-  const fs::path out = saveAsPath("mine", (dir / "x.json").string(), {});
-  CHECK(out == dir / "mine.json");
-  REQUIRE(v->saveAs(out.string()));
-  CHECK_FALSE(v->document().modified());
-  Preset back = defaultPreset();
-  PresetErrors errors;
-  REQUIRE(loadPreset(out.string(), back, errors));
-  CHECK(back.scene.wind.gusts == 1.25f);
-  CHECK(back.scene.hairstyle.strands == 200);
-  // Revert goes back to what was saved.
-  REQUIRE(v->setParam("sim.damping", "3"));
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().config.sim.damping == 3.0f);
-  v->revert();
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().config.sim.damping == back.scene.sim.damping);
   removeTemp(dir);
 }
 
@@ -632,21 +465,21 @@ TEST_CASE("camera control: orbit, zoom and head drag stay in range and keep the 
 }
 
 TEST_CASE("window: the UI runs while a frame of simulation does not end", "[window]") {
-  auto gate = std::make_shared<GatedSolver::Gate>();
+  auto gate = std::make_shared<test::GatedSolver::Gate>();
   // Opened at the end whatever happens (declared after the viewer, so destroyed before
   // it), or the viewer's destructor would wait for the frame forever.
   struct Opener {
-    GatedSolver::Gate& g;
-    ~Opener() { allow(g, 1000000); }
+    test::GatedSolver::Gate& g;
+    ~Opener() { test::allow(g, 1000000); }
   };
   std::unique_ptr<Viewer> v = makeViewer([gate](const std::string&, std::string*) {
-    return std::unique_ptr<Solver>(new GatedSolver(gate));
+    return std::unique_ptr<Solver>(new test::GatedSolver(gate));
   });
   Preset c = defaultPreset();
   c.scene.hairstyle.strands = 200;
   std::string error;
   const Opener opener{*gate};
-  REQUIRE(v->open(c, "", "", &error));
+  REQUIRE(v->session().open(c, "", "", &error));
   // The thread is now inside its first frame, which does not end until the gate opens: the
   // window still draws, takes edits and moves the camera.
   const auto deadline = Clock::now() + std::chrono::seconds(30);
@@ -655,18 +488,19 @@ TEST_CASE("window: the UI runs while a frame of simulation does not end", "[wind
   const long drawn = v->framesDrawn();
   runFrames(*v, 20);
   CHECK(v->framesDrawn() == drawn + 20);
-  CHECK(v->simFrame().frame == 0);
-  REQUIRE(v->setParam("camera.yaw", "75"));
-  REQUIRE(v->setParam("wind.strength", "3"));  // queued for the thread, between frames
+  CHECK(v->session().simFrame().frame == 0);
+  REQUIRE(v->session().setParam("camera.yaw", "75"));
+  REQUIRE(v->session().setParam("wind.strength", "3"));  // queued for the thread, between frames
   runFrames(*v, 2);
-  CHECK(v->document().current().view.camera.yaw == 75.0f);
-  CHECK(v->simFrame().config.wind.strength != 3.0f);  // not yet applied: the frame runs on
+  CHECK(v->session().document().current().view.camera.yaw == 75.0f);
+  CHECK(v->session().simFrame().config.wind.strength !=
+        3.0f);  // not yet applied: the frame runs on
 
   // The frame ends: the edit is applied before the next one, and the view shows it.
-  allow(*gate, 3);
-  REQUIRE(v->waitForSimFrame(3));
-  CHECK(v->simFrame().frame == 3);
-  CHECK(v->simFrame().config.wind.strength == 3.0f);
+  test::allow(*gate, 3);
+  REQUIRE(v->session().waitForSimFrame(3));
+  CHECK(v->session().simFrame().frame == 3);
+  CHECK(v->session().simFrame().config.wind.strength == 3.0f);
 }
 
 TEST_CASE("window: interactive quality while simulating, full when still and for screenshots",
@@ -677,48 +511,48 @@ TEST_CASE("window: interactive quality while simulating, full when still and for
   c.scene.hairstyle.strands = 400;
   c.view.render.children = 3;
   std::string error;
-  REQUIRE(v->open(c, "", "", &error));
-  REQUIRE(v->document().current().view.render.interactive);
+  REQUIRE(v->session().open(c, "", "", &error));
+  REQUIRE(v->session().document().current().view.render.interactive);
   runSimFrames(*v, 3);
   runFrames(*v, 1);
-  CHECK(v->sceneView().lastQuality() == DrawQuality::Interactive);
+  CHECK(ViewerProbe(*v).sceneView().lastQuality() == DrawQuality::Interactive);
   // A share of the strands: render.interactive_amount of the 400 simulated and of as many of
   // their 1,200 children as the frame budget allows (llvmpipe's frames are over 33 ms: none).
-  const double amount = v->document().current().view.render.interactiveAmount;
+  const double amount = v->session().document().current().view.render.interactiveAmount;
   CHECK(double(v->stats().drawnStrands) <= amount * 1600.0 + 1.0);
   CHECK(double(v->stats().drawnStrands) >= amount * 400.0 - 1.0);
   // No budget: the share of all 1,600, from the frame after.
-  REQUIRE(v->setParam("render.interactive_budget_ms", "0"));
+  REQUIRE(v->session().setParam("render.interactive_budget_ms", "0"));
   runSimFrames(*v, 2);
   runFrames(*v, 2);
-  CHECK(v->sceneView().lastQuality() == DrawQuality::Interactive);
+  CHECK(ViewerProbe(*v).sceneView().lastQuality() == DrawQuality::Interactive);
   CHECK(double(v->stats().drawnStrands) >= 0.5 * amount * 1600.0);
   CHECK(double(v->stats().drawnStrands) < 0.6 * 1600.0);
 
   // A screenshot is drawn in full even while the hair runs.
   screenshot(*v, dir / "running.png");
-  CHECK(v->sceneView().lastQuality() == DrawQuality::Full);
+  CHECK(ViewerProbe(*v).sceneView().lastQuality() == DrawQuality::Full);
   CHECK(v->stats().drawnStrands == 1600);
 
   // Paused and still: full quality, and then no new picture while nothing changes.
-  v->controls().setPaused(true);
-  REQUIRE(v->sync());
+  v->session().controls().setPaused(true);
+  REQUIRE(v->session().sync());
   runFrames(*v, 2);
-  CHECK(v->sceneView().lastQuality() == DrawQuality::Full);
-  const long scenes = v->sceneView().scenesDrawn();
+  CHECK(ViewerProbe(*v).sceneView().lastQuality() == DrawQuality::Full);
+  const long scenes = ViewerProbe(*v).sceneView().scenesDrawn();
   runFrames(*v, 5);
-  CHECK(v->sceneView().scenesDrawn() == scenes);
+  CHECK(ViewerProbe(*v).sceneView().scenesDrawn() == scenes);
   // A change of the look draws again.
-  REQUIRE(v->setParam("render.strand_width", "2.5"));
+  REQUIRE(v->session().setParam("render.strand_width", "2.5"));
   runFrames(*v, 1);
-  CHECK(v->sceneView().scenesDrawn() == scenes + 1);
+  CHECK(ViewerProbe(*v).sceneView().scenesDrawn() == scenes + 1);
 
   // Interactive quality off: full while running too.
-  REQUIRE(v->setParam("render.interactive", "false"));
-  v->controls().setPaused(false);
+  REQUIRE(v->session().setParam("render.interactive", "false"));
+  v->session().controls().setPaused(false);
   runSimFrames(*v, 2);
   runFrames(*v, 1);
-  CHECK(v->sceneView().lastQuality() == DrawQuality::Full);
+  CHECK(ViewerProbe(*v).sceneView().lastQuality() == DrawQuality::Full);
   removeTemp(dir);
 }
 
@@ -747,11 +581,11 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
   c.scene.hairstyle.strands = 400;
   c.scene.head.amplitude = 30.0f;  // a nod that moves the hair between frames
   c.scene.head.frequency = 1.5f;
-  REQUIRE(v->open(c, "", "", &error));
-  REQUIRE(v->waitForSimFrame(40));
-  REQUIRE(v->sync());
-  const TimelineStatus& t = v->simFrame().timeline;
-  REQUIRE(v->simFrame().frame == 40);
+  REQUIRE(v->session().open(c, "", "", &error));
+  REQUIRE(v->session().waitForSimFrame(40));
+  REQUIRE(v->session().sync());
+  const TimelineStatus& t = v->session().simFrame().timeline;
+  REQUIRE(v->session().simFrame().frame == 40);
   CHECK(t.first == 0);
   CHECK(t.last == 40);
   CHECK(t.shown == -1);
@@ -760,86 +594,87 @@ TEST_CASE("window: the timeline records, scrubs, plays and resumes; the pixels s
   const Image live = screenshot(*v, dir / "live40.png");
 
   // Scrubbed back to frame 12: that frame's picture, the simulation paused at 40.
-  v->controls().showRecorded(12);
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().timeline.shown == 12);
-  CHECK(v->simFrame().frame == 12);
-  CHECK(v->simFrame().timeline.live == 40);
+  v->session().controls().showRecorded(12);
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().timeline.shown == 12);
+  CHECK(v->session().simFrame().frame == 12);
+  CHECK(v->session().simFrame().timeline.live == 40);
   const Image at12 = screenshot(*v, dir / "recorded12.png");
   CHECK(sceneDifference(at12, live) > 0.01);
   // Frame 40 from the recording is the live frame 40, pixel for pixel.
-  v->controls().showRecorded(40);
-  REQUIRE(v->sync());
+  v->session().controls().showRecorded(40);
+  REQUIRE(v->session().sync());
   CHECK(sceneDifference(screenshot(*v, dir / "recorded40.png"), live) == 0.0);
 
   // Played back from frame 12 at real time (1/60 s a frame), not looping: it moves on, no
   // faster than real time (however slowly the UI draws: llvmpipe may take most of a second a
   // frame), and stops at the last frame.
-  v->controls().setLoopRecording(false);
-  v->controls().showRecorded(12);
-  REQUIRE(v->sync());
+  v->session().controls().setLoopRecording(false);
+  v->session().controls().showRecorded(12);
+  REQUIRE(v->session().sync());
   const auto playStart = Clock::now();
-  v->controls().playRecording(true);
-  CHECK(v->controls().playingRecording());
-  while (v->simFrame().timeline.shown <= 15 && Clock::now() < playStart + std::chrono::minutes(1)) {
+  v->session().controls().playRecording(true);
+  CHECK(v->session().controls().playingRecording());
+  while (v->session().simFrame().timeline.shown <= 15 &&
+         Clock::now() < playStart + std::chrono::minutes(1)) {
     v->runFrame();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   const double elapsed = std::chrono::duration<double>(Clock::now() - playStart).count();
-  const long played = v->simFrame().timeline.shown;
+  const long played = v->session().simFrame().timeline.shown;
   INFO("after " << elapsed << " s of playback: frame " << played);
   CHECK(played > 15);
   CHECK(played <= 12 + long(elapsed * 60.0) + 1);
   // Looping, from near the end: it comes round to the start.
-  v->controls().setLoopRecording(true);
-  v->controls().showRecorded(38);
-  REQUIRE(v->sync());
-  v->controls().playRecording(true);
+  v->session().controls().setLoopRecording(true);
+  v->session().controls().showRecorded(38);
+  REQUIRE(v->session().sync());
+  v->session().controls().playRecording(true);
   const auto loopStart = Clock::now();
   bool wrapped = false;
   while (!wrapped && Clock::now() < loopStart + std::chrono::minutes(1)) {
     v->runFrame();
-    wrapped = v->simFrame().timeline.shown < 38;
+    wrapped = v->session().simFrame().timeline.shown < 38;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   CHECK(wrapped);
-  CHECK(v->controls().playingRecording());
-  v->controls().playRecording(false);
+  CHECK(v->session().controls().playingRecording());
+  v->session().controls().playRecording(false);
 
   // Resumed from frame 20 and run on to the limit (40): the frames as recorded, the same
   // picture at 40.
-  v->controls().showRecorded(20);
-  REQUIRE(v->sync());
+  v->session().controls().showRecorded(20);
+  REQUIRE(v->session().sync());
   const Image at20 = screenshot(*v, dir / "recorded20.png");
-  v->controls().resumeFrom(20);
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().timeline.shown == -1);
-  CHECK(v->simFrame().frame == 20);
-  CHECK(v->simFrame().timeline.last == 20);
-  CHECK(v->controls().paused());
+  v->session().controls().resumeFrom(20);
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().timeline.shown == -1);
+  CHECK(v->session().simFrame().frame == 20);
+  CHECK(v->session().simFrame().timeline.last == 20);
+  CHECK(v->session().controls().paused());
   CHECK(sceneDifference(screenshot(*v, dir / "resumed20.png"), at20) == 0.0);
   bool said = false;
-  for (const ViewerMessage& m : v->messages())
+  for (const ViewerMessage& m : v->session().messages())
     said |= m.text.rfind("resumed from frame 20", 0) == 0;
   CHECK(said);
-  v->controls().setPaused(false);
-  REQUIRE(v->waitForSimFrame(40));
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().frame == 40);
-  CHECK(v->simFrame().timeline.last == 40);
+  v->session().controls().setPaused(false);
+  REQUIRE(v->session().waitForSimFrame(40));
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().frame == 40);
+  CHECK(v->session().simFrame().timeline.last == 40);
   CHECK(sceneDifference(screenshot(*v, dir / "again40.png"), live) == 0.0);
 
   // A bake: 10 frames as fast as they go, recorded, then paused (the limit lifted by a reset
   // would start again at 0: bake from the resumed 20 instead).
-  v->controls().resumeFrom(20);
-  REQUIRE(v->sync());
-  v->controls().bake(10.0 / 60.0);
-  REQUIRE(v->waitForSimFrame(30));
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().frame == 30);
-  CHECK(v->simFrame().timeline.last == 30);
-  CHECK(v->simFrame().timeline.bakeLeft == 0);
-  CHECK(v->simFrame().idle);
+  v->session().controls().resumeFrom(20);
+  REQUIRE(v->session().sync());
+  v->session().controls().bake(10.0 / 60.0);
+  REQUIRE(v->session().waitForSimFrame(30));
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().frame == 30);
+  CHECK(v->session().simFrame().timeline.last == 30);
+  CHECK(v->session().simFrame().timeline.bakeLeft == 0);
+  CHECK(v->session().simFrame().idle);
   removeTemp(dir);
 }
 
@@ -850,48 +685,49 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   std::string error;
   Preset c = defaultPreset();
   c.scene.hairstyle.strands = 400;
-  REQUIRE(v->open(c, "", "", &error));
-  REQUIRE(v->waitForSimFrame(30));
-  REQUIRE(v->sync());
-  v->controls().keepAsA();
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().timeline.aFirst == 0);
-  CHECK(v->simFrame().timeline.aLast == 30);
+  REQUIRE(v->session().open(c, "", "", &error));
+  REQUIRE(v->session().waitForSimFrame(30));
+  REQUIRE(v->session().sync());
+  v->session().controls().keepAsA();
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().timeline.aFirst == 0);
+  CHECK(v->session().simFrame().timeline.aLast == 30);
   // A counts against the one budget: the recording and A within it.
-  CHECK(v->simFrame().timeline.aBytes > 0);
-  CHECK(v->simFrame().timeline.bytes + v->simFrame().timeline.aBytes <=
-        v->simFrame().timeline.budget);
-  v->controls().showRecorded(30);
-  REQUIRE(v->sync());
+  CHECK(v->session().simFrame().timeline.aBytes > 0);
+  CHECK(v->session().simFrame().timeline.bytes + v->session().simFrame().timeline.aBytes <=
+        v->session().simFrame().timeline.budget);
+  v->session().controls().showRecorded(30);
+  REQUIRE(v->session().sync());
   const Image a30 = screenshot(*v, dir / "a30.png");
 
   // B: a strong wind, simulated again over A's frames.
-  REQUIRE(v->setParam("wind.strength", "14", &error));
-  CHECK(v->controls().keysChangedSinceA() == std::vector<std::string_view>{"wind.strength"});
-  v->controls().rerunFromA();
-  REQUIRE(v->waitForSimFrame(30));
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().timeline.last == 30);
-  CHECK(v->simFrame().timeline.bytes + v->simFrame().timeline.aBytes <=
-        v->simFrame().timeline.budget);
-  v->controls().showRecorded(30);
-  REQUIRE(v->sync());
-  CHECK_FALSE(v->simFrame().timeline.showingA);
+  REQUIRE(v->session().setParam("wind.strength", "14", &error));
+  CHECK(v->session().controls().keysChangedSinceA() ==
+        std::vector<std::string_view>{"wind.strength"});
+  v->session().controls().rerunFromA();
+  REQUIRE(v->session().waitForSimFrame(30));
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().timeline.last == 30);
+  CHECK(v->session().simFrame().timeline.bytes + v->session().simFrame().timeline.aBytes <=
+        v->session().simFrame().timeline.budget);
+  v->session().controls().showRecorded(30);
+  REQUIRE(v->session().sync());
+  CHECK_FALSE(v->session().simFrame().timeline.showingA);
   const Image b30 = screenshot(*v, dir / "b30.png");
   CHECK(sceneDifference(a30, b30) > 0.01);
   // The toggle: A's frame 30 again, pixel for pixel.
-  v->controls().showA(true);
-  REQUIRE(v->sync());
-  CHECK(v->simFrame().timeline.showingA);
+  v->session().controls().showA(true);
+  REQUIRE(v->session().sync());
+  CHECK(v->session().simFrame().timeline.showingA);
   CHECK(sceneDifference(screenshot(*v, dir / "a30_again.png"), a30) == 0.0);
-  v->controls().showA(false);
-  REQUIRE(v->sync());
+  v->session().controls().showA(false);
+  REQUIRE(v->session().sync());
   CHECK(sceneDifference(screenshot(*v, dir / "b30_again.png"), b30) == 0.0);
 
   // The recording (B) out as cyHair, one file a frame, the same strands in each.
   const fs::path seq = dir / "seq";
-  v->controls().exportRecorded(seq.string(), 0, 30);
-  REQUIRE(v->sync());
+  v->session().controls().exportRecorded(seq.string(), 0, 30);
+  REQUIRE(v->session().sync());
   size_t files = 0;
   for (const auto& e : fs::directory_iterator(seq)) files += e.path().extension() == ".hair";
   CHECK(files == 31);
@@ -899,15 +735,16 @@ TEST_CASE("window: A/B shows two settings over the same frames; the recording ex
   REQUIRE(last.groom);
   CHECK(last.groom->strandCount() == 400);
   bool said = false;
-  for (const ViewerMessage& m : v->messages())
+  for (const ViewerMessage& m : v->session().messages())
     said |= m.text == "wrote frames 0-30 as 31 cyHair files into " + seq.string();
   CHECK(said);
 
   // A regrown groom: A cannot be run again on it, and the viewer says so.
-  REQUIRE(v->setParam("hairstyle.strands", "300", &error));
-  REQUIRE(v->sync());
-  v->controls().rerunFromA();
-  CHECK(v->messages().back().text.rfind("cannot run B: A was recorded on another groom", 0) == 0);
+  REQUIRE(v->session().setParam("hairstyle.strands", "300", &error));
+  REQUIRE(v->session().sync());
+  v->session().controls().rerunFromA();
+  CHECK(v->session().messages().back().text.rfind("cannot run B: A was recorded on another groom",
+                                                  0) == 0);
   removeTemp(dir);
 }
 
@@ -935,17 +772,17 @@ TEST_CASE("window: a groom file imported while the window runs shows its progres
   Preset c = defaultPreset();
   c.scene.hairstyle.strands = 300;
   std::string error;
-  REQUIRE(v->open(c, "", "", &error));
+  REQUIRE(v->session().open(c, "", "", &error));
   runSimFrames(*v, 1);
-  CHECK(v->importStatus().stage.empty());
-  REQUIRE(v->setParam("hairstyle.strands", "1000000"));
-  REQUIRE(v->setParam("hairstyle.file", file));
+  CHECK(v->session().importStatus().stage.empty());
+  REQUIRE(v->session().setParam("hairstyle.strands", "1000000"));
+  REQUIRE(v->session().setParam("hairstyle.file", file));
   // The window keeps drawing while the thread imports; the banner's stages come and go.
   std::vector<std::string> stages;
   const auto deadline = Clock::now() + std::chrono::minutes(2);
-  while (v->simFrame().strands != size_t(strands) && Clock::now() < deadline) {
+  while (v->session().simFrame().strands != size_t(strands) && Clock::now() < deadline) {
     v->runFrame();
-    const std::string stage = v->importStatus().stage;
+    const std::string stage = v->session().importStatus().stage;
     if (!stage.empty() && (stages.empty() || stages.back() != stage)) stages.push_back(stage);
   }
   INFO("stages seen:" << [&] {
@@ -953,8 +790,8 @@ TEST_CASE("window: a groom file imported while the window runs shows its progres
     for (const std::string& x : stages) s += " " + x;
     return s;
   }());
-  REQUIRE(v->simFrame().strands == size_t(strands));
+  REQUIRE(v->session().simFrame().strands == size_t(strands));
   CHECK(!stages.empty());
-  CHECK(v->importStatus().stage.empty());
+  CHECK(v->session().importStatus().stage.empty());
   fs::remove_all(dir);
 }

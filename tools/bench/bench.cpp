@@ -7,8 +7,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "sim/solver/cpu_solver.h"
-#include "sim/solver/baselines/make_baseline.h"
+#include "sim/base/format.h"
 #include "sim/groom/hairstyle.h"
 #include "app/preset.h"
 #include "sim/run/make_solver.h"
@@ -17,27 +16,12 @@
 
 namespace csm::bench {
 
-namespace {
-
-// printf into a std::string (labels; GCC 12 warns falsely on chains of string +).
-template <class... A>
-std::string format(const char* f, A... a) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, f, a...);
-  return buf;
-}
-
-}  // namespace
-
 bool Options::wants(const std::string& section) const {
   return only.empty() || std::find(only.begin(), only.end(), section) != only.end();
 }
 
-std::unique_ptr<Solver> Setting::make() const {
-  if (solver == "csm") return std::make_unique<CpuSolver>(CpuSolver::RegionSums::Prefix);
-  if (solver == "csm-direct") return std::make_unique<CpuSolver>(CpuSolver::RegionSums::Direct);
-  if (solver == "gpu") return makeSolver("gpu", nullptr);
-  return makeBaseline(solver, params);
+SolverMaker Setting::maker() const {
+  return solverMaker(solver, params);
 }
 
 void Setting::apply(Config& c) const {
@@ -211,15 +195,14 @@ CantileverRun runCantilever(const Setting& s, int particles, int window, double 
   if (window > 0) scene.config.sim.stiffnessWindow = window;
   if (damping >= 0.0) scene.config.sim.damping = float(damping);
   if (gravity >= 0.0) scene.config.sim.gravity = glm::vec3(0.0f, -float(gravity), 0.0f);
-  std::unique_ptr<Solver> solver = s.make();
-  if (!solver) return r;
-  SceneRunner run(*solver, scene);
+  SceneRunner run(s.maker(), scene);
+  if (!run.ok()) return r;
   std::vector<glm::vec4> x;
   double sagSum = 0.0;
   int sagCount = 0;
   while (run.time() < duration - 0.5 * scene.config.sim.dt) {
     run.frame();
-    solver->readPositions(x);
+    run.readPositions(x);
     const glm::dvec3 tip(x.back().x, x.back().y, x.back().z);
     if (!std::isfinite(tip.x + tip.y + tip.z)) {
       r.finite = false;
@@ -235,35 +218,17 @@ CantileverRun runCantilever(const Setting& s, int particles, int window, double 
   return r;
 }
 
-FrameDriver timingDriver(SceneRunner& run) {
-  DriverOptions options;
-  options.sampleEvery = 0;  // timing only: no measure pass in the timed frames
-  options.timeToCompletion = true;
-  return FrameDriver(
-      run.solver(),
-      [&run] {
-        run.frame();
-        return run.frames();
-      },
-      options);
-}
-
 double msPerSimulatedSecond(const Setting& s, const Scene& scene, int frames) {
   Scene sc = scene;
   s.apply(sc.config);
   // The best of three runs: the machine is shared, and other work only ever adds time.
   double best = INFINITY;
   for (int repeat = 0; repeat < 3; ++repeat) {
-    std::unique_ptr<Solver> solver = s.make();
-    if (!solver) return NAN;
-    SceneRunner run(*solver, sc);
-    FrameDriver driver = timingDriver(run);
-    driver.step();
+    SceneRunner run(s.maker(), sc);
+    if (!run.ok()) return NAN;
+    run.timedFrame();
     double ms = 0.0;
-    for (int f = 0; f < frames; ++f) {
-      driver.step();
-      ms += driver.lastStepMs();
-    }
+    for (int f = 0; f < frames; ++f) ms += run.timedFrame();
     best = std::min(best, ms / (frames * double(sc.config.sim.dt)));
   }
   return best;

@@ -10,9 +10,7 @@
 
 #include "sim/solver/baselines/baseline_solver.h"
 #include "sim/core/config.h"
-#include "sim/run/frame_driver.h"
 #include "sim/verify/measure.h"
-#include "sim/core/solver.h"
 
 namespace csm::bench {
 
@@ -44,8 +42,9 @@ struct Setting {
   CollisionMode collision = CollisionMode::Head;
   BaselineParams params;
 
-  std::unique_ptr<Solver> make() const;  // null for "gpu" without a context
-  void apply(Config& c) const;           // the scene-independent part of the setting
+  // Makes the setting's solver: none for "gpu" without a context (SceneRunner::ok).
+  SolverMaker maker() const;
+  void apply(Config& c) const;  // the scene-independent part of the setting
   bool isCsm() const { return solver.rfind("csm", 0) == 0 || solver == "gpu"; }
 };
 
@@ -80,9 +79,6 @@ inline constexpr double kSagGravity = 1.0;
 
 // Wall-clock ms per simulated second of a setting on a scene: `frames` frames after one
 // warm-up frame, timed alone, the best of three runs.
-// The program's frame driver over a scene runner, for timing: each frame waits for its GPU
-// work to end, and takes no samples.
-FrameDriver timingDriver(SceneRunner& run);
 double msPerSimulatedSecond(const Setting& s, const Scene& scene, int frames);
 
 // Runs `count` jobs on o.threads workers; job(i) must only touch its own results.

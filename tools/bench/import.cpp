@@ -12,7 +12,6 @@
 #include <memory>
 #include <string>
 
-#include "sim/solver/cpu_solver.h"
 #include "sim/run/make_solver.h"
 #include "sim/groom/scene_groom.h"
 #include "sim/groom/groom_file.h"
@@ -127,10 +126,12 @@ void runImport(const Options& o) {
     for (const char* s : {"reading", "fitting", "repairing", "resampling", "placing"})
       row(s, stageSeconds[s]);
     row("import (all)", build);
-    std::unique_ptr<Solver> solver = name == "gpu"
-                                         ? makeSolver("gpu", nullptr)
-                                         : std::unique_ptr<Solver>(std::make_unique<CpuSolver>());
-    Simulation sim(std::move(solver));
+    std::unique_ptr<Simulation> made = makeSimulation(name, &error);
+    if (!made) {
+      std::fprintf(stderr, "import: %s\n", error.c_str());
+      return;
+    }
+    Simulation& sim = *made;
     auto t1 = Clock::now();
     if (!sim.load(c, "", &error)) {
       std::fprintf(stderr, "import: %s\n", error.c_str());
@@ -139,11 +140,10 @@ void runImport(const Options& o) {
     row("scene load (import again)", secondsSince(t1));
     t1 = Clock::now();
     sim.stepFrame();
-    sim.solver().finish();
+    sim.diagnostics().finish();
     row("first frame", secondsSince(t1));
     std::fprintf(stderr, "import %s: %zu strands, %zu points read, %zu particles simulated\n",
-                 name.c_str(), sim.solver().strandCount(), report.filePoints,
-                 sim.solver().particleCount());
+                 name.c_str(), sim.counts().strands, report.filePoints, sim.counts().particles);
   }
   csv.write(o.out + "/import.csv");
   std::filesystem::remove(file);

@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
   if (o.gpu) {
     std::string error;
     context = gl::HeadlessContext::create(&error);
-    std::unique_ptr<Solver> probe = context ? makeSolver("gpu", &error) : nullptr;
+    std::unique_ptr<Simulation> probe = context ? makeSimulation("gpu", &error) : nullptr;
     if (!probe) {
       std::fprintf(stderr, "csmhair-bench: no GPU solver (%s); measuring the CPU only\n",
                    error.c_str());

@@ -34,9 +34,8 @@ void mainSceneAccuracy(const Setting& s, const Scene& base, const std::vector<do
   s.apply(scene.config);
   Scene fine = scene;
   fine.config.sim.substeps *= 16;
-  std::unique_ptr<Solver> coarse = s.make(), reference = s.make();
-  SceneRunner run(*coarse, scene), refRun(*reference, fine);
-  r.substepsUsed = s.isCsm() ? coarse->stiffness().plan.substeps : s.substeps;
+  SceneRunner run(s.maker(), scene), refRun(s.maker(), fine);
+  r.substepsUsed = s.isCsm() ? run.diagnostics().stiffness().plan.substeps : s.substeps;
   const std::vector<double> rest = restLengths(scene.groom);
   ErrorAccumulator err(scene.groom, scene.config.sim.pinned);
   std::vector<glm::vec4> x, v, xr;
@@ -46,8 +45,8 @@ void mainSceneAccuracy(const Setting& s, const Scene& base, const std::vector<do
   for (double t : times) {
     while (run.time() < t - 0.5 * scene.config.sim.dt) {
       run.frame();
-      coarse->readPositions(x);
-      coarse->readVelocities(v);
+      run.readPositions(x);
+      run.readVelocities(v);
       const auto spheres =
           worldSpheres(scene.config.head.spheres, headPose(scene.config.head, run.time()));
       const Accuracy a = measureAccuracy(x, v, scene.groom, rest, spheres, scene.config.sim.pinned);
@@ -63,7 +62,7 @@ void mainSceneAccuracy(const Setting& s, const Scene& base, const std::vector<do
     }
     pairs += double(closeSegmentPairs(x, scene.groom, scene.config.collision.radius));
     refRun.runTo(t);
-    reference->readPositions(xr);
+    refRun.readPositions(xr);
     err.add(x, xr);
   }
   r.meanStrain = strainSum / std::max(1L, frames);
@@ -100,8 +99,7 @@ void pendulumAccuracy(const Setting& s, MethodResult& r) {
   scene.config.sim.stiffnessWindow = 16;
   scene.config.sim.pinned = 1;
   scene.config.collision.mode = CollisionMode::Off;
-  std::unique_ptr<Solver> solver = s.make();
-  const PendulumResult p = measurePendulum(*solver, scene, 4.0);
+  const PendulumResult p = measurePendulum(s.maker(), scene, 4.0);
   if (p.finite && p.crossings >= 2) r.pendulumErrorPct = 100.0 * p.relativeError;
 }
 

@@ -17,7 +17,6 @@
 
 #include "sim/run/make_solver.h"
 #include "sim/run/simulation.h"
-#include "sim/solver/cpu_solver.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
 
@@ -73,11 +72,10 @@ void runMotion(const Options& o) {
   for (const auto& [preset, strands] : scenes) {
     Config c = presetConfig(o, preset, strands);
     c.collision.mode = CollisionMode::VolumeStrands;
-    std::unique_ptr<Solver> solver =
-        o.gpu ? makeSolver("gpu", nullptr) : std::unique_ptr<Solver>(std::make_unique<CpuSolver>());
-    if (!solver) return;
-    Simulation sim(std::move(solver));
     std::string error;
+    std::unique_ptr<Simulation> made = makeSimulation(solverName, &error);
+    if (!made) return;
+    Simulation& sim = *made;
     if (!sim.load(c, o.source + "/presets", &error)) {
       std::fprintf(stderr, "motion: %s: %s\n", preset, error.c_str());
       return;
@@ -86,7 +84,7 @@ void runMotion(const Options& o) {
     std::vector<glm::vec4> x;
     for (int f = 0; f <= frames; ++f) {
       if (f > 0) sim.stepFrame();
-      sim.solver().readPositions(x);
+      sim.readPositions(x);
       const Pose toHead = inverse(sim.headPose());
       Frame h(x.size());
       for (size_t i = 0; i < x.size(); ++i) h[i] = toHead.apply(glm::dvec3(glm::vec3(x[i])));

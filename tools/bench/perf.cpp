@@ -12,16 +12,13 @@ namespace {
 
 // The fastest frame's ms over at least `minFrames` frames and `minMs` ms, after one warm-up
 // frame: the scene does the same work every frame, the machine is shared, and other work
-// only ever adds time. Frames run on the program's frame driver, each timed to completion.
-double msPerFrame(Solver& solver, const Scene& scene, int minFrames, double minMs, int maxFrames) {
-  SceneRunner run(solver, scene);
-  FrameDriver driver = timingDriver(run);
-  driver.step();
+// only ever adds time. Each frame is timed to completion (SceneRunner::timedFrame).
+double msPerFrame(SceneRunner& run, int minFrames, double minMs, int maxFrames) {
+  run.timedFrame();
   std::vector<double> frames;
   double total = 0.0;
   while (int(frames.size()) < maxFrames && (int(frames.size()) < minFrames || total < minMs)) {
-    driver.step();
-    frames.push_back(driver.lastStepMs());
+    frames.push_back(run.timedFrame());
     total += frames.back();
   }
   return *std::min_element(frames.begin(), frames.end());
@@ -45,8 +42,8 @@ void runRegionSums(const Options& o) {
       const int pinned = scene.config.sim.pinned;
       s.apply(scene.config);
       scene.config.sim.pinned = pinned;
-      std::unique_ptr<Solver> solver = s.make();
-      const double ms = msPerFrame(*solver, scene, o.quick ? 5 : 10, 200.0, 200);
+      SceneRunner run(s.maker(), scene);
+      const double ms = msPerFrame(run, o.quick ? 5 : 10, 200.0, 200);
       csv.add(w).add(std::string(sums) == "csm" ? "prefix" : "direct");
       csv.add(scene.groom.strandCount()).add(scene.groom.pointCount()).add(ms);
       csv.endRow();
@@ -85,12 +82,12 @@ void runScaling(const Options& o) {
       scene.config.collision.mode = se.mode;
       Setting s;
       s.solver = se.solver;
-      std::unique_ptr<Solver> solver = s.make();
-      if (!solver) {
+      SceneRunner run(s.maker(), scene);
+      if (!run.ok()) {
         std::fprintf(stderr, "  %s: no solver\n", se.name.c_str());
         break;
       }
-      const double ms = msPerFrame(*solver, scene, 3, 300.0, 50);
+      const double ms = msPerFrame(run, 3, 300.0, 50);
       csv.add(se.name).add(se.device).add(n).add(scene.groom.pointCount()).add(ms);
       csv.endRow();
       std::fprintf(stderr, "  %-38s %6d strands %8zu particles %9.2f ms/step\n", se.name.c_str(), n,

@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <memory>
 
-#include "sim/solver/cpu_solver.h"
 #include "sim/run/make_solver.h"
 #include "sim/run/frame_recording.h"
 #include "sim/run/simulation.h"
@@ -33,12 +32,10 @@ void runRecording(const Options& o) {
   const int frames = o.quick ? 31 : 61;  // keyframes at 0, 30, 60
   for (const std::string& name : solvers)
     for (int strands : counts) {
-      std::unique_ptr<Solver> solver = name == "gpu"
-                                           ? makeSolver("gpu", nullptr)
-                                           : std::unique_ptr<Solver>(std::make_unique<CpuSolver>());
-      if (!solver) continue;
-      Simulation sim(std::move(solver));
       std::string error;
+      std::unique_ptr<Simulation> made = makeSimulation(name, &error);
+      if (!made) continue;
+      Simulation& sim = *made;
       if (!sim.load(presetConfig(o, "default", strands), o.source + "/presets", &error)) {
         std::fprintf(stderr, "recording: %s\n", error.c_str());
         continue;
@@ -49,7 +46,7 @@ void runRecording(const Options& o) {
       for (int f = 0; f < frames; ++f) {
         auto t0 = Clock::now();
         sim.stepFrame();
-        sim.solver().finish();
+        sim.diagnostics().finish();
         stepMs += msSince(t0);
         const size_t before = recorder.keyframeCount();
         t0 = Clock::now();
@@ -63,7 +60,7 @@ void runRecording(const Options& o) {
         }
       }
       const int plain = frames - keys;
-      const size_t frameBytes = sim.solver().particleCount() * sizeof(glm::vec3);
+      const size_t frameBytes = sim.counts().particles * sizeof(glm::vec3);
       SimulationState state;
       sim.save(state);
       // The frame farthest from its keyframe: 29 frames stepped again.
@@ -71,10 +68,10 @@ void runRecording(const Options& o) {
       double mismatch = -1.0;
       auto t0 = Clock::now();
       const bool ok = recorder.resume(sim, target, &error, &mismatch);
-      sim.solver().finish();
+      sim.diagnostics().finish();
       const double resumeMs = msSince(t0);
       if (!ok) std::fprintf(stderr, "recording: %s\n", error.c_str());
-      csv.add(name).add(strands).add(long(sim.solver().particleCount())).add(frames);
+      csv.add(name).add(strands).add(long(sim.counts().particles)).add(frames);
       csv.add(stepMs / frames).add(recordMs / plain).add(keyMs / std::max(1, keys));
       csv.add(long(frameBytes)).add(long(state.bytes())).add(resumeMs).add(mismatch);
       csv.endRow();

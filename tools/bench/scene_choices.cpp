@@ -32,12 +32,11 @@ struct Outcome {
 Outcome run(Scene scene, double duration) {
   Outcome out;
   Setting s;  // the CPU reference; the scene's config is used as it is
-  std::unique_ptr<Solver> solver = s.make();
-  SceneRunner runner(*solver, scene);
+  SceneRunner runner(s.maker(), scene);
   const std::vector<double> rest = restLengths(scene.groom);
   std::vector<glm::vec4> v;
   const int frames = int(std::lround(duration / scene.config.sim.dt));
-  solver->readPositions(out.x);
+  runner.readPositions(out.x);
   out.hairPairsAtStart =
       double(closeSegmentPairs(out.x, scene.groom, scene.config.collision.radius));
   std::vector<double> frameMs;
@@ -45,10 +44,10 @@ Outcome run(Scene scene, double duration) {
   for (int f = 0; f < frames; ++f) {
     const auto t0 = Clock::now();
     runner.frame();
-    solver->finish();
+    runner.diagnostics().finish();
     frameMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    solver->readPositions(out.x);
-    solver->readVelocities(v);
+    runner.readPositions(out.x);
+    runner.readVelocities(v);
     const auto spheres =
         worldSpheres(scene.config.head.spheres, headPose(scene.config.head, runner.time()));
     const Accuracy a =

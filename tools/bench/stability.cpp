@@ -32,10 +32,9 @@ Released releaseStrands(const Setting& s, double length, double duration) {
   s.apply(scene.config);
   scene.config.sim.pinned = pinned;
   scene.config.collision.mode = CollisionMode::Off;
-  std::unique_ptr<Solver> solver = s.make();
   Released r;
-  r.result = checkStability(*solver, scene, duration, 1.0, 1.5);
-  r.stiffness = solver->stiffness();
+  r.result = checkStability(s.maker(), scene, duration, 1.0, 1.5);
+  r.stiffness = r.result.stiffness;
   return r;
 }
 

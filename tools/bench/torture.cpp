@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "sim/solver/cpu_solver.h"
 #include "sim/run/make_solver.h"
 #include "sim/groom/hairstyle.h"
 #include "sim/verify/torture.h"
@@ -17,8 +16,7 @@ namespace csm::bench {
 namespace {
 
 SolverMaker factory(const std::string& solver) {
-  if (solver == "gpu") return [] { return makeSolver("gpu", nullptr); };
-  return [] { return std::unique_ptr<Solver>(std::make_unique<CpuSolver>()); };
+  return solverMaker(solver == "gpu" ? "gpu" : "cpu");
 }
 
 }  // namespace

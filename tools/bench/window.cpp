@@ -9,7 +9,7 @@
 
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
-#include "sim/solver/cpu_solver.h"
+#include "sim/run/make_solver.h"
 #include "sim/verify/window_coefficient.h"
 #include "sim/solver/stiffness.h"
 
@@ -30,11 +30,10 @@ Settled settle(int particles, float windowLength, double gravity) {
   s.config.sim.maxSubsteps = 256;
   s.config.sim.damping = float(kSettleDamping);
   s.config.sim.gravity = glm::vec3(0.0f, -float(gravity), 0.0f);
-  CpuSolver solver;
-  SceneRunner run(solver, s);
+  SceneRunner run(solverMaker("cpu"), s);
   run.runTo(3.0);
   std::vector<glm::vec4> x;
-  solver.readPositions(x);
+  run.readPositions(x);
   Settled out;
   out.sag = double(x.front().y) - double(x.back().y);
   out.turn = clampTurnDegrees(s, x);

@@ -9,41 +9,19 @@
 #include "sim/head/head_model.h"
 #include "sim/solver/wind.h"
 #include "sim/solver/accuracy.h"
-#include "sim/solver/state_io.h"
-#include "sim/core/hair_state.h"
 
 namespace csm {
 
 void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
-  config_ = config;
-  time_ = 0.0;
-  const HairState st = makeHairState(groom, config.sim, head);
-  const size_t n = st.particleCount();
-  first_ = st.strandFirst;
-  strandOf_ = st.particleStrand;
-  tipHeld_ = st.tipHeld;
-  rest_.resize(n);
-  mass_.resize(n);
+  layOut(groom, config, head);
+  const size_t n = x_.size();
   invMass_.resize(n);
-  x_.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    rest_[i] = glm::dvec3(glm::vec3(st.rest[i]));
-    mass_[i] = st.rest[i].w;
-    invMass_[i] = 1.0 / mass_[i];
-    x_[i] = head.apply(rest_[i]);
-  }
-  v_.assign(n, glm::dvec3(0.0));
-  restLength_.assign(n, 0.0);
+  for (size_t i = 0; i < n; ++i) invMass_[i] = 1.0 / mass_[i];
   bendLength_.assign(n, 0.0);
-  for (size_t i = 0; i + 1 < n; ++i) {
-    if (strandOf_[i] == strandOf_[i + 1]) restLength_[i] = glm::length(rest_[i + 1] - rest_[i]);
-    if (i + 2 < n && strandOf_[i] == strandOf_[i + 2])
-      bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
-  }
+  for (size_t i = 0; i + 2 < n; ++i)
+    if (strandOf_[i] == strandOf_[i + 2]) bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
   headSpheres_ = headModel_.collider().spheres;
-  failure_ = headModel_.handed() ? std::string() : std::string(kNoHeadFailure);
   spheres_ = worldSpheres(headSpheres_, head);
-  samples_.clear();
   onReset();
 }
 
@@ -54,12 +32,14 @@ void BaselineSolver::stepFrame(const Pose& from, const Pose& to) {
   if (!failure_.empty()) {
     // No head to collide with (failure()): the clock runs, the hair stays.
     time_ += substeps * h;
+    head_ = to;
     return;
   }
   for (int k = 0; k < substeps; ++k) {
     step(h, interpolate(from, to, double(k + 1) / substeps));
     time_ += h;
   }
+  head_ = to;
   lastMs_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -113,32 +93,12 @@ void BaselineSolver::damp(double h) {
     if (!pinned(i)) v_[i] *= keep;
 }
 
-void BaselineSolver::readPositions(std::vector<glm::vec4>& out) {
-  readDoublePositions(x_, out);
-}
-
-void BaselineSolver::readVelocities(std::vector<glm::vec4>& out) {
-  readDoubleVelocities(v_, out);
-}
-
-void BaselineSolver::writeState(const std::vector<glm::vec4>& positions,
-                                const std::vector<glm::vec4>& velocities) {
-  writeDoubleState(positions, velocities, x_, v_);
-}
-
 void BaselineSolver::requestSample(long frame) {
   FrameSample sample;
   sample.frame = frame;
   const std::vector<int> pinned(first_.size() - 1, config_.sim.pinned);
   sample.accuracy = measureAccuracy(x_, v_, first_, restLength_, spheres_, pinned);
   samples_.push_back(sample);
-}
-
-std::optional<FrameSample> BaselineSolver::takeSample(bool) {
-  if (samples_.empty()) return std::nullopt;
-  FrameSample s = samples_.front();
-  samples_.pop_front();
-  return s;
 }
 
 void projectDistance(glm::dvec3& pi, glm::dvec3& pj, double wi, double wj, double rest, double k) {

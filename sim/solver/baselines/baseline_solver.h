@@ -7,13 +7,11 @@
 #include <memory>
 #include <string>
 #include <string_view>
-#include <deque>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
-#include "sim/head/head_model.h"
-#include "sim/core/solver.h"
+#include "sim/solver/host_solver.h"
 
 namespace csm {
 
@@ -31,7 +29,7 @@ struct BaselineParams {
 
 // What every baseline has in common: the strand layout, roots that follow the head, external
 // accelerations, the head projection and the substep loop.
-class BaselineSolver : public Solver {
+class BaselineSolver : public HostSolver {
  public:
   explicit BaselineSolver(const BaselineParams& params) : params_(params) {}
 
@@ -40,33 +38,18 @@ class BaselineSolver : public Solver {
     config_ = config;
     headSpheres_ = headModel_.collider().spheres;
   }
-  void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
-  std::string failure() const override { return failure_; }
   void stepFrame(const Pose& from, const Pose& to) override;
 
-  size_t strandCount() const override { return first_.size() - 1; }
-  size_t particleCount() const override { return x_.size(); }
-  double time() const override { return time_; }
-
-  void readPositions(std::vector<glm::vec4>& out) override;
-  void readVelocities(std::vector<glm::vec4>& out) override;
-  void writeState(const std::vector<glm::vec4>& positions,
-                  const std::vector<glm::vec4>& velocities) override;
   // Measured at once: the state is on the CPU.
   void requestSample(long frame) override;
-  std::optional<FrameSample> takeSample(bool wait = false) override;
-  void dropSamples() override { samples_.clear(); }
   std::vector<StageTime> stageTimes() override { return {{"integrate", lastMs_}}; }
-
-  // One step of length h ending at head pose `head`.
-  virtual void step(double h, const Pose& head) = 0;
 
   const BaselineParams& params() const { return params_; }
   void setParams(const BaselineParams& p) { params_ = p; }
-  const std::vector<glm::dvec3>& positions() const { return x_; }
-  const std::vector<glm::dvec3>& velocities() const { return v_; }
 
  protected:
+  // One step of length h ending at head pose `head`.
+  virtual void step(double h, const Pose& head) = 0;
   virtual void onReset() {}
 
   // Kinematic: the first sim.pinned particles of a strand, and its tip when the head holds both
@@ -90,21 +73,10 @@ class BaselineSolver : public Solver {
   void damp(double h);
 
   BaselineParams params_;
-  Config config_;
-  SolverHead headModel_;             // the scene's head, handed before the reset
-  std::string failure_;              // set by reset when no head was handed
   std::vector<Sphere> headSpheres_;  // its spheres, head frame
-  double time_ = 0.0;
-  std::vector<uint32_t> first_{0};
-  std::vector<uint32_t> strandOf_;
-  std::vector<uint8_t> tipHeld_;  // per strand (HairState::tipHeld)
-  std::vector<glm::dvec3> rest_;  // head frame
-  std::vector<double> mass_, invMass_;
-  std::vector<double> restLength_;  // segment i -> i+1; 0 after a strand's last particle
+  std::vector<double> invMass_;
   std::vector<double> bendLength_;  // rest distance i -> i+2; 0 where there is none
-  std::vector<glm::dvec3> x_, v_;
-  std::vector<Sphere> spheres_;  // world space, this step
-  std::deque<FrameSample> samples_;
+  std::vector<Sphere> spheres_;     // world space, this step
   double lastMs_ = 0.0;
 };
 

@@ -1,4 +1,4 @@
-#include "sim/gpu/pass_profile.h"
+#include "gl/pass_profile.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 
 #include "gl/draw.h"
 
-namespace csm::gpu::pass_profile {
+namespace csm::gl::pass_profile {
 namespace {
 
 struct Row {
@@ -38,7 +38,7 @@ void clear() {
 namespace detail {
 
 void finish() {
-  gl::finish();
+  ::csm::gl::finish();
 }
 
 double nowMs() {
@@ -74,4 +74,4 @@ std::string table(long frames) {
   return out;
 }
 
-}  // namespace csm::gpu::pass_profile
+}  // namespace csm::gl::pass_profile

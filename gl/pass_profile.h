@@ -1,13 +1,14 @@
 // Where a GPU frame goes, pass by pass, for profiling (CSM_PASS_PROFILE=1 in the environment):
-// every dispatch of a ComputePass waits for the GPU before and after it (glFinish), and its
-// wall time adds to its shader's row; `csmhair --headless` prints the table as it ends. The
-// waits make the frame slower and each pass's time its own (llvmpipe runs a dispatch inside the
-// call anyway). Off, it costs one branch a dispatch.
+// every compute dispatch (Program::dispatchItems and dispatchIndirect: the solver's passes and
+// the renderer's) waits for the GPU before and after it (glFinish), and its wall time adds to
+// its program's row; `csmhair --headless` prints the table as it ends. The waits make the frame
+// slower and each pass's time its own (llvmpipe runs a dispatch inside the call anyway). Off, it
+// costs one branch a dispatch.
 #pragma once
 
 #include <string>
 
-namespace csm::gpu::pass_profile {
+namespace csm::gl::pass_profile {
 
 bool enabled();
 // Runs `dispatch`: profiling, between two waits, its time added to `path`'s row.
@@ -38,4 +39,4 @@ void run(const std::string& path, F&& dispatch) {
   detail::add(path, detail::nowMs() - t0);
 }
 
-}  // namespace csm::gpu::pass_profile
+}  // namespace csm::gl::pass_profile
