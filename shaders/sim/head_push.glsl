@@ -4,7 +4,7 @@
 // contacts' correction, the strain limit against the already final parent (paper section 3.2),
 // the push out of the head (its distance field with CSM_HEAD_FIELD, else its spheres), Coulomb
 // friction against the head, and DFTL (Mueller et al. 2012) on the parent's velocity, as
-// CpuSolver::limitStrain. The including pass declares spheres[].
+// sweepParticle in sim/solver/cpu_steps.cpp. The including pass declares spheres[].
 #ifdef CSM_HEAD_FIELD
 #include "sim/head_field.glsl"
 #endif
@@ -15,9 +15,8 @@ const float kUnknownClearance = -1e30;
 
 // Pushes p (where the strain limit put it, within maxLength of prev) out of the distance
 // field's surface inflated by r and keeps it within reach of prev; `normal` gets the field's
-// outward normal where it touched. The float twin of pushOutOfHeadField and
-// HeadCollider::pushOut in sim/solver/cpu_solver.cpp (pushOutOfHead below: the same for the
-// spheres).
+// outward normal where it touched. The float twin of pushOutOfHead in sim/solver/cpu_steps.cpp
+// on a field head (pushOutOfHead below: the same for the spheres).
 // - The push: along the field's normal by what is left, twice at most (the field is close to a
 //   distance, not exactly one); out of reach, the nearest point of the circle where the
 //   tangent plane there meets the ball of reach around prev.
@@ -170,7 +169,7 @@ bool pushOutOfFieldHead(inout vec3 p, vec3 prev, mat4 head, float r, float maxLe
 // from `prev` no longer than maxLength: when the radial projection is out of reach, take the
 // nearest point of the circle where the sphere meets the ball of reach around prev. (Moving
 // along the chord toward prev instead would jump: a chord between two points on the sphere
-// always cuts through it.) The float twin of pushOutOfSphere in sim/solver/cpu_solver.cpp.
+// always cuts through it.) The float twin of pushOutOfSphere in sim/solver/cpu_steps.cpp.
 bool pushOutOfSphere(inout vec3 p, vec3 prev, vec3 c, float radius, float maxLength) {
   vec3 d = p - c;
   float len2 = dot(d, d);
@@ -226,7 +225,7 @@ bool pushHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxLength
 // deep, where the nearest surface is another sphere than the one prev lies over) the push again
 // from the nearest point of reach, twice; the last resort, the point where the segment from prev
 // enters the head, by bisection. "In the head": deeper than the surface and than prev. The float
-// twin of HeadCollider::pushOut in sim/solver/cpu_solver.cpp (pushOutOfFieldHead: the same for the
+// twin of pushOutOfHead in sim/solver/cpu_steps.cpp (pushOutOfFieldHead: the same for the
 // distance field).
 bool pushOutOfHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxLength) {
   if (!pushHead(p, prev, sphereBase, r, maxLength)) return false;
@@ -262,7 +261,7 @@ bool pushOutOfHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxL
 // strand contacts' correction sent to it (w: how many sent; applied when `contacts`); xPrev, the
 // parent's final position; vPrev, the parent's velocity, which DFTL corrects (when prevFree).
 // One segment of a strand held at both ends limited against its neighbour `anchor`, already
-// final (CpuSolver::tieStrain): x moves toward it, v with it. Whether x moved.
+// final (limitToward in sim/solver/cpu_steps.cpp): x moves toward it, v with it. Whether x moved.
 bool limitToward(inout vec3 x, inout vec3 v, vec3 anchor, float restLength, float h) {
   vec3 d = x - anchor;
   float len = length(d), most = (1.0 + P.strainLimit) * restLength;
@@ -284,7 +283,7 @@ void sweepParticle(vec3 restHere, vec3 restPrev, bool contacts, vec4 c, vec3 xPr
   float dftl = P.dftl;
   int sphereCount = P.headSpheres;
       if (contacts) {
-        // A change of velocity too, as CpuSolver::limitStrain.
+        // A change of velocity too, as sweepParticle in sim/solver/cpu_steps.cpp.
         if (c.w > 0.0) {
           vec3 moved = c.xyz / c.w;
           x += moved;

@@ -2,8 +2,8 @@
 // per particle) and strand_step.comp (a strand's particles in one work group): kinematic roots
 // follow the head; free particles get gravity and wind drag, and move to x* = x + h (v + h f / m).
 // The velocity itself is not written: integration (shape matching's last step) recomputes it
-// from the positions, as the CPU solver does (its twin: CpuSolver's predict step,
-// sim/solver/cpu_solver.cpp). The including pass includes particle_reads.glsl and declares
+// from the positions, as the CPU solver does (its twin: predictParticle,
+// sim/solver/cpu_steps.cpp). The including pass includes particle_reads.glsl and declares
 // strandStiffness.
 #include "sim/wind.glsl"
 
@@ -67,7 +67,7 @@ vec3 predictParticle(uint i, uint a, uint b, bool held, Substep st, out vec3 vPr
   vec3 acc = P.gravity;
   if (P.windOn != 0u) {
     // Drag acts on the wind across the strand, not along it; implicit in the velocity
-    // (c / (1 + h c) instead of c), as CpuSolver::windDrag.
+    // (c / (1 + h c) instead of c), as predictParticle in sim/solver/cpu_steps.cpp.
     vec3 d = readPosition(min(i + 1u, b - 1u)).xyz -
              readPosition(max(i, a + 1u) - 1u).xyz;
     float len = length(d);

@@ -1,6 +1,6 @@
 // Steps 3-5 of METHOD.md section 2, one invocation per strand: shape matching of every
-// region, goals, and integration. The CPU twin: CpuSolver (sim/solver/cpu_solver.cpp), on the
-// regions sim/solver/stiffness.h builds for both.
+// region, goals, and integration (shapeMatchStrand). The CPU twin: shapeMatchStrand
+// (sim/solver/cpu_steps.cpp), on the regions sim/solver/stiffness.h builds for both.
 //
 // Why one invocation per strand: the region sums and the goal sums are prefix sums along
 // the strand (Rivers & James 2007, FastLSM), and a strand has 8-25 particles (the paper's
@@ -50,10 +50,9 @@ uniform uint substep;
 #define CSM_CLAMP_PREDICTED(base, j) texelFetch(predTex, int(base) + (j)).xyz
 #include "sim/clamp_field.glsl"
 
-void main() {
-  uint id = globalIndex();
-  if (id >= P.strands) return;
-  uint s = strandOrder[id];
+// Strand s: every region's sums, rotation and goal contribution, each particle's goal (paper eq.
+// 1), and integration (eq. 2-3). The float twin of shapeMatchStrand in sim/solver/cpu_steps.cpp.
+void shapeMatchStrand(uint s) {
   uint a = strandFirst[s];
   int n = int(strandFirst[s + 1u] - a);
   // MAX_N is the groom's longest strand (GpuSolver::reset rebuilds this pass when it grows);
@@ -137,8 +136,9 @@ void main() {
 
   // Goals (paper eq. 1) averaged over the regions containing each particle (the regions
   // lo..hi of its own range), g_i = ((sum R_k) ȳ_i + sum (c_k - R_k c̄_k)) / |K_i|, then
-  // integration (eq. 2-3): x = x* + alpha (g - x*), v = (x - x_old) / h, damped. alpha is the
-  // paper's, or min(1, k h^2) with the strand's calibrated rate k.
+  // integration (eq. 2-3): x = x* + alpha (g - x*), v the step's own displacement over h, damped
+  // (predict.glsl says why not (x - x_old) / h in float; the CPU's twin, in double, takes that).
+  // alpha is the paper's, or min(1, k h^2) with the strand's calibrated rate k.
   float h = st.h;
   float keep = st.velocityKept;
   float alpha = P.stiffnessModel == CSM_STIFFNESS_CALIBRATED ? min(1.0, stiff.x * h * h) : P.alpha;
@@ -161,4 +161,10 @@ void main() {
     pos[p] = vec4(x, 1.0);
     vel[p] = vec4(v, 0.0);
   }
+}
+
+void main() {
+  uint id = globalIndex();
+  if (id >= P.strands) return;
+  shapeMatchStrand(strandOrder[id]);
 }

@@ -59,7 +59,7 @@
 
 // ---- The head's push within reach --------------------------------------------------------------
 // A particle pushed out of the head counts as within reach of its parent while the segment is no
-// longer than its limit times (1 + this): sim/solver/cpu_solver.cpp in double, where 1e-6 is far
+// longer than its limit times (1 + this): sim/solver/cpu_steps.cpp in double, where 1e-6 is far
 // above the rounding of a length; shaders/sim/strain_limit.comp in float, where a length of a few
 // centimetres rounds by ~1e-7 relative and the push and the clamp each add some: 1e-5.
 #define CSM_REACH_SLACK_DOUBLE 1e-6
@@ -77,8 +77,8 @@
 // Pinned counts stay below it (kMaxStrandParticles, 256).
 #define CSM_TIP_HELD 1024
 // The sweeps back from a held tip and forth from the root (pairs of them) that share out the
-// stretch the strain limit's sweep leaves such a strand, at most: CpuSolver::tieStrain
-// (sim/solver/cpu_solver.cpp), shaders/sim/strain_limit.comp and strand_group.glsl.
+// stretch the strain limit's sweep leaves such a strand, at most: limitStrainStrand
+// (sim/solver/cpu_steps.cpp), shaders/sim/strain_limit.comp and strand_group.glsl.
 #define CSM_TIED_SWEEPS 4
 
 // ---- Stiffness models (StiffnessModel, sim/core/config.h; shaders/sim/shape_match.comp) --------

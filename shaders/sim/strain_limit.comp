@@ -3,7 +3,7 @@
 // limiting in one sweep from root to tip (paper section 3.2: each segment is fixed against an
 // already final parent, so no iteration), pushing out of the head (its distance field, or its
 // spheres), Coulomb friction against the head and DFTL (Mueller et al. 2012) on the
-// strain-limit correction, as CpuSolver::limitStrain. The sweep is sequential by nature; a
+// strain-limit correction, as limitStrainStrand in sim/solver/cpu_steps.cpp. The sweep is sequential by nature; a
 // strand is one invocation and the particle's parent stays in registers. Built once for each
 // kind of head, CSM_HEAD_FIELD or not: llvmpipe would run both heads' pushes for every particle.
 #include "sim/common.glsl"
@@ -25,10 +25,10 @@ uniform uint substep;
 
 #include "sim/head_push.glsl"
 
-void main() {
-  uint id = globalIndex();
-  if (id >= P.strands) return;
-  uint s = strandOrder[id];
+// Strand s: the sweep from its first free particle to its tip (sweepParticle), and held at both
+// ends, the sweeps back and forth (limitToward). The float twin of limitStrainStrand in
+// sim/solver/cpu_steps.cpp.
+void limitStrainStrand(uint s) {
   uint a = strandFirst[s];
   int n = int(strandFirst[s + 1u] - a);
   vec4 stiff = strandStiffness[s];
@@ -83,4 +83,10 @@ void main() {
       tied = moved;
     }
   }
+}
+
+void main() {
+  uint id = globalIndex();
+  if (id >= P.strands) return;
+  limitStrainStrand(strandOrder[id]);
 }

@@ -1,6 +1,7 @@
 // The CPU solver's step as free functions over one strand's or one particle's data, each the
 // double twin of the GLSL function of the same name that one invocation of a pass runs
-// (shaders/sim/), the same arithmetic in the same order:
+// (shaders/sim/), the same steps in the same order (where they differ, as the integration's
+// velocity, both say so):
 //   predictParticle    predict.glsl          steps 1-2: roots follow the head, forces, x*
 //   shapeMatchStrand   shape_match.comp      steps 3-5: regions, rotations, goals, integration
 //   limitStrainStrand  strain_limit.comp     step 6: the sweep from root to tip (sweepParticle)
@@ -12,7 +13,8 @@
 //   pushHead, outsideHead, pushOutOfSphere   head_push.glsl
 //   extractRotation    common.glsl           a region's rotation
 // CpuSolver (sim/solver/cpu_solver.h) runs them over the strands on the thread pool;
-// tests/gpu/twins_test.cpp runs each pair on the same inputs.
+// tests/gpu/twins_test.cpp runs each pair on the same inputs (the three of a pass together, over
+// one substep of a scene).
 #pragma once
 
 #include <cstdint>
@@ -103,7 +105,8 @@ struct ShapeMatchSettings {
 
 // Strand s: every region's sums, rotation (warm-started from q) and goal contribution, each
 // particle's goal (paper eq. 1), and integration: x = x* + alpha (g - x*), v = (x - xOld) / h,
-// damped (eq. 2-3).
+// damped (eq. 2-3; in double the positions' difference is exact enough, where the GLSL twin takes
+// the step's own displacement).
 void shapeMatchStrand(StepHair& hair, ShapeMatchSums& sums, std::vector<Eigen::Quaterniond>& q,
                       const SimConfig& sim, const ShapeMatchSettings& settings, size_t s,
                       const Pose& head, double h);
