@@ -1,4 +1,4 @@
-// The hair moved rigidly with a head that jumped (GpuSolver::carry, Solver::carry on the CPU):
+// The hair moved rigidly with a head that jumped (GpuSolver::carry, HostSolver::carry on the CPU):
 // one invocation per particle, its position turned by `turn` (a quaternion, x y z w) about the
 // origin and moved by `shift`, its velocity turned, and its region's rotation turned (the warm
 // start of its next extraction). On the GPU: nothing read back.

@@ -1,5 +1,5 @@
 // Plain values and arrays to and from a byte buffer, for the solvers' saved states
-// (SolverState, sim/core/solver.h): memcpy'd in this process's own layout, read back only by it.
+// (SavedState, sim/core/solver.h): memcpy'd in this process's own layout, read back only by it.
 #pragma once
 
 #include <cstddef>

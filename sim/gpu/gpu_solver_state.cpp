@@ -29,9 +29,9 @@ void GpuSolver::write(const std::vector<glm::vec4>& positions,
 
 namespace {
 
-// The GPU solver's state (saveState, and a frame copy's): the particle count, the positions,
+// The GPU solver's state (save, and a frame copy's): the particle count, the positions,
 // velocities and rotations the passes step, as the GPU holds them (float, bit for bit), the
-// time and the head. restoreState reads it.
+// time and the head. restore reads it.
 void writeGpuState(std::vector<std::byte>& bytes, const std::vector<glm::vec4>& position,
                    const std::vector<glm::vec4>& velocity, const std::vector<glm::vec4>& rotation,
                    double time, const Pose& head) {

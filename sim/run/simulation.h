@@ -102,7 +102,7 @@ class Simulation {
   // between) and then changes nothing.
   void save(SimulationState& out) const;
   bool restore(const SimulationState& in, std::string* error);
-  // The frame as it stands, read later (Solver::copyFrame): with `state`, that is filled now
+  // The frame as it stands, read later (SolverState::copyFrame): with `state`, that is filled now
   // but for its solver part, which the copy's read() fills.
   std::unique_ptr<FrameCopy> copyFrame(SimulationState* state);
   // An extra transform of the head on top of the preset's motion (the viewer's drag).
