@@ -3,6 +3,8 @@
 # alternate (A B A B ...) so that the machine's drift falls on both alike; prints each run's
 # mean ms per frame (to completion, --metrics) and the ratio of the medians, B / A.
 #   scripts/compare_step_time.sh BINARY_A BINARY_B [PRESET] [FRAMES] [REPEATS]
+# SETS: settings for every run (e.g. SETS="hairstyle.strands=20000 hairstyle.guides=4000");
+# SOLVERS: the solvers (default "cpu gpu").
 set -euo pipefail
 a=$1
 b=$2
@@ -12,13 +14,15 @@ frames=${4:-20}
 repeats=${5:-3}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-for solver in cpu gpu; do
+sets=()
+for set in ${SETS:-}; do sets+=(--set "$set"); done
+for solver in ${SOLVERS:-cpu gpu}; do
   for r in $(seq "$repeats"); do
     for side in a b; do
       bin=$a
       [ "$side" = b ] && bin=$b
       "$bin" "$preset" --headless --no-render --quiet --frames "$frames" --solver "$solver" \
-        --metrics "$tmp/$solver.$side.$r.json"
+        ${sets[@]+"${sets[@]}"} --metrics "$tmp/$solver.$side.$r.json"
     done
   done
   python3 - "$tmp" "$solver" "$repeats" <<'PY'

@@ -137,7 +137,7 @@ void main() {
     if (j < last.y && (other & kIndex) == b &&
         crossed(other >> uint(CSM_CANDIDATE_SHIFT), c.x >> uint(CSM_CANDIDATE_SHIFT))) {
       ++crossings;
-      if (uintBitsToFloat(c.y) < 2.0 * P.radius) ++close;  // a rest distance
+      if (uintBitsToFloat(c.y) < 2.0 * P.contactRadius) ++close;  // a rest distance
     }
   }
   // A list the driver's loop limit cut short: counted, and nothing listed.

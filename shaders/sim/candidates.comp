@@ -114,7 +114,7 @@ void main() {
     // Segments of a's own strand: [sFirst, sLast) (the gap rule).
     uint strandA = particleStrand[a];
     uint sFirst = strandFirst[strandA], sLast = strandFirst[strandA + 1u] - 1u;
-    float r = P.radius, twoR = 2.0 * r;
+    float r = P.contactRadius, twoR = 2.0 * r;
     float reach = P.candidateDistance;  // 2r + margin
     uint hi = readGridStart(bucketOf(key) + 1u);
     uint base = e + 1u;

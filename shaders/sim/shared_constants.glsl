@@ -95,7 +95,7 @@
 //   windDirection (unit), windStrength (m/s)
 //   gusts, gustFrequency (Hz), turbulence, turbulenceScale (m)
 //   alpha (the paper's), strainLimit (epsilon), radius (hair radius r, m), headFriction
-//   candidateDistance (2r + margin, m), compliance (m/N), friction, sweepSolve (1: collision.solve
+//   candidateDistance (2 contactRadius + margin, m), compliance (m/N), friction, sweepSolve (1: collision.solve
 //     sweep, 0: jacobi)
 //   dftl, windDrag (1/s), penaltyStiffness (1/s^2), penaltyDamping (1/s)
 //   stiffnessModel (CSM_STIFFNESS_*), rotationIterations, headSpheres (count)
@@ -104,7 +104,8 @@
 //   particles, strands, segments
 //   bucketMask (buckets - 1), entryCapacity, pairListCapacity, listHalf (this frame's half of the
 //     candidate range: 0 or 1)
-//   cellEdge (m), inverseCellEdge, cellPadding (the box padding, m)
+//   cellEdge (m), inverseCellEdge, cellPadding (the box padding, m), contactRadius (the radius
+//     strands touch at, m: radius, or a guide's wisp's, contactRadius in sim/solver/contacts.h)
 //   gridOrigin: the grid's origin, the head's position this frame
 //   volumeToHead, volumeToWorld: the volume grid, fixed to the head where the frame starts
 //     (sim/solver/volume.h), and back
@@ -125,7 +126,7 @@
   F(uint, strainLimiting) F(uint, headCollision) F(uint, windOn) F(uint, strandContacts)         \
   F(uint, particles) F(uint, strands) F(uint, segments) F(uint, unused4)                         \
   F(uint, bucketMask) F(uint, entryCapacity) F(uint, pairListCapacity) F(uint, listHalf)         \
-  F(float, cellEdge) F(float, inverseCellEdge) F(float, cellPadding) F(float, unused5)           \
+  F(float, cellEdge) F(float, inverseCellEdge) F(float, cellPadding) F(float, contactRadius)     \
   F(vec3, gridOrigin) F(float, unused6)                                                          \
   F(mat4, volumeToHead) F(mat4, volumeToWorld)                                                   \
   F(vec3, volumeOrigin) F(float, volumeCell)                                                     \

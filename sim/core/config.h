@@ -160,7 +160,10 @@ struct CollisionConfig {
   // (the grid's entries, the pair list, its sides and both frames' lists) may take together;
   // a frame whose candidates need more keeps the list before it, and the run says so.
   int contactMemoryMb = 4096;
-  float friction = 0.3f;      // Coulomb coefficient between strands
+  float friction = 0.3f;  // Coulomb coefficient between strands
+  // A guided groom's strand contacts: a guide as the wisp of the strands it stands for, its
+  // contact radius r sqrt(mean weight), not a strand's (contactRadius, sim/solver/contacts.h).
+  bool wisps = true;
   float headFriction = 0.3f;  // Coulomb friction coefficient against the head
   // The volume mode (sim/solver/volume.h).
   float volumeCell = 0.01f;      // m

@@ -25,11 +25,16 @@ struct Groom {
   // 1 where the head holds the strand's last point as it holds the root (a ponytail tied at the
   // nape, a braid, a bun: TressFX's bothEndsImmovable); empty when no strand's is held.
   std::vector<uint8_t> tipHeld;
+  // Per strand: how many strands of the groom it is drawn for stands for (a guide: itself and
+  // its followers' binding weights, FollowerBinding::guideGroom); empty when each strand stands
+  // for itself. The volume mode splats each strand this many times over (sim/solver/volume.h).
+  std::vector<float> weight;
 
   size_t strandCount() const { return first.size() - 1; }
   size_t pointCount() const { return points.size(); }
   uint32_t strandSize(size_t s) const { return first[s + 1] - first[s]; }
   bool holdsTip(size_t s) const { return s < tipHeld.size() && tipHeld[s] != 0; }
+  float weightOf(size_t s) const { return s < weight.size() ? weight[s] : 1.0f; }
 
   void addStrand(const std::vector<glm::vec3>& strandPoints) {
     points.insert(points.end(), strandPoints.begin(), strandPoints.end());
@@ -41,6 +46,7 @@ struct Groom {
     if (s < from.color.size()) color.push_back(from.color[s]);
     if (s < from.thickness.size()) thickness.push_back(from.thickness[s]);
     if (s < from.tipHeld.size()) tipHeld.push_back(from.tipHeld[s]);
+    if (s < from.weight.size()) weight.push_back(from.weight[s]);
   }
 };
 

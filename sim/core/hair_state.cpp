@@ -13,6 +13,7 @@ HairState makeHairState(const Groom& groom, const SimConfig& sim, const Pose& he
   st.position.resize(n);
   st.velocity.assign(n, glm::vec4(0.0f));
   st.tipHeld = groom.tipHeld;
+  st.weight = groom.weight;
   for (size_t s = 0; s < groom.strandCount(); ++s) {
     const uint32_t a = groom.first[s], b = groom.first[s + 1];
     for (uint32_t i = a; i < b; ++i) {

@@ -23,6 +23,8 @@ struct HairState {
   // Per strand: 1 where the head holds the last particle as it holds the root (Groom::tipHeld);
   // empty when none is held.
   std::vector<uint8_t> tipHeld;
+  // Per strand: the strands it stands for (Groom::weight); empty when each stands for itself.
+  std::vector<float> weight;
 
   size_t strandCount() const { return strandFirst.size() - 1; }
   size_t particleCount() const { return rest.size(); }

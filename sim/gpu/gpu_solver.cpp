@@ -217,9 +217,10 @@ void GpuSolver::reserveLists() {
   const uint32_t stride = searchStride();
   if (contactSearch_.reserved() && stride == contactSearch_.measureStride()) return;
   contactSearch_.setMeasureStride(stride);
-  contactSearch_.reserveFor(state_.position, state_.particleStrand,
-                            2.0f * config_.collision.radius + config_.collision.margin,
-                            resetOrigin_);
+  contactSearch_.reserveFor(
+      state_.position, state_.particleStrand,
+      2.0f * float(contactRadius(config_.collision, state_.weight)) + config_.collision.margin,
+      resetOrigin_);
 }
 
 void GpuSolver::sizeLists() {

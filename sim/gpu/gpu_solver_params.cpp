@@ -9,6 +9,7 @@
 
 #include "sim/gpu/buffer_fill.h"
 #include "sim/gpu/gpu_solver.h"
+#include "sim/solver/contacts.h"
 #include "shaders/sim/bindings.glsl"
 
 namespace csm {
@@ -68,7 +69,9 @@ void GpuSolver::writeHeadParams(gpu::SimParams& p) const {
 
 void GpuSolver::writeContactParams(gpu::SimParams& p, const Pose& frameEnd) const {
   const CollisionConfig& col = config_.collision;
-  const float reach = 2.0f * col.radius + col.margin;
+  const float radius = float(contactRadius(col, state_.weight));
+  const float reach = 2.0f * radius + col.margin;
+  p.contactRadius = radius;
   p.candidateDistance = reach;
   p.compliance = col.compliance;
   p.friction = col.friction;

@@ -19,7 +19,7 @@ void VolumePasses::reset(const HairState& state, const CollisionConfig& collisio
   if (volumeForces(collision.mode)) {
     std::vector<glm::dvec3> rest(state.rest.size());
     for (size_t i = 0; i < rest.size(); ++i) rest[i] = glm::dvec3(glm::vec3(state.rest[i]));
-    grid_.reset(rest, state.strandFirst, collision.volumeCell, collision.radius);
+    grid_.reset(rest, state.strandFirst, state.weight, collision.volumeCell, collision.radius);
   } else {
     grid_.release();
   }

@@ -231,6 +231,12 @@ Groom FollowerBinding::guideGroom() const {
     g.first.push_back(std::uint32_t(g.points.size()));
     g.addStrandData(drawn, s);
   }
+  // What each guide stands for: its own strand (weight 1) and its share of every follower.
+  std::vector<double> weight(guideStrand.size(), 0.0);
+  for (std::size_t k = 0; k < guides.size() && k < weights.size(); ++k)
+    for (int j = 0; j < kFollowerGuides; ++j)
+      if (weights[k][j] > 0.0f) weight[guides[k][j]] += weights[k][j];
+  g.weight.assign(weight.begin(), weight.end());
   return g;
 }
 

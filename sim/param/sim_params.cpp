@@ -346,6 +346,13 @@ std::vector<Param<Config>> build() {
             "Coulomb friction coefficient between strands: sliding is held back by at most this "
             "times the push that keeps them apart.",
             Effect::Live),
+      param("collision.wisps", "Guides as wisps", "Simulation|Collision", &Config::collision,
+            &CollisionConfig::wisps, 0, 1,
+            "Strand contacts of a groom simulated through guides: each guide touches others as the "
+            "wisp of the strands it stands for (radius times the square root of their mean "
+            "count), not as one strand.",
+            Effect::Live)
+          .onlyWhen(strandMode),
       param("collision.head_friction", "Head friction", "Simulation|Collision", &Config::collision,
             &CollisionConfig::headFriction, 0.0, 2.0,
             "Coulomb friction coefficient between hair and head: sliding slows by at most this "

@@ -56,6 +56,13 @@ glm::dvec3 contactNormal(const glm::dvec3& p0, const glm::dvec3& p1, const glm::
   return separationDirection(p0, p1, q0, q1, s, t, d);
 }
 
+double contactRadius(const CollisionConfig& c, std::span<const float> weight) {
+  if (!c.wisps || weight.empty()) return c.radius;
+  double total = 0.0;
+  for (float w : weight) total += w;
+  return double(c.radius) * std::sqrt(std::max(1.0, total / double(weight.size())));
+}
+
 ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,
                                  std::span<const uint32_t> strand, const ContactSettings& settings,
                                  const ContactCandidates& previous, ContactStats& stats) {

@@ -92,6 +92,11 @@ struct ContactSettings {
   double penaltyStiffness = 20000.0, penaltyDamping = 20.0;
 };
 
+// The radius two simulated strands touch at (each at this, 2r apart): collision.radius, or for
+// guides as wisps (collision.wisps) the radius of a bundle of the strands a guide stands for on
+// average, r sqrt(mean weight) (`weight`: per strand, HairState::weight; empty, 1 each).
+double contactRadius(const CollisionConfig& c, std::span<const float> weight);
+
 // The candidates of positions x (rest: the same particles in the head frame, for rest
 // distances), measured; `previous` is the last list (crossings), or empty.
 ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,

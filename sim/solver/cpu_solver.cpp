@@ -78,7 +78,7 @@ void CpuSolver::resetVolume() {
     volume_.release();
     return;
   }
-  volume_.reset(rest_, first_, config_.collision.volumeCell, config_.collision.radius);
+  volume_.reset(rest_, first_, weight_, config_.collision.volumeCell, config_.collision.radius);
 }
 
 void CpuSolver::clearStages() {
@@ -136,8 +136,8 @@ void CpuSolver::listAgain() {
 
 ContactSettings CpuSolver::contactSettings() const {
   const CollisionConfig& c = config_.collision;
-  return {c.radius, c.margin,           c.compliance,    c.friction,
-          c.solve,  c.penaltyStiffness, c.penaltyDamping};
+  return {contactRadius(c, weight_), c.margin,        c.compliance, c.friction, c.solve,
+          c.penaltyStiffness,        c.penaltyDamping};
 }
 
 void CpuSolver::step(double h, const Pose& head) {

@@ -35,6 +35,7 @@ HairState HostSolver::layOut(const Groom& groom, const Config& config, const Pos
   first_ = st.strandFirst;
   strandOf_ = st.particleStrand;
   tipHeld_ = st.tipHeld;
+  weight_ = st.weight;
   rest_.resize(n);
   mass_.resize(n);
   x_.resize(n);

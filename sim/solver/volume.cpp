@@ -42,7 +42,7 @@ void VolumeGrid::release() {
 }
 
 void VolumeGrid::reset(std::span<const glm::dvec3> rest, std::span<const uint32_t> first,
-                       double cell, double radius) {
+                       std::span<const float> weight, double cell, double radius) {
   length_.assign(rest.size(), 0.0);
   glm::dvec3 lo(1e30), hi(-1e30);
   double longest = 0.0;
@@ -59,6 +59,8 @@ void VolumeGrid::reset(std::span<const glm::dvec3> rest, std::span<const uint32_
       along += l;
     }
     longest = std::max(longest, along);
+    if (s < weight.size())
+      for (uint32_t i = a; i < b; ++i) length_[i] *= double(weight[s]);
   }
   if (lo.x > hi.x) {
     dims_ = glm::ivec3(0);

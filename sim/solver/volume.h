@@ -3,7 +3,8 @@
 // simulation of straight hair"), the CPU reference of shaders/sim/volume_splat.comp and the
 // volume terms of predict.comp:
 //  - once per frame, each particle splats its share of strand length (half of each segment
-//    beside it) and that length times its velocity onto the nodes of a grid fixed to the head
+//    beside it, times the strands its strand stands for: a guide as its followers and itself
+//    would) and that length times its velocity onto the nodes of a grid fixed to the head
 //    (trilinear weights, fixed-point integers: the sums do not depend on the order);
 //  - every substep, each free particle's velocity moves toward the hair's mean velocity where
 //    it is (friction between neighbouring hairs, a rate in 1/s, so the same at any step), and
@@ -42,9 +43,11 @@ inline bool volumeGridChanged(const CollisionConfig& a, const CollisionConfig& b
 class VolumeGrid {
  public:
   // A grid (in the head's frame) over all the hair can reach: the roots' box grown by the
-  // longest strand and a cell. `rest` in the head frame, strands [first[s], first[s+1]).
-  void reset(std::span<const glm::dvec3> rest, std::span<const uint32_t> first, double cell,
-             double radius);
+  // longest strand and a cell. `rest` in the head frame, strands [first[s], first[s+1]);
+  // `weight` per strand, the strands each stands for (HairState::weight; empty: 1 each), so a
+  // guided groom fills the grid as the groom it stands for does.
+  void reset(std::span<const glm::dvec3> rest, std::span<const uint32_t> first,
+             std::span<const float> weight, double cell, double radius);
   // Lets the grid and its sums go (a mode without the volume keeps none): empty after.
   void release();
   bool empty() const { return nodes() == 0; }
@@ -54,7 +57,7 @@ class VolumeGrid {
   double cell() const { return cell_; }
   // The volume fraction a node's fixed-point length unit fills.
   double fillPerUnit() const { return fillPerUnit_; }
-  // Each particle's share of strand length (m).
+  // Each particle's share of strand length (m), times its strand's weight.
   const std::vector<double>& particleLength() const { return length_; }
   // The volume fraction the rest groom fills at each node (per node, for the push).
   const std::vector<float>& restFraction() const { return restFraction_; }

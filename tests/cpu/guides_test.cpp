@@ -112,6 +112,32 @@ TEST_CASE("a follower's weights sum to 1, and a guide follows itself alone", "[g
   CHECK(b.guideGroom().strandCount() == guides.size());
 }
 
+TEST_CASE("each guide weighs its own strand and its followers' shares of it", "[guides][quick]") {
+  const Groom g = test::growFor(test::smallScene(800));
+  const std::vector<uint32_t> guides = chooseGuides(g, 60);
+  const FollowerBinding b = bindFollowers(g, guides);
+  const Groom simulated = b.guideGroom();
+  REQUIRE(simulated.weight.size() == guides.size());
+  // Together the guides stand for the whole groom; each for at least itself.
+  double total = 0.0;
+  for (float w : simulated.weight) {
+    CHECK(w >= 1.0f);
+    total += w;
+  }
+  CHECK(total == Approx(double(g.strandCount())).epsilon(1e-5));
+  // And one guide's weight is its followers' shares of it, summed, with its own 1.
+  const size_t k = guides.size() / 2;
+  double expected = 0.0;
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    for (int j = 0; j < kFollowerGuides; ++j)
+      if (b.weights[s][j] > 0.0f && b.guides[s][j] == k) expected += b.weights[s][j];
+  CHECK(simulated.weight[k] == Approx(expected).epsilon(1e-6));
+  CHECK(simulated.weight[k] > 2.0f);  // 800 strands through 60 guides: about 13 each
+  // A groom whose every strand is simulated carries no weights: each stands for itself.
+  CHECK(g.weight.empty());
+  CHECK(g.weightOf(0) == 1.0f);
+}
+
 TEST_CASE("followers keep the groom's rest shape when the guides are at rest", "[guides][quick]") {
   const Config c = test::smallScene(600);
   const Groom g = test::growFor(c);

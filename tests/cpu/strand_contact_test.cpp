@@ -615,3 +615,16 @@ TEST_CASE("penalty contacts slow a strand dropped across another, constraints ho
   CHECK(held.height > penalty.height);
   CHECK(penalty.height > off.height);
 }
+
+TEST_CASE("contact radius: a strand's, or with collision.wisps a guide's wisp's", "[quick]") {
+  CollisionConfig c;
+  c.radius = 0.001f;
+  c.wisps = false;
+  const std::vector<float> weights{4.0f, 16.0f, 10.0f, 10.0f};  // a mean of 10
+  CHECK(contactRadius(c, weights) == double(c.radius));
+  c.wisps = true;
+  CHECK(contactRadius(c, {}) == double(c.radius));  // every strand simulated
+  CHECK(contactRadius(c, weights) == Approx(double(c.radius) * std::sqrt(10.0)));
+  // A groom of guides standing for themselves alone is not thicker than its strands.
+  CHECK(contactRadius(c, std::vector<float>(5, 1.0f)) == double(c.radius));
+}

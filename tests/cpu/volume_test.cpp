@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -34,7 +35,7 @@ TEST_CASE("volume grid: the sums hold every particle's length and momentum", "[q
   for (int s = 0; s < 20; ++s)
     addStrand(x, first, {0.003 * s, 0.0, 0.001 * s}, glm::normalize(glm::dvec3(1, -2, 0.5)), 12);
   VolumeGrid grid;
-  grid.reset(x, first, 0.01, 0.0005);
+  grid.reset(x, first, {}, 0.01, 0.0005);
   REQUIRE_FALSE(grid.empty());
   // Every particle carries half of each segment beside it: the strand's length in all.
   double total = 0.0;
@@ -66,7 +67,7 @@ TEST_CASE("volume grid: friction joins the mean velocity, the push leaves over-d
     for (int b = 0; b < 5; ++b)
       addStrand(x, first, {-0.05, 0.005 * (a - 3.5), 0.005 * (b - 2)}, {1, 0, 0}, 11);
   VolumeGrid grid;
-  grid.reset(x, first, 0.01, 0.0005);
+  grid.reset(x, first, {}, 0.01, 0.0005);
   VolumeSettings s;
   s.friction = 10.0;
   s.stiffness = 2.0;
@@ -185,7 +186,7 @@ TEST_CASE("volume mode: hair falling onto itself ends less dense than without it
     VolumeGrid grid;
     std::vector<glm::dvec3> x0;
     for (const glm::vec3& p : g.points) x0.emplace_back(p);
-    grid.reset(x0, g.first, m.collision.volumeCell, m.collision.radius);
+    grid.reset(x0, g.first, {}, m.collision.volumeCell, m.collision.radius);
     grid.splat(CpuProbe(solver).positions(), std::vector<glm::dvec3>(x0.size(), glm::dvec3(0.0)),
                Pose{}, m.collision.volumeFraction);
     int64_t most = 0;
@@ -197,4 +198,178 @@ TEST_CASE("volume mode: hair falling onto itself ends less dense than without it
   // out stand up longer before they fall).
   INFO("densest volume fraction: head only " << head << ", volume " << volume);
   CHECK(volume < 0.85 * head);
+}
+
+namespace {
+
+// Strands of `g` listed `copies[s]` times over: the groom a guide of that weight stands for,
+// its followers lying where it lies.
+void repeatStrands(const std::vector<glm::dvec3>& x, const std::vector<uint32_t>& first,
+                   const std::vector<int>& copies, std::vector<glm::dvec3>& outX,
+                   std::vector<uint32_t>& outFirst) {
+  outX.clear();
+  outFirst.assign(1, 0);
+  for (size_t s = 0; s + 1 < first.size(); ++s)
+    for (int c = 0; c < copies[s]; ++c) {
+      outX.insert(outX.end(), x.begin() + first[s], x.begin() + first[s + 1]);
+      outFirst.push_back(uint32_t(outX.size()));
+    }
+}
+
+// The velocity changes of every particle of `x` in a grid splatted with `x` at rest.
+std::vector<glm::dvec3> pushes(const VolumeGrid& grid, const std::vector<glm::dvec3>& x,
+                               const VolumeSettings& s) {
+  std::vector<glm::dvec3> dv;
+  for (const glm::dvec3& p : x) dv.push_back(grid.velocityChange(p, glm::dvec3(0.0), 1e-3, s));
+  return dv;
+}
+
+}  // namespace
+
+TEST_CASE("volume grid: a guide standing for N strands puts N strands' density in the grid",
+          "[quick]") {
+  std::vector<glm::dvec3> x;
+  std::vector<uint32_t> first{0};
+  std::vector<float> weight;
+  std::vector<int> copies;
+  for (int s = 0; s < 12; ++s) {
+    addStrand(x, first, {0.004 * s, 0.0, 0.002 * s}, glm::normalize(glm::dvec3(1, -2, 0.5)), 10);
+    copies.push_back(1 + s % 5);
+    weight.push_back(float(copies.back()));
+  }
+  std::vector<glm::dvec3> all;
+  std::vector<uint32_t> allFirst;
+  repeatStrands(x, first, copies, all, allFirst);
+  VolumeGrid guided, whole;
+  guided.reset(x, first, weight, 0.01, 0.0005);
+  whole.reset(all, allFirst, {}, 0.01, 0.0005);
+  REQUIRE(guided.nodes() == whole.nodes());
+  std::vector<glm::dvec3> v(x.size()), vAll;
+  for (size_t i = 0; i < v.size(); ++i) v[i] = {0.05 * std::cos(double(i)), -0.2, 0.01 * i};
+  for (size_t s = 0; s + 1 < first.size(); ++s)
+    for (int c = 0; c < copies[s]; ++c)
+      vAll.insert(vAll.end(), v.begin() + first[s], v.begin() + first[s + 1]);
+  guided.splat(x, v, Pose{}, 0.2);
+  whole.splat(all, vAll, Pose{}, 0.2);
+  // Node by node, length and momentum as the whole groom's, to the sums' rounding (at most half
+  // a unit a particle's contribution: once for a guide, once a copy for the groom).
+  double worst = 0.0, most = 0.0;
+  for (size_t k = 0; k < 4 * guided.nodes(); ++k) {
+    worst = std::max(worst, std::abs(double(guided.sums()[k] - whole.sums()[k])));
+    most = std::max(most, std::abs(double(whole.sums()[k])));
+  }
+  INFO("largest sum " << most << " units, largest difference " << worst);
+  CHECK(most > 1e5);
+  CHECK(worst <= 0.5 * double(all.size() + x.size()));
+  // So the rest fraction too, and the fraction a guide's weight of 1 leaves as it was.
+  for (size_t n = 0; n < guided.nodes(); ++n)
+    CHECK(guided.restFraction()[n] == Approx(whole.restFraction()[n]).margin(1e-6));
+  VolumeGrid unweighted;
+  unweighted.reset(x, first, {}, 0.01, 0.0005);
+  double less = 0.0, more = 0.0;
+  for (size_t n = 0; n < guided.nodes(); ++n) {
+    less += unweighted.restFraction()[n];
+    more += guided.restFraction()[n];
+  }
+  CHECK(more == Approx(less * 33.0 / 12.0).epsilon(1e-3));  // weights 1..5 over 12 strands: 33
+}
+
+TEST_CASE("volume grid: two guides' groups of unequal weight are pushed apart as their weights say",
+          "[quick]") {
+  // Two bundles of 12 strands along x, 0.3 cells either side of a row of nodes in y (each
+  // 0.3 mm across), far denser than allowed; the lower one's guides stand for 1 strand each,
+  // the upper one's for 4. At rest the strands lay 10 cm away, so the grid allows nothing more
+  // there than collision.volume_fraction.
+  const double cell = 0.01, allowed = 0.001;
+  std::vector<glm::dvec3> rest;
+  std::vector<uint32_t> first{0};
+  std::vector<float> weight;
+  std::vector<int> copies;
+  for (int group = 0; group < 2; ++group)
+    for (int k = 0; k < 12; ++k) {
+      addStrand(rest, first, {-0.05, 0.0, 0.1}, {1, 0, 0}, 11);
+      copies.push_back(group ? 4 : 1);
+      weight.push_back(float(copies.back()));
+    }
+  VolumeGrid probe;
+  probe.reset(rest, first, {}, cell, 0.0005);
+  const glm::dvec3 node =
+      probe.origin() + cell * glm::floor((glm::dvec3(0.0) - probe.origin()) / cell + 0.5);
+  std::vector<glm::dvec3> x = rest;
+  for (size_t s = 0; s + 1 < first.size(); ++s) {
+    const double side = s < 12 ? -1.0 : 1.0;
+    const double dy = 0.0001 * double(s % 4) - 0.00015, dz = 0.0001 * double((s / 4) % 3) - 0.0001;
+    for (uint32_t i = first[s]; i < first[s + 1]; ++i)
+      x[i] = {x[i].x, node.y + side * 0.3 * cell + dy, node.z + dz};
+  }
+  std::vector<glm::dvec3> all, allRest;
+  std::vector<uint32_t> allFirst;
+  repeatStrands(x, first, copies, all, allFirst);
+  repeatStrands(rest, first, copies, allRest, allFirst);
+  VolumeSettings s;
+  s.friction = 0.0;
+  s.stiffness = 2.0;
+  const size_t half = x.size() / 2;  // the lower group's particles come first
+  auto groupPush = [&](const std::vector<glm::dvec3>& dv, size_t begin, size_t end) {
+    double sum = 0.0;
+    for (size_t i = begin; i < end; ++i) sum += dv[i].y;
+    return sum / double(end - begin);
+  };
+
+  VolumeGrid guided, whole, equal;
+  guided.reset(rest, first, weight, cell, 0.0005);
+  whole.reset(allRest, allFirst, {}, cell, 0.0005);
+  equal.reset(rest, first, {}, cell, 0.0005);
+  REQUIRE(guided.origin() == probe.origin());
+  guided.splat(x, std::vector<glm::dvec3>(x.size(), glm::dvec3(0.0)), Pose{}, allowed);
+  whole.splat(all, std::vector<glm::dvec3>(all.size(), glm::dvec3(0.0)), Pose{}, allowed);
+  equal.splat(x, std::vector<glm::dvec3>(x.size(), glm::dvec3(0.0)), Pose{}, allowed);
+  const std::vector<glm::dvec3> dvGuided = pushes(guided, x, s), dvWhole = pushes(whole, x, s),
+                                dvEqual = pushes(equal, x, s);
+  const double lower = groupPush(dvGuided, 0, half), upper = groupPush(dvGuided, half, x.size());
+  const double lowerEqual = groupPush(dvEqual, 0, half),
+               upperEqual = groupPush(dvEqual, half, x.size());
+  INFO("weights 1 and 4: lower " << lower << ", upper " << upper
+                                 << " m/s; weights 1 and 1: " << lowerEqual << ", " << upperEqual);
+  // Apart: the lower group down, the upper up.
+  CHECK(lower < 0.0);
+  CHECK(upper > 0.0);
+  // Each particle pushed as the strands it stands for would be: the guided grid's push is the
+  // whole groom's, to the sums' rounding.
+  for (size_t i = 0; i < x.size(); ++i)
+    CHECK(glm::length(dvGuided[i] - dvWhole[i]) <= 1e-4 * glm::length(dvWhole[i]) + 1e-9);
+  // Of equal weights the two give way alike; of weights 1 and 4 each gives way in inverse
+  // proportion to its weight, as a pressure between them would move them (equal and opposite
+  // momentum: 1 x the light group's change against 4 x the heavy one's).
+  CHECK(-lowerEqual == Approx(upperEqual).epsilon(1e-4));
+  CHECK(-lower == Approx(4.0 * upper).epsilon(0.1));
+  CHECK(-lower > 2.0 * -lowerEqual);
+}
+
+TEST_CASE("volume mode: a groom whose every weight is 1 steps as one with none, to the byte",
+          "[quick]") {
+  Config c;
+  c.hairstyle.strands = 200;
+  c.collision.mode = CollisionMode::Volume;
+  c.collision.volumeFraction = 0.02f;  // pushes where hair gathers
+  c.head.motion = HeadMotion::Nod;
+  const Groom g = growHairstyle(c, *HeadModel::require(c));
+  Groom ones = g, heavy = g;
+  ones.weight.assign(g.strandCount(), 1.0f);
+  heavy.weight.assign(g.strandCount(), 6.0f);
+  auto run = [&](const Groom& groom) {
+    CpuSolver solver;
+    resetWithHead(solver, groom, c, headPose(c.head, 0.0));
+    for (int f = 0; f < 20; ++f)
+      solver.stepFrame(headPose(c.head, f * c.sim.dt), headPose(c.head, (f + 1) * c.sim.dt));
+    return CpuProbe(solver).positions();
+  };
+  const std::vector<glm::dvec3> none = run(g), one = run(ones), six = run(heavy);
+  REQUIRE(none.size() == one.size());
+  CHECK(std::memcmp(none.data(), one.data(), none.size() * sizeof(glm::dvec3)) == 0);
+  // And a weight does act: six strands' density a guide pushes the hair elsewhere.
+  double apart = 0.0;
+  for (size_t i = 0; i < none.size(); ++i) apart = std::max(apart, glm::length(six[i] - none[i]));
+  INFO("farthest particle apart " << apart * 1e3 << " mm");
+  CHECK(apart > 1e-4);
 }

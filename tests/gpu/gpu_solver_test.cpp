@@ -81,8 +81,7 @@ bool endsApart(const Config& a, const Config& b, int frames) {
   return difference(x, test::toDouble(y), 1e-3).over > 0;
 }
 
-Difference runBoth(const Config& c, int frames, double limit) {
-  const Groom g = grow(c);
+Difference runBoth(const Config& c, const Groom& g, int frames, double limit) {
   auto gpu = test::gpuSolver();
   CpuSolver cpu;
   resetWithHead(cpu, g, c, headPose(c.head, 0.0));
@@ -98,6 +97,24 @@ Difference runBoth(const Config& c, int frames, double limit) {
   std::vector<glm::vec4> x;
   gpu->readPositions(x);
   return difference(x, CpuProbe(cpu).positions(), limit);
+}
+
+Difference runBoth(const Config& c, int frames, double limit) {
+  return runBoth(c, grow(c), frames, limit);
+}
+
+// The GPU's positions and velocities after `frames` frames of c's head motion.
+std::vector<glm::vec4> gpuRun(const Config& c, const Groom& g, int frames) {
+  auto gpu = test::gpuSolver();
+  resetWithHead(*gpu, g, c, headPose(c.head, 0.0));
+  double t = 0.0;
+  for (int f = 0; f < frames; ++f, t += c.sim.dt)
+    gpu->stepFrame(headPose(c.head, t), headPose(c.head, t + c.sim.dt));
+  std::vector<glm::vec4> x, v;
+  gpu->readPositions(x);
+  gpu->readVelocities(v);
+  x.insert(x.end(), v.begin(), v.end());
+  return x;
 }
 
 }  // namespace
@@ -233,6 +250,41 @@ TEST_CASE("GPU and CPU solvers agree without hair-hair collisions", "[gpu][solve
     head.collision.mode = CollisionMode::Head;
     CHECK(endsApart(c, head, 25));
   }
+  SECTION("the volume mode of guides of unequal weight") {
+    // The strands as guides standing for 1 to 9 strands each (5 on average), the push a fifth
+    // as stiff, so as strong as above: the same criteria. (As stiff as above, five times the
+    // excess pushes about five times as hard, and float and double part by 3 cm in 25 frames.)
+    Config c = smallScene(300);
+    c.collision.mode = CollisionMode::Volume;
+    c.collision.volumeFraction = 0.02f;
+    c.collision.volumeStiffness = 1.0f;
+    c.head.motion = HeadMotion::Shake;
+    Groom g = grow(c);
+    for (size_t s = 0; s < g.strandCount(); ++s) g.weight.push_back(float(1 + (s * 7) % 9));
+    const Difference d = runBoth(c, g, 25, tolerance(20));
+    INFO("max " << d.max << " m, rms " << d.rms << " m, " << d.over << " particles over "
+                << tolerance(20) << " m");
+    CHECK(d.over * 25 < size_t(g.pointCount()));
+    CHECK(d.max < 2e-3);
+    CHECK(d.rms < tolerance(20) / 2);
+  }
+}
+
+TEST_CASE("GPU solver: guides' weights of 1 step as none, to the byte, and other weights act",
+          "[gpu][solver][quick]") {
+  Config c = smallScene(200);
+  c.collision.mode = CollisionMode::Volume;
+  c.collision.volumeFraction = 0.02f;
+  c.head.motion = HeadMotion::Nod;
+  const Groom g = grow(c);
+  Groom ones = g, heavy = g;
+  ones.weight.assign(g.strandCount(), 1.0f);
+  heavy.weight.assign(g.strandCount(), 6.0f);
+  const std::vector<glm::vec4> none = gpuRun(c, g, 10), one = gpuRun(c, ones, 10),
+                               six = gpuRun(c, heavy, 10);
+  REQUIRE(none.size() == one.size());
+  CHECK(std::memcmp(none.data(), one.data(), none.size() * sizeof(glm::vec4)) == 0);
+  CHECK(std::memcmp(none.data(), six.data(), none.size() * sizeof(glm::vec4)) != 0);
 }
 
 TEST_CASE("GPU lists: sides and lists past one view's texels are read and written as in one",
@@ -356,6 +408,41 @@ TEST_CASE("GPU and CPU solvers agree with strand contacts", "[gpu][solver][conta
                                         << later[2] << " GPU " << later[3]);
     CHECK(std::abs(later[1] - later[0]) < 0.03 * later[0]);
     CHECK(std::abs(later[3] - later[2]) < 0.08 * later[2]);
+  }
+}
+
+TEST_CASE("GPU and CPU: guides as wisps touch at the wisp's radius", "[gpu][solver][contacts]") {
+  // Every strand a guide standing for 4 (the wisp's radius 2r): over the first two frames, as
+  // above, every particle within the tolerance and the candidates within a pair or two; and
+  // the wider radius finds more candidates than the strands' own.
+  Config c = smallScene(300);
+  c.collision.mode = CollisionMode::Strands;
+  c.collision.wisps = true;
+  Groom g = grow(c);
+  g.weight.assign(g.strandCount(), 4.0f);
+  auto gpu = test::gpuSolver(), narrow = test::gpuSolver();
+  CpuSolver cpu;
+  resetWithHead(cpu, g, c, Pose{});
+  resetWithHead(*gpu, g, c, Pose{});
+  Config strandRadius = c;
+  strandRadius.collision.wisps = false;
+  resetWithHead(*narrow, g, strandRadius, Pose{});
+  for (int f = 0; f < 2; ++f) {
+    cpu.stepFrame(Pose{}, Pose{});
+    gpu->stepFrame(Pose{}, Pose{});
+    narrow->stepFrame(Pose{}, Pose{});
+    const ContactStats onCpu = CpuProbe(cpu).contactStats(),
+                       onGpu = GpuProbe(*gpu).readContactStats(),
+                       onNarrow = GpuProbe(*narrow).readContactStats();
+    INFO("frame " << f << ": candidates CPU " << onCpu.candidates << " GPU " << onGpu.candidates
+                  << ", at the strands' radius " << onNarrow.candidates);
+    std::vector<glm::vec4> x;
+    gpu->readPositions(x);
+    const Difference d = difference(x, CpuProbe(cpu).positions(), tolerance(20));
+    INFO("max " << d.max << " m, rms " << d.rms << " m");
+    CHECK(d.over == 0);
+    CHECK(std::abs(double(onGpu.candidates) - double(onCpu.candidates)) <= 2.0);
+    CHECK(onGpu.candidates > onNarrow.candidates + onNarrow.candidates / 2);
   }
 }
 
