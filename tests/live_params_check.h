@@ -72,10 +72,12 @@ inline bool samePositions(const std::vector<glm::vec4>& a, const std::vector<glm
 inline LiveCheck checkLiveParams(std::unique_ptr<Solver> solver) {
   Simulation sim(std::move(solver));
   // Each parameter on the first scene it applies to (the stiffness models' own parameters,
-  // the penalty model's).
+  // the penalty model's, the guides' strand contacts).
   Config penalty = liveScene();
   penalty.collision.model = ContactModel::Penalty;
-  const std::vector<Config> bases = {liveScene(), liveScene(true), penalty};
+  Config guided = liveScene();
+  guided.hairstyle.guides = 10;  // of 40
+  const std::vector<Config> bases = {liveScene(), liveScene(true), penalty, guided};
   std::vector<std::vector<glm::vec4>> references;
   for (const Config& base : bases) {
     references.push_back(runLive(sim, base, base));

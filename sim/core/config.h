@@ -3,6 +3,8 @@
 // --list-params and the ImGui panels all walk it (with the view's, render/view_params.h).
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -91,6 +93,19 @@ struct HairstyleConfig {
   glm::vec3 importOffset{0.0f};
   float resampleTolerance = 0.002f;  // metres; 0 keeps the file's points
 };
+
+// hairstyle.guides = -1 (auto): a groom of more strands than this simulates kAutoGuides of them.
+inline constexpr std::size_t kAutoGuideThreshold = 20000;
+inline constexpr std::size_t kAutoGuides = 4000;
+
+// The strands a groom of `strands` strands simulates for hairstyle.guides = `setting`: every
+// strand at 0 (and when the setting is at least the groom's count), `setting` of them when
+// positive, and at -1 every strand up to kAutoGuideThreshold, kAutoGuides beyond.
+inline std::size_t guideCount(int setting, std::size_t strands) {
+  if (setting > 0) return std::min(std::size_t(setting), strands);
+  if (setting < 0 && strands > kAutoGuideThreshold) return kAutoGuides;
+  return strands;
+}
 
 struct HeadConfig {
   std::string mesh;     // an OBJ head (head frame, metres); empty = the built-in mannequin

@@ -116,12 +116,6 @@ std::vector<std::uint32_t> curveOrder(const std::vector<glm::vec3>& points) {
 
 }  // namespace
 
-std::size_t guideCount(int setting, std::size_t strands) {
-  if (setting > 0) return std::min(std::size_t(setting), strands);
-  if (setting < 0 && strands > kAutoGuideThreshold) return kAutoGuides;
-  return strands;
-}
-
 std::vector<std::uint32_t> chooseGuides(const Groom& groom, std::size_t count) {
   std::vector<float> share(groom.pointCount(), 0.0f);
   restSharesOf(groom, share);

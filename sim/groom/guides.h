@@ -17,14 +17,7 @@ namespace csm {
 
 // At most this many guides drive a follower.
 inline constexpr int kFollowerGuides = 4;
-// hairstyle.guides = -1 (auto): a groom of more strands than this simulates kAutoGuides of them.
-inline constexpr std::size_t kAutoGuideThreshold = 20000;
-inline constexpr std::size_t kAutoGuides = 4000;
-
-// The strands a groom of `strands` strands simulates for hairstyle.guides = `setting`: every
-// strand at 0 (and when the setting is at least the groom's count), `setting` of them when
-// positive, and at -1 every strand up to kAutoGuideThreshold, kAutoGuides beyond.
-std::size_t guideCount(int setting, std::size_t strands);
+// How many are simulated: guideCount (sim/core/config.h), from hairstyle.guides.
 
 // `count` strands of `groom` spread over it: farthest-point sampling in a distance that adds to
 // the roots' distance on the scalp half the distance between the strands' shapes (their middle

@@ -1,5 +1,6 @@
 #include "sim/param/sim_params.h"
 
+#include <algorithm>
 #include <iterator>
 
 namespace csm {
@@ -21,6 +22,13 @@ bool volumeMode(const Config& c) {
 
 bool strandMode(const Config& c) {
   return strandContacts(c.collision.mode);
+}
+
+// Strand contacts between guides: a generated groom simulated through fewer strands than it has
+// (a file's strand count is known once read; hairstyle.strands is its cap).
+bool guidedStrandMode(const Config& c) {
+  const std::size_t strands = std::size_t(std::max(c.hairstyle.strands, 0));
+  return strandMode(c) && guideCount(c.hairstyle.guides, strands) < strands;
 }
 
 bool penaltyModel(const Config& c) {
@@ -352,7 +360,7 @@ std::vector<Param<Config>> build() {
             "wisp of the strands it stands for (radius times the square root of their mean "
             "count), not as one strand.",
             Effect::Live)
-          .onlyWhen(strandMode),
+          .onlyWhen(guidedStrandMode),
       param("collision.head_friction", "Head friction", "Simulation|Collision", &Config::collision,
             &CollisionConfig::headFriction, 0.0, 2.0,
             "Coulomb friction coefficient between hair and head: sliding slows by at most this "
