@@ -49,25 +49,14 @@ for variant in "${variants[@]}"; do
   done
 done
 echo "Load after: $(uptime | sed 's/.*load average: //')"
-/usr/bin/python3 - "$tmp" "$out" "$strands" "$frames" "$mode" "$shares" "${labels[@]}" <<'PY'
-import re, struct, sys
+/usr/bin/python3 - "$tmp" "$out" "$strands" "$frames" "$mode" "$shares" "$root/scripts" "${labels[@]}" <<'PY'
+import re, sys
 import numpy as np
+sys.path.insert(0, sys.argv[7])
+from hair_file import read
 tmp, out, strands, frames, mode = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
 shares = [int(s) for s in sys.argv[6].split()]
-labels = sys.argv[7:]
-
-def read(path):
-    data = open(path, "rb").read()
-    hairs, points, flags = struct.unpack_from("<III", data, 4)
-    off = 128
-    if flags & 1:
-        segs = np.frombuffer(data, "<u2", hairs, off) + 1
-        off += 2 * hairs
-    else:
-        segs = np.full(hairs, struct.unpack_from("<I", data, 16)[0] + 1)
-    xyz = np.frombuffer(data, "<f4", 3 * points, off).reshape(-1, 3)
-    first = np.concatenate([[0], np.cumsum(segs.astype(np.int64))]).astype(np.int64)
-    return xyz, first
+labels = sys.argv[8:]
 
 all_x, first = read(f"{tmp}/all.hair")
 rest_x, rest_first = read(f"{tmp}/rest.hair")

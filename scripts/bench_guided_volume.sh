@@ -37,16 +37,15 @@ for arg in "$@"; do
   fi
 done
 echo "Load after: $(uptime | sed 's/.*load average: //')"
-/usr/bin/python3 - "$tmp" "$out" "$frames" "${labels[@]}" <<'PY'
-import glob, struct, sys
+/usr/bin/python3 - "$tmp" "$out" "$frames" "$(cd "$(dirname "$0")" && pwd)" "${labels[@]}" <<'PY'
+import glob, sys
 import numpy as np
-tmp, out, frames, bins = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4:]
+sys.path.insert(0, sys.argv[4])
+import hair_file
+tmp, out, frames, bins = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[5:]
 
 def read(path):
-    data = open(path, "rb").read()
-    hairs, points, flags = struct.unpack_from("<III", data, 4)
-    off = 128 + (2 * hairs if flags & 1 else 0)
-    return np.frombuffer(data, "<f4", 3 * points, off).reshape(-1, 3).astype(np.float64)
+    return hair_file.read(path)[0].astype(np.float64)
 
 full = read(f"{tmp}/full1.hair")
 print()

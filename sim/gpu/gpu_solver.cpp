@@ -139,6 +139,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   time_ = 0.0;
   head_ = head;
   state_ = makeHairState(groom, config.sim, head);
+  meanWeight_ = meanWeight(state_.weight);
   hair_.upload(state_, head.rotation);
   // The shaders built at create() with MAX_N 32; a longer strand needs a recompile, which
   // fails past kMaxStrandParticles or if the driver runs out of resources. The solver then
@@ -219,7 +220,7 @@ void GpuSolver::reserveLists() {
   contactSearch_.setMeasureStride(stride);
   contactSearch_.reserveFor(
       state_.position, state_.particleStrand,
-      2.0f * float(contactRadius(config_.collision, state_.weight)) + config_.collision.margin,
+      2.0f * float(contactRadius(config_.collision, meanWeight_)) + config_.collision.margin,
       resetOrigin_);
 }
 

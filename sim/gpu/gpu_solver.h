@@ -137,7 +137,8 @@ class GpuSolver final : public Solver, public SolverState, public SolverDiagnost
   SceneHead shape_;       // what it collides with, read every step
   double time_ = 0.0;
   Pose head_;
-  HairState state_;  // the layout the regions are built from
+  HairState state_;          // the layout the regions are built from
+  double meanWeight_ = 1.0;  // of state_.weight (contactRadius)
   Regions regions_;
   bool builtCommon_ = false;   // the passes both paths use
   int builtMaxN_ = 0;          // the per-strand passes', 0 until built

@@ -69,7 +69,7 @@ void GpuSolver::writeHeadParams(gpu::SimParams& p) const {
 
 void GpuSolver::writeContactParams(gpu::SimParams& p, const Pose& frameEnd) const {
   const CollisionConfig& col = config_.collision;
-  const float radius = float(contactRadius(col, state_.weight));
+  const float radius = float(contactRadius(col, meanWeight_));
   const float reach = 2.0f * radius + col.margin;
   p.contactRadius = radius;
   p.candidateDistance = reach;

@@ -56,11 +56,20 @@ glm::dvec3 contactNormal(const glm::dvec3& p0, const glm::dvec3& p1, const glm::
   return separationDirection(p0, p1, q0, q1, s, t, d);
 }
 
-double contactRadius(const CollisionConfig& c, std::span<const float> weight) {
-  if (!c.wisps || weight.empty()) return c.radius;
+double meanWeight(std::span<const float> weight) {
+  if (weight.empty()) return 1.0;
   double total = 0.0;
   for (float w : weight) total += w;
-  return double(c.radius) * std::sqrt(std::max(1.0, total / double(weight.size())));
+  return total / double(weight.size());
+}
+
+double contactRadius(const CollisionConfig& c, double meanWeight) {
+  if (!c.wisps) return c.radius;
+  return double(c.radius) * std::sqrt(std::max(1.0, meanWeight));
+}
+
+double contactRadius(const CollisionConfig& c, std::span<const float> weight) {
+  return contactRadius(c, meanWeight(weight));
 }
 
 ContactCandidates findCandidates(std::span<const glm::dvec3> x, std::span<const glm::dvec3> rest,

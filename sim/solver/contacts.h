@@ -96,6 +96,10 @@ struct ContactSettings {
 // guides as wisps (collision.wisps) the radius of a bundle of the strands a guide stands for on
 // average, r sqrt(mean weight) (`weight`: per strand, HairState::weight; empty, 1 each).
 double contactRadius(const CollisionConfig& c, std::span<const float> weight);
+// The same from the mean weight (meanWeight), which the solvers keep from their reset.
+double contactRadius(const CollisionConfig& c, double meanWeight);
+// The strands a strand stands for on average: 1 when `weight` is empty.
+double meanWeight(std::span<const float> weight);
 
 // The candidates of positions x (rest: the same particles in the head frame, for rest
 // distances), measured; `previous` is the last list (crossings), or empty.

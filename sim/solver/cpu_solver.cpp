@@ -136,8 +136,13 @@ void CpuSolver::listAgain() {
 
 ContactSettings CpuSolver::contactSettings() const {
   const CollisionConfig& c = config_.collision;
-  return {contactRadius(c, weight_), c.margin,        c.compliance, c.friction, c.solve,
-          c.penaltyStiffness,        c.penaltyDamping};
+  return {contactRadius(c, meanWeight_),
+          c.margin,
+          c.compliance,
+          c.friction,
+          c.solve,
+          c.penaltyStiffness,
+          c.penaltyDamping};
 }
 
 void CpuSolver::step(double h, const Pose& head) {

@@ -3,6 +3,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
+#include "sim/solver/contacts.h"
+
 namespace csm {
 namespace {
 
@@ -36,6 +38,7 @@ HairState HostSolver::layOut(const Groom& groom, const Config& config, const Pos
   strandOf_ = st.particleStrand;
   tipHeld_ = st.tipHeld;
   weight_ = st.weight;
+  meanWeight_ = meanWeight(weight_);
   rest_.resize(n);
   mass_.resize(n);
   x_.resize(n);

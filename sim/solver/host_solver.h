@@ -73,6 +73,7 @@ class HostSolver : public Solver, public SolverState, public SolverDiagnostics {
   std::vector<uint32_t> strandOf_;
   std::vector<uint8_t> tipHeld_;  // per strand (HairState::tipHeld)
   std::vector<float> weight_;     // per strand (HairState::weight)
+  double meanWeight_ = 1.0;       // of weight_ (contactRadius)
   std::vector<glm::dvec3> rest_;  // head frame
   std::vector<double> mass_;
   std::vector<double> restLength_;  // segment i -> i+1; 0 for a strand's last particle
