@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
+#include <utility>
 
 #include <fcntl.h>
 #include <png.h>
@@ -55,18 +57,12 @@ struct File {
   }
 };
 
-}  // namespace
-
-bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb,
-              std::string* error) {
-  auto fail = [&](const std::string& why) {
-    if (error) *error = path + ": " + why;
-    return false;
-  };
-  if (width <= 0 || height <= 0 || rgb.size() != std::size_t(width) * height * 3)
-    return fail("internal error: image size and pixel count disagree");
+// The PNG into `tmp`, closed; false with why.
+bool writePngFile(const std::string& tmp, int width, int height,
+                  const std::vector<std::uint8_t>& rgb,
+                  const std::function<bool(std::string)>& fail) {
   File file;
-  file.f = std::fopen(path.c_str(), "wb");
+  file.f = std::fopen(tmp.c_str(), "wb");
   if (!file.f) return fail(std::string("cannot write: ") + std::strerror(errno));
   PngWriteContext ctx;
   ctx.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -83,7 +79,34 @@ bool writePng(const std::string& path, int width, int height, const std::vector<
   for (int y = 0; y < height; ++y)
     png_write_row(ctx.png, const_cast<png_bytep>(&rgb[std::size_t(y) * width * 3]));
   png_write_end(ctx.png, nullptr);
-  if (std::fflush(file.f) != 0) return fail(std::string("cannot write: ") + std::strerror(errno));
+  FILE* f = std::exchange(file.f, nullptr);
+  if (std::fflush(f) != 0 || std::fclose(f) != 0)
+    return fail(std::string("cannot write: ") + std::strerror(errno));
+  return true;
+}
+
+}  // namespace
+
+bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb,
+              std::string* error) {
+  auto fail = [&](const std::string& why) {
+    if (error) *error = path + ": " + why;
+    return false;
+  };
+  if (width <= 0 || height <= 0 || rgb.size() != std::size_t(width) * height * 3)
+    return fail("internal error: image size and pixel count disagree");
+  // Written beside the name, then renamed over it: a reader (a farm's join, a rerun chunk) never
+  // sees half a frame, and a failed write leaves the old one.
+  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+  if (!writePngFile(tmp, width, height, rgb, fail)) {
+    std::remove(tmp.c_str());
+    return false;
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(tmp.c_str());
+    return fail("cannot rename the written file into place: " + why);
+  }
   return true;
 }
 

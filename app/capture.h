@@ -31,7 +31,7 @@ class CaptureTarget {
   gl::Framebuffer framebuffer_;
 };
 
-// Writes 8-bit RGB rows (top to bottom). False with the reason in `error`.
+// Writes 8-bit RGB rows (top to bottom), whole or not at all. False with the reason in `error`.
 bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb,
               std::string* error);
 

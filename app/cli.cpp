@@ -15,13 +15,35 @@ bool parseLong(const std::string& s, long& out) {
 
 }  // namespace
 
+bool parseFrameRange(const std::string& text, long& first, long& last, std::string* error) {
+  auto fail = [&](const std::string& why) {
+    if (error) *error = "--frames " + text + ": " + why;
+    return false;
+  };
+  const size_t dash = text.find('-', 1);
+  if (dash == std::string::npos) {
+    if (!parseLong(text, last) || last < 0) return fail("needs N (a whole number >= 0) or A-B");
+    first = 1;
+    return true;
+  }
+  long a = 0, b = 0;
+  if (!parseLong(text.substr(0, dash), a) || !parseLong(text.substr(dash + 1), b))
+    return fail("needs A-B, two whole numbers (e.g. 31-45)");
+  if (a < 1) return fail("frames count from 1");
+  if (b < a) return fail("the first frame is after the last");
+  first = a;
+  last = b;
+  return true;
+}
+
 std::string usageText() {
   return R"(csmhair: every strand of a head of hair, simulated with Chain Shape Matching.
 
 usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx | GROOM.obj] [options]
 
   --headless             no window: simulate (and render, when a renderer is built) off-screen
-  --frames N             frames to run (headless default 60)
+  --frames N | A-B       frames to run (headless default 60; from 1), or the frames A..B alone
+                         drawn and written (a run simulates up to B; a cache draws A..B)
   --solver cpu|gpu       the CPU reference or the GPU solver (default gpu)
   --set KEY=VALUE        override a parameter (repeatable); see --list-params
   --metrics FILE.json    write timings and accuracy measures
@@ -41,6 +63,13 @@ usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx | GROOM.obj] [options]
                          ... (cyHair, the same strands in each)
   --export-guides        export the simulated strands alone (hairstyle.guides), not every
                          strand as drawn
+  --bake DIR             headless: simulate into a shot's cache in DIR (a manifest and a file
+                         a frame, each written whole), to draw later with --from-cache
+  --resume               with --bake: go on from the cache's last frame kept (a bake that was
+                         stopped), the same frames as one that was not
+  --from-cache DIR       headless: draw the cache's frames (--frames A-B) without simulating;
+                         render parameters may be --set, simulation parameters may not. Opening
+                         DIR as the file does the same (the window scrubs it)
   --screenshot FILE.png  window: save what the window shows after --exit-after frames
                          (at full quality)
   --exit-after N         window: simulate N frames as fast as they come (not paced to
@@ -90,7 +119,16 @@ std::optional<Options> parseCommandLine(int argc, char** argv, std::string* erro
     } else if (arg == "--headless") {
       o.headless = true;
     } else if (arg == "--frames") {
-      if (!number(o.frames, 0)) return fail("--frames needs a whole number >= 0");
+      std::string range;
+      if (!value(range)) return fail("--frames needs N or A-B");
+      std::string why;
+      if (!parseFrameRange(range, o.firstFrame, o.frames, &why)) return fail(why);
+    } else if (arg == "--bake") {
+      if (!value(o.bake)) return fail("--bake needs a directory");
+    } else if (arg == "--resume") {
+      o.resume = true;
+    } else if (arg == "--from-cache") {
+      if (!value(o.fromCache)) return fail("--from-cache needs a cache's directory");
     } else if (arg == "--solver") {
       if (!value(o.solver) || (o.solver != "cpu" && o.solver != "gpu"))
         return fail("--solver needs cpu or gpu");
@@ -159,6 +197,9 @@ std::optional<Options> parseCommandLine(int argc, char** argv, std::string* erro
       return fail("only one preset can be given; got " + o.preset + " and " + arg);
     }
   }
+  if (o.resume && o.bake.empty()) return fail("--resume goes on with a bake: give --bake DIR");
+  if (!o.fromCache.empty() && !o.bake.empty())
+    return fail("--bake and --from-cache: a run either simulates into a cache or draws from one");
   return o;
 }
 

@@ -4,14 +4,21 @@ namespace csm {
 
 FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
                       int width, int height, unsigned framebuffer) {
+  return frameViewOf(sim.config(), sim.scene(), sim.generation(), sim.headPose(), view,
+                     positionBuffer, width, height, framebuffer);
+}
+
+FrameView frameViewOf(const Config& scene, const GrownScene& grown, long generation,
+                      const Pose& head, const ViewConfig& view, unsigned positionBuffer, int width,
+                      int height, unsigned framebuffer) {
   FrameView v;
-  v.scene = &sim.config();
+  v.scene = &scene;
   v.look = &view;
-  v.groom = &sim.groom();
-  v.followers = sim.followers();
-  v.generation = sim.generation();
-  v.head = &sim.head();
-  v.headPose = sim.headPose();
+  v.groom = grown.groom.get();
+  v.followers = grown.followers.get();
+  v.generation = generation;
+  v.head = grown.head.get();
+  v.headPose = head;
   v.positionBuffer = positionBuffer;
   v.width = width;
   v.height = height;

@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/capture.h"
+#include "app/cache_run.h"
+#include "app/frame_outputs.h"
 #include "app/frame_view.h"
 #include "app/import_progress.h"
 #include "app/metrics.h"
@@ -35,172 +36,6 @@ using Clock = std::chrono::steady_clock;
 bool drawsFrames(const Options& options) {
   return !options.noRender &&
          (!options.outDir.empty() || !options.video.empty() || !options.metrics.empty());
-}
-
-// --out: the frames as frame_00001.png, frame_00002.png, ... in a directory made before the
-// run, so that an unwritable one fails before anything is simulated.
-class ImageFiles {
- public:
-  explicit ImageFiles(const Options& options) : dir_(options.outDir) {}
-  bool on() const { return !dir_.empty(); }
-  bool makeDirectory() const {
-    std::error_code ec;
-    std::filesystem::create_directories(dir_, ec);
-    if (ec || !std::filesystem::is_directory(dir_)) {
-      std::fprintf(stderr, "csmhair: --out %s: cannot create the directory%s%s\n", dir_.c_str(),
-                   ec ? ": " : "", ec ? ec.message().c_str() : "");
-      return false;
-    }
-    return true;
-  }
-  // The `index`th frame written (from 1).
-  bool write(long index, int width, int height, const std::vector<std::uint8_t>& rgb) const {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%05ld.png", index);
-    const std::string path = (std::filesystem::path(dir_) / name).string();
-    std::string error;
-    if (!writePng(path, width, height, rgb, &error)) {
-      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-      return false;
-    }
-    return true;
-  }
-
- private:
-  std::string dir_;
-};
-
-// --video: the frames piped into ffmpeg, started before the run so that a missing one fails
-// before anything is simulated.
-class VideoOutput {
- public:
-  explicit VideoOutput(const Options& options) : options_(options) {}
-  bool on() const { return pipe_ != nullptr; }
-  // One video frame a drawn frame: every --every simulated frames of `frameDt` seconds.
-  bool open(double frameDt) {
-    const double fps = 1.0 / (frameDt * options_.every);
-    std::string error;
-    pipe_ = VideoPipe::open(options_.video, options_.width, options_.height, fps, &error);
-    if (!pipe_) std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-    return pipe_ != nullptr;
-  }
-  bool write(const std::vector<std::uint8_t>& rgb) {
-    if (pipe_->write(rgb)) return true;
-    std::string error;
-    pipe_->close(&error);
-    std::fprintf(stderr, "csmhair: %s: ffmpeg stopped taking frames%s%s\n", options_.video.c_str(),
-                 error.empty() ? "" : ": ", error.c_str());
-    return false;
-  }
-  // Waits for ffmpeg to finish the file of `frames` frames.
-  bool close(long frames) {
-    std::string error;
-    if (!pipe_->close(&error)) {
-      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-      return false;
-    }
-    if (!options_.quiet)
-      std::fprintf(stderr, "csmhair: wrote %ld frames to %s\n", frames, options_.video.c_str());
-    return true;
-  }
-
- private:
-  const Options& options_;
-  std::unique_ptr<VideoPipe> pipe_;
-};
-
-// --export-hair-sequence (the strands every --every frames) and --export-hair (the last
-// frame's), read back from the solver.
-class HairExport {
- public:
-  explicit HairExport(const Options& options) : options_(options) {}
-  // The sequence's directory, before anything is simulated.
-  bool prepare() const {
-    std::string error;
-    if (options_.exportSequence.empty() || io::prepareSequenceDir(options_.exportSequence, &error))
-      return true;
-    std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
-    return false;
-  }
-  bool writeFrame(Simulation& sim) {
-    if (options_.exportSequence.empty()) return true;
-    const Groom& groom = strands(sim);
-    ++exported_;
-    std::string error;
-    if (!io::writeSequenceFrame(options_.exportSequence, exported_, groom, x_, &error)) {
-      std::fprintf(stderr, "csmhair: --export-hair-sequence: %s\n", error.c_str());
-      return false;
-    }
-    return true;
-  }
-  // The final strands in world space, as a cyHair file for other tools (OBJ curves when the name
-  // ends in .obj); then what was written.
-  bool finish(Simulation& sim) {
-    if (!options_.exportHair.empty()) {
-      const Groom out = io::posedGroom(strands(sim), x_);
-      std::string error;
-      if (!io::writeGroom(options_.exportHair, out, &error)) {
-        std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-        return false;
-      }
-      if (!options_.quiet)
-        std::fprintf(stderr, "csmhair: wrote %zu strands to %s\n", out.strandCount(),
-                     options_.exportHair.c_str());
-      if (!options_.quiet && sim.followers() && !options_.exportGuides)
-        std::fprintf(stderr,
-                     "csmhair: the followers: %zu points moved out of the head, the deepest "
-                     "left inside %.2f mm\n",
-                     last_.pushed, 1e3 * last_.deepest);
-    }
-    if (exported_ > 0 && !options_.quiet)
-      std::fprintf(stderr, "csmhair: wrote %ld frames of %zu strands into %s\n", exported_,
-                   strands(sim).strandCount(), options_.exportSequence.c_str());
-    return true;
-  }
-
- private:
-  // This frame's strands as exported, their positions into x_: every strand as drawn (a
-  // groom simulated through guides: the followers made on the CPU), or with --export-guides
-  // the simulated ones alone.
-  const Groom& strands(Simulation& sim) {
-    sim.readPositions(x_);
-    if (options_.exportGuides || !sim.followers()) return sim.groom();
-    std::vector<glm::vec4> guides;
-    std::swap(guides, x_);
-    last_ = sim.drawnPositions(guides, x_);
-    return sim.followers()->drawn;
-  }
-
-  const Options& options_;
-  std::vector<glm::vec4> x_;
-  FollowerStats last_;  // of the last frame exported
-  long exported_ = 0;
-};
-
-// The offscreen GL context for both the GPU solver and the renderer; null, having said why,
-// when there is none or --require-gpu refuses it.
-std::unique_ptr<gl::HeadlessContext> openContext(const Options& options, bool render) {
-  std::string error;
-  std::unique_ptr<gl::HeadlessContext> context = gl::HeadlessContext::create(&error);
-  if (!context) {
-    std::fprintf(stderr, "csmhair: no OpenGL 4.3 context for %s: %s\n",
-                 render ? "rendering (use --no-render to simulate only)" : "the GPU solver",
-                 error.c_str());
-    return nullptr;
-  }
-  if (gl::isSoftwareRenderer(context->renderer())) {
-    if (options.requireGpu) {
-      std::fprintf(stderr,
-                   "csmhair: --require-gpu: the OpenGL context (%s) is a software renderer, "
-                   "%s, not a GPU\n",
-                   context->platform().c_str(), context->renderer().c_str());
-      return nullptr;
-    }
-    if (!options.quiet)
-      std::fprintf(stderr, "csmhair: warning: %s\n",
-                   gl::softwareRendererWarning(context->renderer()).c_str());
-  }
-  return context;
 }
 
 // The scene loaded on the solver --solver names; null, having said why, with the exit status
@@ -309,54 +144,6 @@ class MetricsOutput {
   double startup_ = 0.0;
 };
 
-// The drawn frames: the renderer, the offscreen target it draws into and the positions it
-// draws from (the GPU solver's own buffer, or the CPU solver's uploaded).
-class FrameCapture {
- public:
-  // Null, having said why, when the renderer does not start.
-  static std::unique_ptr<FrameCapture> create(const Options& options) {
-    std::string error;
-    std::unique_ptr<HairRenderer> renderer = HairRenderer::create(&error);
-    if (!renderer) {
-      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
-      return nullptr;
-    }
-    return std::unique_ptr<FrameCapture>(
-        new FrameCapture(std::move(renderer), options.width, options.height));
-  }
-  const HairRenderer& renderer() const { return *renderer_; }
-  int width() const { return target_.width(); }
-  int height() const { return target_.height(); }
-  // Draws the simulation's current frame; with --metrics, waits for it and adds its times.
-  void draw(Simulation& sim, const ViewConfig& view, MetricsOutput& metrics) {
-    const unsigned buffer = positionsToDraw(sim, positions_);
-    const auto start = Clock::now();
-    renderer_->render(
-        frameViewOf(sim, view, buffer, target_.width(), target_.height(), target_.framebuffer()));
-    if (metrics.on()) {
-      CaptureTarget::waitForGpu();
-      lastMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-      metrics.addRender(lastMs_, renderer_->stageTimes());
-    }
-  }
-  // The frame drawn last, rows top to bottom; counts the frames read back.
-  std::vector<std::uint8_t> readBack() {
-    ++readBack_;
-    return target_.readRgb();
-  }
-  double lastMs() const { return lastMs_; }
-  long framesReadBack() const { return readBack_; }
-
- private:
-  FrameCapture(std::unique_ptr<HairRenderer> renderer, int width, int height)
-      : renderer_(std::move(renderer)), target_(width, height) {}
-  std::unique_ptr<HairRenderer> renderer_;
-  CaptureTarget target_;
-  PositionSource positions_;
-  double lastMs_ = 0.0;
-  long readBack_ = 0;
-};
-
 // What is drawn, on stderr unless --quiet: the strands, the size, the device, the folder.
 void sayRendering(const Options& options, const SceneSetup& scene, const Simulation& sim,
                   const gl::HeadlessContext& context) {
@@ -381,20 +168,22 @@ void sayPassProfile(long frames) {
 class Progress {
  public:
   Progress(const Options& options, long frames) : quiet_(options.quiet), frames_(frames) {}
+  // The last frame drawn took `ms` (with --metrics).
+  void rendered(double ms) { renderMs_ = ms; }
+  // After frame `f` (from 1).
   void frame(long f, long simulated, const Simulation& sim, const FrameCapture* capture,
              bool metrics) {
     const auto now = Clock::now();
-    if (quiet_ || (now - lastReport_ <= std::chrono::seconds(2) && f + 1 != frames_)) return;
+    if (quiet_ || (now - lastReport_ <= std::chrono::seconds(2) && f != frames_)) return;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame", f + 1, frames_,
+    std::fprintf(stderr, "  frame %ld/%ld  %.1f ms/frame", f, frames_,
                  1000.0 * elapsed / double(simulated));
     if (sim.latestSample())
       std::fprintf(stderr, "  max strain %.4f (frame %ld)", sim.latestSample()->accuracy.maxStrain,
                    sim.latestSample()->frame);
     std::fprintf(stderr, "  %.0f s elapsed", elapsed);
     if (capture && metrics)
-      std::fprintf(stderr, "  render %.1f ms  %ld written", capture->lastMs(),
-                   capture->framesReadBack());
+      std::fprintf(stderr, "  render %.1f ms  %ld written", renderMs_, capture->framesReadBack());
     std::fputc('\n', stderr);
     lastReport_ = now;
   }
@@ -402,6 +191,7 @@ class Progress {
  private:
   bool quiet_;
   long frames_;
+  double renderMs_ = 0.0;
   Clock::time_point start_ = Clock::now(), lastReport_ = start_;
 };
 
@@ -505,7 +295,7 @@ int printDeviceInfo(const Options& options) {
   return 0;
 }
 
-int runHeadless(const Options& options, const SceneSetup& scene) {
+int runHeadless(const Options& options, const SceneSetup& scene, const CacheManifest* resumed) {
   const auto start = std::chrono::steady_clock::now();
   const bool render = drawsFrames(options);
   if (options.noRender && !options.video.empty()) {
@@ -519,26 +309,39 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   if (render && images.on() && !images.makeDirectory()) return 1;
   HairExport hair(options);
   if (!hair.prepare()) return 1;
+  CacheBake bake(options);
 
+  // A resumed bake runs on the solver that baked it.
+  Options run = options;
+  if (resumed) run.solver = resumed->solver;
   std::unique_ptr<gl::HeadlessContext> context;
-  if (render || options.solver == "gpu") {
-    context = openContext(options, render);
+  if (render || run.solver == "gpu") {
+    context = openContext(run, render);
     if (!context) return 1;
   }
   int status = 0;
-  std::unique_ptr<Simulation> sim = loadSimulation(options, scene, &status);
+  std::unique_ptr<Simulation> sim = loadSimulation(run, scene, &status);
   if (!sim) return status;
-  const long frames = options.frames >= 0 ? options.frames : 60;
+  long frames = options.frames >= 0 ? options.frames : 60;
+  if (resumed && options.frames < 0) frames = resumed->frames;
   MetricsOutput metrics(options);
   metrics.setStartup(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  const bool writes = render && (images.on() || video.on());
+  // No frame is written out before its NaN check: the images, the video, the cache.
+  const bool writes = (render && (images.on() || video.on())) || bake.on();
   // The metrics measure hair-hair contacts in every mode (with hair-hair off, a candidate
   // search per sample outside the frame's timing), so modes compare on the same measures.
   sim->diagnostics().setContactMeasures(metrics.on());
   sim->setSampling(samplingOf(metrics.on(), writes));
   Progress progress(options, frames);
-  sayScene(options, scene, *sim, frames);
+  sayScene(run, scene, *sim, frames);
+  long from = 0;  // the frame the run starts at
+  if (resumed) {
+    from = bake.resume(*sim, *resumed, options.frames);
+    if (from < 0) return 1;
+  } else if (bake.on() && !bake.start(scene, *sim, run.solver, frames)) {
+    return 1;
+  }
 
   std::unique_ptr<FrameCapture> capture;
   if (render) {
@@ -551,7 +354,8 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   bool nan = false;
   gl::pass_profile::clear();  // CSM_PASS_PROFILE: the frames only, not the set-up
   long simulated = 0;
-  for (long f = 0; f < frames; ++f) {
+  std::vector<glm::vec4> positions;
+  for (long f = from + 1; f <= frames; ++f) {
     sim->stepFrame();
     ++simulated;
     metrics.addFrame(sim->lastStepMs(), sim->diagnostics().stageTimes());
@@ -561,14 +365,26 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
       nan = true;
       break;
     }
-    const bool due = (f + 1) % options.every == 0;
-    if (due && !hair.writeFrame(*sim)) return 1;
-    if (due && capture) {
-      capture->draw(*sim, scene.preset.view, metrics);
+    if (bake.on() && !bake.frame(*sim)) return 1;
+    if (!keptFrame(options, f)) {
+      progress.frame(f, simulated, *sim, capture.get(), metrics.on());
+      continue;
+    }
+    if (hair.on()) sim->readPositions(positions);
+    if (!options.exportSequence.empty() &&
+        !hair.writeFrame(keptIndex(options, f), sim->scene(), positions, sim->headPose()))
+      return 1;
+    if (capture) {
+      const unsigned buffer = positionsToDraw(*sim, capture->upload());
+      const double ms = capture->draw(frameViewOf(*sim, scene.preset.view, buffer, capture->width(),
+                                                  capture->height(), capture->framebuffer()),
+                                      metrics.on());
+      if (metrics.on()) metrics.addRender(ms, capture->renderer().stageTimes());
+      progress.rendered(ms);
       if (writes) {
         const std::vector<std::uint8_t> rgb = capture->readBack();
         if (images.on() &&
-            !images.write(capture->framesReadBack(), capture->width(), capture->height(), rgb))
+            !images.write(keptIndex(options, f), capture->width(), capture->height(), rgb))
           return 1;
         if (video.on() && !video.write(rgb)) return 1;
       }
@@ -586,7 +402,11 @@ int runHeadless(const Options& options, const SceneSetup& scene) {
   }
   sayPassProfile(simulated);
   warnings.say(*sim);
-  if (!hair.finish(*sim)) return 1;
+  bake.finish();
+  if (hair.on()) {
+    sim->readPositions(positions);
+    if (!hair.finish(sim->scene(), positions, sim->headPose())) return 1;
+  }
   if (video.on() && !video.close(capture->framesReadBack())) return 1;
   if (!metrics.write(scene, *sim, context.get(), capture ? &capture->renderer() : nullptr))
     return 1;

@@ -7,8 +7,12 @@
 
 namespace csm {
 
-// Returns the process exit status.
-int runHeadless(const Options& options, const SceneSetup& scene);
+struct CacheManifest;
+
+// Returns the process exit status. `resumed`: --bake DIR --resume, the manifest of DIR's cache
+// whose scene `scene` is (app/cache_run.h's sceneFromCache).
+int runHeadless(const Options& options, const SceneSetup& scene,
+                const CacheManifest* resumed = nullptr);
 
 // --info: the headless context's device and limits on stdout. 1 when there is no context,
 // or with --require-gpu when it is a software renderer.

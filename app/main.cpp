@@ -1,6 +1,7 @@
 // csmhair: every strand of a head of hair simulated with Chain Shape Matching.
 #include <cstdio>
 
+#include "app/cache_run.h"
 #include "app/cli.h"
 #include "app/headless.h"
 #include "app/scene_setup.h"
@@ -65,7 +66,23 @@ int main(int argc, char** argv) {
   if (options->validateMode) return validate(options->validate);
   if (options->info) return csm::printDeviceInfo(*options);
 
+  // A shot's cache opened as the file: drawn from, not simulated.
+  if (options->fromCache.empty() && csm::shot_cache::isCache(options->preset))
+    options->fromCache = options->preset;
+  if (!options->fromCache.empty() && options->headless) return csm::runFromCache(*options);
   csm::SceneSetup scene;
+  if (options->resume) {
+    csm::CacheManifest manifest;
+    if (!options->headless) {
+      std::fprintf(stderr, "csmhair: --resume runs headless: add --headless\n");
+      return 2;
+    }
+    if (!csm::sceneFromCache(options->bake, *options, manifest, scene, &error)) {
+      std::fputs(error.c_str(), stderr);
+      return 2;
+    }
+    return csm::runHeadless(*options, scene, &manifest);
+  }
   if (!csm::setupScene(*options, scene, &error)) {
     std::fputs(error.c_str(), stderr);
 #ifdef CSM_HAVE_VIEWER

@@ -40,8 +40,13 @@ bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {
       out.baseDir = fs::absolute(options.preset).parent_path().string();
     }
   }
+  return applySets(options.sets, out, errors);
+}
+
+bool applySets(const std::vector<std::pair<std::string, std::string>>& sets, SceneSetup& out,
+               std::string* errors) {
   std::string msgs;
-  for (const auto& [key, value] : options.sets) {
+  for (const auto& [key, value] : sets) {
     const PresetParam* p = findParam(key);
     if (!p) {
       std::string near;
@@ -67,8 +72,8 @@ bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {
     std::string headError;
     out.head = HeadModel::build(out.preset.scene, &headError);
     if (!out.head)
-      msgs += out.source + (options.sets.empty() ? ": " : " with --set: ") +
-              "head.mesh: " + headError + "\n";
+      msgs +=
+          out.source + (sets.empty() ? ": " : " with --set: ") + "head.mesh: " + headError + "\n";
   }
   if (!msgs.empty()) {
     if (errors) *errors = msgs;

@@ -24,6 +24,11 @@ struct SceneSetup {
 // head.mesh that cannot be read is named with its file and line.
 bool setupScene(const Options& options, SceneSetup& out, std::string* errors);
 
+// Applies the --set pairs to `out.preset`, checks the scene and builds its head: setupScene's
+// second half, for a scene that comes from elsewhere (a shot's cache).
+bool applySets(const std::vector<std::pair<std::string, std::string>>& sets, SceneSetup& out,
+               std::string* errors);
+
 // True when `path` names a groom file rather than a preset.
 bool isGroomFile(const std::string& path);
 

@@ -16,6 +16,7 @@ packages=(
   python3 python3-matplotlib     # test scripts and benchmark charts
   ffmpeg                         # headless --video (its ffprobe reads the file back in the tests)
   iwyu                           # include-what-you-use: no include of ours a file does not use
+  slurm-wlm munge                # the render farm's scheduler (scripts/farm; its test runs one)
 )
 # shellcheck source=scripts/packages.sh
 source "$root/scripts/packages.sh"

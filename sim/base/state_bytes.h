@@ -50,6 +50,15 @@ class StateReader {
     values.resize(n);
     return take(values.data(), n * sizeof(T));
   }
+  // An array written by putVector, of any length the bytes left hold.
+  template <class T>
+  bool getVector(std::vector<T>& values) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    size_t n = 0;
+    if (!get(n) || n > (in_.size() - at_) / sizeof(T)) return false;
+    values.resize(n);
+    return take(values.data(), n * sizeof(T));
+  }
   // The count written first (put(size_t)), which must be `count`: "a saved state of 1200
   // particles; this scene has 1300".
   bool expectCount(size_t count, const char* what, std::string* error) {

@@ -1,12 +1,23 @@
 #include "sim/run/make_solver.h"
 
+#include <atomic>
+
 #include "sim/solver/baselines/make_baseline.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/gpu/gpu_solver.h"
 
 namespace csm {
 
+namespace {
+std::atomic<long> made{0};
+}  // namespace
+
+long solversMade() {
+  return made.load();
+}
+
 std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error) {
+  ++made;
   if (name == "cpu") return std::make_unique<CpuSolver>();
   if (name == "gpu") return GpuSolver::start(error);
   if (error) *error = "unknown solver \"" + name + "\" (solvers: cpu, gpu)";

@@ -21,6 +21,9 @@ using SolverByName =
 // Null with a message when the name is unknown or the solver cannot start.
 std::unique_ptr<Solver> makeSolver(const std::string& name, std::string* error);
 
+// The calls to makeSolver in this process so far: a render from a shot's cache makes none.
+long solversMade();
+
 // Every kind of solver by name, for the benchmarks and the measures: "cpu" (or "csm"), "csm-direct"
 // (the CPU solver summing its regions directly), "gpu" (none without a context), and the
 // baselines (sim/solver/baselines/make_baseline.h) with `params`; none for an unknown name.

@@ -28,39 +28,13 @@ void Simulation::startingSolver() const {
 
 bool Simulation::regrow(const Config& config, const std::string& baseDir, std::string* error,
                         const HeadModel* known) {
-  std::string capacity = checkCapacity(config);
-  if (!capacity.empty()) {
-    if (error) *error = capacity;
+  // A head file that `known` or the running scene already holds is not read again.
+  GrownScene grown;
+  if (!growScene(config, baseDir, known ? known : scene_.head.get(), importProgress_, grown, error))
     return false;
-  }
-  // The scene's head, once: the solver, the generator and the renderer share it. A file that
-  // `known` or the running scene already holds is not read again.
-  std::string headError;
-  std::shared_ptr<const HeadModel> head =
-      HeadModel::build(config, &headError, known ? known : head_.get());
-  if (!head) {
-    if (error) *error = "head.mesh: " + headError;
-    return false;
-  }
-  Groom groom;
-  GroomReport report;
-  if (!buildGroom(config, *head, baseDir, groom, error, &report, importProgress_)) return false;
-  // The guides, when fewer than every strand are simulated: the followers are bound once here.
-  std::shared_ptr<const FollowerBinding> followers;
-  const size_t guides = guideCount(config.hairstyle.guides, groom.strandCount());
-  if (guides < groom.strandCount()) {
-    if (importProgress_) importProgress_("choosing guides", 1.0);
-    std::vector<uint32_t> chosen = chooseGuides(groom, guides);
-    followers =
-        std::make_shared<const FollowerBinding>(bindFollowers(std::move(groom), std::move(chosen)));
-    groom = followers->guideGroom();
-  }
-  groomReport_ = report;
-  head_ = std::move(head);
+  scene_ = std::move(grown);
   config_ = config;
   baseDir_ = baseDir;
-  groom_ = std::make_shared<const Groom>(std::move(groom));
-  followers_ = std::move(followers);
   boundRoots();
   ++generation_;
   return true;
@@ -68,17 +42,7 @@ bool Simulation::regrow(const Config& config, const std::string& baseDir, std::s
 
 FollowerStats Simulation::drawnPositions(const std::vector<glm::vec4>& simulated,
                                          std::vector<glm::vec4>& out) const {
-  if (!followers_) {
-    out = simulated;
-    return {};
-  }
-  std::vector<glm::vec3> guides(simulated.size()), drawn;
-  for (size_t i = 0; i < simulated.size(); ++i) guides[i] = glm::vec3(simulated[i]);
-  const FollowerStats stats =
-      makeFollowers(*followers_, guides, headPose(), head_->collider(), drawn);
-  out.resize(drawn.size());
-  for (size_t i = 0; i < drawn.size(); ++i) out[i] = glm::vec4(drawn[i], 1.0f);
-  return stats;
+  return csm::drawnPositions(scene_, simulated, headPose(), out);
 }
 
 bool Simulation::setConfig(const Config& config, std::string* error) {
@@ -88,8 +52,8 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     lastPose_ = headPoseAt(time_);
     lastUserPose_ = userPose_;
     startingSolver();
-    solver_->setHead(head_);
-    solver_->reset(*groom_, config_, lastPose_);
+    solver_->setHead(scene_.head);
+    solver_->reset(*scene_.groom, config_, lastPose_);
     restartSamples();
     return solverReady(error);
   }
@@ -106,7 +70,7 @@ bool Simulation::solverReady(std::string* error) const {
 }
 
 void Simulation::boundRoots() {
-  const Groom& g = *groom_;
+  const Groom& g = *scene_.groom;
   glm::dvec3 lo(0.0), hi(0.0);
   for (size_t s = 0; s < g.strandCount(); ++s) {
     const glm::dvec3 r(g.points[g.first[s]]);
@@ -131,7 +95,7 @@ Pose Simulation::jumpOf(const Pose& from, const Pose& to) const {
   if (!(reach > allowed)) return Pose{};
   // Past the bound: how far the farthest root does move.
   double farthest = 0.0;
-  const Groom& g = *groom_;
+  const Groom& g = *scene_.groom;
   for (size_t s = 0; s < g.strandCount(); ++s) {
     const glm::dvec3 r(g.points[g.first[s]]);
     farthest = std::max(farthest, glm::length(to.apply(r) - from.apply(r)));
@@ -147,8 +111,8 @@ void Simulation::reset() {
   carried_ = 0;
   lastPose_ = headPoseAt(0.0);
   lastUserPose_ = userPose_;
-  solver_->setHead(head_);
-  solver_->reset(*groom_, config_, lastPose_);
+  solver_->setHead(scene_.head);
+  solver_->reset(*scene_.groom, config_, lastPose_);
   restartSamples();
 }
 

@@ -19,6 +19,7 @@
 #include "sim/groom/followers.h"
 #include "sim/groom/guides.h"
 #include "sim/groom/scene_groom.h"
+#include "sim/run/grown_scene.h"
 #include "sim/head/head_model.h"
 #include "sim/core/pose.h"
 #include "sim/core/solver.h"
@@ -123,26 +124,26 @@ class Simulation {
   unsigned positionBuffer() const { return solver_->state().positionBuffer(); }
   const Config& config() const { return config_; }
   // The strands simulated: the whole groom, or its guides (hairstyle.guides).
-  const Groom& groom() const { return *groom_; }
+  const Groom& groom() const { return *scene_.groom; }
   // The same groom, for a reader on another thread that keeps it past a regrow (the
   // viewer's renderer): a regrow makes a new one and leaves this one as it is.
-  std::shared_ptr<const Groom> sharedGroom() const { return groom_; }
+  std::shared_ptr<const Groom> sharedGroom() const { return scene_.groom; }
   // The strands drawn and how they follow the guides; null when every strand is simulated.
-  const FollowerBinding* followers() const { return followers_.get(); }
-  std::shared_ptr<const FollowerBinding> sharedFollowers() const { return followers_; }
+  const FollowerBinding* followers() const { return scene_.followers.get(); }
+  std::shared_ptr<const FollowerBinding> sharedFollowers() const { return scene_.followers; }
   // The drawn strands' positions (world, a vec4 a point) from the simulated ones at this frame's
   // head: the followers made on the CPU (sim/groom/followers.h), or the simulated positions as
   // they are. Returns what keeping the followers out of the head took (nothing without them).
   FollowerStats drawnPositions(const std::vector<glm::vec4>& simulated,
                                std::vector<glm::vec4>& out) const;
   // Strands drawn: the followers' groom's, or the simulated groom's.
-  size_t drawnStrands() const {
-    return followers_ ? followers_->drawn.strandCount() : groom_->strandCount();
-  }
+  size_t drawnStrands() const { return scene_.drawnStrands(); }
   // The scene's head (built when the groom was), shared the same way: what the renderer draws.
-  const HeadModel& head() const { return *head_; }
-  std::shared_ptr<const HeadModel> sharedHead() const { return head_; }
-  const GroomReport& groomReport() const { return groomReport_; }
+  const HeadModel& head() const { return *scene_.head; }
+  std::shared_ptr<const HeadModel> sharedHead() const { return scene_.head; }
+  const GroomReport& groomReport() const { return scene_.report; }
+  // The head, the groom and the followers together (sim/run/grown_scene.h).
+  const GrownScene& scene() const { return scene_; }
   const std::string& baseDir() const { return baseDir_; }
   double time() const { return time_; }
   long frame() const { return frame_; }
@@ -167,10 +168,7 @@ class Simulation {
   std::unique_ptr<Solver> solver_;
   Config config_;
   std::string baseDir_;
-  std::shared_ptr<const Groom> groom_ = std::make_shared<const Groom>();
-  std::shared_ptr<const FollowerBinding> followers_;
-  std::shared_ptr<const HeadModel> head_;  // built with the groom, handed to the solver
-  GroomReport groomReport_;
+  GrownScene scene_;  // the head (handed to the solver), the groom, the followers
   ImportProgress importProgress_;
   void startingSolver() const;
   // The head's move and the solver's frame (stepFrame, replayFrame).

@@ -30,7 +30,7 @@ expect 0 "warning: the stiffness asks for" -- --headless --no-render --quiet --s
 # Soft hair without the DFTL it needs runs, and says how much (sim/solver/stiffness.h, softHairDftl).
 expect 0 "gains energy unless sim.dftl is at least 0.9" -- --headless --no-render --quiet --solver cpu --frames 1 --set hairstyle.strands=50 --set sim.bending_stiffness=1e-4 --set sim.substeps=16
 expect 2 "unknown option --frobnicate" -- --frobnicate
-expect 2 "--frames needs" -- --frames -3
+expect 2 "--frames -3: needs N (a whole number >= 0) or A-B" -- --frames -3
 # An export name that no writer takes is refused before anything runs.
 expect 2 "--export-hair out.tfx: the name must end in .hair (cyHair) or .obj (OBJ curves)" -- --headless --solver cpu --export-hair out.tfx
 expect 0 "ok" -- --validate "$src"/presets/*.json

@@ -1,0 +1,105 @@
+#include "sim/run/grown_scene.h"
+
+#include <cstring>
+#include <span>
+
+#include "sim/run/scene_checks.h"
+
+namespace csm {
+
+bool growScene(const Config& config, const std::string& baseDir, const HeadModel* known,
+               const ImportProgress& progress, GrownScene& out, std::string* error) {
+  const std::string capacity = checkCapacity(config);
+  if (!capacity.empty()) {
+    if (error) *error = capacity;
+    return false;
+  }
+  // The scene's head, once: the solver, the generator and the renderer share it.
+  std::string headError;
+  std::shared_ptr<const HeadModel> head = HeadModel::build(config, &headError, known);
+  if (!head) {
+    if (error) *error = "head.mesh: " + headError;
+    return false;
+  }
+  Groom groom;
+  GroomReport report;
+  if (!buildGroom(config, *head, baseDir, groom, error, &report, progress)) return false;
+  // The guides, when fewer than every strand are simulated: the followers are bound once here.
+  std::shared_ptr<const FollowerBinding> followers;
+  const size_t guides = guideCount(config.hairstyle.guides, groom.strandCount());
+  if (guides < groom.strandCount()) {
+    if (progress) progress("choosing guides", 1.0);
+    std::vector<uint32_t> chosen = chooseGuides(groom, guides);
+    followers =
+        std::make_shared<const FollowerBinding>(bindFollowers(std::move(groom), std::move(chosen)));
+    groom = followers->guideGroom();
+  }
+  out.head = std::move(head);
+  out.groom = std::make_shared<const Groom>(std::move(groom));
+  out.followers = std::move(followers);
+  out.report = report;
+  return true;
+}
+
+FollowerStats drawnPositions(const GrownScene& scene, const std::vector<glm::vec4>& simulated,
+                             const Pose& head, std::vector<glm::vec4>& out) {
+  if (!scene.followers) {
+    out = simulated;
+    return {};
+  }
+  std::vector<glm::vec3> guides(simulated.size()), drawn;
+  for (size_t i = 0; i < simulated.size(); ++i) guides[i] = glm::vec3(simulated[i]);
+  const FollowerStats stats =
+      makeFollowers(*scene.followers, guides, head, scene.head->collider(), drawn);
+  out.resize(drawn.size());
+  for (size_t i = 0; i < drawn.size(); ++i) out[i] = glm::vec4(drawn[i], 1.0f);
+  return stats;
+}
+
+namespace {
+
+// FNV-1a, 64 bits, over the bytes of each array in turn (and its length, so that two arrays
+// cannot trade elements).
+class Hash {
+ public:
+  template <class T>
+  void add(const std::vector<T>& values) {
+    const uint64_t n = values.size();
+    bytes(&n, sizeof n);
+    if (!values.empty()) bytes(values.data(), values.size() * sizeof(T));
+  }
+  uint64_t value() const { return h_; }
+
+ private:
+  void bytes(const void* data, size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < size; ++i) h_ = (h_ ^ p[i]) * 1099511628211ull;
+  }
+  uint64_t h_ = 14695981039346656037ull;
+};
+
+void addGroom(Hash& h, const Groom& g) {
+  h.add(g.first);
+  h.add(g.points);
+  h.add(g.color);
+  h.add(g.thickness);
+  h.add(g.tipHeld);
+  h.add(g.weight);
+}
+
+}  // namespace
+
+uint64_t groomHash(const GrownScene& scene) {
+  Hash h;
+  addGroom(h, *scene.groom);
+  if (scene.followers) {
+    addGroom(h, scene.followers->drawn);
+    h.add(scene.followers->guideStrand);
+    h.add(scene.followers->guides);
+    h.add(scene.followers->weights);
+    h.add(scene.followers->share);
+  }
+  return h.value();
+}
+
+}  // namespace csm
