@@ -71,6 +71,17 @@ int main(int argc, char** argv) {
     options->fromCache = options->preset;
   if (!options->fromCache.empty() && options->headless) return csm::runFromCache(*options);
   csm::SceneSetup scene;
+#ifdef CSM_HAVE_VIEWER
+  if (!options->fromCache.empty()) {
+    // The window opens the cache's scene with its frames on the timeline.
+    csm::CacheManifest manifest;
+    if (!csm::sceneFromCache(options->fromCache, *options, manifest, scene, &error)) {
+      std::fputs(error.c_str(), stderr);
+      return 2;
+    }
+    return csm::runViewer(*options, scene, "");
+  }
+#endif
   if (options->resume) {
     csm::CacheManifest manifest;
     if (!options->headless) {

@@ -28,8 +28,10 @@ void drawTimelinePanel(const PanelView& view, PanelRequests& ask, PanelState& st
   if (recorded) {
     int frame = int(std::clamp(at, t.first, t.last));
     ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::SliderInt("##frame", &frame, int(t.first), int(t.last),
-                         t.shown >= 0 ? "recorded frame %d" : "live, frame %d")) {
+    const char* label = t.shown < 0                                   ? "live, frame %d"
+                        : t.shotFrames > 0 && t.shown <= t.shotFrames ? "cached frame %d"
+                                                                      : "recorded frame %d";
+    if (ImGui::SliderInt("##frame", &frame, int(t.first), int(t.last), label)) {
       ask.controls().playRecording(false);
       ask.controls().showRecorded(frame);
     }
@@ -98,6 +100,10 @@ void drawTimelinePanel(const PanelView& view, PanelRequests& ask, PanelState& st
   ImGui::SameLine();
   ImGui::Text("%.1f of %.0f MB, %ld frames (%zu keyframes)", double(t.bytes + t.aBytes) / (1 << 20),
               double(t.budget) / (1 << 20), recorded ? t.last - t.first + 1 : 0L, t.keyframes);
+  if (t.shotFrames > 0) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(a shot's cache: frames 1-%ld)", t.shotFrames);
+  }
   // Out: the recorded range as cyHair files.
   ImGui::BeginDisabled(!recorded);
   if (ImGui::Button("Export .hair"))

@@ -42,9 +42,7 @@ bool isCache(const std::string& dir) {
 }
 
 std::string framePath(const std::string& dir, long frame) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%05ld.bin", frame);
-  return (fs::path(dir) / "frames" / name).string();
+  return (fs::path(dir) / "frames" / cache::frameName(frame)).string();
 }
 
 std::string statePath(const std::string& dir) {

@@ -183,6 +183,7 @@ void SimThread::apply(Pending& p, long ticket) {
     maxStrain_.clear();
     timeline_.restarted(*sim_);
   }
+  if (opened || sim_->generation() != generation) timeline_.openShot("", 0, 0);
   const bool resumed = applyTimeline(p, ticket);
   // The paced clock starts again from here when the hair starts again or starts moving; not
   // on every command (a drag posts one a frame), which would let it run ahead of real time.
@@ -195,6 +196,10 @@ void SimThread::apply(Pending& p, long ticket) {
 
 bool SimThread::applyTimeline(const Pending& p, long ticket) {
   if (p.timeline.recording) timeline_.setRecording(*p.timeline.recording);
+  if (p.timeline.shot && loaded_) {
+    const TimelineEdits::Shot& shot = *p.timeline.shot;
+    timeline_.openShot(shot.dir, shot.frames, shot.particles);
+  }
   if (p.timeline.show && timeline_.show(*p.timeline.show)) paused_ = true;
   bool resumed = false;
   if (p.timeline.resume && loaded_) {
@@ -390,6 +395,13 @@ long SimThread::bake(long frames) {
 long SimThread::exportRecorded(const std::string& dir, long first, long last) {
   return post([&](Pending& p, long) {
     p.timeline.exportRange = std::make_pair(dir, std::make_pair(first, last));
+  });
+}
+
+long SimThread::openShot(const std::string& dir, long frames, size_t particles) {
+  return post([&](Pending& p, long) {
+    p.timeline.shot = TimelineEdits::Shot{dir, frames, particles};
+    p.timeline.show = frames > 0 ? 1 : -1;
   });
 }
 

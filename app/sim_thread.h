@@ -117,6 +117,9 @@ class SimThread {
   // A/B: keep the recording as it is now as A (with its parameters); show A's frame instead of
   // the recording's at the frame on show (or not).
   long keepAsA();
+  // A shot's cache on the timeline (Timeline::openShot): its frames 1..frames shown as recorded
+  // ones, the first on show. Opening another scene, or a regrow, takes it off.
+  long openShot(const std::string& dir, long frames, size_t particles);
   long showA(bool on);
 
   // Waits until every command posted so far is applied and published; false on timeout.
@@ -159,6 +162,12 @@ class SimThread {
     std::optional<std::pair<std::string, std::pair<long, long>>> exportRange;
     bool keepA = false;
     std::optional<bool> showA;
+    struct Shot {
+      std::string dir;
+      long frames = 0;
+      size_t particles = 0;
+    };
+    std::optional<Shot> shot;
   };
   struct OpenScene {
     Config config;

@@ -14,6 +14,7 @@
 
 #include "app/camera_control.h"
 #include "app/panels.h"
+#include "app/shot_cache.h"
 #include "app/window.h"
 #include "gl/caps.h"
 #include "gl/debug.h"
@@ -364,6 +365,16 @@ int runViewer(const Options& options, const SceneSetup& scene, const std::string
                     &error, scene.head)) {
     std::fprintf(stderr, "csmhair: %s: %s\n", scene.source.c_str(), error.c_str());
     return 2;
+  }
+  // A shot's cache opened as the file: its frames on the timeline.
+  if (!options.fromCache.empty()) {
+    CacheManifest m;
+    if (!shot_cache::readManifest(options.fromCache, m, &error)) {
+      std::fprintf(stderr, "csmhair: %s\n", error.c_str());
+      return 2;
+    }
+    session.openShot(options.fromCache, shot_cache::completeFrames(options.fromCache, m),
+                     m.particles);
   }
   // A preset that fails validation opens the window anyway, on the built-in scene, with its
   // messages in front: the artist sees what to fix instead of a closed terminal.

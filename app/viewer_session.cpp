@@ -193,6 +193,12 @@ bool ViewerSession::open(const Preset& preset, const std::string& baseDir,
   return true;
 }
 
+void ViewerSession::openShot(const std::string& dir, long frames, size_t particles) {
+  controls_->playRecording(false);
+  sim_->waitForTicket(sim_->openShot(dir, frames, particles));
+  update();
+}
+
 bool ViewerSession::loadPreset(const std::string& path) {
   Preset c = defaultPreset();
   PresetErrors errors;

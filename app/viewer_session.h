@@ -57,6 +57,10 @@ class ViewerSession {
   // builds it. False (the running scene stays) when its hair cannot be grown.
   bool open(const Preset& preset, const std::string& baseDir, const std::string& presetPath,
             std::string* error, std::shared_ptr<const HeadModel> head = nullptr);
+  // A shot's cache of the scene open (app/shot_cache.h) on the timeline: its frames 1..frames,
+  // of `particles` particles, scrubbed and played as recorded frames, the first on show; waits
+  // until it is.
+  void openShot(const std::string& dir, long frames, size_t particles);
   // Reads and validates a preset file and starts opening it; the running scene stays until
   // the new one is ready. When the file is not a valid preset, or its hair cannot be grown, the
   // current scene stays and the messages go to presetErrors(). False when refused at once.

@@ -123,32 +123,7 @@ join=$(sbatch "${common[@]}" -J csm-join --dependency="afterok:$render" \
 echo "bake=$bake render=$render join=$join"
 [ $wait = 1 ] || exit 0
 
-# A job's state: scontrol while the controller keeps it, else sacct where there is accounting.
-state() {
-  local s
-  s=$(scontrol show job "$1" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | cut -d= -f2 | sort -u | tr '\n' ' ')
-  [ -n "$s" ] || s=$(sacct -n -X -j "$1" -o State 2>/dev/null | awk '{print $1}' | sort -u | tr '\n' ' ')
-  echo "${s:-UNKNOWN}"
-}
+source "$root/scripts/farm/lib.sh"
 start=$SECONDS
-last=""
-while :; do
-  now="bake: $(state "$bake")render: $(state "$render")join: $(state "$join")"
-  [ "$now" = "$last" ] || echo "shot.sh: $now"
-  last=$now
-  case "$now" in
-    *FAILED*|*CANCELLED*|*TIMEOUT*|*NODE_FAIL*|*OUT_OF_MEMORY*|*DEADLINE*)
-      # A chunk that failed may still be requeued: only the join's end is final.
-      if [[ "$(state "$join")" =~ COMPLETED|FAILED|CANCELLED|TIMEOUT ]] ||
-         [[ "$(state "$bake")" =~ FAILED|CANCELLED ]]; then
-        echo "shot.sh: a job failed; its log is in $out/logs/" >&2
-        exit 1
-      fi ;;
-  esac
-  if [[ "$(state "$join")" == "COMPLETED " ]]; then
-    echo "shot.sh: done in $((SECONDS - start)) s: $out/frames/ ($(ls "$out/frames" | grep -c '\.png$') frames), $out/shot.mp4"
-    exit 0
-  fi
-  [ $((SECONDS - start)) -lt "$timeout" ] || { echo "shot.sh: gave up waiting after $timeout s" >&2; exit 1; }
-  sleep 1
-done
+farm_wait "$timeout" "$out/logs" bake="$bake" render="$render" join="$join" || exit 1
+echo "shot.sh: done in $((SECONDS - start)) s: $out/frames/ ($(ls "$out/frames" | grep -c '\.png$') frames), $out/shot.mp4"

@@ -1,5 +1,6 @@
 #include "sim/run/cache_files.h"
 
+#include <cstdio>
 #include <cstring>
 #include <span>
 #include <vector>
@@ -82,6 +83,12 @@ bool checkHash(const std::string& path, const std::vector<std::byte>& bytes, siz
 }
 
 }  // namespace
+
+std::string frameName(long frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05ld.bin", frame);
+  return name;
+}
 
 bool writeFrame(const std::string& path, const FrameRecording::Shown& frame, std::string* error) {
   std::vector<std::byte> bytes;

@@ -35,6 +35,9 @@ inline uint64_t frameBytes(size_t particles) {
   return kFrameHeaderBytes + 12ull * particles;
 }
 
+// A frame's file name in the cache's frames/ folder: frame_00031.bin.
+std::string frameName(long frame);
+
 bool writeFrame(const std::string& path, const FrameRecording::Shown& frame, std::string* error);
 // Reads frame `number`, written by writeFrame, of `particles` particles; false, naming the file
 // and the byte, for anything else (missing, truncated, another version, another groom, another

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sim/groom/hair_sequence.h"
+#include "sim/run/cache_files.h"
 
 namespace csm {
 
@@ -23,9 +24,31 @@ void Timeline::setBudget(size_t bytes) {
   frames_.setBudget(budget_ > a ? budget_ - a : 0);
 }
 
+void Timeline::openShot(const std::string& dir, long frames, size_t particles) {
+  shotDir_ = dir;
+  shotFrames_ = std::max(0L, frames);
+  shotParticles_ = particles;
+  showingShot_ = false;
+}
+
+const FrameRecording::Shown* Timeline::frameAt(long frame) {
+  if (const FrameRecording::Shown* f = frames_.at(frame)) return f;
+  if (frame < 1 || frame > shotFrames_) return nullptr;
+  if (shotFrame_.frame == frame && !shotFrame_.positions.empty()) return &shotFrame_;
+  std::string error;
+  if (!cache::readFrame(shotDir_ + "/frames/" + cache::frameName(frame), frame, shotParticles_,
+                        shotFrame_, &error)) {
+    shotFrame_ = {};
+    return nullptr;
+  }
+  return &shotFrame_;
+}
+
 bool Timeline::show(long frame) {
   frames_.flush();  // the newest frames may still be on their way
-  const bool recorded = frames_.at(frame) || (a_ && a_->at(frame));
+  const FrameRecording::Shown* f = frame >= 0 ? frameAt(frame) : nullptr;
+  showingShot_ = f && f == &shotFrame_;
+  const bool recorded = f || (a_ && a_->at(frame));
   shown_ = frame >= 0 && recorded ? frame : -1;
   return shown_ >= 0;
 }
@@ -67,7 +90,7 @@ bool Timeline::exportFrames(const Simulation& sim, const std::string& dir, long 
   long written = 0;
   bool ok = io::prepareSequenceDir(dir, &error);
   for (long f = first; ok && f <= last; ++f) {
-    const FrameRecording::Shown* shown = frames_.at(f);
+    const FrameRecording::Shown* shown = frameAt(f);
     if (!shown) {
       error = "frame " + std::to_string(f) + " is not recorded";
       ok = false;
@@ -89,6 +112,7 @@ const FrameRecording::Shown* Timeline::shownFrame(bool* isA) const {
     if (isA) *isA = true;
     return a_->at(shown_);
   }
+  if (showingShot_ && shotFrame_.frame == shown_) return &shotFrame_;
   return frames_.at(shown_);
 }
 
@@ -97,6 +121,11 @@ TimelineStatus Timeline::status(const Simulation& sim) const {
   t.recording = recording_;
   t.first = frames_.firstFrame();
   t.last = frames_.lastFrame();
+  t.shotFrames = shotFrames_;
+  if (shotFrames_ > 0) {  // the slider spans the shot's frames and the recording's
+    t.first = t.first < 0 ? 1 : std::min(t.first, 1L);
+    t.last = std::max(t.last, shotFrames_);
+  }
   t.live = sim.frame();
   t.bytes = frames_.bytes();
   t.budget = budget_;

@@ -26,6 +26,7 @@ struct TimelineStatus {
   long refused = 0;                             // frames too big for the budget alone
   // A kept recording to compare with (A/B): its frames, its memory, its parameters, and
   // whether the frame on show is A's (the same frame number) instead of the recording's.
+  long shotFrames = 0;  // frames 1..shotFrames of a shot's cache to show (openShot)
   long aFirst = -1, aLast = -1;
   long aGeneration = -1;  // the groom A was recorded on (Simulation::generation)
   size_t aBytes = 0;
@@ -42,11 +43,15 @@ class Timeline {
   bool stepped(Simulation& sim);
 
   void setRecording(bool on) { recording_ = on; }
+  // A shot's cache (app/shot_cache.h) whose frames 1..frames, of `particles` particles, show as
+  // recorded frames do (read from DIR/frames/ when shown); the recording's own frames come first.
+  // Its frames are shown and exported; they cannot be resumed from (they keep no state).
+  void openShot(const std::string& dir, long frames, size_t particles);
   // One budget for the recording and A together: the recording gets what A leaves (A shares the
   // keyframes' saved states with it, but is counted whole).
   void setBudget(size_t bytes);
-  // Shows recorded frame `frame` instead of the live one (-1, or a frame not recorded: live
-  // again). True when a recorded frame is on show (the caller pauses).
+  // Shows recorded frame `frame` (or the shot's) instead of the live one (-1, or a frame not
+  // recorded: live again). True when a recorded frame is on show (the caller pauses).
   bool show(long frame);
   // Puts `sim` at recorded frame `frame` (FrameRecording::resume), nothing on show. True with
   // *message saying so (and how far the frame stepped again differs from the recording), or
@@ -82,6 +87,14 @@ class Timeline {
   std::shared_ptr<const Config> aConfig_;
   long aGeneration_ = -1;
   bool showingA_ = false;
+  // The shot's cache: its folder, frames and particles, and the frame of it on show.
+  std::string shotDir_;
+  long shotFrames_ = 0;
+  size_t shotParticles_ = 0;
+  FrameRecording::Shown shotFrame_;
+  bool showingShot_ = false;
+  // Frame `frame` of the recording, else of the shot (read into shotFrame_), else null.
+  const FrameRecording::Shown* frameAt(long frame);
 };
 
 }  // namespace csm

@@ -15,9 +15,13 @@
 
 #include <unistd.h>
 
+#include "app/cache_run.h"
+#include "app/headless.h"
 #include "app/preset.h"
+#include "app/shot_cache.h"
 #include "app/viewer_session.h"
 #include "sim/groom/cyhair.h"
+#include "sim/run/cache_files.h"
 #include "sim/run/make_solver.h"
 #include "tests/app/app_fixture.h"
 #include "tests/test_solvers.h"
@@ -328,6 +332,68 @@ TEST_CASE("Session: the timeline shows, resumes bit for bit, bakes, exports and 
   c.showA(false);
   REQUIRE(s->sync());
   CHECK(positionsShown(*s) == b15);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("Session: a shot's cache opens on the timeline and scrubs, its frames as baked",
+          "[app][session][timeline][cache][quick]") {
+  const fs::path dir = tempDir("shot");
+  SceneSetup baked;
+  baked.preset = smallPreset(60);
+  baked.preset.scene.head.amplitude = 30.0f;
+  baked.source = "<test>";
+  Options bake;
+  bake.headless = true;
+  bake.quiet = true;
+  bake.solver = "cpu";
+  bake.frames = 10;
+  bake.noRender = true;
+  bake.bake = (dir / "cache").string();
+  REQUIRE(runHeadless(bake, baked) == 0);
+
+  Options open;
+  open.fromCache = bake.bake;
+  CacheManifest m;
+  SceneSetup scene;
+  std::string error;
+  REQUIRE(sceneFromCache(open.fromCache, open, m, scene, &error));
+  std::unique_ptr<ViewerSession> s = makeSession(2);
+  REQUIRE(s->open(scene.preset, scene.baseDir, "", &error, scene.head));
+  REQUIRE(s->waitForSimFrame(2));
+  s->openShot(open.fromCache, shot_cache::completeFrames(open.fromCache, m), m.particles);
+  REQUIRE(s->sync());
+  CHECK(s->simFrame().timeline.shotFrames == 10);
+  CHECK(s->simFrame().timeline.shown == 1);  // the shot's first frame on show
+  CHECK(s->simFrame().timeline.first == 0);
+  CHECK(s->simFrame().timeline.last == 10);
+  // Scrubbed to frames the simulation never ran (it stopped at 2): the cache's positions.
+  for (long f : {7L, 10L, 4L}) {
+    s->controls().showRecorded(f);
+    REQUIRE(s->sync());
+    CHECK(s->simFrame().timeline.shown == f);
+    FrameRecording::Shown cached;
+    REQUIRE(
+        cache::readFrame(shot_cache::framePath(open.fromCache, f), f, m.particles, cached, &error));
+    const std::vector<glm::vec4> shown = positionsShown(*s);
+    REQUIRE(shown.size() == cached.positions.size());
+    bool same = true;
+    for (size_t i = 0; i < shown.size(); ++i)
+      same = same && glm::vec3(shown[i]) == cached.positions[i];
+    CHECK(same);
+  }
+  // Frame 2 is the simulation's own recording: the same as baked (one solver, deterministic).
+  s->controls().showRecorded(2);
+  REQUIRE(s->sync());
+  FrameRecording::Shown cached2;
+  REQUIRE(
+      cache::readFrame(shot_cache::framePath(open.fromCache, 2), 2, m.particles, cached2, &error));
+  const std::vector<glm::vec4> at2 = positionsShown(*s);
+  REQUIRE(at2.size() == cached2.positions.size());
+  CHECK(glm::vec3(at2[100]) == cached2.positions[100]);
+  // A frame beyond the shot: live again.
+  s->controls().showRecorded(11);
+  REQUIRE(s->sync());
+  CHECK(s->simFrame().timeline.shown == -1);
   fs::remove_all(dir);
 }
 
