@@ -116,6 +116,7 @@ bool CacheBake::start(const SceneSetup& scene, const Simulation& sim, const std:
   m.strands = sim.groom().strandCount();
   m.particles = sim.groom().pointCount();
   m.drawnStrands = sim.drawnStrands();
+  m.drawnPoints = sim.followers() ? sim.followers()->drawn.pointCount() : m.particles;
   m.groomHash = groomHash(sim.scene());
   std::string error;
   if (!shot_cache::inputsOf(m.preset, m.baseDir, m.inputs, &error) ||

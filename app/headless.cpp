@@ -370,10 +370,11 @@ int runHeadless(const Options& options, const SceneSetup& scene, const CacheMani
       progress.frame(f, simulated, *sim, capture.get(), metrics.on());
       continue;
     }
-    if (hair.on()) sim->readPositions(positions);
-    if (!options.exportSequence.empty() &&
-        !hair.writeFrame(keptIndex(options, f), sim->scene(), positions, sim->headPose()))
-      return 1;
+    if (!options.exportSequence.empty()) {
+      sim->readPositions(positions);
+      if (!hair.writeFrame(keptIndex(options, f), sim->scene(), positions, sim->headPose()))
+        return 1;
+    }
     if (capture) {
       const unsigned buffer = positionsToDraw(*sim, capture->upload());
       const double ms = capture->draw(frameViewOf(*sim, scene.preset.view, buffer, capture->width(),

@@ -104,6 +104,7 @@ bool writeManifest(const std::string& dir, const CacheManifest& m, std::string* 
        {{"strands", m.strands},
         {"particles", m.particles},
         {"drawn_strands", m.drawnStrands},
+        {"drawn_points", m.drawnPoints},
         {"hash", hex(m.groomHash)}}},
       {"frame_bytes", cache::frameBytes(m.particles)},
       {"inputs", inputs},
@@ -142,6 +143,7 @@ bool readManifest(const std::string& dir, CacheManifest& out, std::string* error
     m.strands = g.at("strands").get<size_t>();
     m.particles = g.at("particles").get<size_t>();
     m.drawnStrands = g.at("drawn_strands").get<size_t>();
+    m.drawnPoints = g.value("drawn_points", size_t(0));
     if (!unhex(g.at("hash"), m.groomHash)) return fail("groom.hash: not 16 hex digits");
     for (const json& in : doc.at("inputs")) {
       CacheInput input{in.at("key").get<std::string>(), in.at("path").get<std::string>(), 0};

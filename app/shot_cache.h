@@ -33,6 +33,7 @@ struct CacheManifest {
   long frames = 0;         // the frames the bake runs: 1..frames
   int keyframeEvery = 10;  // a resume state every this many frames, and at the last
   size_t strands = 0, particles = 0, drawnStrands = 0;
+  size_t drawnPoints = 0;  // the drawn strands' points (a guided groom's followers: not cached)
   uint64_t groomHash = 0;  // groomHash (sim/run/grown_scene.h) of the scene grown
   std::vector<CacheInput> inputs;
 };
