@@ -21,7 +21,6 @@
 #include "sim/core/config.h"
 #include "shaders/sim/shared_constants.glsl"
 #include "sim/groom/groom_file.h"
-#include "sim/groom/hair_sequence.h"
 #include "sim/run/make_solver.h"
 #include "sim/run/simulation.h"
 #include "sim/solver/stiffness.h"
