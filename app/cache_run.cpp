@@ -26,10 +26,9 @@ void clearCacheFiles(const std::string& dir) {
   for (const fs::path& sub : {fs::path(dir), fs::path(dir) / "frames"}) {
     for (const fs::directory_entry& e : fs::directory_iterator(sub, ec)) {
       const std::string name = e.path().filename().string();
-      const bool ours =
-          (name.rfind("frame_", 0) == 0 && e.path().string().find(".bin") != std::string::npos) ||
-          name.rfind(shot_cache::kStateName, 0) == 0 ||
-          name.rfind(shot_cache::kManifestName, 0) == 0;
+      const bool ours = (name.rfind("frame_", 0) == 0 && name.find(".bin") != std::string::npos) ||
+                        name.rfind(shot_cache::kStateName, 0) == 0 ||
+                        name.rfind(shot_cache::kManifestName, 0) == 0;
       if (ours && e.is_regular_file(ec)) fs::remove(e.path(), ec);
     }
   }
@@ -80,7 +79,9 @@ bool sceneFromCache(const std::string& dir, const Options& options, CacheManifes
   Preset set = manifest.preset;
   for (const auto& [key, value] : options.sets)
     if (const PresetParam* p = findParam(key)) paramFromText(*p, set, value);  // applySets checks
-  set.view = manifest.preset.view;
+  set.view = manifest.preset.view;  // the look, the camera, the light: drawn as asked
+  set.name = manifest.preset.name;
+  set.description = manifest.preset.description;
   std::string refused;
   for (const auto& [key, value] : options.sets) {
     const PresetParam* p = findParam(key);
@@ -242,12 +243,11 @@ int runFromCache(const Options& options) {
     return 2;
   }
   const bool render = !options.noRender;
-  VideoOutput video(options);
-  if (render && !options.video.empty() && !video.open(double(scene.preset.scene.sim.dt))) return 1;
-  const ImageFiles images(options);
-  if (render && images.on() && !images.makeDirectory()) return 1;
-  HairExport hair(options);
-  if (!hair.prepare()) return 1;
+  FrameOutputs out(options);
+  if (!out.open(render, double(scene.preset.scene.sim.dt))) return 1;
+  VideoOutput& video = out.video;
+  const ImageFiles& images = out.images;
+  HairExport& hair = out.hair;
   std::unique_ptr<gl::HeadlessContext> context;
   if (render) {
     context = openContext(options, true);

@@ -119,6 +119,12 @@ const Groom& HairExport::strands(const GrownScene& scene, const std::vector<glm:
   return scene.followers->drawn;
 }
 
+bool FrameOutputs::open(bool render, double frameDt) {
+  if (render && !options.video.empty() && !video.open(frameDt)) return false;
+  if (render && images.on() && !images.makeDirectory()) return false;
+  return hair.prepare();
+}
+
 std::unique_ptr<gl::HeadlessContext> openContext(const Options& options, bool render) {
   std::string error;
   std::unique_ptr<gl::HeadlessContext> context = gl::HeadlessContext::create(&error);

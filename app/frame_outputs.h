@@ -90,6 +90,20 @@ class HairExport {
   long exported_ = 0;
 };
 
+// Every output of a run's kept frames, opened before anything is simulated or drawn, so that a
+// missing ffmpeg or an unwritable folder fails at once.
+struct FrameOutputs {
+  explicit FrameOutputs(const Options& options)
+      : options(options), video(options), images(options), hair(options) {}
+  // With `render`, the video (of frames `frameDt` apart) and the PNGs' folder; the sequence's
+  // folder in any case. False, having said why.
+  bool open(bool render, double frameDt);
+  const Options& options;
+  VideoOutput video;
+  ImageFiles images;
+  HairExport hair;
+};
+
 // The offscreen GL context for both the GPU solver and the renderer; null, having said why,
 // when there is none or --require-gpu refuses it. `render`: it is wanted for drawing.
 std::unique_ptr<gl::HeadlessContext> openContext(const Options& options, bool render);

@@ -301,13 +301,11 @@ int runHeadless(const Options& options, const SceneSetup& scene, const CacheMani
     std::fprintf(stderr, "csmhair: --video needs frames; drop --no-render\n");
     return 2;
   }
-  // Before anything is simulated: a missing ffmpeg or an unwritable directory fails at once.
-  VideoOutput video(options);
-  if (render && !options.video.empty() && !video.open(double(scene.preset.scene.sim.dt))) return 1;
-  const ImageFiles images(options);
-  if (render && images.on() && !images.makeDirectory()) return 1;
-  HairExport hair(options);
-  if (!hair.prepare()) return 1;
+  FrameOutputs out(options);
+  if (!out.open(render, double(scene.preset.scene.sim.dt))) return 1;
+  VideoOutput& video = out.video;
+  const ImageFiles& images = out.images;
+  HairExport& hair = out.hair;
   CacheBake bake(options);
 
   // A resumed bake runs on the solver that baked it.

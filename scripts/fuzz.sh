@@ -2,7 +2,7 @@
 # Fuzzes the readers of everything csmhair takes from outside (tests/fuzz: presets, cyHair,
 # TressFX, OBJ heads, OBJ hair curves) with libFuzzer under ASan, LeakSanitizer and UBSan, in build-fuzz/
 # (clang; configured and built here when needed, clang and libFuzzer installed when missing).
-#   scripts/fuzz.sh short [SECONDS]          CI: every target SECONDS (20) on a copy of its
+#   scripts/fuzz.sh short [SECONDS]          CI: every target SECONDS (12) on a copy of its
 #                                            seeds, after every regression input once; as many
 #                                            targets at once as there are cores (FUZZ_PARALLEL)
 #   scripts/fuzz.sh long [SECONDS|-runs=N]   every target for SECONDS or N runs (default
@@ -27,10 +27,10 @@ case "$mode" in
   short)
     # One target a core at once (a target is one process, libFuzzer's default), each its own
     # SECONDS. (All five at once on two cores, for 75 s of the clock, ran 10-27 % fewer
-    # executions a target than these three rounds of 30 s: five processes contend. 20 s a target
-    # since the farm's tests joined CI: the long run, scripts/fuzz.sh long, is where the corpus
-    # grows.)
-    seconds=${2:-20}
+    # executions a target than these three rounds of 30 s: five processes contend. 12 s a target
+    # since the farm's tests joined CI, to keep it under 15 minutes: the long run,
+    # scripts/fuzz.sh long, is where the corpus grows.)
+    seconds=${2:-12}
     limit=(-max_total_time="$seconds") ;;
   long)
     arg=${2:--runs=10000000}
