@@ -5,13 +5,10 @@
 #include <cstring>
 #include <filesystem>
 
-#include <nlohmann/json.hpp>
-
 #include "app/frame_outputs.h"
 #include "app/frame_view.h"
 #include "app/import_progress.h"
 #include "app/params.h"
-#include "app/preset.h"
 #include "sim/run/cache_files.h"
 
 namespace csm {
