@@ -102,6 +102,9 @@ bool CacheBake::start(const SceneSetup& scene, const Simulation& sim, const std:
     std::fprintf(stderr, "csmhair: --bake %s: %s\n", dir_.c_str(), why.c_str());
     return false;
   };
+  std::error_code ec;
+  if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec))
+    return fail("a file, not a folder: give a new or empty folder");
   if (!shot_cache::isCache(dir_) && !emptyOrMissing(dir_))
     return fail("the folder holds files and no cache: give a new or empty folder");
   clearCacheFiles(dir_);

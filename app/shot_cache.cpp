@@ -120,6 +120,10 @@ bool readManifest(const std::string& dir, CacheManifest& out, std::string* error
     if (error) *error = path + ": " + why;
     return false;
   };
+  if (!isCache(dir)) {
+    if (error) *error = dir + ": not a shot's cache (no folder with a " + kManifestName + ")";
+    return false;
+  }
   const std::optional<std::vector<std::byte>> bytes =
       io::detail::readFileBytes(path, kMaxManifestBytes, error);
   if (!bytes) return false;

@@ -102,6 +102,10 @@ expect 2 "--frames 20-11: the first frame is after the last" -- --headless --fro
 expect 2 "--frames 0-3: frames count from 1" -- --headless --from-cache "$c" --frames 0-3
 expect 2 "--frames 15-21: the cache $c holds frames 1-20" -- --headless --from-cache "$c" --frames 15-21
 expect 2 "--resume goes on with a bake" -- --headless --resume
+expect 2 "$tmp/none: not a shot's cache" -- --headless --from-cache "$tmp/none" --frames 1-2
+touch "$tmp/a_file"
+expect 1 "--bake $tmp/a_file: a file, not a folder" -- --headless --no-render --frames 1 \
+  --set hairstyle.strands=20 --bake "$tmp/a_file"
 truncate -s 1000 "$c/frames/frame_00015.bin"
 expect 2 "holds frames 1-14 of the bake's 20" -- --headless --from-cache "$c" --frames 11-20 --out "$tmp/r"
 cp "$tmp/cpu/cache/frames/frame_00016.bin" "$c/frames/frame_00015.bin"
