@@ -46,9 +46,18 @@ for _ in $(seq 1200); do
      [ -f "$tmp/shot/frames/frame_00016.png" ]; then
     if [ -f "$tmp/shot/frames/frame_00030.png" ]; then break; fi  # the chunk ended first
     scontrol requeue "${render}_2" && requeued=1
-    # Slurm holds a requeued task a couple of minutes; it may start again now.
-    for _ in $(seq 50); do
-      scontrol update JobId="${render}_2" StartTime=now 2>/dev/null && break
+    # Slurm holds a requeued task a couple of minutes (Reason=BeginTime); once it is held, it
+    # may start again now. Until it runs again (or 30 s).
+    pending=0
+    for _ in $(seq 300); do
+      st=$(scontrol show job "${render}_2" 2>/dev/null)
+      if grep -q 'JobState=PENDING' <<<"$st"; then
+        pending=1
+        grep -q 'Reason=BeginTime' <<<"$st" &&
+          scontrol update JobId="${render}_2" StartTime=now 2>/dev/null
+      elif [ $pending -eq 1 ]; then
+        break
+      fi
       sleep 0.1
     done
     break
