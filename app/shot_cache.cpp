@@ -8,6 +8,7 @@
 
 #include "app/preset.h"
 #include "sim/base/file_io.h"
+#include "sim/base/fnv.h"
 #include "sim/run/cache_files.h"
 
 namespace csm::shot_cache {
@@ -53,9 +54,7 @@ bool fileHash(const std::string& path, uint64_t& out, std::string* error) {
   const std::optional<std::vector<std::byte>> bytes =
       io::detail::readFileBytes(path, kMaxInputBytes, error);
   if (!bytes) return false;
-  uint64_t h = 14695981039346656037ull;
-  for (std::byte b : *bytes) h = (h ^ unsigned(b)) * 1099511628211ull;
-  out = h;
+  out = fnv1a(bytes->data(), bytes->size());
   return true;
 }
 

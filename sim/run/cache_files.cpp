@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/base/file_io.h"
+#include "sim/base/fnv.h"
 #include "sim/base/state_bytes.h"
 
 namespace csm::cache {
@@ -19,13 +20,12 @@ constexpr size_t kStateHashAt = 16;
 // Larger than any scene the solvers take (kMaxParticles of 16 floats and more a particle).
 constexpr uint64_t kMaxStateBytes = uint64_t(16) << 30;
 
-uint64_t fnv1a(std::span<const std::byte> bytes, size_t skipAt) {
-  uint64_t h = 14695981039346656037ull;
-  for (size_t i = 0; i < bytes.size(); ++i) {
-    const bool skipped = i >= skipAt && i < skipAt + 8;
-    h = (h ^ (skipped ? 0u : unsigned(bytes[i]))) * 1099511628211ull;
-  }
-  return h;
+// The file's hash, its hash field (8 bytes at `skipAt`) read as 0.
+uint64_t fileHash(std::span<const std::byte> bytes, size_t skipAt) {
+  const uint64_t zero = 0;
+  uint64_t h = fnv1a(bytes.data(), skipAt);
+  h = fnv1a(&zero, sizeof zero, h);
+  return fnv1a(bytes.data() + skipAt + 8, bytes.size() - skipAt - 8, h);
 }
 
 void putPose(StateWriter& w, const Pose& p) {
@@ -49,7 +49,7 @@ void putHeader(StateWriter& w, const char (&magic)[8]) {
 }
 
 void sealHash(std::vector<std::byte>& bytes, size_t at) {
-  const uint64_t h = fnv1a(bytes, at);
+  const uint64_t h = fileHash(bytes, at);
   std::memcpy(bytes.data() + at, &h, sizeof h);
 }
 
@@ -74,7 +74,7 @@ bool checkHeader(const std::string& path, const std::vector<std::byte>& bytes,
 
 bool checkHash(const std::string& path, const std::vector<std::byte>& bytes, size_t hashAt,
                std::string* error) {
-  if (io::detail::loadLE<uint64_t>(bytes, hashAt) == fnv1a(bytes, hashAt)) return true;
+  if (io::detail::loadLE<uint64_t>(bytes, hashAt) == fileHash(bytes, hashAt)) return true;
   if (error)
     *error = io::detail::errorAt(path, hashAt,
                                  "the file's bytes do not match its hash: it was changed or "

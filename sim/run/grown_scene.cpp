@@ -1,8 +1,6 @@
 #include "sim/run/grown_scene.h"
 
-#include <cstring>
-#include <span>
-
+#include "sim/base/fnv.h"
 #include "sim/run/scene_checks.h"
 
 namespace csm {
@@ -58,24 +56,20 @@ FollowerStats drawnPositions(const GrownScene& scene, const std::vector<glm::vec
 
 namespace {
 
-// FNV-1a, 64 bits, over the bytes of each array in turn (and its length, so that two arrays
-// cannot trade elements).
+// FNV-1a over the bytes of each array in turn (and its length, so that two arrays cannot trade
+// elements).
 class Hash {
  public:
   template <class T>
   void add(const std::vector<T>& values) {
     const uint64_t n = values.size();
-    bytes(&n, sizeof n);
-    if (!values.empty()) bytes(values.data(), values.size() * sizeof(T));
+    h_ = fnv1a(&n, sizeof n, h_);
+    if (!values.empty()) h_ = fnv1a(values.data(), values.size() * sizeof(T), h_);
   }
   uint64_t value() const { return h_; }
 
  private:
-  void bytes(const void* data, size_t size) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < size; ++i) h_ = (h_ ^ p[i]) * 1099511628211ull;
-  }
-  uint64_t h_ = 14695981039346656037ull;
+  uint64_t h_ = kFnv1aOffset;
 };
 
 void addGroom(Hash& h, const Groom& g) {
