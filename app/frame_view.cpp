@@ -1,5 +1,9 @@
 #include "app/frame_view.h"
 
+#include <algorithm>
+
+#include "render/camera.h"
+
 namespace csm {
 
 FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
@@ -23,6 +27,18 @@ FrameView frameViewOf(const Config& scene, const GrownScene& grown, long generat
   v.width = width;
   v.height = height;
   v.targetFramebuffer = framebuffer;
+  if (!scene.motion.clip.empty()) {
+    // A clip carries the character through the world: the camera follows its horizontal travel
+    // (the neck's), so it stays in view as it walks and the hair's motion reads against it.
+    const glm::dvec3 pivot(scene.head.pivot);
+    glm::vec3 travel(head.apply(pivot) - pivot);
+    travel.y = 0.0f;
+    CameraConfig camera = view.camera;
+    camera.target += travel;
+    v.useCameraMatrices = true;
+    v.view = cameraView(camera);
+    v.projection = cameraProjection(camera, float(width) / float(std::max(height, 1)));
+  }
   return v;
 }
 

@@ -68,6 +68,8 @@ void sayScene(const Options& options, const SceneSetup& scene, const Simulation&
         scene.source.c_str(), sim.counts().strands, sim.counts().particles,
         std::string(sim.solverName()).c_str(), variant.empty() ? "" : " (", variant.c_str(),
         variant.empty() ? "" : ")", frames, stiffnessText(stiffness).c_str());
+  if (sim.clip() && !options.quiet)
+    std::fprintf(stderr, "csmhair: motion: %s\n", sim.clip()->summary().c_str());
   if (const std::string groom = groomReportText(sim.groomReport()); !groom.empty())
     std::fprintf(stderr, "csmhair: warning: %s\n", groom.c_str());
   if (const std::string warning = stiffnessWarning(stiffness); !warning.empty())
@@ -123,6 +125,24 @@ class MetricsOutput {
                            {"deepest_inside_m", stats.deepest}};
     }
     meta["head_carried_frames"] = sim.carriedFrames();
+    meta["root_peak_speed"] = sim.peakRootSpeed();
+    meta["rigid_peak_speed"] = sim.peakRigidSpeed();
+    if (const MotionClip* clip = sim.clip()) {
+      const ClipFacts& f = clip->facts();
+      meta["motion"] = {{"clip", scene.preset.scene.motion.clip},
+                        {"frames", f.frames},
+                        {"frame_time", f.frameTime},
+                        {"unit", f.unit},
+                        {"scale", f.scale},
+                        {"up", std::string(1, f.up)},
+                        {"facing", f.facing},
+                        {"head_joint", f.headJoint},
+                        {"chest_joint", f.chestJoint},
+                        {"travel_m", f.travel},
+                        {"clip_head_peak_speed", f.peakHeadSpeed},
+                        {"clip_cuts", f.cuts.size()},
+                        {"cuts_carried", sim.clipCuts()}};
+    }
     if (renderer) {
       meta["drawn_strands"] = drawnStrandCount(sim.drawnStrands(), scene.preset.view.render);
       meta["render_size"] = {options_.width, options_.height};
@@ -226,6 +246,11 @@ class RunWarnings {
                      "collision grid's cells or not finite: they had no strand contacts\n",
                      (unsigned long long)seen_.oversize);
     }
+    if (sim.clipCuts() > 0)
+      std::fprintf(stderr,
+                   "csmhair: note: the clip cut %ld times (a frame further from the one before "
+                   "than a person moves): the hair went with the head over each cut\n",
+                   sim.clipCuts());
     if (sim.carriedFrames() > 0)
       std::fprintf(stderr,
                    "csmhair: note: in %ld frames a move of the head moved its roots faster than "
@@ -319,7 +344,10 @@ int runHeadless(const Options& options, const SceneSetup& scene, const CacheMani
   int status = 0;
   std::unique_ptr<Simulation> sim = loadSimulation(run, scene, &status);
   if (!sim) return status;
-  long frames = options.frames >= 0 ? options.frames : 60;
+  // A clip plays once through unless --frames says otherwise.
+  long frames = options.frames >= 0     ? options.frames
+                : sim->clipFrames() > 0 ? sim->clipFrames()
+                                        : 60;
   if (resumed && options.frames < 0) frames = resumed->frames;
   MetricsOutput metrics(options);
   metrics.setStartup(

@@ -8,6 +8,7 @@
 #include "app/params.h"
 #include "app/preset.h"
 #include "sim/head/head_model.h"
+#include "sim/motion/clip.h"
 #ifdef CSM_HAVE_VIEWER
 #include "app/viewer.h"
 #endif
@@ -39,6 +40,12 @@ int validate(const std::vector<std::string>& files) {
     std::string headError;
     if (csm::loadPreset(f, c, errors) && !csm::HeadModel::build(c.scene, &headError))
       errors.messages.push_back(f + ": head.mesh: " + headError);
+    // And the motion clip, relative to the preset as the scene reads it.
+    std::string clipError;
+    if (errors.messages.empty() && !c.scene.motion.clip.empty() &&
+        !csm::MotionClip::load(c.scene.motion, c.scene.head.meshDir, glm::dvec3(c.scene.head.pivot),
+                               &clipError))
+      errors.messages.push_back(f + ": " + clipError);
     if (errors.messages.empty()) {
       std::printf("%s: ok (%d strands)\n", f.c_str(), c.scene.hairstyle.strands);
     } else {

@@ -5,6 +5,7 @@
 #include "app/params.h"
 #include "app/preset.h"
 #include "sim/groom/groom_file.h"
+#include "sim/motion/clip.h"
 #include "sim/run/scene_checks.h"
 
 namespace csm {
@@ -74,6 +75,13 @@ bool applySets(const std::vector<std::pair<std::string, std::string>>& sets, Sce
     if (!out.head)
       msgs +=
           out.source + (sets.empty() ? ": " : " with --set: ") + "head.mesh: " + headError + "\n";
+  }
+  if (msgs.empty() && !out.preset.scene.motion.clip.empty()) {
+    // The clip too, before anything is simulated: its file and line when bad.
+    std::string clipError;
+    if (!MotionClip::load(out.preset.scene.motion, out.baseDir,
+                          glm::dvec3(out.preset.scene.head.pivot), &clipError))
+      msgs += out.source + (sets.empty() ? ": " : " with --set: ") + clipError + "\n";
   }
   if (!msgs.empty()) {
     if (errors) *errors = msgs;

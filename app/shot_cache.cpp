@@ -66,6 +66,7 @@ bool inputsOf(const Preset& preset, const std::string& baseDir, std::vector<Cach
       {"hairstyle.file",
        c.hairstyle.file.empty() ? "" : resolveRelative(baseDir, c.hairstyle.file)},
       {"head.mesh", c.head.mesh.empty() ? "" : resolveRelative(c.head.meshDir, c.head.mesh)},
+      {"motion.clip", c.motion.clip.empty() ? "" : resolveRelative(baseDir, c.motion.clip)},
   };
   for (const auto& [key, path] : files) {
     if (path.empty()) continue;

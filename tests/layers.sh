@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The modules point one way (docs/ARCHITECTURE.md section 2): gl -> sim -> render -> app, tools/
-# beside app, and inside sim/ its layers, bottom to top: base, core, param, head, groom, solver,
+# beside app, and inside sim/ its layers, bottom to top: base, core, motion, param, head, groom, solver,
 # gpu, run, verify. Fails on an include against that direction (a folder includes only folders
 # below it or itself), on sim/verify in the app or the renderer, on sim/run in the renderer, on
 # sim/gpu in the app (it has the solver factory), on GL outside sim/gpu, on the CPU library of
@@ -29,7 +29,7 @@ check gl '#include "(sim|render|app|tools)/' "gl/ includes nothing above it"
 check sim '#include "(render|app|tools)/' "sim/ includes neither render/, app/ nor tools/"
 check render '#include "(app|tools)/' "render/ includes neither app/ nor tools/"
 # Inside sim/: each layer includes only the layers below it and itself.
-layers=(base core param head groom solver gpu run verify)
+layers=(base core motion param head groom solver gpu run verify)
 for i in "${!layers[@]}"; do
   above=("${layers[@]:i+1}")
   [ ${#above[@]} -eq 0 ] && continue

@@ -24,7 +24,8 @@ class WrappedSolver : public Solver, public SolverState, public SolverDiagnostic
   void setHead(std::shared_ptr<const HeadModel> head) override { inner_.setHead(std::move(head)); }
   void reset(const Groom& g, const Config& c, const Pose& h) override { inner_.reset(g, c, h); }
   void setConfig(const Config& c) override { inner_.setConfig(c); }
-  void stepFrame(const Pose& from, const Pose& to) override { inner_.stepFrame(from, to); }
+  using Solver::stepFrame;
+  void stepFrame(const FramePath& path) override { inner_.stepFrame(path); }
   SolverCounts counts() const override { return inner_.counts(); }
   double time() const override { return inner_.time(); }
   SolverState& state() override { return *this; }
@@ -66,9 +67,10 @@ class NanAfter final : public WrappedSolver {
     frames_ = 0;
     inner_.reset(g, c, h);
   }
-  void stepFrame(const Pose& from, const Pose& to) override {
+  using Solver::stepFrame;
+  void stepFrame(const FramePath& path) override {
     ++frames_;
-    inner_.stepFrame(from, to);
+    inner_.stepFrame(path);
   }
   void readPositions(std::vector<glm::vec4>& out) override {
     inner_.readPositions(out);
@@ -97,11 +99,12 @@ class GatedSolver final : public WrappedSolver {
   };
   explicit GatedSolver(std::shared_ptr<Gate> gate) : gate_(std::move(gate)) {}
   std::string_view name() const override { return "gated"; }
-  void stepFrame(const Pose& from, const Pose& to) override {
+  using Solver::stepFrame;
+  void stepFrame(const FramePath& path) override {
     const long n = ++gate_->started;
     std::unique_lock lock(gate_->m);
     gate_->cv.wait(lock, [&] { return gate_->allowed >= n; });
-    inner_.stepFrame(from, to);
+    inner_.stepFrame(path);
   }
 
  private:

@@ -41,6 +41,10 @@ enum class HeadMotion : int { None = 0, Nod, Shake, Spin, Sway, Bounce };
 // What the head is, for collision and drawing: the built-in mannequin's signed distance field
 // (sim/head/head_model.h), or the spheres of head.spheres, as the paper does.
 enum class HeadShape : int { Sdf = 0, Spheres = 1 };
+// A motion clip's up axis and the way its character faces at its first frame, in the clip's own
+// axes: inferred from the skeleton (Auto), or said.
+enum class ClipUp : int { Auto = 0, Y, Z, X };
+enum class ClipFacing : int { Auto = 0, PlusZ, MinusZ, PlusX, MinusX, PlusY, MinusY };
 // How a strand-contact iteration moves a segment (sim/solver/contacts.h): sweep takes its pairs in
 // order, each from where the ones before it left the segment; jacobi moves it by the mean of
 // what its pairs ask from where the iteration began.
@@ -117,6 +121,18 @@ struct HeadConfig {
   float amplitude = 20.0f;              // degrees (nod, shake, sway) or centimetres (bounce)
   float frequency = 0.5f;               // Hz
   glm::vec3 pivot{0.0f, -0.15f, 0.0f};  // the neck: head rotations turn about it
+};
+
+// A motion-capture clip (BVH) that moves the character instead of head.motion (sim/motion).
+struct MotionConfig {
+  std::string clip;    // a BVH file, relative to the preset; empty = head.motion
+  float scale = 0.0f;  // metres per clip unit; 0 infers it from the skeleton's height
+  ClipUp up = ClipUp::Auto;
+  ClipFacing facing = ClipFacing::Auto;
+  std::string headJoint;   // empty: found by its usual names (Head, ...)
+  std::string chestJoint;  // empty: Chest, Spine2, Spine1, ...
+  bool loop = true;        // past its end the clip starts again; else it holds its last frame
+  bool inPlace = false;    // the clip's horizontal travel removed
 };
 
 struct SimConfig {
@@ -202,6 +218,7 @@ struct WindConfig {
 struct Config {
   HairstyleConfig hairstyle;
   HeadConfig head;
+  MotionConfig motion;
   SimConfig sim;
   CollisionConfig collision;
   WindConfig wind;

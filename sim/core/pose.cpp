@@ -1,5 +1,6 @@
 #include "sim/core/pose.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -23,6 +24,15 @@ Pose inverse(const Pose& p) {
 
 Pose interpolate(const Pose& a, const Pose& b, double s) {
   return {glm::slerp(a.rotation, b.rotation, s), glm::mix(a.translation, b.translation, s)};
+}
+
+Pose FramePath::at(double s) const {
+  if (keys.size() < 2) return keys.empty() ? Pose{} : keys.front();
+  if (!(s > 0.0)) return keys.front();
+  if (s >= 1.0) return keys.back();
+  const double u = s * double(keys.size() - 1);
+  const size_t k = std::min(keys.size() - 2, size_t(u));
+  return interpolate(keys[k], keys[k + 1], u - double(k));
 }
 
 Pose rotationAbout(const glm::dvec3& pivot, const glm::dvec3& axis, double degrees) {

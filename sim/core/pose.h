@@ -29,6 +29,17 @@ Pose interpolate(const Pose& a, const Pose& b, double s);
 // A rotation of `degrees` about `axis` through `pivot`.
 Pose rotationAbout(const glm::dvec3& pivot, const glm::dvec3& axis, double degrees);
 
+// Where the head is over one frame: keys at evenly spaced fractions of it, the first where the
+// frame starts and the last where it ends (two keys: the frame's ends; a motion clip gives more,
+// sampled between its frames, so every substep of a frame sees the clip where it is then).
+struct FramePath {
+  std::vector<Pose> keys;
+  const Pose& from() const { return keys.front(); }
+  const Pose& to() const { return keys.back(); }
+  // At fraction s (0..1) of the frame: the keys around it interpolated.
+  Pose at(double s) const;
+};
+
 // The preset's head motion at time t (seconds).
 Pose headPose(const HeadConfig& head, double t);
 

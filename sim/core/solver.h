@@ -70,7 +70,10 @@ class Solver {
   virtual void setConfig(const Config& config) = 0;
   // One frame of config.sim.dt seconds, the head moving from `from` to `to`: sim.substeps steps,
   // or with the calibrated stiffness model as many as planFrame (sim/solver/stiffness.h) asks.
-  virtual void stepFrame(const Pose& from, const Pose& to) = 0;
+  // The head follows `path` through the frame: each step's pose is the path's at its end.
+  virtual void stepFrame(const FramePath& path) = 0;
+  // A frame whose head moves from `from` to `to`, slerped between.
+  void stepFrame(const Pose& from, const Pose& to) { stepFrame(FramePath{{from, to}}); }
 
   virtual SolverCounts counts() const = 0;
   virtual double time() const = 0;

@@ -241,14 +241,14 @@ void GpuSolver::uploadHeadField() {
   uploadedHead_ = headModel_.shared();  // keeps the field uploaded alive, so its address names it
 }
 
-void GpuSolver::stepFrame(const Pose& from, const Pose& to) {
+void GpuSolver::stepFrame(const FramePath& path) {
   const FramePlan plan = planFrame(config_.sim, regions_.planRate);
   const int substeps = plan.substeps;
   const double h = plan.h;
   std::vector<Pose> poses(substeps), before(substeps);
   ++framesSinceMeasure_;
   for (int k = 0; k < substeps; ++k) {
-    poses[k] = interpolate(from, to, double(k + 1) / substeps);
+    poses[k] = path.at(double(k + 1) / substeps);
     before[k] = k == 0 ? head_ : poses[k - 1];
   }
   if (hair_.particles == 0 || !failure_.empty()) {

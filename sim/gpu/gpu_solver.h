@@ -59,7 +59,8 @@ class GpuSolver final : public Solver, public SolverState, public SolverDiagnost
   void setHead(std::shared_ptr<const HeadModel> head) override { headModel_.hand(std::move(head)); }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setConfig(const Config& config) override;
-  void stepFrame(const Pose& from, const Pose& to) override;
+  using Solver::stepFrame;
+  void stepFrame(const FramePath& path) override;
   SolverCounts counts() const override { return {hair_.strands, hair_.particles}; }
   double time() const override { return time_; }
   SolverState& state() override { return *this; }

@@ -173,6 +173,39 @@ std::vector<Param<Config>> build() {
             "Motion frequency (Hz).", Effect::Live),
       param("head.pivot", "Pivot", "Head", &Config::head, &HeadConfig::pivot, -1, 1,
             "Point in the head frame that rotations turn about (the neck).", Effect::Live),
+      param("motion.clip", "Clip", "Motion", &Config::motion, &MotionConfig::clip, 0, 0,
+            "A motion-capture clip (BVH) that moves the character: its head and chest joints "
+            "drive the head and the torso, its travel carries them through the world. Relative "
+            "paths are relative to the preset; empty = head.motion.",
+            Effect::Rebuild),
+      param("motion.scale", "Clip scale", "Motion", &Config::motion, &MotionConfig::scale, 0.0,
+            100.0,
+            "Metres per clip unit (0.01 for centimetres, 0.0254 for inches); 0 infers it from the "
+            "skeleton's height (a standing adult).",
+            Effect::Rebuild)
+          .logScale(),
+      param("motion.up", "Clip up axis", "Motion", &Config::motion, &MotionConfig::up, 0, 0,
+            "The clip's up axis; auto infers it from the skeleton (the head above the hips).",
+            Effect::Rebuild)
+          .choices({"auto", "y", "z", "x"}),
+      param("motion.facing", "Clip facing", "Motion", &Config::motion, &MotionConfig::facing, 0, 0,
+            "Where the clip's character faces at its first frame, in the clip's axes; auto infers "
+            "it from the left and right joints. It is turned to face +z, as the head does.",
+            Effect::Rebuild)
+          .choices({"auto", "+z", "-z", "+x", "-x", "+y", "-y"}),
+      param("motion.head_joint", "Head joint", "Motion", &Config::motion, &MotionConfig::headJoint,
+            0, 0, "The clip's joint that moves the head; empty finds Head (or Neck) by name.",
+            Effect::Rebuild),
+      param(
+          "motion.chest_joint", "Chest joint", "Motion", &Config::motion, &MotionConfig::chestJoint,
+          0, 0,
+          "The clip's joint that moves the torso; empty finds Chest, Spine2, Spine1, ... by name.",
+          Effect::Rebuild),
+      param("motion.loop", "Loop", "Motion", &Config::motion, &MotionConfig::loop, 0, 1,
+            "Past its end the clip starts again (its travel carried on); off holds its last frame.",
+            Effect::Live),
+      param("motion.in_place", "In place", "Motion", &Config::motion, &MotionConfig::inPlace, 0, 1,
+            "Removes the clip's horizontal travel: the character moves on the spot.", Effect::Live),
       param("sim.dt", "Frame time step", "Simulation", &Config::sim, &SimConfig::dt, 1e-4, 0.1,
             "Simulated seconds per frame; each frame is split into substeps.", Effect::Live)
           .logScale(),

@@ -19,6 +19,11 @@ bool growScene(const Config& config, const std::string& baseDir, const HeadModel
     if (error) *error = "head.mesh: " + headError;
     return false;
   }
+  std::shared_ptr<const MotionClip> clip;
+  if (!config.motion.clip.empty()) {
+    clip = MotionClip::load(config.motion, baseDir, glm::dvec3(config.head.pivot), error);
+    if (!clip) return false;
+  }
   Groom groom;
   GroomReport report;
   if (!buildGroom(config, *head, baseDir, groom, error, &report, progress)) return false;
@@ -36,6 +41,7 @@ bool growScene(const Config& config, const std::string& baseDir, const HeadModel
   out.groom = std::make_shared<const Groom>(std::move(groom));
   out.followers = std::move(followers);
   out.report = report;
+  out.clip = std::move(clip);
   return true;
 }
 

@@ -19,6 +19,7 @@
 #include "sim/groom/guides.h"
 #include "sim/groom/scene_groom.h"
 #include "sim/head/head_model.h"
+#include "sim/motion/clip.h"
 
 namespace csm {
 
@@ -27,14 +28,15 @@ struct GrownScene {
   std::shared_ptr<const Groom> groom = std::make_shared<const Groom>();  // the simulated strands
   std::shared_ptr<const FollowerBinding> followers;  // null when every strand is simulated
   GroomReport report;
+  std::shared_ptr<const MotionClip> clip;  // motion.clip, read; null without one
   size_t drawnStrands() const {
     return followers ? followers->drawn.strandCount() : groom->strandCount();
   }
 };
 
 // Grows the hair `config` asks for: the head (one that `known` already holds is not read again),
-// the groom (sim/groom/scene_groom.h), the guides and their followers. False, saying why, when
-// the machine cannot hold the scene or a file cannot be read.
+// the groom (sim/groom/scene_groom.h), the guides and their followers, the motion clip. False,
+// saying why, when the machine cannot hold the scene or a file cannot be read.
 bool growScene(const Config& config, const std::string& baseDir, const HeadModel* known,
                const ImportProgress& progress, GrownScene& out, std::string* error);
 

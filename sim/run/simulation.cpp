@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 
@@ -54,6 +55,7 @@ bool Simulation::setConfig(const Config& config, std::string* error) {
     startingSolver();
     solver_->setHead(scene_.head);
     solver_->reset(*scene_.groom, config_, lastPose_);
+    startMoving();
     restartSamples();
     return solverReady(error);
   }
@@ -82,15 +84,20 @@ void Simulation::boundRoots() {
   for (size_t s = 0; s < g.strandCount(); ++s)
     rootRadius_ =
         std::max(rootRadius_, glm::length(glm::dvec3(g.points[g.first[s]]) - rootCentre_));
+  hairRadius_ = rootRadius_;
+  for (const glm::vec3& p : g.points)
+    hairRadius_ = std::max(hairRadius_, glm::length(glm::dvec3(p) - rootCentre_));
+}
+
+double Simulation::rootReach(const Pose& from, const Pose& to, double radius) const {
+  // The centre's displacement plus the radius times the turn's chord, 2 sin(angle / 2).
+  const glm::dquat turn = to.rotation * glm::conjugate(from.rotation);
+  const double halfSine = std::min(1.0, glm::length(glm::dvec3(turn.x, turn.y, turn.z)));
+  return glm::length(to.apply(rootCentre_) - from.apply(rootCentre_)) + 2.0 * halfSine * radius;
 }
 
 Pose Simulation::jumpOf(const Pose& from, const Pose& to) const {
-  // How far a root moves at most: the centre's displacement plus the radius times the turn's
-  // chord, 2 sin(angle / 2).
-  const glm::dquat turn = to.rotation * glm::conjugate(from.rotation);
-  const double halfSine = std::min(1.0, glm::length(glm::dvec3(turn.x, turn.y, turn.z)));
-  const double reach =
-      glm::length(to.apply(rootCentre_) - from.apply(rootCentre_)) + 2.0 * halfSine * rootRadius_;
+  const double reach = rootReach(from, to, rootRadius_);
   const double allowed = kMaxRootSpeed * double(config_.sim.dt);
   if (!(reach > allowed)) return Pose{};
   // Past the bound: how far the farthest root does move.
@@ -109,15 +116,79 @@ void Simulation::reset() {
   time_ = 0.0;
   frame_ = 0;
   carried_ = 0;
+  cuts_ = 0;
+  peakRootSpeed_ = 0.0;
+  peakRigidSpeed_ = 0.0;
   lastPose_ = headPoseAt(0.0);
   lastUserPose_ = userPose_;
   solver_->setHead(scene_.head);
   solver_->reset(*scene_.groom, config_, lastPose_);
+  startMoving();
   restartSamples();
 }
 
+void Simulation::startMoving() {
+  // A clip that starts in motion (a run) starts the hair moving with the body, as if it had
+  // been running: from rest, the first frames would yank it faster than anything in the clip.
+  if (!scene_.clip) return;
+  const double h = 0.25 * double(config_.sim.dt);
+  const Pose move = compose(headPoseAt(time_ + h), inverse(headPoseAt(time_)));
+  if (move.rotation == glm::dquat(1.0, 0.0, 0.0, 0.0) && move.translation == glm::dvec3(0.0))
+    return;
+  std::vector<glm::vec4> x, v;
+  solver_->state().readPositions(x);
+  v.resize(x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const glm::dvec3 p(x[i]);
+    v[i] = glm::vec4(glm::vec3((move.apply(p) - p) / h), 0.0f);
+  }
+  solver_->state().write(x, v);
+}
+
 Pose Simulation::headPoseAt(double t) const {
+  if (scene_.clip)
+    return compose(userPose_,
+                   scene_.clip->sample(t, config_.motion.loop, config_.motion.inPlace).head);
   return compose(userPose_, csm::headPose(config_.head, t));
+}
+
+BodyPose Simulation::bodyPoseAt(double t) const {
+  if (!scene_.clip) return {headPoseAt(t), Pose{}};
+  BodyPose body = scene_.clip->sample(t, config_.motion.loop, config_.motion.inPlace);
+  body.head = compose(userPose_, body.head);
+  return body;
+}
+
+long Simulation::clipFrames() const {
+  if (!scene_.clip) return 0;
+  return std::max(1L, long(std::ceil(scene_.clip->duration() / double(config_.sim.dt) - 1e-9)));
+}
+
+FramePath Simulation::framePath(double next) {
+  if (!scene_.clip) return FramePath{{lastPose_, headPoseAt(next)}};
+  // The clip where each substep may end: as many keys as the most steps a frame.
+  const int keys = std::clamp(std::max(config_.sim.substeps, config_.sim.maxSubsteps), 2, 64);
+  const double dt = next - time_;
+  FramePath path;
+  std::vector<double> at(size_t(keys) + 1);
+  for (int i = 0; i <= keys; ++i) {
+    at[size_t(i)] = i == keys ? next : time_ + dt * double(i) / keys;
+    path.keys.push_back(headPoseAt(at[size_t(i)]));
+  }
+  // A cut in the clip carries the hair with the head, as a reset of the head does: the keys
+  // before it are moved by the jump, so the path runs on from the pose after it.
+  const MotionClip& clip = *scene_.clip;
+  for (double cut : clip.cutsBetween(time_, next, config_.motion.loop)) {
+    const Pose before = headPoseAt(cut - 1e-6 * clip.frameTime());
+    const Pose jump = compose(headPoseAt(cut), inverse(before));
+    solver_->state().carry(jump);
+    lastPose_ = compose(jump, lastPose_);
+    for (int i = 0; i <= keys; ++i)
+      if (at[size_t(i)] < cut) path.keys[size_t(i)] = compose(jump, path.keys[size_t(i)]);
+    ++cuts_;
+  }
+  path.keys.front() = lastPose_;
+  return path;
 }
 
 void Simulation::stepFrame() {
@@ -173,17 +244,28 @@ void Simulation::restartSamples() {
 
 void Simulation::advance() {
   const double next = time_ + config_.sim.dt;
+  FramePath path = framePath(next);
   // The user's move of the head this frame (a drag, a reset of it), beyond the preset's motion.
-  const Pose motion = csm::headPose(config_.head, next);
-  const Pose to = compose(userPose_, motion);
+  const Pose motion =
+      scene_.clip ? scene_.clip->sample(next, config_.motion.loop, config_.motion.inPlace).head
+                  : csm::headPose(config_.head, next);
+  const Pose to = path.to();
   const Pose jump = jumpOf(compose(lastUserPose_, motion), to);
   if (jump.rotation != glm::dquat(1.0, 0.0, 0.0, 0.0) || jump.translation != glm::dvec3(0.0)) {
     // The hair goes with the head for the part of its motion too fast to simulate.
     solver_->state().carry(jump);
     lastPose_ = compose(jump, lastPose_);
+    path.keys.front() = lastPose_;
     ++carried_;
   }
-  solver_->stepFrame(lastPose_, to);
+  const double perKey = double(path.keys.size() - 1) / double(config_.sim.dt);
+  for (size_t k = 1; k < path.keys.size(); ++k) {
+    const Pose& a = path.keys[k - 1];
+    const Pose& b = path.keys[k];
+    peakRootSpeed_ = std::max(peakRootSpeed_, rootReach(a, b, rootRadius_) * perKey);
+    peakRigidSpeed_ = std::max(peakRigidSpeed_, rootReach(a, b, hairRadius_) * perKey);
+  }
+  solver_->stepFrame(path);
   lastPose_ = to;
   lastUserPose_ = userPose_;
   time_ = next;
@@ -206,6 +288,7 @@ void Simulation::save(SimulationState& out, bool withSolver) const {
   out.frame = frame_;
   out.time = time_;
   out.carried = carried_;
+  out.cuts = cuts_;
   out.userPose = userPose_;
   out.lastUserPose = lastUserPose_;
   out.lastPose = lastPose_;
@@ -231,6 +314,7 @@ bool Simulation::restore(const SimulationState& in, std::string* error) {
   frame_ = in.frame;
   time_ = in.time;
   carried_ = in.carried;
+  cuts_ = in.cuts;
   userPose_ = in.userPose;
   lastUserPose_ = in.lastUserPose;
   lastPose_ = in.lastPose;

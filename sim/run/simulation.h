@@ -40,6 +40,7 @@ struct SimulationState {
   long frame = 0;
   double time = 0.0;
   long carried = 0;
+  long cuts = 0;
   Pose userPose, lastUserPose, lastPose;
   Config config;
   SavedState solver;
@@ -110,6 +111,21 @@ class Simulation {
   void setUserPose(const Pose& pose) { userPose_ = pose; }
   const Pose& userPose() const { return userPose_; }
   Pose headPoseAt(double t) const;
+  // The body at time t: the head's pose and the torso's (the clip's two parts; without a clip the
+  // torso stays where it stands while the head moves).
+  BodyPose bodyPoseAt(double t) const;
+  // The motion clip the scene runs (motion.clip), null without one.
+  const MotionClip* clip() const { return scene_.clip.get(); }
+  // Frames that play the clip once through (0 without a clip).
+  long clipFrames() const;
+  // Frames since the last reset whose clip cut (MotionClip::cutsBetween) the hair was carried over.
+  long clipCuts() const { return cuts_; }
+  // The fastest the head's motion has moved a root since the last reset (m/s, over a frame):
+  // what a particle's speed is compared with.
+  double peakRootSpeed() const { return peakRootSpeed_; }
+  // The fastest any particle would have moved were the hair fixed rigidly to the head (m/s):
+  // the speed the head's motion explains, beyond which a particle is flung by the simulation.
+  double peakRigidSpeed() const { return peakRigidSpeed_; }
   Pose headPose() const { return headPoseAt(time_); }
 
   // The solver's name, its counts (the simulated strands and their particles) and what it says of
@@ -159,11 +175,15 @@ class Simulation {
   bool regrow(const Config& config, const std::string& baseDir, std::string* error,
               const HeadModel* known = nullptr);
   void boundRoots();
+  // The hair moving with the body where a clip starts in motion (after a reset).
+  void startMoving();
   // False, saying why, when the solver could not take the groom at its reset.
   bool solverReady(std::string* error) const;
   // The part of the head's move from `from` to `to` that moves the roots faster than
   // kMaxRootSpeed, as a rigid transform of the world (identity when none).
   Pose jumpOf(const Pose& from, const Pose& to) const;
+  // How far a root moves at most when the head goes from `from` to `to` (m).
+  double rootReach(const Pose& from, const Pose& to, double radius) const;
 
   std::unique_ptr<Solver> solver_;
   Config config_;
@@ -173,6 +193,9 @@ class Simulation {
   void startingSolver() const;
   // The head's move and the solver's frame (stepFrame, replayFrame).
   void advance();
+  // The head through the frame from time_ to `next`: the preset's motion (the frame's ends) or
+  // the clip's, sampled between (its cuts carried).
+  FramePath framePath(double next);
   // The samples of the hair before are moot: dropped, and the NaN stop cleared.
   void restartSamples();
   void takeReady(bool wait);
@@ -189,7 +212,11 @@ class Simulation {
   // The roots' bounding sphere in the head frame, for their speed.
   glm::dvec3 rootCentre_{0.0};
   double rootRadius_ = 0.0;
+  double hairRadius_ = 0.0;  // every rest particle's, about the same centre
   long carried_ = 0;
+  long cuts_ = 0;
+  double peakRootSpeed_ = 0.0;
+  double peakRigidSpeed_ = 0.0;
   double time_ = 0.0;
   long frame_ = 0;
   long generation_ = 0;

@@ -89,7 +89,8 @@ void CpuSolver::clearStages() {
              {"volume", 0.0}};
 }
 
-void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
+void CpuSolver::stepFrame(const FramePath& path) {
+  const Pose& to = path.to();
   clearStages();
   const FramePlan plan = planFrame(config_.sim, regions_.planRate);
   if (!failure_.empty()) {
@@ -118,7 +119,7 @@ void CpuSolver::stepFrame(const Pose& from, const Pose& to) {
     if (strandContacts(config_.collision.mode) &&
         listsBefore(k, plan.substeps, config_.collision.lists))
       listAgain();
-    step(plan.h, interpolate(from, to, double(k + 1) / plan.substeps));
+    step(plan.h, path.at(double(k + 1) / plan.substeps));
   }
 }
 

@@ -33,7 +33,8 @@ class CpuSolver final : public HostSolver {
   std::string_view name() const override { return "cpu"; }
   void reset(const Groom& groom, const Config& config, const Pose& head) override;
   void setConfig(const Config& config) override;
-  void stepFrame(const Pose& from, const Pose& to) override;
+  using Solver::stepFrame;
+  void stepFrame(const FramePath& path) override;
 
   // Measured at once: the state is on the CPU.
   void requestSample(long frame) override;

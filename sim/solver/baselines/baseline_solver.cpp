@@ -25,7 +25,8 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
   onReset();
 }
 
-void BaselineSolver::stepFrame(const Pose& from, const Pose& to) {
+void BaselineSolver::stepFrame(const FramePath& path) {
+  const Pose& to = path.to();
   const auto t0 = std::chrono::steady_clock::now();
   const int substeps = std::max(1, config_.sim.substeps);
   const double h = double(config_.sim.dt) / substeps;
@@ -36,7 +37,7 @@ void BaselineSolver::stepFrame(const Pose& from, const Pose& to) {
     return;
   }
   for (int k = 0; k < substeps; ++k) {
-    step(h, interpolate(from, to, double(k + 1) / substeps));
+    step(h, path.at(double(k + 1) / substeps));
     time_ += h;
   }
   head_ = to;

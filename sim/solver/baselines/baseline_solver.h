@@ -38,7 +38,8 @@ class BaselineSolver : public HostSolver {
     config_ = config;
     headSpheres_ = headModel_.collider().spheres;
   }
-  void stepFrame(const Pose& from, const Pose& to) override;
+  using Solver::stepFrame;
+  void stepFrame(const FramePath& path) override;
 
   // Measured at once: the state is on the CPU.
   void requestSample(long frame) override;
