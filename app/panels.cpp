@@ -463,6 +463,7 @@ void drawPanels(const PanelView& view, PanelRequests& ask, PanelState& state) {
   drawParameterPanel(view, ask, state, layout, place);
   if (state.showStats) drawStatsPanel(view, ask, state, layout, place);
   if (state.showTimeline) drawTimelinePanel(view, ask, state, layout, place);
+  if (state.showMotion) drawMotionPanel(view, ask, state, layout, place);
   if (state.showHelp) drawHelpPanel(state, layout, place);
   drawBanners(view, ask, layout);
 }

@@ -67,6 +67,8 @@ struct PanelState {
   bool showHelp = true;
   bool showStats = true;
   bool showTimeline = true;
+  bool showMotion = true;
+  std::string clipPath;                     // the Motion panel's path field
   float layoutWidth = 0, layoutHeight = 0;  // the work area the panels were last laid out for
   float bakeSeconds = 2.0f;
   int cacheMb = 512;
@@ -125,6 +127,10 @@ void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state
 void drawTimelinePanel(const PanelView& view, PanelRequests& ask, PanelState& state,
                        const PanelLayout& layout, bool place);
 void drawHelpPanel(PanelState& state, const PanelLayout& layout, bool place);
+// The Motion panel: the clip that moves the character (motion.clip), what was inferred of it, its
+// joints, and its frames on the timeline.
+void drawMotionPanel(const PanelView& view, PanelRequests& ask, PanelState& state,
+                     const PanelLayout& layout, bool place);
 void drawBanners(const PanelView& view, PanelRequests& ask, const PanelLayout& layout);
 
 // Keys and mouse actions, for the help panel (and the README).

@@ -28,10 +28,14 @@ void drawTimelinePanel(const PanelView& view, PanelRequests& ask, PanelState& st
   if (recorded) {
     int frame = int(std::clamp(at, t.first, t.last));
     ImGui::SetNextItemWidth(-1.0f);
-    const char* label = t.shown < 0                                   ? "live, frame %d"
+    std::string label = t.shown < 0                                   ? "live, frame %d"
                         : t.shotFrames > 0 && t.shown <= t.shotFrames ? "cached frame %d"
                                                                       : "recorded frame %d";
-    if (ImGui::SliderInt("##frame", &frame, int(t.first), int(t.last), label)) {
+    // With a clip, the clip's frame beside the simulation's.
+    if (f.clip)
+      label +=
+          " (clip frame " + std::to_string(f.clip->frameAt(f.time, f.config.motion.loop) + 1) + ")";
+    if (ImGui::SliderInt("##frame", &frame, int(t.first), int(t.last), label.c_str())) {
       ask.controls().playRecording(false);
       ask.controls().showRecorded(frame);
     }

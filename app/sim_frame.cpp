@@ -19,6 +19,8 @@ void takeFigures(const Simulation& sim, SimFrame& frame) {
   frame.particles = sim.counts().particles;
   frame.drawnStrands = sim.drawnStrands();
   frame.carriedFrames = sim.carriedFrames();
+  frame.clip = sim.scene().clip;
+  frame.clipCuts = sim.clipCuts();
   frame.stiffness = diagnostics.stiffness();
   frame.memory = diagnostics.memoryUse();
 }

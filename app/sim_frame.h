@@ -19,6 +19,7 @@
 #include "sim/core/results.h"
 #include "sim/groom/guides.h"
 #include "sim/groom/scene_groom.h"
+#include "sim/motion/clip.h"
 #include "sim/run/timeline.h"
 
 namespace csm {
@@ -44,6 +45,8 @@ struct SimFrame {
   std::size_t strands = 0, particles = 0;  // simulated
   std::size_t drawnStrands = 0;            // drawn: the followers' groom's, else `strands`
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)
+  std::shared_ptr<const MotionClip> clip;  // motion.clip, read (null: head.motion)
+  long clipCuts = 0;                       // cuts of the clip the hair was carried over
   StiffnessInfo stiffness;
   MemoryUse memory;           // the solver's buffers by kind (SolverDiagnostics::memoryUse)
   std::string solver;         // the solver's name

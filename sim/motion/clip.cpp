@@ -141,7 +141,10 @@ std::shared_ptr<const MotionClip> MotionClip::make(const BvhClip& bvh, const Mot
   f.joints = int(bvh.joints.size());
   f.frames = bvh.frameCount();
   f.frameTime = bvh.frameTime;
-  for (const BvhJoint& j : bvh.joints) f.jointNames.push_back(j.name);
+  for (const BvhJoint& j : bvh.joints) {
+    f.jointNames.push_back(j.name);
+    f.jointParents.push_back(j.parent);
+  }
 
   // The joints that drive the two parts.
   int head = -1, chest = -1;
@@ -251,11 +254,17 @@ std::shared_ptr<const MotionClip> MotionClip::make(const BvhClip& bvh, const Mot
     if (glm::length(left) < 1e-9)
       return fail("no left and right joints to find the facing from: set motion.facing");
     forward = glm::normalize(glm::cross(left, up));
-    // A clip that travels goes the way its character faces, within the hips' sway: its first
-    // second's travel (before a later take can turn it).
-    std::vector<JointPose> last;
-    jointPoses(bvh, std::min(bvh.frameCount() - 1, int(std::ceil(1.0 / bvh.frameTime))), last);
-    glm::dvec3 travel = last[size_t(head)].position - poses[size_t(head)].position;
+    // A clip that travels goes the way its character faces, within the hips' sway: its travel
+    // up to its first cut (a later take may go elsewhere).
+    std::vector<JointPose> at;
+    glm::dvec3 last = poses[size_t(head)].position;
+    for (int k = 1; k < bvh.frameCount(); ++k) {
+      jointPoses(bvh, k, at);
+      const glm::dvec3 p = at[size_t(head)].position;
+      if (glm::length(p - last) * f.scale / bvh.frameTime > kCutSpeed) break;
+      last = p;
+    }
+    glm::dvec3 travel = last - poses[size_t(head)].position;
     travel -= glm::dot(travel, up) * up;
     if (glm::length(travel) > 0.2 * heightUnits &&
         glm::dot(glm::normalize(travel), forward) > std::cos(glm::radians(30.0)))
@@ -427,6 +436,12 @@ std::vector<double> MotionClip::cutsBetween(double t0, double t1, bool loop) con
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+int MotionClip::frameAt(double t, bool loop) const {
+  const long n = long(frames_.size());
+  const long k = long(std::floor(std::max(0.0, t) / frameTime_ + 1e-9));
+  return int(loop ? k % n : std::min(k, n - 1));
 }
 
 std::string MotionClip::summary() const {

@@ -31,6 +31,7 @@ struct ClipFacts {
   double peakHeadSpeed = 0.0;  // m/s, between frames (cuts left out)
   std::vector<int> cuts;       // frames that jump from the one before faster than a person moves
   std::vector<std::string> jointNames;
+  std::vector<int> jointParents;  // -1 for a root
 };
 
 // The fastest a person's head moves between two of a clip's frames; a frame further from the one
@@ -69,6 +70,8 @@ class MotionClip {
   // The instants in (t0, t1] where the clip cuts (a frame after a cut begins, or a loop's seam
   // that jumps as far), in order.
   std::vector<double> cutsBetween(double t0, double t1, bool loop) const;
+  // The clip's frame shown at time t (s): the one at or before it, looped or held.
+  int frameAt(double t, bool loop) const;
   // One line of what was inferred ("walk.bvh: 22 joints, 273 frames at 30 fps, cm ...").
   std::string summary() const;
 

@@ -8,7 +8,6 @@
 
 #include "sim/groom/scene_groom.h"
 #include "sim/param/sim_params.h"
-#include "sim/run/scene_checks.h"
 
 namespace csm {
 
@@ -175,9 +174,19 @@ FramePath Simulation::framePath(double next) {
     at[size_t(i)] = i == keys ? next : time_ + dt * double(i) / keys;
     path.keys.push_back(headPoseAt(at[size_t(i)]));
   }
+  // A live change of the clip's settings (in place, loop) moves where the clip has the head now:
+  // the hair goes there with it, rigidly, as over a cut.
+  const MotionClip& clip = *scene_.clip;
+  const Pose now =
+      compose(lastUserPose_, clip.sample(time_, config_.motion.loop, config_.motion.inPlace).head);
+  if (rootReach(lastPose_, now, hairRadius_) > 1e-6) {
+    const Pose jump = compose(now, inverse(lastPose_));
+    solver_->state().carry(jump);
+    lastPose_ = now;
+    ++carried_;
+  }
   // A cut in the clip carries the hair with the head, as a reset of the head does: the keys
   // before it are moved by the jump, so the path runs on from the pose after it.
-  const MotionClip& clip = *scene_.clip;
   for (double cut : clip.cutsBetween(time_, next, config_.motion.loop)) {
     const Pose before = headPoseAt(cut - 1e-6 * clip.frameTime());
     const Pose jump = compose(headPoseAt(cut), inverse(before));

@@ -4,6 +4,7 @@
 // (the CPU solver), so that a press shows in the simulation too.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -91,9 +92,10 @@ class Headless {
 // A session running the default preset's 60 strands, the panels over it with a fake, drawn a
 // frame at a time.
 struct Rig {
-  explicit Rig(long frameLimit) : session(test::makeSession(frameLimit)), fake(*session) {
+  explicit Rig(long frameLimit, const Preset& preset = test::smallPreset(60))
+      : session(test::makeSession(frameLimit)), fake(*session) {
     std::string error;
-    REQUIRE(session->open(test::smallPreset(60), "", "", &error));
+    REQUIRE(session->open(preset, "", "", &error));
   }
   // The session's events and latest frame, then the panels over them.
   void frame() {
@@ -218,4 +220,58 @@ TEST_CASE("Panels: the timeline's buttons scrub, keep A and go live again",
   frame();
   REQUIRE(s->sync());
   CHECK(s->simFrame().timeline.shown == -1);
+}
+
+TEST_CASE("Panels: the Motion panel opens a clip, records it and scrubs it by its frames",
+          "[app][panels][motion]") {
+  Preset preset = test::smallPreset(40);
+  Rig rig(400, preset);
+  ViewerSession* s = rig.session.get();
+  Headless& imgui = rig.imgui;
+  REQUIRE(s->waitForSimFrame(2));
+  rig.frame();
+  // No clip yet: the panel says what moves the head.
+  ImGuiWindow* motion = ImGui::FindWindowByName("Motion");
+  REQUIRE(motion != nullptr);
+  CHECK(motion->Collapsed);
+  CHECK_FALSE(s->simFrame().clip);
+  ImGui::SetWindowCollapsed("Motion", false);
+  rig.frame();
+  // A clip's path, opened: the preset's motion.clip, applied.
+  rig.state.clipPath = std::string(CSM_CLIP_DIR) + "/jump.bvh";
+  imgui.press("Motion", "Open");
+  rig.frame();
+  REQUIRE(asked(rig.fake, "applyConfig"));
+  CHECK(rig.fake.applied.scene.motion.clip == rig.state.clipPath);
+  REQUIRE(s->applyConfig(rig.fake.applied));
+  REQUIRE(s->sync());
+  REQUIRE(s->simFrame().clip);
+  const MotionClip& clip = *s->simFrame().clip;
+  CHECK(clip.facts().unit == "cm");
+  CHECK(clip.facts().frames == 91);
+  // Recorded whole from its first frame: the clip's 3 s, 180 frames, then paused.
+  imgui.press("Motion", "Record the clip");
+  rig.frame();
+  REQUIRE(s->waitForSimFrame(181));
+  REQUIRE(s->sync());
+  rig.frame();
+  CHECK(s->simFrame().timeline.last >= 181);
+  // A recorded frame on show is the clip's there: the head where the clip put it.
+  for (long f : {30L, 66L, 120L}) {
+    s->controls().showRecorded(f);
+    REQUIRE(s->sync());
+    rig.frame();
+    const double t = double(f) * double(preset.scene.sim.dt);
+    CHECK(s->simFrame().time == Approx(t));
+    const Pose want = clip.sample(t, true, false).head;
+    CHECK(glm::length(s->simFrame().headPose.translation - want.translation) < 1e-6);
+    CHECK(clip.frameAt(s->simFrame().time, true) == int(std::floor(t * 30.0 + 1e-6)));
+  }
+  // The jump lifts the head: the recording's frames differ where the clip does.
+  s->controls().showRecorded(60);
+  REQUIRE(s->sync());
+  const double before = s->simFrame().headPose.translation.y;
+  s->controls().showRecorded(90);
+  REQUIRE(s->sync());
+  CHECK(s->simFrame().headPose.translation.y > before + 0.2);
 }

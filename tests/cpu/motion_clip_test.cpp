@@ -233,6 +233,32 @@ TEST_CASE("a cut in a clip is found, held across and carried by the simulation")
   CHECK(farthest < 0.6);
 }
 
+TEST_CASE("a clip's in place turned on mid-walk takes the hair along, not apart") {
+  Config config;
+  config.hairstyle.strands = 60;
+  config.motion.clip = "walk_cm.bvh";
+  Simulation sim(std::make_unique<CpuSolver>());
+  std::string error;
+  REQUIRE(sim.load(config, kClips, &error));
+  for (int f = 0; f < 120; ++f) sim.stepFrame();  // 2.8 m down the road
+  config.motion.inPlace = true;
+  REQUIRE(sim.setConfig(config, &error));
+  for (int f = 0; f < 3; ++f) sim.stepFrame();
+  CHECK(sim.carriedFrames() == 1);
+  std::vector<glm::vec4> x, v;
+  sim.readPositions(x);
+  sim.readVelocities(v);
+  const glm::dvec3 neck = sim.headPose().apply(glm::dvec3(0.0, -0.15, 0.0));
+  CHECK(std::hypot(neck.x, neck.z) < 0.15);  // back on the spot
+  double farthest = 0.0, fastest = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    farthest = std::max(farthest, glm::length(glm::dvec3(x[i]) - neck));
+    fastest = std::max(fastest, double(glm::length(glm::vec3(v[i]))));
+  }
+  CHECK(farthest < 0.6);
+  CHECK(fastest < 5.0);
+}
+
 TEST_CASE("a clip loops with its travel carried on, holds its end, or stays in place") {
   auto clip = load("walk_cm.bvh");
   const double d = clip->duration();
