@@ -3,6 +3,10 @@
 // `make` gives. Shared by the CPU and GPU tiers.
 #pragma once
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <string>
@@ -43,6 +47,27 @@ inline Config liveScene(bool paper = false) {
   return c;
 }
 
+// A clip of five frames (0.13 s) whose body walks 5 cm a frame along +z: past its end within a
+// live check's frames, so that looping and travel show.
+inline Config clipScene() {
+  // Each process its own file: the CPU and GPU binaries run this at once.
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("csm_live_check_" + std::to_string(::getpid()) + ".bvh"))
+                               .string();
+  std::ofstream out(path);
+  out << "HIERARCHY\nROOT Hips\n{\n OFFSET 0 95 0\n CHANNELS 6 Xposition Yposition Zposition "
+         "Zrotation Xrotation Yrotation\n JOINT Head\n {\n  OFFSET 0 60 0\n  CHANNELS 3 "
+         "Zrotation Xrotation Yrotation\n  End Site\n  {\n   OFFSET 0 15 0\n  }\n }\n}\n"
+         "MOTION\nFrames: 5\nFrame Time: 0.0333333\n";
+  for (int f = 0; f < 5; ++f) out << "0 95 " << 5 * f << " 0 " << 4 * f << " 0 0 0 0\n";
+  Config c = liveScene();
+  c.motion.clip = path;
+  c.motion.scale = 0.01f;
+  c.motion.up = ClipUp::Y;
+  c.motion.facing = ClipFacing::PlusZ;
+  return c;
+}
+
 struct LiveCheck {
   std::vector<std::string> tested;    // keys
   std::vector<std::string> noEffect;  // keys none of whose values changed the motion
@@ -77,7 +102,7 @@ inline LiveCheck checkLiveParams(std::unique_ptr<Solver> solver) {
   penalty.collision.model = ContactModel::Penalty;
   Config guided = liveScene();
   guided.hairstyle.guides = 10;  // of 40
-  const std::vector<Config> bases = {liveScene(), liveScene(true), penalty, guided};
+  const std::vector<Config> bases = {liveScene(), liveScene(true), penalty, guided, clipScene()};
   std::vector<std::vector<glm::vec4>> references;
   for (const Config& base : bases) {
     references.push_back(runLive(sim, base, base));

@@ -16,6 +16,10 @@ bool calibratedModel(const Config& c) {
   return c.sim.stiffnessModel == StiffnessModel::Calibrated;
 }
 
+bool hasClip(const Config& c) {
+  return !c.motion.clip.empty();
+}
+
 bool volumeMode(const Config& c) {
   return volumeForces(c.collision.mode);
 }
@@ -203,9 +207,11 @@ std::vector<Param<Config>> build() {
           Effect::Rebuild),
       param("motion.loop", "Loop", "Motion", &Config::motion, &MotionConfig::loop, 0, 1,
             "Past its end the clip starts again (its travel carried on); off holds its last frame.",
-            Effect::Live),
+            Effect::Live)
+          .onlyWhen(hasClip),
       param("motion.in_place", "In place", "Motion", &Config::motion, &MotionConfig::inPlace, 0, 1,
-            "Removes the clip's horizontal travel: the character moves on the spot.", Effect::Live),
+            "Removes the clip's horizontal travel: the character moves on the spot.", Effect::Live)
+          .onlyWhen(hasClip),
       param("sim.dt", "Frame time step", "Simulation", &Config::sim, &SimConfig::dt, 1e-4, 0.1,
             "Simulated seconds per frame; each frame is split into substeps.", Effect::Live)
           .logScale(),
