@@ -92,6 +92,18 @@ double turnDegrees(const glm::dquat& q) {
   return glm::degrees(2.0 * std::acos(w));
 }
 
+// Whether the body goes from frame a to frame b, ft seconds apart, faster than a person moves
+// (the head or the chest faster than kCutSpeed, or turning faster than kCutTurnSpeed).
+template <class Frame>
+bool jumps(const Frame& a, const Frame& b, double ft) {
+  const double speed =
+      std::max(glm::length(b.headAt - a.headAt), glm::length(b.chestAt - a.chestAt)) / ft;
+  const double turnSpeed = std::max(turnDegrees(b.head * glm::inverse(a.head)),
+                                    turnDegrees(b.chest * glm::inverse(a.chest))) /
+                           ft;
+  return speed > kCutSpeed || turnSpeed > kCutTurnSpeed;
+}
+
 struct Unit {
   const char* name;
   double metres;
@@ -316,16 +328,11 @@ std::shared_ptr<const MotionClip> MotionClip::make(const BvhClip& bvh, const Mot
   for (int k = 1; k < n; ++k) {
     const Frame& a = c.frames_[size_t(k - 1)];
     const Frame& b = c.frames_[size_t(k)];
-    const double speed = glm::length(b.headAt - a.headAt) / ft;
-    const double turnSpeed = std::max(turnDegrees(b.head * glm::inverse(a.head)),
-                                      turnDegrees(b.chest * glm::inverse(a.chest))) /
-                             ft;
-    const double chestSpeed = glm::length(b.chestAt - a.chestAt) / ft;
-    if (std::max(speed, chestSpeed) > kCutSpeed || turnSpeed > kCutTurnSpeed) {
+    if (jumps(a, b, ft)) {
       c.cutBefore_[size_t(k)] = 1;
       f.cuts.push_back(k);
     } else {
-      f.peakHeadSpeed = std::max(f.peakHeadSpeed, speed);
+      f.peakHeadSpeed = std::max(f.peakHeadSpeed, glm::length(b.headAt - a.headAt) / ft);
     }
   }
   const Frame& last = c.frames_.back();
@@ -372,12 +379,7 @@ bool MotionClip::seamIsCut() const {
   Frame b = frames_.front();
   b.headAt += loopShift_;
   b.chestAt += loopShift_;
-  const double speed =
-      std::max(glm::length(b.headAt - a.headAt), glm::length(b.chestAt - a.chestAt)) / frameTime_;
-  const double turnSpeed = std::max(turnDegrees(b.head * glm::inverse(a.head)),
-                                    turnDegrees(b.chest * glm::inverse(a.chest))) /
-                           frameTime_;
-  return speed > kCutSpeed || turnSpeed > kCutTurnSpeed;
+  return jumps(a, b, frameTime_);
 }
 
 BodyPose MotionClip::sample(double t, bool loop, bool inPlace) const {
