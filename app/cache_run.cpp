@@ -9,6 +9,7 @@
 #include "app/frame_view.h"
 #include "app/import_progress.h"
 #include "app/params.h"
+#include "sim/motion/clip.h"
 #include "sim/run/cache_files.h"
 
 namespace csm {
@@ -287,8 +288,9 @@ int runFromCache(const Options& options) {
     if (!hair.writeFrame(keptIndex(options, f), grown, positions, frame.head)) return 1;
     if (!capture) continue;
     const unsigned buffer = capture->upload().upload(positions);
-    capture->draw(frameViewOf(scene.preset.scene, grown, 1, frame.head, scene.preset.view, buffer,
-                              capture->width(), capture->height(), capture->framebuffer()),
+    const Pose torso = torsoPoseAt(scene.preset.scene, grown.clip.get(), frame.time);
+    capture->draw(frameViewOf(scene.preset.scene, grown, 1, frame.head, torso, scene.preset.view,
+                              buffer, capture->width(), capture->height(), capture->framebuffer()),
                   false);
     const std::vector<std::uint8_t> rgb = capture->readBack();
     if (images.on() &&

@@ -8,13 +8,13 @@ namespace csm {
 
 FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned positionBuffer,
                       int width, int height, unsigned framebuffer) {
-  return frameViewOf(sim.config(), sim.scene(), sim.generation(), sim.headPose(), view,
-                     positionBuffer, width, height, framebuffer);
+  return frameViewOf(sim.config(), sim.scene(), sim.generation(), sim.headPose(), sim.torsoPose(),
+                     view, positionBuffer, width, height, framebuffer);
 }
 
 FrameView frameViewOf(const Config& scene, const GrownScene& grown, long generation,
-                      const Pose& head, const ViewConfig& view, unsigned positionBuffer, int width,
-                      int height, unsigned framebuffer) {
+                      const Pose& head, const Pose& torso, const ViewConfig& view,
+                      unsigned positionBuffer, int width, int height, unsigned framebuffer) {
   FrameView v;
   v.scene = &scene;
   v.look = &view;
@@ -23,6 +23,7 @@ FrameView frameViewOf(const Config& scene, const GrownScene& grown, long generat
   v.generation = generation;
   v.head = grown.head.get();
   v.headPose = head;
+  v.torsoPose = torso;
   v.positionBuffer = positionBuffer;
   v.width = width;
   v.height = height;

@@ -14,10 +14,11 @@ FrameView frameViewOf(const Simulation& sim, const ViewConfig& view, unsigned po
                       int width, int height, unsigned framebuffer = 0);
 
 // The FrameView of frame parts: the scene's config, its grown hair (of `generation`), the head at
-// `head`, the positions in `positionBuffer` (a shot's cached frame, or a simulation's).
+// `head` and the torso at `torso`, the positions in `positionBuffer` (a shot's cached frame, or a
+// simulation's).
 FrameView frameViewOf(const Config& scene, const GrownScene& grown, long generation,
-                      const Pose& head, const ViewConfig& view, unsigned positionBuffer, int width,
-                      int height, unsigned framebuffer = 0);
+                      const Pose& head, const Pose& torso, const ViewConfig& view,
+                      unsigned positionBuffer, int width, int height, unsigned framebuffer = 0);
 
 // The SSBO with the simulation's current positions: the solver's own, or (a solver that keeps
 // none on the GPU) its positions read back and uploaded into `upload`'s buffer.

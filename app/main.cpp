@@ -39,7 +39,7 @@ int validate(const std::vector<std::string>& files) {
     // The head too, as the scene that loads the preset reads it: its file and line when bad.
     std::string headError;
     if (csm::loadPreset(f, c, errors) && !csm::HeadModel::build(c.scene, &headError))
-      errors.messages.push_back(f + ": head.mesh: " + headError);
+      errors.messages.push_back(f + ": " + headError);
     // And the motion clip, relative to the preset as the scene reads it.
     std::string clipError;
     if (errors.messages.empty() && !c.scene.motion.clip.empty() &&

@@ -53,6 +53,7 @@ void MetricsLog::addSample(const FrameSample& sample) {
   worst_.maxSpeed = std::max(worst_.maxSpeed, a.maxSpeed);
   worst_.nanCount = std::max(worst_.nanCount, a.nanCount);
   worst_.headPenetrations += a.headPenetrations;
+  worst_.torsoPenetrations += a.torsoPenetrations;
   meanStrainSum_ += a.meanStrain;
   if (!sample.contactsMeasured) return;
   contactsLast_ = contacts.contacts;
@@ -108,6 +109,7 @@ nlohmann::json MetricsLog::toJson(nlohmann::json meta) const {
       {"mean_strain", samples_ == 0 ? 0.0 : meanStrainSum_ / double(samples_)},
       {"samples", samples_},
       {"head_penetrations", worst_.headPenetrations},
+      {"torso_penetrations", worst_.torsoPenetrations},
       {"max_speed", worst_.maxSpeed},
       {"nan_count", worst_.nanCount},
   };

@@ -163,8 +163,9 @@ void drawStatsPanel(const PanelView& view, PanelRequests& ask, PanelState& state
             "In these frames (since the last reset) the head moved its roots faster than\n"
             "2 m/s (a reset of the drag, a fast drag): the hair went with it, rigidly, for the\n"
             "part of the move beyond that speed instead of being flung.");
-  ImGui::Text("head penetrations %llu, max speed %.2f m/s",
-              (unsigned long long)sample.accuracy.headPenetrations, sample.accuracy.maxSpeed);
+  ImGui::Text("penetrations: head %llu, torso %llu; max speed %.2f m/s",
+              (unsigned long long)sample.accuracy.headPenetrations,
+              (unsigned long long)sample.accuracy.torsoPenetrations, sample.accuracy.maxSpeed);
   ImGui::Text("particles %zu", f.particles);
   if (f.drawnStrands > f.strands)
     ImGui::Text("strands simulated %zu (guides of %zu), drawn %zu", f.strands, f.drawnStrands,

@@ -72,9 +72,7 @@ bool applySets(const std::vector<std::pair<std::string, std::string>>& sets, Sce
   if (msgs.empty()) {
     std::string headError;
     out.head = HeadModel::build(out.preset.scene, &headError);
-    if (!out.head)
-      msgs +=
-          out.source + (sets.empty() ? ": " : " with --set: ") + "head.mesh: " + headError + "\n";
+    if (!out.head) msgs += out.source + (sets.empty() ? ": " : " with --set: ") + headError + "\n";
   }
   if (msgs.empty() && !out.preset.scene.motion.clip.empty()) {
     // The clip too, before anything is simulated: its file and line when bad.

@@ -69,6 +69,7 @@ SceneView::Drawn SceneView::draw(const SimFrame& frame, const ViewConfig& look, 
       view.generation = frame.generation;
       view.head = frame.head.get();
       view.headPose = frame.headPose;
+      view.torsoPose = frame.torsoPose;
       view.positionBuffer = positions(frame);
       view.width = size.width;
       view.height = size.height;

@@ -66,6 +66,9 @@ bool inputsOf(const Preset& preset, const std::string& baseDir, std::vector<Cach
       {"hairstyle.file",
        c.hairstyle.file.empty() ? "" : resolveRelative(baseDir, c.hairstyle.file)},
       {"head.mesh", c.head.mesh.empty() ? "" : resolveRelative(c.head.meshDir, c.head.mesh)},
+      {"head.torso_mesh", c.head.mesh.empty() || c.head.torsoMesh.empty()
+                              ? ""
+                              : resolveRelative(c.head.meshDir, c.head.torsoMesh)},
       {"motion.clip", c.motion.clip.empty() ? "" : resolveRelative(baseDir, c.motion.clip)},
   };
   for (const auto& [key, path] : files) {

@@ -42,6 +42,7 @@ struct SimFrame {
   GroomReport groomReport;
   std::shared_ptr<const HeadModel> head;   // the scene's head (built with the groom)
   Pose headPose;                           // where the head was at the end of the frame
+  Pose torsoPose;                          // and the torso
   std::size_t strands = 0, particles = 0;  // simulated
   std::size_t drawnStrands = 0;            // drawn: the followers' groom's, else `strands`
   long carriedFrames = 0;  // frames whose head motion was partly carried (kMaxRootSpeed)

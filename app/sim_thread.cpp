@@ -281,6 +281,7 @@ void SimThread::publish(long ticket) {
     f->followers = sim_->sharedFollowers();
     f->head = sim_->sharedHead();
     f->headPose = sim_->headPose();
+    f->torsoPose = sim_->torsoPose();
     f->stepMs = sim_->lastStepMs();
     f->stages = sim_->diagnostics().stageTimes();
     f->sample = sim_->latestSample();
@@ -296,6 +297,7 @@ void SimThread::publish(long ticket) {
       f->frame = shown->frame;
       f->time = shown->time;
       f->headPose = shown->head;
+      f->torsoPose = sim_->bodyPoseAt(shown->time).torso;
       auto host = std::make_shared<std::vector<glm::vec4>>();
       host->reserve(shown->positions.size());
       for (const glm::vec3& x : shown->positions) host->emplace_back(x, 1.0f);

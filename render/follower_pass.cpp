@@ -68,8 +68,9 @@ void FollowerPass::update(const FollowerBinding& b, long generation, const HeadM
   positions_ = gl::Buffer(GLsizeiptr(std::max<std::size_t>(points_, 1) * 16), nullptr,
                           gl::BufferUsage::DynamicCopy);
   pushed_ = gl::Buffer(GLsizeiptr(sizeof(std::uint32_t)), nullptr, gl::BufferUsage::DynamicCopy);
-  // The head the followers are kept out of: the shape the solver collides with.
-  const SceneHead collider = head.collider();
+  // The body the followers are kept out of: the whole at rest, moving with the head (the CPU's
+  // followers, sim/groom/followers.h, do the same).
+  const SceneHead collider{head.field(), head.spheres()};
   std::vector<glm::vec4> shape;
   if (collider.field && !collider.field->empty()) {
     headShape_ = 1;

@@ -367,7 +367,7 @@ void HairRenderer::render(const FrameView& frame) {
     return;
   }
   ShadowMaps& shadow = shadowFor(shadowSize);
-  head_.update(*frame.head, frame.headPose);
+  head_.update(*frame.head, frame.headPose, frame.torsoPose);
 
   // Children as asked for, as many as fit; each strand narrower by sqrt(1 + children), so
   // 1 + n strands cover sqrt(1 + n) times the guides' area (docs/METHOD.md, section 8).
@@ -427,7 +427,7 @@ void HairRenderer::render(const FrameView& frame) {
     shadow.headShadowTarget().bind();
     gl::applyDrawState({.depthTest = true, .cull = gl::Cull::Front});
     p.headDepth.use();
-    head_.draw(amount.fullHead);
+    head_.draw(p.headDepth, amount.fullHead);
 
     // Opacity layers: every hair fragment counts, so no depth test; additive blending.
     shadow.opacityTarget().bind();
@@ -451,7 +451,7 @@ void HairRenderer::render(const FrameView& frame) {
   gl::drawArrays(gl::Primitive::Triangles, 0, 3);
   gl::applyDrawState({.depthTest = true, .cull = gl::Cull::Back});
   p.head.use();
-  head_.draw(amount.fullHead);
+  head_.draw(p.head, amount.fullHead);
 
   // Hair: the light at every guide point (and each child's from it), then the guides:
   // ribbons, both faces (consecutive triangles alternate their winding), or lines where

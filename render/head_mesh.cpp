@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -50,29 +51,51 @@ HeadMesh::HeadMesh() {
       gl::Buffer(GLsizeiptr(sizeof(glm::vec4)), nullptr, gl::BufferUsage::DynamicDraw);
 }
 
-void HeadMesh::update(const HeadModel& model, const Pose& head) {
+namespace {
+
+glm::vec4 quaternion(const Pose& p) {
+  const glm::quat q(p.rotation);
+  return {q.x, q.y, q.z, q.w};
+}
+
+}  // namespace
+
+void HeadMesh::uploadPart(const SurfaceMesh* surface, Part& part) {
+  if (surface == part.uploaded) return;
+  part.uploaded = surface;
+  if (!surface) return;
+  // Uploaded once per head (the mannequin or head.mesh's OBJ), from the scalp centre, so that a
+  // vertex's position is also its direction on the scalp map (render/scalp_map.h).
+  const SurfaceMesh& m = *surface;
+  std::vector<glm::vec3> positions(m.positions);
+  for (glm::vec3& p : positions) p -= glm::vec3(kMannequinScalpCentre);
+  part.full = upload(positions, m.normals, m.indices);
+  SurfaceMesh coarse = coarserMesh(SurfaceMesh{positions, m.normals, m.indices}, kCoarseTriangles);
+  part.coarse = upload(coarse.positions, coarse.normals, coarse.indices);
+}
+
+void HeadMesh::update(const HeadModel& model, const Pose& head, const Pose& torso) {
   std::vector<glm::vec4> data;
-  const SurfaceMesh* surface = model.surface();
+  const SurfaceMesh* surface = model.headSurface();
   mannequin_ = surface != nullptr;
   if (mannequin_) {
-    if (surface != uploaded_) {
-      // Uploaded once per head (the mannequin or head.mesh's OBJ), from the scalp centre, so
-      // that a vertex's position is also its direction on the scalp map (render/scalp_map.h).
-      const SurfaceMesh& m = *surface;
-      std::vector<glm::vec3> positions(m.positions);
-      for (glm::vec3& p : positions) p -= glm::vec3(kMannequinScalpCentre);
-      mannequinGpu_ = upload(positions, m.normals, m.indices);
-      SurfaceMesh coarse =
-          coarserMesh(SurfaceMesh{positions, m.normals, m.indices}, kCoarseTriangles);
-      coarseGpu_ = upload(coarse.positions, coarse.normals, coarse.indices);
-      uploaded_ = surface;
-    }
+    uploadPart(surface, head_);
+    uploadPart(model.torsoSurface(), torso_);
     data.emplace_back(glm::vec3(head.apply(kMannequinScalpCentre)), 1.0f);
+    data.push_back(quaternion(head));
+    data.emplace_back(glm::vec3(torso.apply(kMannequinScalpCentre)), 1.0f);
+    data.push_back(quaternion(torso));
+    placements_ = torso_.uploaded ? 2 : 1;
   } else {
-    for (const Sphere& s : worldSpheres(model.spheres(), head))
-      data.emplace_back(s.center, s.radius);
+    // The head's spheres at its pose, the torso's at the torso's.
+    const std::vector<Sphere>& spheres = model.spheres();
+    for (size_t k = 0; k < spheres.size(); ++k) {
+      const Pose& pose = k < model.headSphereCount() ? head : torso;
+      data.emplace_back(glm::vec3(pose.apply(glm::dvec3(spheres[k].center))), spheres[k].radius);
+      data.push_back(quaternion(pose));
+    }
+    placements_ = int(spheres.size());
   }
-  placements_ = int(data.size());
   if (!data.empty()) placementBuffer_.upload(data);
 }
 
@@ -80,11 +103,21 @@ void HeadMesh::bind() const {
   placementBuffer_.bindBase(gl::BufferTarget::ShaderStorage, bindings::kHeadSpheres);
 }
 
-void HeadMesh::draw(bool full) const {
+void HeadMesh::draw(gl::Program& program, bool full) const {
   if (placements_ == 0) return;
-  const Mesh& m = !mannequin_ ? sphere_ : full ? mannequinGpu_ : coarseGpu_;
-  m.vao.bind();
-  gl::drawElements(gl::Primitive::Triangles, m.indexCount, placements_);
+  if (!mannequin_) {
+    program.setUniform("uPlacementBase", 0);
+    sphere_.vao.bind();
+    gl::drawElements(gl::Primitive::Triangles, sphere_.indexCount, placements_);
+    return;
+  }
+  const Part* parts[] = {&head_, &torso_};
+  for (int k = 0; k < placements_; ++k) {
+    const Mesh& m = full ? parts[k]->full : parts[k]->coarse;
+    program.setUniform("uPlacementBase", k);
+    m.vao.bind();
+    gl::drawElements(gl::Primitive::Triangles, m.indexCount, 1);
+  }
 }
 
 }  // namespace csm

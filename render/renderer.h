@@ -50,6 +50,7 @@ struct FrameView {
   long generation = 0;              // changes when the groom is regrown: rebuild topology buffers
   const HeadModel* head = nullptr;  // the scene's head: what is drawn, where hair grows
   Pose headPose;                    // where the head is this frame
+  Pose torsoPose;                   // and the torso (HeadModel::articulated)
   unsigned positionBuffer = 0;      // SSBO: vec4 per particle, world positions
   int width = 1280, height = 720;   // target size in pixels
   unsigned targetFramebuffer = 0;   // GL framebuffer to draw into (0 = the window's)

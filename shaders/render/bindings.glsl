@@ -9,7 +9,7 @@
 #define CSM_RENDER_REST_POSITIONS 1  // vec4 per particle, the head's local frame
 #define CSM_RENDER_STRAND_FIRST 2  // uint per strand + 1: first particle of strand s
 #define CSM_RENDER_STRAND_ATTRIBUTES 3  // vec4 per strand: groom colour, thickness scale
-#define CSM_RENDER_HEAD_SPHERES 4  // vec4 per sphere: world centre, radius
+#define CSM_RENDER_HEAD_SPHERES 4  // two vec4 a placement: world centre, scale; its turn
 // The drawn curves, per spline point (StrandGeometry): written by the render's compute passes.
 #define CSM_RENDER_SPLINE_FIRST 5  // uint per strand + 1: first spline point of strand s
 #define CSM_RENDER_POINT_STRAND 6  // uint per spline point: its strand

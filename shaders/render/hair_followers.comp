@@ -126,7 +126,7 @@ uniform int uSpheres;
 #define headFieldNode(i) head[i]
 #include "sim/head_field_sample.glsl"
 vec4 fieldAt(vec3 p) {
-  return headFieldAt(uFieldDims, uFieldOrigin, uFieldCell, p);
+  return headFieldAt(uFieldDims, uFieldOrigin, uFieldCell, p, 0);
 }
 
 void main() {

@@ -52,6 +52,15 @@ vec4 quatMul(vec4 a, vec4 b) {
   return vec4(a.w * b.xyz + b.w * a.xyz + cross(a.xyz, b.xyz), a.w * b.w - dot(a.xyz, b.xyz));
 }
 
+// v turned by the unit quaternion q (xyz, w), and by its inverse.
+vec3 quatTurn(vec4 q, vec3 v) {
+  vec3 t = 2.0 * cross(q.xyz, v);
+  return v + q.w * t + cross(q.xyz, t);
+}
+vec3 quatUnturn(vec4 q, vec3 v) {
+  return quatTurn(vec4(-q.xyz, q.w), v);
+}
+
 // Eigen's QuaternionBase::toRotationMatrix, term for term (columns here).
 mat3 quatToMat(vec4 q) {
   float tx = 2.0 * q.x, ty = 2.0 * q.y, tz = 2.0 * q.z;

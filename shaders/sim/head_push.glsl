@@ -13,10 +13,11 @@
 // A push's point whose depth it did not read (the circle's).
 const float kUnknownClearance = -1e30;
 
-// Pushes p (where the strain limit put it, within maxLength of prev) out of the distance
-// field's surface inflated by r and keeps it within reach of prev; `normal` gets the field's
-// outward normal where it touched. The float twin of pushOutOfHead in sim/solver/cpu_steps.cpp
-// on a field head (pushOutOfHead below: the same for the spheres).
+// Pushes p (where the strain limit put it, within maxLength of prev) out of the body's distance
+// field (the union of its parts at the step's poses, bodySample, read in world space) inflated
+// by r and keeps it within reach of prev; `normal` gets the field's outward normal where it
+// touched. The float twin of pushOutOfHead in sim/solver/cpu_steps.cpp on a field head
+// (pushOutOfHead below: the same for the spheres).
 // - The push: along the field's normal by what is left, twice at most (the field is close to a
 //   distance, not exactly one); out of reach, the nearest point of the circle where the
 //   tangent plane there meets the ball of reach around prev.
@@ -33,27 +34,31 @@ const float kUnknownClearance = -1e30;
 // one, a plain push two or three, and the bisection's 20 come only where a lane needs them
 // (Fig. 1, head only, llvmpipe: strain limiting 49.6 -> 25.5 ms a frame, the same positions to
 // the bit).
-bool pushOutOfFieldHead(inout vec3 p, vec3 prev, mat4 head, float r, float maxLength,
-                    inout vec3 normal) {
+bool pushOutOfFieldHead(inout vec3 p, vec3 prev, Substep st, float r, float maxLength,
+                        inout vec3 normal) {
   // What the next read is of: a push's first read at p, a step of the push, how far p lies
   // outside (after a push that left it on the circle), how far prev lies outside, the
   // bisection, the gradient where it ended; done.
   const int kPush = 0, kStep = 1, kDepth = 2, kLevel = 3, kBisect = 4, kGradient = 5, kDone = 6;
-  const vec3 up = vec3(0.0, 1.0, 0.0);
+  const vec3 up = mat3(st.head) * vec3(0.0, 1.0, 0.0);
   int state = kPush;
   bool touching = false;  // the first push found p closer than r to the surface
   vec3 local = vec3(0.0), n = up;
   int steps = 0, pass = 0, bisections = 0;
+  // With a torso, up to eight steps: one out of a part may end in the other, in the crease where
+  // they meet (pushOutOfBodyField in sim/solver/cpu_steps.cpp).
+  int maxSteps = P.torsoIsField != 0u ? 8 : 2;
   float clearance = kUnknownClearance, level = 1e30, depth = 0.0, len = 0.0;
   bool reach = false;
   float lo = 0.0, hi = 1.0, mid = 0.0;
-  // At most 3 reads for the first push, 5 + 4 + 1 for the passes, 20 + 1 at the end.
-  for (int guard = 0; state != kDone && guard < 40; ++guard) {
-    vec3 q = state == kStep ? local
-                            : toHeadFrame(head, state == kLevel    ? prev
-                                                : state == kBisect ? prev + mid * (p - prev)
-                                                                   : p);
-    vec4 s = headFieldSample(q);
+  // At most 3 reads for the first push (9 with a torso), 5 + 4 + 1 for the passes (17 + 16 + 1),
+  // 20 + 1 at the end.
+  for (int guard = 0; state != kDone && guard < 80; ++guard) {
+    vec3 q = state == kStep     ? local
+             : state == kLevel  ? prev
+             : state == kBisect ? prev + mid * (p - prev)
+                                : p;
+    vec4 s = bodySample(st, q);
     bool pushed = false, checkReach = false, checkDepth = false, checkLevel = false;
     if (state == kPush) {
       // A push's first read, at p.
@@ -66,10 +71,10 @@ bool pushOutOfFieldHead(inout vec3 p, vec3 prev, mat4 head, float r, float maxLe
         n = up;
         steps = 0;
         state = kStep;
-        pushed = !(steps < 2 && s.w < r);  // a NaN distance takes no step, as the loop's test
+        pushed = !(steps < maxSteps && s.w < r);  // a NaN distance takes no step, as the loop's test
       }
     } else if (state == kStep) {
-      pushed = !(steps < 2 && s.w < r);  // else one more step (below)
+      pushed = !(steps < maxSteps && s.w < r);  // else one more step (below)
     } else if (state == kDepth) {
       depth = s.w;
       checkDepth = true;
@@ -89,7 +94,7 @@ bool pushOutOfFieldHead(inout vec3 p, vec3 prev, mat4 head, float r, float maxLe
         state = kGradient;
       }
     } else if (state == kGradient) {
-      if (length(s.xyz) > 1e-12) normal = mat3(head) * normalize(s.xyz);
+      if (length(s.xyz) > 1e-12) normal = normalize(s.xyz);
       state = kDone;
     }
     // A step of the push: along the field's normal by what is left.
@@ -101,8 +106,8 @@ bool pushOutOfFieldHead(inout vec3 p, vec3 prev, mat4 head, float r, float maxLe
     }
     if (pushed) {
       // The push's end: onto the surface, or the circle within reach of prev.
-      vec3 target = mat3(head) * local + head[3].xyz;
-      vec3 nw = mat3(head) * n;
+      vec3 target = local;
+      vec3 nw = n;
       p = target;
       clearance = s.w;
       normal = nw;
@@ -303,7 +308,7 @@ void sweepParticle(vec3 restHere, vec3 restPrev, bool contacts, vec4 c, vec3 xPr
       // on the head (their fallback normal) as if nothing had happened.
       bool collide = headCollide && !any(isnan(x)) && !any(isinf(x));
   #ifdef CSM_HEAD_FIELD
-      bool touching = collide && pushOutOfFieldHead(x, xPrev, st.head, r, maxLength, fieldNormal);
+      bool touching = collide && pushOutOfFieldHead(x, xPrev, st, r, maxLength, fieldNormal);
   #else
       bool touching = collide && pushOutOfHead(x, xPrev, sphereBase, r, maxLength);
   #endif
@@ -312,23 +317,37 @@ void sweepParticle(vec3 restHere, vec3 restPrev, bool contacts, vec4 c, vec3 xPr
       if (touching) {
         // Coulomb friction against the moving head: the tangential speed relative to the surface
         // loses at most mu times the normal speed the contact took away this step.
-        vec3 surfaceVel = (x - (st.headDelta * vec4(x, 1.0)).xyz) / h;
+        // The part it touches (the head, or the torso), and where its surface point there was
+        // at the step's start.
         vec3 nrm = fieldNormal;
-  #ifndef CSM_HEAD_FIELD
+        bool torso = false;
+  #ifdef CSM_HEAD_FIELD
+        if (P.torsoIsField != 0u) {
+          int part;
+          bodySample(st, x, part);
+          torso = part == 1;
+        }
+  #else
         {
           vec4 nearest = spheres[sphereBase];
           float best = length(x - nearest.xyz) - nearest.w;
+          int nearestIndex = 0;
           for (int k = 1; k < sphereCount; ++k) {
             vec4 sp = spheres[sphereBase + uint(k)];
             float dist = length(x - sp.xyz) - sp.w;
             if (dist < best) {
               best = dist;
               nearest = sp;
+              nearestIndex = k;
             }
           }
           nrm = normalize(x - nearest.xyz);
+          torso = nearestIndex >= P.torsoSphereFirst;
         }
   #endif
+        vec3 was = torso ? quatTurn(st.torsoDeltaRotation, x) + st.torsoDeltaTranslation.xyz
+                         : (st.headDelta * vec4(x, 1.0)).xyz;
+        vec3 surfaceVel = (x - was) / h;
         float vnBefore = dot(vBeforeHead - surfaceVel, nrm);
         vec3 rel = v - surfaceVel;
         float vn = max(0.0, dot(rel, nrm));

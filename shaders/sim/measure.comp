@@ -4,7 +4,8 @@
 // fixed order, and GpuSolver::takeSample combines the records in order on the CPU.
 //   record[2g]:     x max strain (float bits, ordered as unsigned: see orderedKey),
 //                   y segments measured, z particles inside the head, w non-finite particles
-//   record[2g + 1]: x sum of |strain| (float bits), y max speed (float bits), z, w unused
+//   record[2g + 1]: x sum of |strain| (float bits), y max speed (float bits), z particles inside
+//                   the torso (and not the head), w unused
 #include "sim/common.glsl"
 #include "sim/head_field.glsl"
 
@@ -22,11 +23,12 @@ layout(std430, binding = CSM_BIND_STRAND_STIFFNESS) readonly buffer StrandStiffn
 layout(std430, binding = CSM_BIND_MEASURE) writeonly buffer Measure { uvec4 record[]; };
 
 uniform uint sphereBase;  // the head spheres of the frame's last step
-uniform uint lastStep;    // and its index, for the head's pose
+uniform uint lastStep;    // and its index, for the head's pose and the torso's
 
 shared uint sMaxStrain[CSM_MEASURE_GROUP];
 shared uint sSegments[CSM_MEASURE_GROUP];
 shared uint sInside[CSM_MEASURE_GROUP];
+shared uint sInsideTorso[CSM_MEASURE_GROUP];
 shared uint sNonFinite[CSM_MEASURE_GROUP];
 shared float sStrainSum[CSM_MEASURE_GROUP];
 shared float sMaxSpeed[CSM_MEASURE_GROUP];
@@ -47,7 +49,7 @@ bool finite3(vec3 v) {
 void main() {
   uint i = globalIndex();
   uint l = gl_LocalInvocationID.x;
-  uint maxStrain = 0u, segments = 0u, inside = 0u, nonFinite = 0u;
+  uint maxStrain = 0u, segments = 0u, inside = 0u, insideTorso = 0u, nonFinite = 0u;
   float strainSum = 0.0, speed = 0.0;
   if (i < P.particles) {
     uint s = particleStrand[i];
@@ -58,16 +60,26 @@ void main() {
       nonFinite = 1u;
     } else {
       speed = length(v);
-      if (int(i - a) >= pinnedOf(strandStiffness[s]) && headIsField())
+      if (int(i - a) >= pinnedOf(strandStiffness[s]) && headIsField()) {
         inside = headFieldSample(toHeadFrame(S[lastStep].head, x)).w < 0.0 ? 1u : 0u;
-      else if (int(i - a) >= pinnedOf(strandStiffness[s]))
+        if (inside == 0u && P.torsoIsField != 0u) {
+          Substep st = S[lastStep];
+          vec3 q = quatUnturn(st.torsoRotation, x - st.torsoTranslation.xyz);
+          insideTorso = torsoFieldSample(q).w < 0.0 ? 1u : 0u;
+        }
+      } else if (int(i - a) >= pinnedOf(strandStiffness[s])) {
         for (int k = 0; k < P.headSpheres; ++k) {
           vec4 sp = spheres[sphereBase + uint(k)];
           if (length(x - sp.xyz) < sp.w * (1.0 - 1e-6)) {
-            inside = 1u;
-            break;
+            if (k < P.torsoSphereFirst) {
+              inside = 1u;
+              break;
+            }
+            insideTorso = 1u;
           }
         }
+        if (inside != 0u) insideTorso = 0u;
+      }
       if (i + 1u < b) {
         float rest = length(readRest(int(i) + 1).xyz - readRest(int(i)).xyz);
         vec3 next = readPosition(int(i) + 1).xyz;
@@ -87,6 +99,7 @@ void main() {
   sMaxStrain[l] = maxStrain;
   sSegments[l] = segments;
   sInside[l] = inside;
+  sInsideTorso[l] = insideTorso;
   sNonFinite[l] = nonFinite;
   sStrainSum[l] = strainSum;
   sMaxSpeed[l] = speed;
@@ -96,6 +109,7 @@ void main() {
       sMaxStrain[l] = max(sMaxStrain[l], sMaxStrain[l + half_]);
       sSegments[l] += sSegments[l + half_];
       sInside[l] += sInside[l + half_];
+      sInsideTorso[l] += sInsideTorso[l + half_];
       sNonFinite[l] += sNonFinite[l + half_];
       sStrainSum[l] += sStrainSum[l + half_];
       sMaxSpeed[l] = max(sMaxSpeed[l], sMaxSpeed[l + half_]);
@@ -105,6 +119,7 @@ void main() {
   if (l == 0u) {
     uint g = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     record[2u * g] = uvec4(sMaxStrain[0], sSegments[0], sInside[0], sNonFinite[0]);
-    record[2u * g + 1u] = uvec4(floatBitsToUint(sStrainSum[0]), floatBitsToUint(sMaxSpeed[0]), 0u, 0u);
+    record[2u * g + 1u] =
+        uvec4(floatBitsToUint(sStrainSum[0]), floatBitsToUint(sMaxSpeed[0]), sInsideTorso[0], 0u);
   }
 }

@@ -98,10 +98,12 @@
 //   candidateDistance (2 contactRadius + margin, m), compliance (m/N), friction, sweepSolve (1: collision.solve
 //     sweep, 0: jacobi)
 //   dftl, windDrag (1/s), penaltyStiffness (1/s^2), penaltyDamping (1/s)
-//   stiffnessModel (CSM_STIFFNESS_*), rotationIterations, headSpheres (count)
+//   torsoSphereFirst (the first of the spheres that are the torso's: headSpheres when none),
+//     stiffnessModel (CSM_STIFFNESS_*), rotationIterations, headSpheres (count: the head's and
+//     the torso's)
 //   strainLimiting, headCollision, windOn, strandContacts (this frame's constraints, which the
 //     strain limit's sweep applies; 0 with the penalty model): 0 or 1
-//   particles, strands, segments
+//   particles, strands, segments, torsoIsField (1: the body has a torso field, after the head's)
 //   bucketMask (buckets - 1), entryCapacity, pairListCapacity, listHalf (this frame's half of the
 //     candidate range: 0 or 1)
 //   cellEdge (m), inverseCellEdge, cellPadding (the box padding, m), contactRadius (the radius
@@ -115,6 +117,8 @@
 //     (volume fraction per fixed-point unit of strand length at a node)
 //   headFieldOrigin (the head's distance field's lowest node, head frame), headFieldCell (m)
 //   headFieldDims (nodes per axis), headIsField (1: the head is the field, else spheres)
+//   torsoFieldOrigin (the torso's field's lowest node, torso frame), torsoFieldCell (m)
+//   torsoFieldDims, torsoFieldOffset (its first node in the field's buffer, after the head's)
 #define CSM_SIM_PARAMS(F)                                                                        \
   F(vec3, gravity) F(float, unused0)                                                             \
   F(vec3, windDirection) F(float, windStrength)                                                  \
@@ -122,9 +126,10 @@
   F(float, alpha) F(float, strainLimit) F(float, radius) F(float, headFriction)                  \
   F(float, candidateDistance) F(float, compliance) F(float, friction) F(float, sweepSolve)       \
   F(float, dftl) F(float, windDrag) F(float, penaltyStiffness) F(float, penaltyDamping)         \
-  F(int, unused3) F(int, stiffnessModel) F(int, rotationIterations) F(int, headSpheres)          \
+  F(int, torsoSphereFirst) F(int, stiffnessModel) F(int, rotationIterations)                    \
+  F(int, headSpheres)                                                                            \
   F(uint, strainLimiting) F(uint, headCollision) F(uint, windOn) F(uint, strandContacts)         \
-  F(uint, particles) F(uint, strands) F(uint, segments) F(uint, unused4)                         \
+  F(uint, particles) F(uint, strands) F(uint, segments) F(uint, torsoIsField)                    \
   F(uint, bucketMask) F(uint, entryCapacity) F(uint, pairListCapacity) F(uint, listHalf)         \
   F(float, cellEdge) F(float, inverseCellEdge) F(float, cellPadding) F(float, contactRadius)     \
   F(vec3, gridOrigin) F(float, unused6)                                                          \
@@ -134,15 +139,22 @@
   F(float, volumeFriction) F(float, volumeStiffness) F(float, volumeAllowed)                     \
   F(float, volumePerUnit)                                                                        \
   F(vec3, headFieldOrigin) F(float, headFieldCell)                                               \
-  F(uvec3, headFieldDims) F(uint, headIsField)
+  F(uvec3, headFieldDims) F(uint, headIsField)                                                   \
+  F(vec3, torsoFieldOrigin) F(float, torsoFieldCell)                                             \
+  F(uvec3, torsoFieldDims) F(uint, torsoFieldOffset)
 
 // Substep: one per substep of the frame, after SimParams (`S[k]`).
 //   head: the head's pose at the end of the step (pinned roots follow it)
 //   headDelta: the start-of-step pose after the inverse of the end pose (head friction)
 //   stepStart (s), h (s), twistStep (twistStepOf), velocityKept (by damping: exp(-c h))
+//   torsoRotation (a unit quaternion, xyz w), torsoTranslation (xyz): the torso's pose at the
+//     end of the step; torsoDeltaRotation, torsoDeltaTranslation: its headDelta (quaternions,
+//     not matrices, to keep CSM_MAX_SUBSTEPS steps within a uniform block's 64 KiB)
 #define CSM_SUBSTEP(F)                                                                           \
   F(mat4, head) F(mat4, headDelta)                                                               \
-  F(float, stepStart) F(float, h) F(float, twistStep) F(float, velocityKept)
+  F(float, stepStart) F(float, h) F(float, twistStep) F(float, velocityKept)                     \
+  F(vec4, torsoRotation) F(vec4, torsoTranslation)                                               \
+  F(vec4, torsoDeltaRotation) F(vec4, torsoDeltaTranslation)
 
 // Substeps a frame may hold (sim.max_substeps at most): the size of the uniform block's array
 // (common.glsl, CSM_PARAMS_UNIFORM).

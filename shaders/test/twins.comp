@@ -47,7 +47,7 @@ void main() {
   vec4 k = inputs[3u * i + 2u];
   vec3 normal = vec3(0.0);
 #ifdef TWIN_FIELD_PUSH
-  bool touching = pushOutOfFieldHead(p, prev, S[0].head, k.x, k.y, normal);
+  bool touching = pushOutOfFieldHead(p, prev, S[0], k.x, k.y, normal);
 #else
   bool touching = pushOutOfHead(p, prev, 0u, k.x, k.y);
 #endif

@@ -112,7 +112,10 @@ inline std::size_t guideCount(int setting, std::size_t strands) {
 }
 
 struct HeadConfig {
-  std::string mesh;     // an OBJ head (head frame, metres); empty = the built-in mannequin
+  std::string mesh;  // an OBJ head (head frame, metres); empty = the built-in mannequin
+  // With `mesh`, an OBJ torso (the same frame, at rest) that moves with the chest's pose while
+  // `mesh` moves with the head's; empty: `mesh` is the whole body, moving with the head.
+  std::string torsoMesh;
   std::string meshDir;  // where a relative `mesh` is found: the preset's folder (not a parameter)
   std::vector<Sphere> spheres{
       {{0.0f, 0.0f, 0.0f}, 0.1f}, {{0.0f, -0.065f, 0.03f}, 0.07f}, {{0.0f, -0.16f, -0.01f}, 0.05f}};

@@ -26,13 +26,25 @@ Pose interpolate(const Pose& a, const Pose& b, double s) {
   return {glm::slerp(a.rotation, b.rotation, s), glm::mix(a.translation, b.translation, s)};
 }
 
-Pose FramePath::at(double s) const {
+namespace {
+
+Pose along(const std::vector<Pose>& keys, double s) {
   if (keys.size() < 2) return keys.empty() ? Pose{} : keys.front();
   if (!(s > 0.0)) return keys.front();
   if (s >= 1.0) return keys.back();
   const double u = s * double(keys.size() - 1);
   const size_t k = std::min(keys.size() - 2, size_t(u));
   return interpolate(keys[k], keys[k + 1], u - double(k));
+}
+
+}  // namespace
+
+Pose FramePath::at(double s) const {
+  return along(keys, s);
+}
+
+Pose FramePath::torsoAt(double s) const {
+  return along(torso, s);
 }
 
 Pose rotationAbout(const glm::dvec3& pivot, const glm::dvec3& axis, double degrees) {
@@ -63,6 +75,12 @@ Pose headPose(const HeadConfig& head, double t) {
       return p;
     }
   }
+  return {};
+}
+
+Pose torsoPose(const HeadConfig& head, double t) {
+  if (head.motion == HeadMotion::Spin || head.motion == HeadMotion::Bounce)
+    return headPose(head, t);
   return {};
 }
 

@@ -29,19 +29,34 @@ Pose interpolate(const Pose& a, const Pose& b, double s);
 // A rotation of `degrees` about `axis` through `pivot`.
 Pose rotationAbout(const glm::dvec3& pivot, const glm::dvec3& axis, double degrees);
 
-// Where the head is over one frame: keys at evenly spaced fractions of it, the first where the
+// The body's two rigid parts (docs/METHOD.md section 6.11): the head (cranium, face, upper neck),
+// which the roots follow, and the torso (lower neck, shoulders, upper chest).
+struct BodyPose {
+  Pose head;
+  Pose torso;
+};
+
+// Where the body is over one frame: keys at evenly spaced fractions of it, the first where the
 // frame starts and the last where it ends (two keys: the frame's ends; a motion clip gives more,
 // sampled between its frames, so every substep of a frame sees the clip where it is then).
+// `keys` are the head's; `torso` the torso's at the same fractions, or empty where the torso
+// stays at rest.
 struct FramePath {
   std::vector<Pose> keys;
+  std::vector<Pose> torso;
   const Pose& from() const { return keys.front(); }
   const Pose& to() const { return keys.back(); }
   // At fraction s (0..1) of the frame: the keys around it interpolated.
   Pose at(double s) const;
+  // The torso there: the identity when `torso` is empty.
+  Pose torsoAt(double s) const;
 };
 
-// The preset's head motion at time t (seconds).
+// The preset's head motion at time t (seconds): nod, shake and sway turn the head alone about
+// head.pivot; spin and bounce move the whole body (torsoPose).
 Pose headPose(const HeadConfig& head, double t);
+// The torso's part of it: spin and bounce; at rest for the others.
+Pose torsoPose(const HeadConfig& head, double t);
 
 // Head spheres in world space for a pose.
 std::vector<Sphere> worldSpheres(const std::vector<Sphere>& local, const Pose& pose);

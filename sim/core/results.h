@@ -14,11 +14,12 @@ namespace csm {
 
 // Accuracy measures of one hair state, the same for every solver (sim/solver/accuracy.h).
 struct Accuracy {
-  double maxStrain = 0.0;         // largest relative stretch |x_i+1 - x_i| / l_i - 1 (0 = rest)
-  double meanStrain = 0.0;        // mean of |relative stretch| over segments
-  uint64_t headPenetrations = 0;  // free particles inside the head (its field or a sphere)
-  double maxSpeed = 0.0;          // m/s
-  uint64_t nanCount = 0;          // particles with a non-finite position or velocity
+  double maxStrain = 0.0;          // largest relative stretch |x_i+1 - x_i| / l_i - 1 (0 = rest)
+  double meanStrain = 0.0;         // mean of |relative stretch| over segments
+  uint64_t headPenetrations = 0;   // free particles inside the head (its field or a sphere)
+  uint64_t torsoPenetrations = 0;  // free particles inside the torso, not the head
+  double maxSpeed = 0.0;           // m/s
+  uint64_t nanCount = 0;           // particles with a non-finite position or velocity
 };
 
 // Penetration depth histogram: (contact distance - distance) / r in kDepthBins bins of

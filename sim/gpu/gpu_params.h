@@ -9,6 +9,7 @@
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "shaders/sim/shared_constants.glsl"
 
@@ -16,6 +17,7 @@ namespace csm::gpu {
 
 // GLSL's names for the types the list uses.
 using vec3 = glm::vec3;
+using vec4 = glm::vec4;
 using uvec3 = glm::uvec3;
 using mat4 = glm::mat4;
 using uint = uint32_t;
@@ -28,10 +30,11 @@ struct Substep {
   CSM_SUBSTEP(CSM_MEMBER)
 };
 
-static_assert(sizeof(SimParams) == 12 * 16 + 2 * 64 + 5 * 16);
+static_assert(sizeof(SimParams) == 12 * 16 + 2 * 64 + 7 * 16);
 static_assert(offsetof(SimParams, cellEdge) == 10 * 16);
 static_assert(offsetof(SimParams, listHalf) == offsetof(SimParams, bucketMask) + 12);
-static_assert(sizeof(Substep) == 144);
+static_assert(sizeof(Substep) == 208);
+static_assert(sizeof(SimParams) + CSM_MAX_SUBSTEPS * sizeof(Substep) <= 65536);
 
 // The parameter block read as a uniform block: the frame's parameters and CSM_MAX_SUBSTEPS
 // steps, the size the shaders declare (common.glsl), used or not.

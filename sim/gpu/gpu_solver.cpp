@@ -138,6 +138,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   shape_ = headModel_.collider();
   time_ = 0.0;
   head_ = head;
+  torso_ = Pose{};
   state_ = makeHairState(groom, config.sim, head);
   meanWeight_ = meanWeight(state_.weight);
   hair_.upload(state_, head.rotation);
@@ -192,7 +193,7 @@ void GpuSolver::setConfig(const Config& config) {
   }
   if (rebuild && hair_.particles > 0) uploadRegions();
   if (regrid) volume_.reset(state_, config_.collision);
-  if (shape_.field != uploadedField_) uploadHeadField();
+  if (shape_.field != uploadedField_ || shape_.torsoField != uploadedTorso_) uploadHeadField();
   // Lists anew where they begin, or where they take other strands (a mode with strand
   // contacts lists every strand; the measures alone, a sample).
   const bool sized =
@@ -234,10 +235,15 @@ void GpuSolver::sizeLists() {
 
 void GpuSolver::uploadHeadField() {
   const DistanceGrid* field = shape_.field;
-  if (field == uploadedField_ && headField_.id() != 0) return;
-  gpu::fill(headField_, field ? field->nodes : std::vector<glm::vec4>(1));
+  const DistanceGrid* torso = field ? shape_.torsoField : nullptr;
+  if (field == uploadedField_ && torso == uploadedTorso_ && headField_.id() != 0) return;
+  // The head's nodes, then the torso's (SimParams::torsoFieldOffset).
+  std::vector<glm::vec4> nodes = field ? field->nodes : std::vector<glm::vec4>(1);
+  if (torso) nodes.insert(nodes.end(), torso->nodes.begin(), torso->nodes.end());
+  gpu::fill(headField_, nodes);
   gpu::view(headFieldTex_, headField_, gl::TextureFormat::Rgba32f);
   uploadedField_ = field;
+  uploadedTorso_ = torso;
   uploadedHead_ = headModel_.shared();  // keeps the field uploaded alive, so its address names it
 }
 
@@ -245,15 +251,18 @@ void GpuSolver::stepFrame(const FramePath& path) {
   const FramePlan plan = planFrame(config_.sim, regions_.planRate);
   const int substeps = plan.substeps;
   const double h = plan.h;
-  std::vector<Pose> poses(substeps), before(substeps);
+  std::vector<Pose> poses(substeps), before(substeps), torso(substeps), torsoBefore(substeps);
   ++framesSinceMeasure_;
   for (int k = 0; k < substeps; ++k) {
     poses[k] = path.at(double(k + 1) / substeps);
     before[k] = k == 0 ? head_ : poses[k - 1];
+    torso[k] = path.torsoAt(double(k + 1) / substeps);
+    torsoBefore[k] = k == 0 ? path.torsoAt(0.0) : torso[k - 1];
   }
   if (hair_.particles == 0 || !failure_.empty()) {
     time_ += substeps * h;
     head_ = poses.back();
+    torso_ = torso.back();
     return;
   }
   const bool contacts = strandContacts(config_.collision.mode);
@@ -263,7 +272,7 @@ void GpuSolver::stepFrame(const FramePath& path) {
   const bool constraints = contacts && !penalty;
   // Measuring contacts with hair-hair off, the grid keeps the last sample's list (crossings).
   if (contacts || !measureContacts_) contactSearch_.beginFrame(contacts);
-  writeParams(poses, before);
+  writeParams(poses, before, torso, torsoBefore);
   bindAll();
   timer_.beginFrame();
   // The frame's candidates, from where it starts (METHOD.md section 3.3).
@@ -323,6 +332,7 @@ void GpuSolver::stepFrame(const FramePath& path) {
   }
   timer_.endStage();
   head_ = poses.back();
+  torso_ = torso.back();
   timer_.endFrame();
   // The renderer reads the positions as vertex data or storage; read-backs and clears follow.
   gl::memoryBarrier(gl::Barrier::All);

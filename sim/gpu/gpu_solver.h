@@ -117,13 +117,17 @@ class GpuSolver final : public Solver, public SolverState, public SolverDiagnost
   void reserveLists();
   // The frame's parameters for steps ending at `poses` (from `before`), written into params_
   // by what they fill, then uploaded with a Substep per step.
-  void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
+  // Each step's head pose and the head's where the step starts, and the torso's (empty: torso_
+  // throughout).
+  void writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before,
+                   const std::vector<Pose>& torso = {}, const std::vector<Pose>& torsoBefore = {});
   void writeStepParams(gpu::SimParams& p) const;  // gravity, wind, stiffness, the counts
   void writeHeadParams(gpu::SimParams& p) const;  // the hair's radius, the head's shape
   // Strand contacts and their grid, whose cells count from the head where the frame ends.
   void writeContactParams(gpu::SimParams& p, const Pose& frameEnd) const;
   // params_ and each step's Substep (the head's pose, its spheres) to the GPU.
-  void uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before);
+  void uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before,
+                    const std::vector<Pose>& torso, const std::vector<Pose>& torsoBefore);
   void bindAll();
   // The candidate lists of the current state, built now (GpuProbe::detectContacts, the
   // measures).
@@ -138,6 +142,7 @@ class GpuSolver final : public Solver, public SolverState, public SolverDiagnost
   SceneHead shape_;       // what it collides with, read every step
   double time_ = 0.0;
   Pose head_;
+  Pose torso_;               // the torso's pose where the last frame ended
   HairState state_;          // the layout the regions are built from
   double meanWeight_ = 1.0;  // of state_.weight (contactRadius)
   Regions regions_;
@@ -170,6 +175,7 @@ class GpuSolver final : public Solver, public SolverState, public SolverDiagnost
   gl::Buffer headField_{gl::NoCreate};
   gl::BufferTexture headFieldTex_{gl::NoCreate};
   const DistanceGrid* uploadedField_ = nullptr;
+  const DistanceGrid* uploadedTorso_ = nullptr;    // after the head's nodes in headField_
   std::shared_ptr<const HeadModel> uploadedHead_;  // the model uploadedField_ belongs to
   int substepsWritten_ = 0;                        // steps of the last writeParams
   gpu::StageTimer timer_;

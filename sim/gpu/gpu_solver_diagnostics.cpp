@@ -42,9 +42,10 @@ void GpuSolver::measureNow() {
 unsigned GpuSolver::lastSubstepSpheres() const {
   // The spheres buffer holds the head's spheres for each step of the last writeParams: the
   // measures use the last step's.
-  if (shape_.spheres.empty()) return 0;
+  const size_t perStep = shape_.spheres.size() + shape_.torsoSpheres.size();
+  if (perStep == 0) return 0;
   const size_t uploaded = size_t(spheres_.size()) / sizeof(glm::vec4);
-  return unsigned(uploaded - std::min(uploaded, shape_.spheres.size()));
+  return unsigned(uploaded - std::min(uploaded, perStep));
 }
 
 void GpuSolver::requestSample(long frame) {

@@ -14,12 +14,15 @@
 
 namespace csm {
 
-void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before) {
+void GpuSolver::writeParams(const std::vector<Pose>& poses, const std::vector<Pose>& before,
+                            const std::vector<Pose>& torso, const std::vector<Pose>& torsoBefore) {
   writeStepParams(params_);
   writeHeadParams(params_);
   writeContactParams(params_, poses.back());
   volume_.writeParams(params_, config_.collision, head_);
-  uploadParams(poses, before);
+  const std::vector<Pose> still(poses.size(), torso_);
+  uploadParams(poses, before, torso.empty() ? still : torso,
+               torsoBefore.empty() ? still : torsoBefore);
 }
 
 void GpuSolver::writeStepParams(gpu::SimParams& p) const {
@@ -52,7 +55,8 @@ void GpuSolver::writeHeadParams(gpu::SimParams& p) const {
   const CollisionConfig& col = config_.collision;
   p.radius = col.radius;
   p.headFriction = col.headFriction;
-  p.headSpheres = int(shape_.spheres.size());
+  p.headSpheres = int(shape_.spheres.size() + shape_.torsoSpheres.size());
+  p.torsoSphereFirst = int(shape_.spheres.size());
   p.headCollision = collidesWithHead(col.mode);
   if (const DistanceGrid* field = uploadedField_) {
     p.headFieldOrigin = field->origin;
@@ -64,6 +68,19 @@ void GpuSolver::writeHeadParams(gpu::SimParams& p) const {
     p.headFieldCell = 1.0f;
     p.headFieldDims = glm::uvec3(2u);
     p.headIsField = 0u;
+  }
+  if (const DistanceGrid* torso = uploadedTorso_) {
+    p.torsoFieldOrigin = torso->origin;
+    p.torsoFieldCell = torso->cell;
+    p.torsoFieldDims = glm::uvec3(torso->dims);
+    p.torsoFieldOffset = uint32_t(uploadedField_->nodes.size());
+    p.torsoIsField = 1u;
+  } else {
+    p.torsoFieldOrigin = glm::vec3(0.0f);
+    p.torsoFieldCell = 1.0f;
+    p.torsoFieldDims = glm::uvec3(2u);
+    p.torsoFieldOffset = 0u;
+    p.torsoIsField = 0u;
   }
 }
 
@@ -86,7 +103,8 @@ void GpuSolver::writeContactParams(gpu::SimParams& p, const Pose& frameEnd) cons
   p.gridOrigin = glm::vec3(frameEnd.translation);
 }
 
-void GpuSolver::uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before) {
+void GpuSolver::uploadParams(const std::vector<Pose>& poses, const std::vector<Pose>& before,
+                             const std::vector<Pose>& torso, const std::vector<Pose>& torsoBefore) {
   const SimConfig& sim = config_.sim;
   const gpu::SimParams& p = params_;
   const int substeps = int(poses.size());
@@ -106,12 +124,22 @@ void GpuSolver::uploadParams(const std::vector<Pose>& poses, const std::vector<P
     now[3] = glm::dvec4(poses[k].translation, 1.0);
     was[3] = glm::dvec4(before[k].translation, 1.0);
     s.headDelta = glm::mat4(was * glm::inverse(now));
+    // The torso's pose, and its delta as a rotation and a translation, composed in double.
+    const Pose& body = torso[size_t(k)];
+    const Pose delta = compose(torsoBefore[size_t(k)], inverse(body));
+    s.torsoRotation = glm::vec4(body.rotation.x, body.rotation.y, body.rotation.z, body.rotation.w);
+    s.torsoTranslation = glm::vec4(glm::vec3(body.translation), 0.0f);
+    s.torsoDeltaRotation =
+        glm::vec4(delta.rotation.x, delta.rotation.y, delta.rotation.z, delta.rotation.w);
+    s.torsoDeltaTranslation = glm::vec4(glm::vec3(delta.translation), 0.0f);
     s.stepStart = float(t);
     s.h = float(h);
     s.twistStep = float(twistStepOf(sim, h, sim.rotationIterations));
     s.velocityKept = float(keep);
     std::memcpy(blob.data() + sizeof(p) + k * sizeof(s), &s, sizeof(s));
     for (const Sphere& sp : worldSpheres(shape_.spheres, poses[k]))
+      spheres.emplace_back(sp.center, sp.radius);
+    for (const Sphere& sp : worldSpheres(shape_.torsoSpheres, torso[size_t(k)]))
       spheres.emplace_back(sp.center, sp.radius);
     t += h;  // as CpuSolver advances its clock, step by step
   }

@@ -70,6 +70,7 @@ FrameSample SampleRing::readOldest() {
     strainKey = std::max(strainKey, r0.x);
     segments += r0.y;
     a.headPenetrations += r0.z;
+    a.torsoPenetrations += r1.z;
     a.nanCount += r0.w;
     strainSum += double(std::bit_cast<float>(r1.x));
     a.maxSpeed = std::max(a.maxSpeed, double(std::bit_cast<float>(r1.y)));

@@ -16,21 +16,27 @@
 namespace csm {
 
 // What a solver collides with, read every step: the field when collision.head_shape is sdf,
-// else the spheres (head frame).
+// else the spheres (head frame); and where the body has a torso (the mannequin, or
+// head.torso_mesh), the torso's, in its own frame, which moves with the torso's pose.
 struct SceneHead {
   const DistanceGrid* field = nullptr;  // null: the spheres
   std::vector<Sphere> spheres;
+  const DistanceGrid* torsoField = nullptr;  // null: no torso, or its spheres
+  std::vector<Sphere> torsoSpheres;
+  bool hasTorso() const { return torsoField != nullptr || !torsoSpheres.empty(); }
 };
 
-// A head read from an OBJ (head.mesh) and its field (4 mm, a 2 cm margin).
+// A head read from an OBJ (head.mesh, or head.torso_mesh) and its field (4 mm, a 2 cm margin).
 struct LoadedHead {
   SurfaceMesh mesh;
   DistanceGrid grid;
 };
 // Reads, checks and samples the OBJ at `path`. Null with a message naming the file and line.
 std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::string* error);
-// head.mesh resolved against the folder of the preset it came from (empty: the mannequin).
+// head.mesh, and head.torso_mesh, resolved against the folder of the preset it came from
+// (empty: the mannequin; no torso of the user's).
 std::string headMeshPath(const Config& c);
+std::string torsoMeshPath(const Config& c);
 
 class HeadModel {
  public:
@@ -38,39 +44,51 @@ class HeadModel {
   // fitted inside the shape when head.fit_spheres is set. Parts that `previous` already holds
   // for the same inputs (the mesh of the same path, spheres fitted to the same field and count)
   // are shared, not made again. Null with a message naming the file (and line) when head.mesh
-  // cannot be read.
+  // cannot be read ("head.mesh: ..." or "head.torso_mesh: ...").
   static std::shared_ptr<const HeadModel> build(const Config& c, std::string* error,
                                                 const HeadModel* previous = nullptr);
   // The same, for code that has checked the scene already (tests, tools): throws
   // std::runtime_error with the message where build fails.
   static std::shared_ptr<const HeadModel> require(const Config& c);
 
-  // The field the hair collides with: the shape's when collision.head_shape is sdf, else null
-  // (the spheres).
+  // The whole body at rest, where hair grows and is draped, whatever moves later: its field
+  // when collision.head_shape is sdf, else null (the spheres).
   const DistanceGrid* field() const { return sdf_ ? &shapeField() : nullptr; }
-  // The field of the head's shape whatever collision.head_shape says: head.mesh's, or the
-  // mannequin's.
+  // The field of the whole shape at rest whatever collision.head_shape says: head.mesh's (with
+  // head.torso_mesh's), or the mannequin's.
   const DistanceGrid& shapeField() const;
-  // The spheres the scene collides with, grows hair from and draws when collision.head_shape
-  // is spheres (head frame).
+  // Every sphere, the head's and the torso's, in the head frame at rest: what the scene grows
+  // hair from and draws when collision.head_shape is spheres.
   const std::vector<Sphere>& spheres() const { return spheres_; }
-  // The surface drawn: head.mesh's or the mannequin's when collision.head_shape is sdf; null
-  // (spheres) otherwise.
+  // The surface drawn whole at rest: head.mesh's or the mannequin's when collision.head_shape is
+  // sdf; null (spheres) otherwise.
   const SurfaceMesh* surface() const;
+  // The body's parts as they move: whether it has a torso (the mannequin; a head.mesh with a
+  // head.torso_mesh), the head's surface and the torso's (null: none, or spheres), and how many
+  // of spheres() are the head's (the rest, the torso's: those whose centre lies below head.pivot).
+  bool articulated() const { return articulated_; }
+  const SurfaceMesh* headSurface() const;
+  const SurfaceMesh* torsoSurface() const;
+  size_t headSphereCount() const { return headSpheres_; }
   // True when the shape is the built-in mannequin (no head.mesh).
   bool mannequin() const { return !mesh_; }
   // The head.mesh file it was read from, resolved (headMeshPath); empty for the mannequin.
   const std::string& meshPath() const { return meshPath_; }
-  // What a solver reads every step.
-  SceneHead collider() const { return {field(), spheres_}; }
+  // What a solver reads every step: each part's field or spheres, in its own frame.
+  SceneHead collider() const;
 
  private:
   bool sdf_ = true;
   std::string meshPath_;                    // empty: the mannequin
   std::shared_ptr<const LoadedHead> mesh_;  // null: the mannequin
+  std::string torsoPath_;                   // empty: no torso of the user's
+  std::shared_ptr<const LoadedHead> torso_;
+  std::shared_ptr<const DistanceGrid> whole_;  // head.mesh and head.torso_mesh at rest
+  bool articulated_ = false;
   bool fitted_ = false;
   int fittedCount_ = 0;
-  std::vector<Sphere> spheres_;
+  std::vector<Sphere> spheres_;  // the head's first, then the torso's
+  size_t headSpheres_ = 0;
 };
 
 // A solver's head: the one its owner handed it (Solver::setHead) before its reset. Simulation

@@ -12,6 +12,14 @@ namespace csm {
 
 namespace {
 
+// The neck, where the two parts meet: its radius, the top of the head's part and the end of its
+// neck inside the torso's, and the top of the torso's, so that the two necks cross at
+// head.pivot's height (y = -0.15) and each ends inside the other.
+constexpr double kNeckRadius = 0.058;
+constexpr glm::dvec3 kNeckTop{0.0, -0.070, -0.018};
+constexpr glm::dvec3 kHeadNeckEnd{0.0, -0.200, -0.022};
+constexpr glm::dvec3 kTorsoNeckTop{0.0, -0.110, -0.020};
+
 double sphere(const glm::dvec3& p, const glm::dvec3& c, double r) {
   return glm::length(p - c) - r;
 }
@@ -133,21 +141,30 @@ double ear(const glm::dvec3& p) {
   return d;
 }
 
-// The right eye, closed, in its socket: the lower lid over the eyeball and the upper lid a
-// little proud of it down to the lash line, which lies below the middle and dips towards the
-// front.
-double closedEye(const glm::dvec3& p, double d) {
-  const glm::dvec3 c{0.031, -0.0135, 0.0612}, r{0.0150, 0.0122, 0.0130};
-  const glm::dvec3 n = glm::normalize(glm::dvec3(0.0, 1.0, 0.2));
-  const double lower = ellipsoid(p, c, r);
-  const double upper =
-      smoothIntersect(ellipsoid(p, c, r + 0.0008), 0.0012 - glm::dot(p - c, n), 0.0008);
-  return smoothUnion(d, smoothUnion(lower, upper, 0.0004), 0.005);
+// The right eye, open, in its socket: the eyeball (its cornea a little proud of it) between the
+// lids, each a shell over the ball ending at its lash line, the upper lid's lower and more
+// arched, the two meeting at the corners, where the opening narrows to nothing.
+double openEye(const glm::dvec3& p, double d) {
+  const glm::dvec3 c{0.0315, -0.0135, 0.0585};
+  const double ball = sphere(p, c, 0.0118);
+  const double cornea = sphere(p, c + glm::dvec3(0.0, 0.0, 0.0052), 0.0074);
+  const double eye = smoothUnion(ball, cornea, 0.002);
+  // The lids: the shell over the ball, cut along the opening, an almond whose half-height falls
+  // from 4.5 mm at its middle to nothing at its corners, 14 mm either side.
+  const glm::dvec3 q = p - c;
+  const double across = std::clamp(q.x / 0.0145, -1.0, 1.0);
+  const double half = 0.0045 * (1.0 - across * across);
+  const double middle = 0.0006;  // the opening's middle, a little above the ball's centre
+  const double opening = std::abs(q.y - middle) - half;
+  const double shell = ellipsoid(p, c, glm::dvec3(0.0135, 0.0130, 0.0133));
+  const double lids = smoothIntersect(shell, -opening, 0.0008);
+  const double outer = smoothUnion(eye, lids, 0.0006);
+  return smoothUnion(d, outer, 0.004);
 }
 
 }  // namespace
 
-double mannequinDistance(const glm::dvec3& q) {
+double mannequinHeadDistance(const glm::dvec3& q) {
   // Left-right symmetric: model the right half (x >= 0) and mirror.
   const glm::dvec3 p(std::abs(q.x), q.y, q.z);
   // Cranium and the face's mass below the forehead.
@@ -155,18 +172,19 @@ double mannequinDistance(const glm::dvec3& q) {
   d = smoothUnion(d, ellipsoid(p, {0.0, -0.045, 0.025}, {0.060, 0.075, 0.060}), 0.03);
   // The jaw: the mandible's body, its lower edge from the angle to the chin, and the chin.
   if (reaches(p, {0.0, -0.085, 0.035}, 0.072, d, 0.02)) {
-    d = smoothUnion(d, ellipsoid(p, {0.0, -0.080, 0.030}, {0.048, 0.036, 0.052}), 0.02);
-    d = smoothUnion(d, capsule(p, {0.050, -0.079, -0.004}, {0.021, -0.115, 0.066}, 0.008), 0.02);
-    d = smoothUnion(d, ellipsoid(p, {0.0, -0.111, 0.070}, {0.019, 0.016, 0.015}), 0.014);
+    d = smoothUnion(d, ellipsoid(p, {0.0, -0.080, 0.030}, {0.050, 0.036, 0.052}), 0.02);
+    d = smoothUnion(d, capsule(p, {0.052, -0.076, -0.006}, {0.021, -0.113, 0.064}, 0.009), 0.02);
+    d = smoothUnion(d, ellipsoid(p, {0.0, -0.110, 0.068}, {0.020, 0.016, 0.015}), 0.014);
   }
   // The face's features.
   if (reaches(p, {0.0, -0.040, 0.070}, 0.072, d, 0.02)) {
     // Cheekbones and the brow's ridge.
     d = smoothUnion(d, ellipsoid(p, {0.047, -0.027, 0.056}, {0.017, 0.012, 0.015}), 0.02);
-    d = smoothUnion(d, capsule(p, {0.0, 0.004, 0.077}, {0.040, 0.006, 0.071}, 0.011), 0.015);
-    // The eye sockets, each with its closed eye.
-    d = smoothSubtract(d, capsule(p, {0.025, -0.008, 0.083}, {0.037, -0.008, 0.083}, 0.013), 0.008);
-    d = closedEye(p, d);
+    d = smoothUnion(d, capsule(p, {0.0, 0.005, 0.077}, {0.040, 0.007, 0.070}, 0.0105), 0.015);
+    // The eye sockets, each with its open eye.
+    d = smoothSubtract(d, capsule(p, {0.025, -0.010, 0.082}, {0.038, -0.010, 0.080}, 0.0135),
+                       0.008);
+    d = openEye(p, d);
     // The nose: its bridge, the tip, the wings (alae) about the base, the columella, and the
     // nostrils under them.
     d = smoothUnion(d, roundCone(p, {0.0, -0.007, 0.082}, {0.0, -0.043, 0.103}, 0.0055, 0.0075),
@@ -178,27 +196,65 @@ double mannequinDistance(const glm::dvec3& q) {
     d = smoothUnion(d, capsule(p, {0.0, -0.053, 0.100}, {0.0, -0.0565, 0.0905}, 0.0028), 0.004);
     d = smoothSubtract(d, capsule(p, {0.0068, -0.0585, 0.0915}, {0.0068, -0.0585, 0.0955}, 0.003),
                        0.002);
-    // The mouth: its muzzle, the philtrum, and the lips meeting along the mouth's line.
-    d = smoothUnion(d, ellipsoid(p, {0.0, -0.073, 0.068}, {0.029, 0.021, 0.020}), 0.012);
-    d = smoothSubtract(d, capsule(p, {0.0, -0.060, 0.0935}, {0.0, -0.066, 0.0935}, 0.005), 0.003);
-    const double upperLip = lip(p, {-0.004, -0.0737, 0.0882}, {0.012, -0.0747, 0.0851},
-                                {0.023, -0.0772, 0.0775}, 0.0046, 0.0034, 0.0016);
-    const double lowerLip = lip(p, {-0.004, -0.0840, 0.0852}, {0.011, -0.0833, 0.0825},
-                                {0.021, -0.0795, 0.0775}, 0.0054, 0.0041, 0.0016);
-    d = smoothUnion(d, smoothUnion(upperLip, lowerLip, 0.0012), 0.003);
+    // The mouth at rest: its muzzle, the philtrum, and full lips lying on it, closed along a
+    // gently curved line, the corners tucked in.
+    d = smoothUnion(d, ellipsoid(p, {0.0, -0.074, 0.066}, {0.030, 0.022, 0.021}), 0.012);
+    d = smoothSubtract(d, capsule(p, {0.0, -0.060, 0.0925}, {0.0, -0.066, 0.0925}, 0.005), 0.003);
+    const double upperLip = lip(p, {-0.004, -0.0742, 0.0858}, {0.012, -0.0750, 0.0830},
+                                {0.0235, -0.0770, 0.0755}, 0.0038, 0.0030, 0.0014);
+    const double lowerLip = lip(p, {-0.004, -0.0832, 0.0838}, {0.011, -0.0826, 0.0812},
+                                {0.0215, -0.0785, 0.0758}, 0.0046, 0.0036, 0.0014);
+    d = smoothUnion(d, smoothUnion(upperLip, lowerLip, 0.0008), 0.004);
+    // The line where the lips meet, and the corners' small hollows.
+    d = smoothSubtract(d, capsule(p, {0.0, -0.0787, 0.090}, {0.022, -0.0782, 0.079}, 0.0007),
+                       0.0008);
   }
   // The ears.
   if (reaches(p, {0.074, -0.028, -0.012}, 0.040, d, 0.004)) d = smoothUnion(d, ear(p), 0.004);
-  // Neck and shoulders.
-  d = smoothUnion(d, capsule(p, {0.0, -0.070, -0.020}, {0.0, -0.250, -0.025}, 0.055), 0.03);
-  d = smoothUnion(d, ellipsoid(p, {0.0, -0.305, -0.015}, {0.190, 0.075, 0.095}), 0.06);
+  // The upper neck, narrowing into the torso's (mannequinTorsoDistance), the two crossing at
+  // head.pivot.
+  d = smoothUnion(d, roundCone(p, kNeckTop, kHeadNeckEnd, kNeckRadius, kNeckRadius - 0.006), 0.03);
   return d;
+}
+
+double mannequinTorsoDistance(const glm::dvec3& q) {
+  const glm::dvec3 p(std::abs(q.x), q.y, q.z);
+  // The lower neck, widening into the shoulders.
+  double d =
+      roundCone(p, kTorsoNeckTop, {0.0, -0.25, -0.026}, kNeckRadius - 0.006, kNeckRadius + 0.002);
+  // The trapezius, from the neck's base out to the shoulder, and the shoulders' mass with the
+  // deltoids at its ends.
+  d = smoothUnion(d, capsule(p, {0.02, -0.215, -0.035}, {0.150, -0.262, -0.025}, 0.040), 0.04);
+  d = smoothUnion(d, ellipsoid(p, {0.0, -0.300, -0.015}, {0.185, 0.070, 0.095}), 0.05);
+  d = smoothUnion(d, sphere(p, {0.175, -0.300, -0.015}, 0.048), 0.04);
+  // The upper chest and back below the collarbones.
+  d = smoothUnion(d, ellipsoid(p, {0.0, -0.345, -0.010}, {0.165, 0.075, 0.105}), 0.04);
+  d = smoothUnion(d, capsule(p, {0.015, -0.255, 0.052}, {0.120, -0.272, 0.035}, 0.010), 0.02);
+  return d;
+}
+
+double mannequinDistance(const glm::dvec3& p) {
+  return std::min(mannequinHeadDistance(p), mannequinTorsoDistance(p));
 }
 
 const DistanceGrid& mannequinGrid() {
   // Kept on disk between runs of the same program (sim/head/field_cache.h): 1.9 s of a core.
   static const DistanceGrid grid = cachedSampleDistance(
-      "mannequin", mannequinDistance, {-0.215, -0.415, -0.125}, {0.215, 0.115, 0.135}, 0.004);
+      "mannequin", mannequinDistance, {-0.235, -0.440, -0.135}, {0.235, 0.115, 0.135}, 0.004);
+  return grid;
+}
+
+const DistanceGrid& mannequinHeadGrid() {
+  static const DistanceGrid grid =
+      cachedSampleDistance("mannequin-head", mannequinHeadDistance, {-0.105, -0.285, -0.130},
+                           {0.105, 0.115, 0.135}, 0.004);
+  return grid;
+}
+
+const DistanceGrid& mannequinTorsoGrid() {
+  static const DistanceGrid grid =
+      cachedSampleDistance("mannequin-torso", mannequinTorsoDistance, {-0.235, -0.440, -0.135},
+                           {0.235, -0.080, 0.110}, 0.004);
   return grid;
 }
 
@@ -207,6 +263,16 @@ const SurfaceMesh& mannequinMesh() {
   // and take its gradient, which draws the eyelids, nostrils and lips as a finer grid's mesh
   // would (2.75 mm was compared) at half its triangles, which a software rasterizer pays for.
   static const SurfaceMesh mesh = meshZeroLevel(mannequinGrid(), mannequinDistance);
+  return mesh;
+}
+
+const SurfaceMesh& mannequinHeadMesh() {
+  static const SurfaceMesh mesh = meshZeroLevel(mannequinHeadGrid(), mannequinHeadDistance);
+  return mesh;
+}
+
+const SurfaceMesh& mannequinTorsoMesh() {
+  static const SurfaceMesh mesh = meshZeroLevel(mannequinTorsoGrid(), mannequinTorsoDistance);
   return mesh;
 }
 

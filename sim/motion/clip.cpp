@@ -463,4 +463,9 @@ std::string MotionClip::summary() const {
   return s;
 }
 
+Pose torsoPoseAt(const Config& c, const MotionClip* clip, double t) {
+  if (!clip) return torsoPose(c.head, t);
+  return clip->sample(t, c.motion.loop, c.motion.inPlace).torso;
+}
+
 }  // namespace csm

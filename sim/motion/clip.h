@@ -39,12 +39,6 @@ struct ClipFacts {
 inline constexpr double kCutSpeed = 10.0;        // m/s
 inline constexpr double kCutTurnSpeed = 1500.0;  // degrees a second
 
-// The two rigid parts of the body at an instant.
-struct BodyPose {
-  Pose head;
-  Pose torso;
-};
-
 class MotionClip {
  public:
   // Reads motion.clip (relative to `baseDir`) and brings it in as `motion` says; `pivot` is the
@@ -93,5 +87,9 @@ class MotionClip {
   std::string name_;
   ClipFacts facts_;
 };
+
+// The torso's pose at time t: the clip's (motion.loop, motion.in_place) or, without one, the
+// torso's part of head.motion (csm::torsoPose).
+Pose torsoPoseAt(const Config& c, const MotionClip* clip, double t);
 
 }  // namespace csm

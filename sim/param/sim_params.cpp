@@ -159,6 +159,12 @@ std::vector<Param<Config>> build() {
             "origin; closed) to collide with and draw when collision.head_shape is sdf; empty = "
             "the built-in mannequin. Relative paths are relative to the preset.",
             Effect::Rebuild),
+      param("head.torso_mesh", "Torso mesh", "Head", &Config::head, &HeadConfig::torsoMesh, 0, 0,
+            "With head.mesh, a Wavefront OBJ torso (the same frame, at rest; closed) that moves "
+            "with the chest while head.mesh moves with the head; empty: head.mesh is the whole "
+            "body. Relative paths are relative to the preset.",
+            Effect::Rebuild)
+          .onlyWhen([](const Config& c) { return !c.head.mesh.empty(); }),
       param("head.spheres", "Head spheres", "Head", &Config::head, &HeadConfig::spheres, -10, 10,
             "Spheres (centre in the head frame, radius) that the hair collides with; the first is "
             "the scalp the hair grows from.",

@@ -16,7 +16,7 @@ bool growScene(const Config& config, const std::string& baseDir, const HeadModel
   std::string headError;
   std::shared_ptr<const HeadModel> head = HeadModel::build(config, &headError, known);
   if (!head) {
-    if (error) *error = "head.mesh: " + headError;
+    if (error) *error = headError;
     return false;
   }
   std::shared_ptr<const MotionClip> clip;
@@ -53,8 +53,8 @@ FollowerStats drawnPositions(const GrownScene& scene, const std::vector<glm::vec
   }
   std::vector<glm::vec3> guides(simulated.size()), drawn;
   for (size_t i = 0; i < simulated.size(); ++i) guides[i] = glm::vec3(simulated[i]);
-  const FollowerStats stats =
-      makeFollowers(*scene.followers, guides, head, scene.head->collider(), drawn);
+  const FollowerStats stats = makeFollowers(
+      *scene.followers, guides, head, SceneHead{scene.head->field(), scene.head->spheres()}, drawn);
   out.resize(drawn.size());
   for (size_t i = 0; i < drawn.size(); ++i) out[i] = glm::vec4(drawn[i], 1.0f);
   return stats;

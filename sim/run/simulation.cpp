@@ -152,7 +152,7 @@ Pose Simulation::headPoseAt(double t) const {
 }
 
 BodyPose Simulation::bodyPoseAt(double t) const {
-  if (!scene_.clip) return {headPoseAt(t), Pose{}};
+  if (!scene_.clip) return {headPoseAt(t), torsoPoseAt(config_, nullptr, t)};
   BodyPose body = scene_.clip->sample(t, config_.motion.loop, config_.motion.inPlace);
   body.head = compose(userPose_, body.head);
   return body;
@@ -164,7 +164,9 @@ long Simulation::clipFrames() const {
 }
 
 FramePath Simulation::framePath(double next) {
-  if (!scene_.clip) return FramePath{{lastPose_, headPoseAt(next)}};
+  if (!scene_.clip)
+    return FramePath{{lastPose_, headPoseAt(next)},
+                     {torsoPoseAt(config_, nullptr, time_), torsoPoseAt(config_, nullptr, next)}};
   // The clip where each substep may end: as many keys as the most steps a frame.
   const int keys = std::clamp(std::max(config_.sim.substeps, config_.sim.maxSubsteps), 2, 64);
   const double dt = next - time_;
@@ -172,7 +174,9 @@ FramePath Simulation::framePath(double next) {
   std::vector<double> at(size_t(keys) + 1);
   for (int i = 0; i <= keys; ++i) {
     at[size_t(i)] = i == keys ? next : time_ + dt * double(i) / keys;
-    path.keys.push_back(headPoseAt(at[size_t(i)]));
+    const BodyPose body = bodyPoseAt(at[size_t(i)]);
+    path.keys.push_back(body.head);
+    path.torso.push_back(body.torso);
   }
   // A live change of the clip's settings (in place, loop) moves where the clip has the head now:
   // the hair goes there with it, rigidly, as over a cut.
@@ -193,7 +197,10 @@ FramePath Simulation::framePath(double next) {
     solver_->state().carry(jump);
     lastPose_ = compose(jump, lastPose_);
     for (int i = 0; i <= keys; ++i)
-      if (at[size_t(i)] < cut) path.keys[size_t(i)] = compose(jump, path.keys[size_t(i)]);
+      if (at[size_t(i)] < cut) {
+        path.keys[size_t(i)] = compose(jump, path.keys[size_t(i)]);
+        path.torso[size_t(i)] = compose(jump, path.torso[size_t(i)]);
+      }
     ++cuts_;
   }
   path.keys.front() = lastPose_;

@@ -112,7 +112,8 @@ class Simulation {
   const Pose& userPose() const { return userPose_; }
   Pose headPoseAt(double t) const;
   // The body at time t: the head's pose and the torso's (the clip's two parts; without a clip the
-  // torso stays where it stands while the head moves).
+  // torso stays where it stands while the head nods, shakes, sways or is dragged, and moves with
+  // it for spin and bounce: csm::torsoPose).
   BodyPose bodyPoseAt(double t) const;
   // The motion clip the scene runs (motion.clip), null without one.
   const MotionClip* clip() const { return scene_.clip.get(); }
@@ -127,6 +128,7 @@ class Simulation {
   // the speed the head's motion explains, beyond which a particle is flung by the simulation.
   double peakRigidSpeed() const { return peakRigidSpeed_; }
   Pose headPose() const { return headPoseAt(time_); }
+  Pose torsoPose() const { return bodyPoseAt(time_).torso; }
 
   // The solver's name, its counts (the simulated strands and their particles) and what it says of
   // itself (stage times, stiffness, memory, failure, its kernel path).

@@ -37,7 +37,7 @@ double floatBlur(const glm::dvec3& a, const glm::dvec3& b) {
 template <class Position, class Velocity, class Pinned>
 Accuracy measure(size_t strands, const uint32_t* first, Position x, Velocity v, size_t velocities,
                  std::span<const double> restLength, std::span<const Sphere> spheres, Pinned pinned,
-                 const PosedField& field, bool floatState) {
+                 const PosedField& field, const BodyParts& parts, bool floatState) {
   Accuracy acc;
   double strainSum = 0.0;
   uint64_t segments = 0;
@@ -50,14 +50,21 @@ Accuracy measure(size_t strands, const uint32_t* first, Position x, Velocity v, 
         continue;
       }
       if (i < velocities) acc.maxSpeed = std::max(acc.maxSpeed, glm::length(v(i)));
-      if (int(i - a) >= pinned(s) && field.grid)
-        acc.headPenetrations += field.contains(xi);
-      else if (int(i - a) >= pinned(s))
-        for (const Sphere& sp : spheres)
-          if (glm::length(xi - glm::dvec3(sp.center)) < double(sp.radius) * (1.0 - 1e-6)) {
-            ++acc.headPenetrations;
-            break;
-          }
+      if (int(i - a) >= pinned(s) && field.grid) {
+        if (field.contains(xi))
+          ++acc.headPenetrations;
+        else if (parts.torso.contains(xi))
+          ++acc.torsoPenetrations;
+      } else if (int(i - a) >= pinned(s)) {
+        // Inside a head sphere, else inside a torso sphere (those from parts.headSpheres on).
+        int in = 0;
+        for (size_t k = 0; k < spheres.size() && in != 1; ++k)
+          if (glm::length(xi - glm::dvec3(spheres[k].center)) <
+              double(spheres[k].radius) * (1.0 - 1e-6))
+            in = k < parts.headSpheres ? 1 : 2;
+        acc.headPenetrations += in == 1;
+        acc.torsoPenetrations += in == 2;
+      }
       if (i + 1 < b && restLength[i] > 0.0 && finite(x(i + 1))) {
         const glm::dvec3 next = x(i + 1);
         double stretch = glm::length(next - xi) - restLength[i];
@@ -80,23 +87,24 @@ Accuracy measure(size_t strands, const uint32_t* first, Position x, Velocity v, 
 
 Accuracy measureAccuracy(std::span<const glm::vec4> x, std::span<const glm::vec4> v,
                          const Groom& groom, std::span<const double> restLength,
-                         std::span<const Sphere> spheres, int pinned, const PosedField& field) {
+                         std::span<const Sphere> spheres, int pinned, const PosedField& field,
+                         const BodyParts& parts) {
   // Through float, as the positions are: the speed and strain of a float state.
   return measure(
       groom.strandCount(), groom.first.data(),
       [&](uint32_t i) { return glm::dvec3(glm::vec3(x[i])); },
       [&](uint32_t i) { return glm::dvec3(glm::vec3(v[i])); }, v.size(), restLength, spheres,
-      [&](size_t) { return pinned; }, field, true);
+      [&](size_t) { return pinned; }, field, parts, true);
 }
 
 Accuracy measureAccuracy(std::span<const glm::dvec3> x, std::span<const glm::dvec3> v,
                          std::span<const uint32_t> first, std::span<const double> restLength,
                          std::span<const Sphere> spheres, std::span<const int> pinned,
-                         const PosedField& field) {
+                         const PosedField& field, const BodyParts& parts) {
   return measure(
       first.empty() ? 0 : first.size() - 1, first.data(), [&](uint32_t i) { return x[i]; },
       [&](uint32_t i) { return v[i]; }, v.size(), restLength, spheres,
-      [&](size_t s) { return pinned[s]; }, field, false);
+      [&](size_t s) { return pinned[s]; }, field, parts, false);
 }
 
 }  // namespace csm

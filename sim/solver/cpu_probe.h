@@ -28,7 +28,9 @@ class CpuProbe {
   // Rest length of the segment from particle i to i+1.
   double restLength(size_t i) const { return solver_.restLength_[i]; }
   // One step of length h ending at head pose `head`, outside any frame.
-  void step(double h, const Pose& head) { solver_.step(h, head); }
+  void step(double h, const Pose& head, const Pose& torso = Pose{}) {
+    solver_.step(h, head, torso);
+  }
   // Nodes of the volume mode's grid: none unless collision.mode is a volume mode.
   size_t volumeNodes() const { return solver_.volume_.nodes(); }
   // Hair-hair contacts of the last collision pass (zeros when collisions are off).

@@ -97,8 +97,10 @@ void CpuSolver::stepFrame(const FramePath& path) {
     // No head to collide with (failure()): the clock runs, the hair stays.
     time_ += plan.substeps * plan.h;
     head_ = to;
+    torso_ = path.torsoAt(1.0);
     return;
   }
+  torso_ = path.torsoAt(0.0);
   ++framesSinceMeasure_;
   // The frame's contact candidates, from where it starts (METHOD.md section 3.3).
   auto t0 = Clock::now();
@@ -119,7 +121,8 @@ void CpuSolver::stepFrame(const FramePath& path) {
     if (strandContacts(config_.collision.mode) &&
         listsBefore(k, plan.substeps, config_.collision.lists))
       listAgain();
-    step(plan.h, path.at(double(k + 1) / plan.substeps));
+    const double s = double(k + 1) / plan.substeps;
+    step(plan.h, path.at(s), path.torsoAt(s));
   }
 }
 
@@ -146,10 +149,11 @@ ContactSettings CpuSolver::contactSettings() const {
           c.penaltyDamping};
 }
 
-void CpuSolver::step(double h, const Pose& head) {
+void CpuSolver::step(double h, const Pose& head, const Pose& torso) {
   if (stages_.size() < 5) clearStages();  // a single step called directly
-  const Pose before = head_;
-  const std::vector<Sphere> spheres = worldSpheres(shape_.spheres, head);
+  const Pose before = head_, torsoBefore = torso_;
+  std::vector<Sphere> spheres = worldSpheres(shape_.spheres, head);
+  for (const Sphere& sp : worldSpheres(shape_.torsoSpheres, torso)) spheres.push_back(sp);
   auto t0 = Clock::now();
   predict(h, head);
   stages_[0].ms += msSince(t0);
@@ -171,7 +175,7 @@ void CpuSolver::step(double h, const Pose& head) {
   } else {
     correction_.clear();
   }
-  limitStrain(h, spheres, head, before);
+  limitStrain(h, spheres, head, before, torso, torsoBefore);
   stages_[2].ms += msSince(t0);
   if (strandContacts(config_.collision.mode) && !candidates_.start.empty() && penalty) {
     // The paper's penalty forces where the substep ends, felt by the next one's prediction.
@@ -183,6 +187,7 @@ void CpuSolver::step(double h, const Pose& head) {
   }
   time_ += h;
   head_ = head;
+  torso_ = torso;
 }
 
 void CpuSolver::predict(double h, const Pose& head) {
@@ -216,7 +221,7 @@ void CpuSolver::shapeMatch(const Pose& head, double h) {
 }
 
 void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
-                            const Pose& before) {
+                            const Pose& before, const Pose& torso, const Pose& torsoBefore) {
   SweepSettings settings;
   settings.limit = config_.sim.strainLimiting;
   settings.strainLimit = config_.sim.strainLimit;
@@ -224,7 +229,14 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
   settings.friction = config_.collision.headFriction;
   settings.dftl = config_.sim.dftl;
   settings.before = &before;
-  const HeadCollider collider{shape_.field, spheres, head, config_.collision.radius};
+  settings.torsoBefore = &torsoBefore;
+  const HeadCollider collider{shape_.field,
+                              spheres,
+                              head,
+                              config_.collision.radius,
+                              shape_.torsoField,
+                              shape_.hasTorso() ? &torso : nullptr,
+                              shape_.spheres.size()};
   StepHair strands = hair();
   parallelFor(strandCount(), 64, [&](size_t first, size_t last) {
     for (size_t s = first; s < last; ++s)
@@ -263,9 +275,11 @@ void CpuSolver::carryMore(const Pose& by) {
 void CpuSolver::requestSample(long frame) {
   FrameSample sample;
   sample.frame = frame;
-  sample.accuracy =
-      measureAccuracy(x_, v_, first_, restLength_, worldSpheres(shape_.spheres, head_),
-                      regions_.pinned, PosedField{shape_.field, head_});
+  std::vector<Sphere> spheres = worldSpheres(shape_.spheres, head_);
+  for (const Sphere& sp : worldSpheres(shape_.torsoSpheres, torso_)) spheres.push_back(sp);
+  sample.accuracy = measureAccuracy(
+      x_, v_, first_, restLength_, spheres, regions_.pinned, PosedField{shape_.field, head_},
+      BodyParts{PosedField{shape_.torsoField, torso_}, shape_.spheres.size()});
   if (strandContacts(config_.collision.mode)) {
     sample.contacts = contacts_;
     sample.contactsMeasured = true;

@@ -46,8 +46,8 @@ class CpuSolver final : public HostSolver {
   // Tests and tools read the double state and take single steps through it (cpu_probe.h).
   friend class CpuProbe;
 
-  // One step of length h ending at head pose `head`.
-  void step(double h, const Pose& head);
+  // One step of length h ending at head pose `head` and torso pose `torso`.
+  void step(double h, const Pose& head, const Pose& torso);
   void saveMore(StateWriter& w) const override;
   bool readMore(StateReader& r) override;
   void restored() override;
@@ -61,7 +61,7 @@ class CpuSolver final : public HostSolver {
   void predict(double h, const Pose& head);
   void shapeMatch(const Pose& head, double h);
   void limitStrain(double h, const std::vector<Sphere>& spheres, const Pose& head,
-                   const Pose& headBefore);
+                   const Pose& headBefore, const Pose& torso, const Pose& torsoBefore);
   ContactSettings contactSettings() const;
   // A candidate list within the frame (collision.lists), from where the hair is now.
   void listAgain();

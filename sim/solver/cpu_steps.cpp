@@ -24,19 +24,34 @@ Eigen::Quaterniond toEigen(const glm::dquat& q) {
   return {q.w, q.x, q.y, q.z};
 }
 
-// The same for the head's distance field (sim/head/distance_grid.h), read in the head's frame: p
-// moves along the field's normal out of the surface inflated by `radius`, and when that is
-// out of reach of prev, onto the nearest point of the circle where the surface's tangent
-// plane there meets the ball of reach. `normal` gets the outward normal (world); `clearance`
-// the field's distance where p is left, where the push read it (p untouched, or the
-// projection), else NaN (the circle's point).
-bool pushOutOfHeadField(const DistanceGrid& g, const Pose& head, glm::dvec3& p,
-                        const glm::dvec3& prev, double radius, double maxLength, glm::dvec3& normal,
-                        double& clearance) {
-  glm::dvec3 local = glm::inverse(head.rotation) * (p - head.translation), n;
-  if (!pushOutOfField(g, local, radius, &n, &clearance)) return false;
-  const glm::dvec3 target = head.apply(local);
-  normal = head.rotation * n;
+// The same for the body's distance field (sim/head/distance_grid.h), each part read in its own
+// frame: p moves along the field's normal out of the surface inflated by `radius` (the nearer
+// part's at each read, so a point pushed out of one part and into the other goes on out of
+// both), and when that is out of reach of prev, onto the nearest point of the circle where the
+// surface's tangent plane there meets the ball of reach. `normal` gets the outward normal
+// (world); `clearance` the field's distance where p is left, where the push read it (p
+// untouched, or the projection), else NaN (the circle's point).
+bool pushOutOfBodyField(const HeadCollider& h, glm::dvec3& p, const glm::dvec3& prev,
+                        double maxLength, glm::dvec3& normal, double& clearance) {
+  glm::dvec3 grad;
+  double d = bodySample(h, p, &grad);
+  clearance = d;
+  if (!(d < h.radius)) return false;  // outside, or not finite
+  // The field is close to a distance, not exactly one (smooth unions, interpolation): a second
+  // step takes what the first left.
+  const glm::dvec3 up = h.head.rotation * glm::dvec3(0.0, 1.0, 0.0);
+  glm::dvec3 target = p, n = up;
+  // With a torso, up to eight: a step out of one part may end in the other, in the crease where
+  // they meet, and the steps then go back and forth between the two, closing in.
+  const int steps = h.torsoField ? 8 : 2;
+  for (int step = 0; step < steps && d < h.radius; ++step) {
+    const double len = glm::length(grad);
+    n = len > 1e-12 ? grad / len : up;
+    target += (h.radius - d) * n;
+    d = bodySample(h, target, &grad);
+  }
+  clearance = d;
+  normal = n;
   p = target;
   if (maxLength <= 0.0 || glm::length(target - prev) <= maxLength) return true;
   const double above = glm::dot(prev - target, normal);
@@ -48,6 +63,16 @@ bool pushOutOfHeadField(const DistanceGrid& g, const Pose& head, glm::dvec3& p,
   p = centre + side * (std::sqrt(maxLength * maxLength - above * above) / sideLen);
   clearance = NAN;
   return true;
+}
+
+// A part's field read at world point q: its distance and gradient (world).
+double partSample(const DistanceGrid& g, const Pose& pose, const glm::dvec3& q,
+                  glm::dvec3* gradient) {
+  const glm::dquat back = glm::inverse(pose.rotation);
+  glm::dvec3 local;
+  const double d = g.sample(back * (q - pose.translation), gradient ? &local : nullptr);
+  if (gradient) *gradient = pose.rotation * local;
+  return d;
 }
 
 }  // namespace
@@ -108,8 +133,34 @@ bool pushOutOfSphere(glm::dvec3& p, const glm::dvec3& prev, const glm::dvec3& c,
   return true;
 }
 
+double bodySample(const HeadCollider& h, const glm::dvec3& q, glm::dvec3* gradient, int* part) {
+  double d = partSample(*h.field, h.head, q, gradient);
+  if (part) *part = 0;
+  if (!h.torsoField) return d;
+  glm::dvec3 g;
+  const double t = partSample(*h.torsoField, *h.torso, q, gradient ? &g : nullptr);
+  if (!(t < d)) return d;
+  if (gradient) *gradient = g;
+  if (part) *part = 1;
+  return t;
+}
+
+int partAt(const HeadCollider& h, const glm::dvec3& q) {
+  int part = 0;
+  if (h.field) {
+    bodySample(h, q, nullptr, &part);
+    return part;
+  }
+  double best = INFINITY;
+  for (size_t k = 0; k < h.spheres.size(); ++k) {
+    const double d = glm::length(q - glm::dvec3(h.spheres[k].center)) - h.spheres[k].radius;
+    if (d < best) best = d, part = k < h.headSpheres ? 0 : 1;
+  }
+  return part;
+}
+
 double outsideHead(const HeadCollider& h, const glm::dvec3& q) {
-  if (h.field) return h.field->sample(glm::inverse(h.head.rotation) * (q - h.head.translation));
+  if (h.field) return bodySample(h, q);
   double d = INFINITY;
   for (const Sphere& sp : h.spheres)
     d = std::min(d, glm::length(q - glm::dvec3(sp.center)) - double(sp.radius));
@@ -119,8 +170,7 @@ double outsideHead(const HeadCollider& h, const glm::dvec3& q) {
 bool pushHead(const HeadCollider& h, glm::dvec3& p, const glm::dvec3& prev, double maxLength,
               glm::dvec3& normal, double& clearance) {
   clearance = NAN;
-  if (h.field)
-    return pushOutOfHeadField(*h.field, h.head, p, prev, h.radius, maxLength, normal, clearance);
+  if (h.field) return pushOutOfBodyField(h, p, prev, maxLength, normal, clearance);
   // Overlapping spheres can push a particle into each other: repeat until it is clear.
   bool touching = false;
   for (int pass = 0; pass < 4; ++pass) {
@@ -159,9 +209,9 @@ bool pushOutOfHead(const HeadCollider& h, glm::dvec3& p, const glm::dvec3& prev,
   p = prev + lo * (p - prev);
   if (h.field) {
     glm::dvec3 grad;
-    h.field->sample(glm::inverse(h.head.rotation) * (p - h.head.translation), &grad);
+    bodySample(h, p, &grad);
     const double len = glm::length(grad);
-    if (len > 1e-12) normal = h.head.rotation * (grad / len);
+    if (len > 1e-12) normal = grad / len;
   }
   return true;
 }
@@ -379,8 +429,12 @@ void sweepParticle(StepHair& hair, const HeadCollider& head, const SweepSettings
     // Coulomb friction against the moving head: the tangential speed relative to the
     // surface loses at most mu times the normal speed the contact took away this step,
     // so a resting strand feels mu g_n whatever the step.
-    const glm::dvec3 local = glm::inverse(head.head.rotation) * (x[i] - head.head.translation);
-    const glm::dvec3 surfaceVel = (x[i] - settings.before->apply(local)) / h;
+    // The part it touches: where its surface point was at the step's start.
+    const bool torso = head.torso && settings.torsoBefore && partAt(head, x[i]) == 1;
+    const Pose& now = torso ? *head.torso : head.head;
+    const Pose& was = torso ? *settings.torsoBefore : *settings.before;
+    const glm::dvec3 local = glm::inverse(now.rotation) * (x[i] - now.translation);
+    const glm::dvec3 surfaceVel = (x[i] - was.apply(local)) / h;
     glm::dvec3 n = fieldNormal;
     if (!head.field) {
       const Sphere* nearest = &head.spheres.front();

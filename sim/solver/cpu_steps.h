@@ -113,14 +113,25 @@ void shapeMatchStrand(StepHair& hair, ShapeMatchSums& sums, std::vector<Eigen::Q
 
 // ---- Step 6 ---------------------------------------------------------------------------------
 
-// The head as the strain limit's sweep collides with it: its distance field (head frame), or
-// its spheres (world), the surface inflated by the hair's radius.
+// The body as the strain limit's sweep collides with it, the surface inflated by the hair's
+// radius: the head's distance field (head frame) at the head's pose and, where the body has a
+// torso, the torso's field at its own; or their spheres (world), the head's first.
 struct HeadCollider {
   const DistanceGrid* field;
   const std::vector<Sphere>& spheres;
   const Pose& head;
   double radius;
+  const DistanceGrid* torsoField = nullptr;  // with `torso`
+  const Pose* torso = nullptr;
+  size_t headSpheres = SIZE_MAX;  // spheres beyond these are the torso's
 };
+
+// The body's field at world point q, the union of its parts: the nearer part's distance, its
+// outward gradient (world, not normalised) and the part (0 the head, 1 the torso).
+double bodySample(const HeadCollider& head, const glm::dvec3& q, glm::dvec3* gradient = nullptr,
+                  int* part = nullptr);
+// The part nearest q (0 the head, 1 the torso): the field's nearer part, or the nearest sphere's.
+int partAt(const HeadCollider& head, const glm::dvec3& q);
 
 // Pushes p out of one sphere onto its surface. With a strain limit, the push keeps the
 // segment from `prev` no longer than maxLength: when the radial projection is out of reach,
@@ -158,7 +169,8 @@ struct SweepSettings {
   bool headCollide = true;  // collidesWithHead(collision.mode)
   double friction = 0.0;    // collision.head_friction
   double dftl = 0.0;
-  const Pose* before = nullptr;  // the head where the step started
+  const Pose* before = nullptr;       // the head where the step started
+  const Pose* torsoBefore = nullptr;  // the torso there (with HeadCollider::torso)
 };
 
 // Particle i after its parent i - 1 (final): with `contacts` the strand contacts' correction

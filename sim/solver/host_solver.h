@@ -67,7 +67,8 @@ class HostSolver : public Solver, public SolverState, public SolverDiagnostics {
   SolverHead headModel_;  // the scene's head, handed before the reset
   std::string failure_;   // set by layOut when no head was handed
   double time_ = 0.0;
-  Pose head_;  // the head pose at the end of the last step
+  Pose head_;   // the head pose at the end of the last step
+  Pose torso_;  // the torso's there (where the step started, during a frame's first step)
 
   std::vector<uint32_t> first_{0};  // strand s: particles [first_[s], first_[s + 1])
   std::vector<uint32_t> strandOf_;

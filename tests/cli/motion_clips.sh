@@ -29,6 +29,7 @@ bad = []
 if a["nan_count"] != 0: bad.append("nan %d" % a["nan_count"])
 if a["max_strain"] > 0.0501: bad.append("strain %.4f" % a["max_strain"])
 if a["head_penetrations"] != 0: bad.append("%d particles in the head" % a["head_penetrations"])
+if a["torso_penetrations"] != 0: bad.append("%d particles in the torso" % a["torso_penetrations"])
 if a["max_speed"] > 4 * m["rigid_peak_speed"]:
     bad.append("a particle at %.2f m/s, the rigid hair's peak %.2f" % (a["max_speed"], m["rigid_peak_speed"]))
 if m["motion"]["cuts_carried"] != cuts: bad.append("%d cuts carried, not %d" % (m["motion"]["cuts_carried"], cuts))

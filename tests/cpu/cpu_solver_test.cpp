@@ -10,6 +10,7 @@
 #include "sim/core/segment_pairs.h"
 #include "sim/solver/cpu_solver.h"
 #include "sim/core/pose.h"
+#include "sim/head/head_model.h"
 #include "test_scenes.h"
 #include "sim/verify/solver_head.h"
 
@@ -142,12 +143,16 @@ TEST_CASE("no particle ends a step inside a head sphere", "[quick]") {
   const Groom g = test::growFor(c);
   CpuSolver solver;
   resetWithHead(solver, g, c, headPose(c.head, 0.0));
+  const SceneHead body = HeadModel::require(c)->collider();
+  REQUIRE(body.torsoSpheres.size() == 1);
   const double h = c.sim.dt / c.sim.substeps;
   int inside = 0;
   for (int k = 0; k < 240; ++k) {
     const Pose pose = headPose(c.head, (k + 1) * h);
     CpuProbe(solver).step(h, pose);
-    const auto spheres = worldSpheres(c.head.spheres, pose);
+    // The head's spheres at the pose, the torso's (the neck's, below head.pivot) where they stand.
+    auto spheres = worldSpheres(body.spheres, pose);
+    spheres.insert(spheres.end(), body.torsoSpheres.begin(), body.torsoSpheres.end());
     const auto& x = CpuProbe(solver).positions();
     for (size_t s = 0; s < g.strandCount(); ++s)
       for (uint32_t i = g.first[s] + c.sim.pinned; i < g.first[s + 1]; ++i)

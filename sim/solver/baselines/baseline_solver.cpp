@@ -21,7 +21,9 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
   for (size_t i = 0; i + 2 < n; ++i)
     if (strandOf_[i] == strandOf_[i + 2]) bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
   headSpheres_ = headModel_.collider().spheres;
-  spheres_ = worldSpheres(headSpheres_, head);
+  torsoSpheres_ = headModel_.collider().torsoSpheres;
+  torso_ = Pose{};
+  prepareStep(head);
   onReset();
 }
 
@@ -34,10 +36,13 @@ void BaselineSolver::stepFrame(const FramePath& path) {
     // No head to collide with (failure()): the clock runs, the hair stays.
     time_ += substeps * h;
     head_ = to;
+    torso_ = path.torsoAt(1.0);
     return;
   }
   for (int k = 0; k < substeps; ++k) {
-    step(h, path.at(double(k + 1) / substeps));
+    const double s = double(k + 1) / substeps;
+    torso_ = path.torsoAt(s);
+    step(h, path.at(s));
     time_ += h;
   }
   head_ = to;
@@ -47,6 +52,7 @@ void BaselineSolver::stepFrame(const FramePath& path) {
 
 void BaselineSolver::prepareStep(const Pose& head) {
   spheres_ = worldSpheres(headSpheres_, head);
+  for (const Sphere& sp : worldSpheres(torsoSpheres_, torso_)) spheres_.push_back(sp);
 }
 
 glm::dvec3 BaselineSolver::externalAcceleration(uint32_t i, double h) const {
@@ -98,7 +104,8 @@ void BaselineSolver::requestSample(long frame) {
   FrameSample sample;
   sample.frame = frame;
   const std::vector<int> pinned(first_.size() - 1, config_.sim.pinned);
-  sample.accuracy = measureAccuracy(x_, v_, first_, restLength_, spheres_, pinned);
+  sample.accuracy = measureAccuracy(x_, v_, first_, restLength_, spheres_, pinned, {},
+                                    BodyParts{{}, headSpheres_.size()});
   samples_.push_back(sample);
 }
 

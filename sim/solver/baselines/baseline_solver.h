@@ -37,6 +37,7 @@ class BaselineSolver : public HostSolver {
   void setConfig(const Config& config) override {
     config_ = config;
     headSpheres_ = headModel_.collider().spheres;
+    torsoSpheres_ = headModel_.collider().torsoSpheres;
   }
   using Solver::stepFrame;
   void stepFrame(const FramePath& path) override;
@@ -68,16 +69,18 @@ class BaselineSolver : public HostSolver {
   bool projectOutOfHead(glm::dvec3& p) const;
   // Kinematic root targets for the end of the step.
   glm::dvec3 rootTarget(uint32_t i, const Pose& head) const { return head.apply(rest_[i]); }
-  // Sets spheres_ for the step's end pose.
+  // Sets spheres_ for the step's end pose: the head's at `head`, the torso's at torso_ (the
+  // step's end, set by stepFrame).
   void prepareStep(const Pose& head);
   // v *= exp(-damping h), as the CSM solver damps.
   void damp(double h);
 
   BaselineParams params_;
-  std::vector<Sphere> headSpheres_;  // its spheres, head frame
+  std::vector<Sphere> headSpheres_;   // its spheres, head frame
+  std::vector<Sphere> torsoSpheres_;  // the torso's, torso frame
   std::vector<double> invMass_;
   std::vector<double> bendLength_;  // rest distance i -> i+2; 0 where there is none
-  std::vector<Sphere> spheres_;     // world space, this step
+  std::vector<Sphere> spheres_;     // world space, this step: the head's, then the torso's
   double lastMs_ = 0.0;
 };
 
