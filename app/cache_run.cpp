@@ -288,7 +288,7 @@ int runFromCache(const Options& options) {
     if (!hair.writeFrame(keptIndex(options, f), grown, positions, frame.head)) return 1;
     if (!capture) continue;
     const unsigned buffer = capture->upload().upload(positions);
-    const Pose torso = torsoPoseAt(scene.preset.scene, grown.clip.get(), frame.time);
+    const Pose torso = torsoPoseAt(scene.preset.scene, grown.clip.get(), frame.time, frame.head);
     capture->draw(frameViewOf(scene.preset.scene, grown, 1, frame.head, torso, scene.preset.view,
                               buffer, capture->width(), capture->height(), capture->framebuffer()),
                   false);

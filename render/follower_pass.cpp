@@ -70,7 +70,7 @@ void FollowerPass::update(const FollowerBinding& b, long generation, const HeadM
   pushed_ = gl::Buffer(GLsizeiptr(sizeof(std::uint32_t)), nullptr, gl::BufferUsage::DynamicCopy);
   // The body the followers are kept out of: the whole at rest, moving with the head (the CPU's
   // followers, sim/groom/followers.h, do the same).
-  const SceneHead collider{head.field(), head.spheres()};
+  const SceneHead collider{head.field(), head.spheres(), nullptr, {}};
   std::vector<glm::vec4> shape;
   if (collider.field && !collider.field->empty()) {
     headShape_ = 1;

@@ -5,7 +5,7 @@
 # mannequin, and the window under Xvfb.
 #   scripts/make_images.sh [BUILD_DIR]      (default: build)
 # ONLY="fig3 imported" makes just those (default, hairline, parting, children, mannequin, fig1,
-# fig3, imported, viewer).
+# fig3, imported, shoulders, viewer).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-"$root/build"}/app/csmhair
@@ -57,6 +57,25 @@ shot fig3 presets/paper_fig3_curly.json 40 --set camera.target=0,-0.13,0 \
 want imported && "$bin" presets/paper_fig3_curly.json --headless --quiet --frames 0 --no-render \
   --set hairstyle.strands=4000 --export-hair "$tmp/groom.hair"
 shot imported "$tmp/groom.hair" 60 --set collision.head_shape=sdf --set hairstyle.import_scale=1
+# The shoulders under a clip whose head turns 80 degrees while the chest stays (the project's
+# turn_mixed.bvh): long hair from behind and above, at rest (0.83 s), half way (1.67 s) and at the
+# turn (2.5 s), side by side.
+if want shoulders; then
+  python3 scripts/make_clips.py "$tmp/clips" >/dev/null
+  "$bin" presets/long_windy.json --headless --quiet --frames 150 --every 50 --size 560x560 \
+    --set motion.clip="$tmp/clips/turn_mixed.bvh" --set hairstyle.strands=2000 \
+    --set collision.mode=volume --set wind.strength=0 --set camera.yaw=15 \
+    --set camera.pitch=40 --set camera.distance=1.0 --set camera.target=0,-0.2,0 \
+    --out "$tmp/shoulders"
+  /usr/bin/python3 - "$tmp/shoulders" "$out/shoulders.png" <<'PY'
+import sys
+import matplotlib.image as image
+import numpy as np
+frames = [image.imread(f"{sys.argv[1]}/frame_{k:05d}.png")[..., :3] for k in (1, 2, 3)]
+image.imsave(sys.argv[2], np.concatenate(frames, axis=1))
+PY
+  echo "docs/images/shoulders.png"
+fi
 want viewer || exit 0
 xvfb-run -a -s "-screen 0 1600x900x24" "$bin" presets/default.json --size 1600x900 \
   --screenshot "$out/viewer.png" --exit-after 30

@@ -44,7 +44,52 @@ Pose FramePath::at(double s) const {
 }
 
 Pose FramePath::torsoAt(double s) const {
-  return along(torso, s);
+  return torso.empty() ? at(s) : along(torso, s);
+}
+
+Pose torsoPose(const HeadConfig& head, double t) {
+  if (head.motion == HeadMotion::Spin || head.motion == HeadMotion::Bounce)
+    return headPose(head, t);
+  return {};
+}
+
+namespace {
+
+// The part of a rotation of `angle` (radians) beyond `limit`, about `axis`.
+glm::dquat beyond(double angle, const glm::dvec3& axis, double limit) {
+  const double over = angle > limit ? angle - limit : angle < -limit ? angle + limit : 0.0;
+  return glm::angleAxis(over, axis);
+}
+
+}  // namespace
+
+Pose torsoUnder(const Pose& head, const Pose& body, const glm::dvec3& pivot) {
+  // The neck's turn, in the world: the head's pose over the body's.
+  const Pose neck = compose(head, inverse(body));
+  const glm::dvec3 up = glm::normalize(body.rotation * glm::dvec3(0.0, 1.0, 0.0));
+  glm::dquat q = glm::normalize(neck.rotation);
+  if (q.w < 0.0) q = -q;
+  // Swing after twist: the twist about the torso's up, the swing the rest.
+  const glm::dvec3 v(q.x, q.y, q.z);
+  glm::dquat twist(q.w, glm::dot(v, up) * up);
+  const double twistNorm = glm::length(glm::dvec4(twist.x, twist.y, twist.z, twist.w));
+  twist = twistNorm > 1e-12 ? twist / twistNorm : glm::dquat(1.0, 0.0, 0.0, 0.0);
+  const glm::dquat swing = glm::normalize(q * glm::inverse(twist));
+  const double twistAngle =
+      2.0 * std::atan2(glm::dot(glm::dvec3(twist.x, twist.y, twist.z), up), twist.w);
+  const glm::dvec3 swingVector(swing.x, swing.y, swing.z);
+  const double swingSin = glm::length(swingVector);
+  const double swingAngle = 2.0 * std::atan2(swingSin, std::abs(swing.w));
+  const glm::dvec3 swingAxis = swingSin > 1e-12
+                                   ? swingVector / swingSin * (swing.w < 0 ? -1.0 : 1.0)
+                                   : glm::dvec3(1.0, 0.0, 0.0);
+  const glm::dquat over =
+      glm::normalize(beyond(swingAngle, swingAxis, glm::radians(kNeckSwingDegrees)) *
+                     beyond(twistAngle, up, glm::radians(kNeckTwistDegrees)));
+  // Turned about the neck, which goes where the head takes it.
+  const glm::dvec3 at = body.apply(pivot);
+  const Pose extra{over, neck.apply(at) - over * at};
+  return compose(extra, body);
 }
 
 Pose rotationAbout(const glm::dvec3& pivot, const glm::dvec3& axis, double degrees) {
@@ -75,12 +120,6 @@ Pose headPose(const HeadConfig& head, double t) {
       return p;
     }
   }
-  return {};
-}
-
-Pose torsoPose(const HeadConfig& head, double t) {
-  if (head.motion == HeadMotion::Spin || head.motion == HeadMotion::Bounce)
-    return headPose(head, t);
   return {};
 }
 

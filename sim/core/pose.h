@@ -39,8 +39,8 @@ struct BodyPose {
 // Where the body is over one frame: keys at evenly spaced fractions of it, the first where the
 // frame starts and the last where it ends (two keys: the frame's ends; a motion clip gives more,
 // sampled between its frames, so every substep of a frame sees the clip where it is then).
-// `keys` are the head's; `torso` the torso's at the same fractions, or empty where the torso
-// stays at rest.
+// `keys` are the head's; `torso` the torso's at the same fractions (a motion clip's), or empty
+// where the body moves as one with the head.
 struct FramePath {
   std::vector<Pose> keys;
   std::vector<Pose> torso;
@@ -48,7 +48,7 @@ struct FramePath {
   const Pose& to() const { return keys.back(); }
   // At fraction s (0..1) of the frame: the keys around it interpolated.
   Pose at(double s) const;
-  // The torso there: the identity when `torso` is empty.
+  // The torso there: the head's pose when `torso` is empty.
   Pose torsoAt(double s) const;
 };
 
@@ -57,6 +57,14 @@ struct FramePath {
 Pose headPose(const HeadConfig& head, double t);
 // The torso's part of it: spin and bounce; at rest for the others.
 Pose torsoPose(const HeadConfig& head, double t);
+
+// How far the neck turns the head from the torso: about the torso's up (a shake) and any other
+// way (a nod, a sway), in degrees.
+inline constexpr double kNeckTwistDegrees = 70.0, kNeckSwingDegrees = 40.0;
+// Where the torso stands when the head takes pose `head` over a body at `body` (the body's own
+// motion: csm::torsoPose): with the body while the neck can make the turn between them, turned
+// with the head about the neck (`pivot`, head frame) by what lies beyond the neck's reach.
+Pose torsoUnder(const Pose& head, const Pose& body, const glm::dvec3& pivot);
 
 // Head spheres in world space for a pose.
 std::vector<Sphere> worldSpheres(const std::vector<Sphere>& local, const Pose& pose);

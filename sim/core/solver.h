@@ -73,7 +73,7 @@ class Solver {
   // The head follows `path` through the frame: each step's pose is the path's at its end.
   virtual void stepFrame(const FramePath& path) = 0;
   // A frame whose head moves from `from` to `to`, slerped between.
-  void stepFrame(const Pose& from, const Pose& to) { stepFrame(FramePath{{from, to}}); }
+  void stepFrame(const Pose& from, const Pose& to) { stepFrame(FramePath{{from, to}, {}}); }
 
   virtual SolverCounts counts() const = 0;
   virtual double time() const = 0;

@@ -138,7 +138,7 @@ void GpuSolver::reset(const Groom& groom, const Config& config, const Pose& head
   shape_ = headModel_.collider();
   time_ = 0.0;
   head_ = head;
-  torso_ = Pose{};
+  torso_ = head;  // the body as one until a path says otherwise
   state_ = makeHairState(groom, config.sim, head);
   meanWeight_ = meanWeight(state_.weight);
   hair_.upload(state_, head.rotation);

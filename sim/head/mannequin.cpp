@@ -145,21 +145,27 @@ double ear(const glm::dvec3& p) {
 // lids, each a shell over the ball ending at its lash line, the upper lid's lower and more
 // arched, the two meeting at the corners, where the opening narrows to nothing.
 double openEye(const glm::dvec3& p, double d) {
-  const glm::dvec3 c{0.0315, -0.0135, 0.0585};
-  const double ball = sphere(p, c, 0.0118);
-  const double cornea = sphere(p, c + glm::dvec3(0.0, 0.0, 0.0052), 0.0074);
+  const glm::dvec3 c{0.0315, -0.0135, 0.0595};
+  const double ball = sphere(p, c, 0.0120);
+  const double cornea = sphere(p, c + glm::dvec3(0.0, 0.0, 0.0055), 0.0078);
   const double eye = smoothUnion(ball, cornea, 0.002);
-  // The lids: the shell over the ball, cut along the opening, an almond whose half-height falls
-  // from 4.5 mm at its middle to nothing at its corners, 14 mm either side.
+  // The lids: a shell 3-4 mm over the ball, cut along the opening, an almond whose half-height
+  // falls from 4.6 mm at its middle to nothing at its corners, 14.5 mm either side; the upper
+  // lid's edge a little proud of the lower's, its crease a shallow groove under the brow.
   const glm::dvec3 q = p - c;
   const double across = std::clamp(q.x / 0.0145, -1.0, 1.0);
-  const double half = 0.0045 * (1.0 - across * across);
-  const double middle = 0.0006;  // the opening's middle, a little above the ball's centre
+  const double half = 0.0046 * (1.0 - across * across);
+  const double middle = 0.0008;  // the opening's middle, a little above the ball's centre
   const double opening = std::abs(q.y - middle) - half;
-  const double shell = ellipsoid(p, c, glm::dvec3(0.0135, 0.0130, 0.0133));
-  const double lids = smoothIntersect(shell, -opening, 0.0008);
-  const double outer = smoothUnion(eye, lids, 0.0006);
-  return smoothUnion(d, outer, 0.004);
+  const double shell =
+      ellipsoid(p, c + glm::dvec3(0.0, 0.0006, 0.0), glm::dvec3(0.0150, 0.0148, 0.0150));
+  const double lids = smoothIntersect(shell, -opening, 0.0010);
+  double outer = smoothUnion(eye, lids, 0.0005);
+  outer = smoothSubtract(outer,
+                         capsule(p, c + glm::dvec3(-0.011, 0.0125, 0.0105),
+                                 c + glm::dvec3(0.011, 0.0115, 0.0095), 0.0011),
+                         0.0015);
+  return smoothUnion(d, outer, 0.003);
 }
 
 }  // namespace
@@ -182,7 +188,7 @@ double mannequinHeadDistance(const glm::dvec3& q) {
     d = smoothUnion(d, ellipsoid(p, {0.047, -0.027, 0.056}, {0.017, 0.012, 0.015}), 0.02);
     d = smoothUnion(d, capsule(p, {0.0, 0.005, 0.077}, {0.040, 0.007, 0.070}, 0.0105), 0.015);
     // The eye sockets, each with its open eye.
-    d = smoothSubtract(d, capsule(p, {0.025, -0.010, 0.082}, {0.038, -0.010, 0.080}, 0.0135),
+    d = smoothSubtract(d, capsule(p, {0.025, -0.011, 0.083}, {0.038, -0.011, 0.081}, 0.0130),
                        0.008);
     d = openEye(p, d);
     // The nose: its bridge, the tip, the wings (alae) about the base, the columella, and the
@@ -200,14 +206,14 @@ double mannequinHeadDistance(const glm::dvec3& q) {
     // gently curved line, the corners tucked in.
     d = smoothUnion(d, ellipsoid(p, {0.0, -0.074, 0.066}, {0.030, 0.022, 0.021}), 0.012);
     d = smoothSubtract(d, capsule(p, {0.0, -0.060, 0.0925}, {0.0, -0.066, 0.0925}, 0.005), 0.003);
-    const double upperLip = lip(p, {-0.004, -0.0742, 0.0858}, {0.012, -0.0750, 0.0830},
-                                {0.0235, -0.0770, 0.0755}, 0.0038, 0.0030, 0.0014);
-    const double lowerLip = lip(p, {-0.004, -0.0832, 0.0838}, {0.011, -0.0826, 0.0812},
-                                {0.0215, -0.0785, 0.0758}, 0.0046, 0.0036, 0.0014);
-    d = smoothUnion(d, smoothUnion(upperLip, lowerLip, 0.0008), 0.004);
+    const double upperLip = lip(p, {-0.004, -0.0744, 0.0868}, {0.012, -0.0752, 0.0840},
+                                {0.0235, -0.0772, 0.0760}, 0.0044, 0.0034, 0.0014);
+    const double lowerLip = lip(p, {-0.004, -0.0836, 0.0856}, {0.011, -0.0830, 0.0828},
+                                {0.0215, -0.0787, 0.0762}, 0.0050, 0.0040, 0.0014);
+    d = smoothUnion(d, smoothUnion(upperLip, lowerLip, 0.0006), 0.003);
     // The line where the lips meet, and the corners' small hollows.
-    d = smoothSubtract(d, capsule(p, {0.0, -0.0787, 0.090}, {0.022, -0.0782, 0.079}, 0.0007),
-                       0.0008);
+    d = smoothSubtract(d, capsule(p, {0.0, -0.0790, 0.0935}, {0.0225, -0.0784, 0.0800}, 0.0016),
+                       0.0012);
   }
   // The ears.
   if (reaches(p, {0.074, -0.028, -0.012}, 0.040, d, 0.004)) d = smoothUnion(d, ear(p), 0.004);
@@ -252,9 +258,10 @@ const DistanceGrid& mannequinHeadGrid() {
 }
 
 const DistanceGrid& mannequinTorsoGrid() {
+  // Up past the lower neck's top (y = -0.058), so that its zero level closes inside the box.
   static const DistanceGrid grid =
       cachedSampleDistance("mannequin-torso", mannequinTorsoDistance, {-0.235, -0.440, -0.135},
-                           {0.235, -0.080, 0.110}, 0.004);
+                           {0.235, -0.040, 0.110}, 0.004);
   return grid;
 }
 
@@ -267,7 +274,12 @@ const SurfaceMesh& mannequinMesh() {
 }
 
 const SurfaceMesh& mannequinHeadMesh() {
-  static const SurfaceMesh mesh = meshZeroLevel(mannequinHeadGrid(), mannequinHeadDistance);
+  // Drawn from a grid of its own, finer than the collision's: the lids, the lash lines and the
+  // lips are a few millimetres, which a 4 mm grid's topology breaks into holes.
+  static const DistanceGrid drawn =
+      cachedSampleDistance("mannequin-head-drawn", mannequinHeadDistance, {-0.105, -0.285, -0.130},
+                           {0.105, 0.115, 0.135}, 0.002);
+  static const SurfaceMesh mesh = meshZeroLevel(drawn, mannequinHeadDistance);
   return mesh;
 }
 

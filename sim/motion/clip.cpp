@@ -463,8 +463,8 @@ std::string MotionClip::summary() const {
   return s;
 }
 
-Pose torsoPoseAt(const Config& c, const MotionClip* clip, double t) {
-  if (!clip) return torsoPose(c.head, t);
+Pose torsoPoseAt(const Config& c, const MotionClip* clip, double t, const Pose& head) {
+  if (!clip) return torsoUnder(head, torsoPose(c.head, t), glm::dvec3(c.head.pivot));
   return clip->sample(t, c.motion.loop, c.motion.inPlace).torso;
 }
 

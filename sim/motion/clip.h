@@ -88,8 +88,9 @@ class MotionClip {
   ClipFacts facts_;
 };
 
-// The torso's pose at time t: the clip's (motion.loop, motion.in_place) or, without one, the
-// torso's part of head.motion (csm::torsoPose).
-Pose torsoPoseAt(const Config& c, const MotionClip* clip, double t);
+// The torso's pose at time t: the clip's (motion.loop, motion.in_place) or, without one, under
+// the head at `head` (csm::torsoUnder: the body's part of head.motion, and the turn beyond the
+// neck's reach).
+Pose torsoPoseAt(const Config& c, const MotionClip* clip, double t, const Pose& head);
 
 }  // namespace csm

@@ -53,8 +53,9 @@ FollowerStats drawnPositions(const GrownScene& scene, const std::vector<glm::vec
   }
   std::vector<glm::vec3> guides(simulated.size()), drawn;
   for (size_t i = 0; i < simulated.size(); ++i) guides[i] = glm::vec3(simulated[i]);
-  const FollowerStats stats = makeFollowers(
-      *scene.followers, guides, head, SceneHead{scene.head->field(), scene.head->spheres()}, drawn);
+  const FollowerStats stats =
+      makeFollowers(*scene.followers, guides, head,
+                    SceneHead{scene.head->field(), scene.head->spheres(), nullptr, {}}, drawn);
   out.resize(drawn.size());
   for (size_t i = 0; i < drawn.size(); ++i) out[i] = glm::vec4(drawn[i], 1.0f);
   return stats;

@@ -152,7 +152,11 @@ Pose Simulation::headPoseAt(double t) const {
 }
 
 BodyPose Simulation::bodyPoseAt(double t) const {
-  if (!scene_.clip) return {headPoseAt(t), torsoPoseAt(config_, nullptr, t)};
+  if (!scene_.clip) {
+    const Pose head = headPoseAt(t);
+    return {head,
+            torsoUnder(head, csm::torsoPose(config_.head, t), glm::dvec3(config_.head.pivot))};
+  }
   BodyPose body = scene_.clip->sample(t, config_.motion.loop, config_.motion.inPlace);
   body.head = compose(userPose_, body.head);
   return body;
@@ -164,9 +168,13 @@ long Simulation::clipFrames() const {
 }
 
 FramePath Simulation::framePath(double next) {
-  if (!scene_.clip)
-    return FramePath{{lastPose_, headPoseAt(next)},
-                     {torsoPoseAt(config_, nullptr, time_), torsoPoseAt(config_, nullptr, next)}};
+  if (!scene_.clip) {
+    const Pose to = headPoseAt(next);
+    const glm::dvec3 pivot(config_.head.pivot);
+    return FramePath{{lastPose_, to},
+                     {torsoUnder(lastPose_, csm::torsoPose(config_.head, time_), pivot),
+                      torsoUnder(to, csm::torsoPose(config_.head, next), pivot)}};
+  }
   // The clip where each substep may end: as many keys as the most steps a frame.
   const int keys = std::clamp(std::max(config_.sim.substeps, config_.sim.maxSubsteps), 2, 64);
   const double dt = next - time_;

@@ -112,8 +112,8 @@ class Simulation {
   const Pose& userPose() const { return userPose_; }
   Pose headPoseAt(double t) const;
   // The body at time t: the head's pose and the torso's (the clip's two parts; without a clip the
-  // torso stays where it stands while the head nods, shakes, sways or is dragged, and moves with
-  // it for spin and bounce: csm::torsoPose).
+  // head nods, shakes, sways and is dragged alone, the torso standing or spinning and bouncing
+  // with head.motion, and turned with the head past the neck's reach: csm::torsoUnder).
   BodyPose bodyPoseAt(double t) const;
   // The motion clip the scene runs (motion.clip), null without one.
   const MotionClip* clip() const { return scene_.clip.get(); }

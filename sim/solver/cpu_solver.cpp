@@ -31,6 +31,7 @@ Eigen::Quaterniond toEigen(const glm::dquat& q) {
 
 void CpuSolver::reset(const Groom& groom, const Config& config, const Pose& head) {
   state_ = layOut(groom, config, head);
+  torso_ = head;  // the body as one until a path says otherwise
   shape_ = headModel_.collider();
   const size_t n = state_.particleCount();
   measuredStrandOf_.clear();  // made again for this hair at its first measure

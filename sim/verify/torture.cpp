@@ -99,11 +99,12 @@ std::vector<TortureCell> axes(const Config& base, TortureScope scope, double dur
   return out;
 }
 
-// Where a world point lies inside the head the solver collides with: how deep (m, > 0 inside).
-struct HeadDepth {
-  const DistanceGrid* field = nullptr;
-  std::vector<Sphere> spheres;  // head frame
-  double operator()(const glm::dvec3& x, const Pose& pose) const {
+// Where a world point lies inside the body the solver collides with: how deep (m, > 0 inside),
+// the head's part at the head's pose and the torso's at the torso's.
+struct BodyDepth {
+  SceneHead body;
+  static double inside(const DistanceGrid* field, const std::vector<Sphere>& spheres,
+                       const glm::dvec3& x, const Pose& pose) {
     if (field) {
       const glm::dvec3 local = glm::inverse(pose.rotation) * (x - pose.translation);
       return -field->sample(local);
@@ -114,6 +115,11 @@ struct HeadDepth {
       deepest = std::max(deepest, double(s.radius) - glm::length(x - c));
     }
     return deepest;
+  }
+  double operator()(const glm::dvec3& x, const BodyPose& pose) const {
+    const double head = inside(body.field, body.spheres, x, pose.head);
+    if (!body.hasTorso()) return head;
+    return std::max(head, inside(body.torsoField, body.torsoSpheres, x, pose.torso));
   }
 };
 
@@ -195,7 +201,7 @@ TortureResult runTorture(const SolverMaker& make, const TortureCell& cell,
   const std::vector<double> rest = restLengths(groom);
   const HairState state = makeHairState(groom, config.sim, Pose{});
   const std::vector<int> pinned = buildRegions(state, config.sim).pinned;
-  const HeadDepth depth{sim.head().field(), sim.head().spheres()};
+  const BodyDepth depth{sim.head().collider()};
   const double dt = config.sim.dt;
   const double g = glm::length(glm::dvec3(config.sim.gravity));
   r.fallSpeed = std::sqrt(2.0 * g * longestStrand(groom)) + g * dt;
@@ -217,7 +223,7 @@ TortureResult runTorture(const SolverMaker& make, const TortureCell& cell,
     sim.readPositions(x);
     sim.readVelocities(v);
     r.frames = f + 1;
-    const Pose pose = sim.headPose();
+    const BodyPose pose{sim.headPose(), sim.torsoPose()};
     uint64_t inside = 0;
     for (size_t s = 0; s < groom.strandCount(); ++s) {
       const uint32_t a = groom.first[s], b = groom.first[s + 1];

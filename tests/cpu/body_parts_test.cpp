@@ -150,20 +150,44 @@ TEST_CASE("a particle inside the torso is counted there, one inside the head the
   CHECK(a.torsoPenetrations == 1);
 }
 
-TEST_CASE("without a clip, a nod turns the head alone, spin and bounce move the body", "[quick]") {
-  HeadConfig head;
-  head.motion = HeadMotion::Nod;
-  head.amplitude = 30.0f;
-  head.frequency = 1.0f;
-  CHECK(glm::length(headPose(head, 0.25).translation) > 0.01);
-  CHECK(torsoPose(head, 0.25).rotation == glm::dquat(1, 0, 0, 0));
-  head.motion = HeadMotion::Spin;
-  CHECK(torsoPose(head, 0.25).rotation == headPose(head, 0.25).rotation);
-  head.motion = HeadMotion::Bounce;
-  CHECK(torsoPose(head, 0.25).translation == headPose(head, 0.25).translation);
+TEST_CASE("without a clip the head turns alone within the neck's reach, the body past it",
+          "[quick]") {
+  const glm::dvec3 pivot(HeadConfig{}.pivot);
+  auto degrees = [](const Pose& p) { return glm::degrees(glm::angle(p.rotation)); };
+  // Within reach the torso stays where the body is.
+  CHECK(degrees(torsoUnder(rotationAbout(pivot, {1, 0, 0}, 30.0), Pose{}, pivot)) < 1e-9);
+  CHECK(degrees(torsoUnder(rotationAbout(pivot, {0, 1, 0}, -65.0), Pose{}, pivot)) < 1e-9);
+  // Past it the torso takes the rest, about the neck, which stays joined to the head's.
+  const Pose nod = rotationAbout(pivot, {1, 0, 0}, 100.0);
+  const Pose down = torsoUnder(nod, Pose{}, pivot);
+  CHECK(std::abs(degrees(down) - (100.0 - kNeckSwingDegrees)) < 1e-6);
+  CHECK(glm::length(down.apply(pivot) - nod.apply(pivot)) < 1e-9);
+  const Pose shake = rotationAbout(pivot, {0, 1, 0}, -120.0);
+  CHECK(std::abs(degrees(torsoUnder(shake, Pose{}, pivot)) - (120.0 - kNeckTwistDegrees)) < 1e-6);
+  // A spinning body carries the head: a shake over it is measured from the torso's facing.
+  const Pose body = rotationAbout(pivot, {0, 1, 0}, 150.0);
+  const Pose over = compose(rotationAbout(pivot, {0, 1, 0}, 20.0), body);
+  CHECK(std::abs(glm::dot(torsoUnder(over, body, pivot).rotation, body.rotation)) > 1.0 - 1e-12);
+
+  // In a Simulation: the preset's nod turns the head, the torso stands; spin moves both.
+  Config c = sdfConfig();
+  c.hairstyle.strands = 20;
+  c.head.motion = HeadMotion::Nod;
+  c.head.amplitude = 30.0f;
+  c.head.frequency = 1.0f;
+  Simulation sim(std::make_unique<CpuSolver>());
+  std::string error;
+  REQUIRE(sim.load(c, ".", &error));
+  CHECK(std::abs(degrees(sim.bodyPoseAt(0.25).head) - 30.0) < 1e-3);
+  CHECK(degrees(sim.bodyPoseAt(0.25).torso) < 1e-9);
+  c.head.motion = HeadMotion::Spin;
+  REQUIRE(sim.load(c, ".", &error));
+  const BodyPose spun = sim.bodyPoseAt(0.25);
+  CHECK(std::abs(degrees(spun.torso) - 90.0) < 1e-3);
+  CHECK(std::abs(glm::dot(spun.torso.rotation, spun.head.rotation)) > 1.0 - 1e-12);
 }
 
-TEST_CASE("a clip turns the head 80 degrees on still shoulders; the hair stays out of both") {
+TEST_CASE("a clip turns the head 80 degrees on still shoulders, the hair kept out of both") {
   Config c = sdfConfig();
   c.hairstyle.strands = 200;
   c.motion.clip = "turn_mixed.bvh";

@@ -219,7 +219,7 @@ TEST_CASE("no follower point is left inside the head", "[guides][quick]") {
     for (uint32_t i = guides.first[k] + 1; i < guides.first[k + 1]; ++i) x[i] *= 0.67f;
   std::vector<glm::vec3> drawn;
   SECTION("the head's field") {
-    const SceneHead collider{&head->shapeField(), {}};
+    const SceneHead collider{&head->shapeField(), {}, nullptr, {}};
     const FollowerStats stats = makeFollowers(b, x, Pose{}, collider, drawn);
     CHECK(stats.pushed > g.strandCount());
     CHECK(stats.deepest < 1e-4);
@@ -229,7 +229,7 @@ TEST_CASE("no follower point is left inside the head", "[guides][quick]") {
     CHECK(deepest > -1e-4);
   }
   SECTION("the head's spheres") {
-    const SceneHead collider{nullptr, head->spheres()};
+    const SceneHead collider{nullptr, head->spheres(), nullptr, {}};
     REQUIRE(!collider.spheres.empty());
     const FollowerStats stats = makeFollowers(b, x, Pose{}, collider, drawn);
     CHECK(stats.pushed > g.strandCount());

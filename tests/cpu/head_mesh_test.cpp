@@ -302,8 +302,8 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   CHECK(crossCheck(c).empty());
   std::string headError;
   CHECK(HeadModel::build(c, &headError) == nullptr);
-  CHECK_THAT(headError,
-             Catch::StartsWith((dir.path / "bad.obj").string() + ":15: face vertex index 9"));
+  CHECK_THAT(headError, Catch::StartsWith("head.mesh: " + (dir.path / "bad.obj").string() +
+                                          ":15: face vertex index 9"));
 
   // A preset names it relative to its own folder.
   dir.write("good.json", R"({"head": {"mesh": "sphere.obj"}, "hairstyle": {"strands": 10}})");
@@ -320,7 +320,8 @@ TEST_CASE("head.mesh: the scene collides with and draws the OBJ, relative to the
   CHECK(loadPreset((dir.path / "bad.json").string(), q, errors));
   headError.clear();
   CHECK(HeadModel::build(q.scene, &headError) == nullptr);
-  CHECK_THAT(headError, Catch::StartsWith((dir.path / "bad.obj").string() + ":15: "));
+  CHECK_THAT(headError,
+             Catch::StartsWith("head.mesh: " + (dir.path / "bad.obj").string() + ":15: "));
 }
 
 TEST_CASE("head.mesh gone when the scene loads: an error naming the file, not the mannequin",

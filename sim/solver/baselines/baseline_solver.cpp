@@ -22,7 +22,7 @@ void BaselineSolver::reset(const Groom& groom, const Config& config, const Pose&
     if (strandOf_[i] == strandOf_[i + 2]) bendLength_[i] = glm::length(rest_[i + 2] - rest_[i]);
   headSpheres_ = headModel_.collider().spheres;
   torsoSpheres_ = headModel_.collider().torsoSpheres;
-  torso_ = Pose{};
+  torso_ = head;  // the body as one until a path says otherwise
   prepareStep(head);
   onReset();
 }
