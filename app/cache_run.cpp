@@ -285,10 +285,11 @@ int runFromCache(const Options& options) {
       return 2;
     }
     positions = asVec4(frame.positions);
-    if (!hair.writeFrame(keptIndex(options, f), grown, positions, frame.head)) return 1;
+    const Pose torso = torsoPoseAt(scene.preset.scene, grown.clip.get(), frame.time, frame.head);
+    if (!hair.writeFrame(keptIndex(options, f), grown, positions, BodyPose{frame.head, torso}))
+      return 1;
     if (!capture) continue;
     const unsigned buffer = capture->upload().upload(positions);
-    const Pose torso = torsoPoseAt(scene.preset.scene, grown.clip.get(), frame.time, frame.head);
     capture->draw(frameViewOf(scene.preset.scene, grown, 1, frame.head, torso, scene.preset.view,
                               buffer, capture->width(), capture->height(), capture->framebuffer()),
                   false);
@@ -299,7 +300,11 @@ int runFromCache(const Options& options) {
     if (video.on() && !video.write(rgb)) return 1;
     ++drawn;
   }
-  if (hair.on() && !positions.empty() && !hair.finish(grown, positions, frame.head)) return 1;
+  if (hair.on() && !positions.empty() &&
+      !hair.finish(grown, positions,
+                   BodyPose{frame.head, torsoPoseAt(scene.preset.scene, grown.clip.get(),
+                                                    frame.time, frame.head)}))
+    return 1;
   if (video.on() && !video.close(capture->framesReadBack())) return 1;
   if (!options.quiet)
     std::fprintf(stderr, "csmhair: drew %ld frames from %s in %.1f s, no solver\n", drawn,

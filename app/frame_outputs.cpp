@@ -71,9 +71,9 @@ bool HairExport::prepare() const {
 }
 
 bool HairExport::writeFrame(long index, const GrownScene& scene,
-                            const std::vector<glm::vec4>& simulated, const Pose& head) {
+                            const std::vector<glm::vec4>& simulated, const BodyPose& body) {
   if (options_.exportSequence.empty()) return true;
-  const Groom& groom = strands(scene, simulated, head);
+  const Groom& groom = strands(scene, simulated, body);
   ++exported_;
   std::string error;
   if (!io::writeSequenceFrame(options_.exportSequence, index, groom, x_, &error)) {
@@ -84,9 +84,9 @@ bool HairExport::writeFrame(long index, const GrownScene& scene,
 }
 
 bool HairExport::finish(const GrownScene& scene, const std::vector<glm::vec4>& simulated,
-                        const Pose& head) {
+                        const BodyPose& body) {
   if (!options_.exportHair.empty()) {
-    const Groom out = io::posedGroom(strands(scene, simulated, head), x_);
+    const Groom out = io::posedGroom(strands(scene, simulated, body), x_);
     std::string error;
     if (!io::writeGroom(options_.exportHair, out, &error)) {
       std::fprintf(stderr, "csmhair: %s\n", error.c_str());
@@ -110,12 +110,12 @@ bool HairExport::finish(const GrownScene& scene, const std::vector<glm::vec4>& s
 }
 
 const Groom& HairExport::strands(const GrownScene& scene, const std::vector<glm::vec4>& simulated,
-                                 const Pose& head) {
+                                 const BodyPose& body) {
   if (options_.exportGuides || !scene.followers) {
     x_ = simulated;
     return *scene.groom;
   }
-  last_ = drawnPositions(scene, simulated, head, x_);
+  last_ = drawnPositions(scene, simulated, body, x_);
   return scene.followers->drawn;
 }
 

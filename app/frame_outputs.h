@@ -71,18 +71,19 @@ class HairExport {
   explicit HairExport(const Options& options) : options_(options) {}
   // The sequence's directory, before anything is simulated.
   bool prepare() const;
-  // The kept frame numbered `index`: `simulated` the simulated strands' positions, the head at
-  // `head`.
+  // The kept frame numbered `index`: `simulated` the simulated strands' positions, the body at
+  // `body` (the drawn strands made about the guides, kept out of its parts).
   bool writeFrame(long index, const GrownScene& scene, const std::vector<glm::vec4>& simulated,
-                  const Pose& head);
+                  const BodyPose& body);
   // The final strands as a cyHair file (OBJ curves when the name ends in .obj); then what was
   // written.
-  bool finish(const GrownScene& scene, const std::vector<glm::vec4>& simulated, const Pose& head);
+  bool finish(const GrownScene& scene, const std::vector<glm::vec4>& simulated,
+              const BodyPose& body);
   bool on() const { return !options_.exportSequence.empty() || !options_.exportHair.empty(); }
 
  private:
   const Groom& strands(const GrownScene& scene, const std::vector<glm::vec4>& simulated,
-                       const Pose& head);
+                       const BodyPose& body);
 
   const Options& options_;
   std::vector<glm::vec4> x_;

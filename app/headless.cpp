@@ -395,7 +395,8 @@ int runHeadless(const Options& options, const SceneSetup& scene, const CacheMani
     }
     if (!options.exportSequence.empty()) {
       sim->readPositions(positions);
-      if (!hair.writeFrame(keptIndex(options, f), sim->scene(), positions, sim->headPose()))
+      if (!hair.writeFrame(keptIndex(options, f), sim->scene(), positions,
+                           BodyPose{sim->headPose(), sim->torsoPose()}))
         return 1;
     }
     if (capture) {
@@ -429,7 +430,8 @@ int runHeadless(const Options& options, const SceneSetup& scene, const CacheMani
   bake.finish();
   if (hair.on()) {
     sim->readPositions(positions);
-    if (!hair.finish(sim->scene(), positions, sim->headPose())) return 1;
+    if (!hair.finish(sim->scene(), positions, BodyPose{sim->headPose(), sim->torsoPose()}))
+      return 1;
   }
   if (video.on() && !video.close(capture->framesReadBack())) return 1;
   if (!metrics.write(scene, *sim, context.get(), capture ? &capture->renderer() : nullptr))

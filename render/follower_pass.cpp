@@ -68,25 +68,33 @@ void FollowerPass::update(const FollowerBinding& b, long generation, const HeadM
   positions_ = gl::Buffer(GLsizeiptr(std::max<std::size_t>(points_, 1) * 16), nullptr,
                           gl::BufferUsage::DynamicCopy);
   pushed_ = gl::Buffer(GLsizeiptr(sizeof(std::uint32_t)), nullptr, gl::BufferUsage::DynamicCopy);
-  // The body the followers are kept out of: the whole at rest, moving with the head (the CPU's
-  // followers, sim/groom/followers.h, do the same).
-  const SceneHead collider{head.field(), head.spheres(), nullptr, {}};
+  // The body the followers are kept out of: each part at its own pose (the CPU's followers,
+  // sim/groom/followers.h, do the same), the head's shape and then the torso's in one buffer.
+  const SceneHead collider = head.collider();
   std::vector<glm::vec4> shape;
-  if (collider.field && !collider.field->empty()) {
-    headShape_ = 1;
-    shape = collider.field->nodes;
-    fieldDims_ = collider.field->dims;
-    fieldOrigin_ = collider.field->origin;
-    fieldCell_ = collider.field->cell;
-  } else {
-    headShape_ = collider.spheres.empty() ? 0 : 2;
-    for (const Sphere& s : collider.spheres) shape.emplace_back(s.center, s.radius);
-  }
-  spheres_ = int(collider.spheres.size());
+  auto add = [&](const DistanceGrid* field, const std::vector<Sphere>& spheres) {
+    PartShape part;
+    part.first = int(shape.size());
+    if (field && !field->empty()) {
+      part.shape = 1;
+      shape.insert(shape.end(), field->nodes.begin(), field->nodes.end());
+      part.dims = field->dims;
+      part.origin = field->origin;
+      part.cell = field->cell;
+    } else if (!spheres.empty()) {
+      part.shape = 2;
+      for (const Sphere& s : spheres) shape.emplace_back(s.center, s.radius);
+      part.spheres = int(spheres.size());
+    }
+    return part;
+  };
+  headPart_ = add(collider.field, collider.spheres);
+  torsoPart_ = add(collider.torsoField, collider.torsoSpheres);
   head_ = staticBuffer(std::move(shape));
 }
 
-unsigned FollowerPass::run(unsigned guidePositions, const Pose& head) {
+unsigned FollowerPass::run(unsigned guidePositions, const BodyPose& body) {
+  const Pose& head = body.head;
   if (!binding_ || turns_.id() == 0) return positions_.id();
   const glm::quat q(head.rotation);
   const glm::vec4 rotation(q.x, q.y, q.z, q.w);
@@ -111,11 +119,20 @@ unsigned FollowerPass::run(unsigned guidePositions, const Pose& head) {
   dispatchOver(turns_, guideParticles_);
   followers_.use();
   followers_.setUniform("uHeadTranslation", glm::vec3(head.translation));
-  followers_.setUniform("uHeadShape", headShape_);
-  followers_.setUniform("uFieldDims", fieldDims_);
-  followers_.setUniform("uFieldOrigin", fieldOrigin_);
-  followers_.setUniform("uFieldCell", fieldCell_);
-  followers_.setUniform("uSpheres", spheres_);
+  followers_.setUniform("uHeadShape", headPart_.shape);
+  followers_.setUniform("uFieldDims", headPart_.dims);
+  followers_.setUniform("uFieldOrigin", headPart_.origin);
+  followers_.setUniform("uFieldCell", headPart_.cell);
+  followers_.setUniform("uTorsoShape", torsoPart_.shape);
+  followers_.setUniform("uTorsoFieldDims", torsoPart_.dims);
+  followers_.setUniform("uTorsoFieldOrigin", torsoPart_.origin);
+  followers_.setUniform("uTorsoFieldCell", torsoPart_.cell);
+  followers_.setUniform("uSpheres", headPart_.spheres);
+  followers_.setUniform("uTorsoFirst", torsoPart_.first);
+  followers_.setUniform("uTorsoSpheres", torsoPart_.spheres);
+  const glm::quat t(body.torso.rotation);
+  followers_.setUniform("uTorsoRotation", glm::vec4(t.x, t.y, t.z, t.w));
+  followers_.setUniform("uTorsoTranslation", glm::vec3(body.torso.translation));
   dispatchOver(followers_, points_);
   return positions_.id();
 }

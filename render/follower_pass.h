@@ -24,8 +24,9 @@ class FollowerPass {
   // binding changed.
   void update(const FollowerBinding& binding, long generation, const HeadModel& head);
   // Makes the drawn points from the guides' positions (`guidePositions`: an SSBO of vec4 per
-  // guide particle, world) with the head at `head`. Returns the drawn positions' SSBO.
-  unsigned run(unsigned guidePositions, const Pose& head);
+  // guide particle, world) with the head at body.head and the torso at body.torso, each part
+  // keeping them out of it. Returns the drawn positions' SSBO.
+  unsigned run(unsigned guidePositions, const BodyPose& body);
 
   const gl::Buffer& positions() const { return positions_; }
   // Points the last run moved out of the head (reads back: for tests and measures).
@@ -41,10 +42,14 @@ class FollowerPass {
       guideFirst_{gl::NoCreate}, turnsOut_{gl::NoCreate}, boundGuides_{gl::NoCreate},
       boundWeights_{gl::NoCreate}, positions_{gl::NoCreate}, head_{gl::NoCreate},
       pushed_{gl::NoCreate};
-  int headShape_ = 0, spheres_ = 0;
-  glm::ivec3 fieldDims_{0};
-  glm::vec3 fieldOrigin_{0.0f};
-  float fieldCell_ = 1.0f;
+  // One part of the body in head_: 0 nothing, 1 a field, 2 spheres; from `first`.
+  struct PartShape {
+    int shape = 0, first = 0, spheres = 0;
+    glm::ivec3 dims{0};
+    glm::vec3 origin{0.0f};
+    float cell = 1.0f;
+  };
+  PartShape headPart_, torsoPart_;
 };
 
 }  // namespace csm

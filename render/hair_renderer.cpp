@@ -388,7 +388,7 @@ void HairRenderer::render(const FrameView& frame) {
   if (followers && positions != 0) {
     clock_.begin("followers");
     followers_.update(*followers, frame.generation, *frame.head);
-    positions = followers_.run(positions, frame.headPose);
+    positions = followers_.run(positions, BodyPose{frame.headPose, frame.torsoPose});
   }
   frameUniforms_.bindBase(gl::BufferTarget::Uniform, bindings::kFrameUniforms);
   gl::bindStorageBuffer(bindings::kPositions, positions);

@@ -115,18 +115,52 @@ layout(std430, binding = CSM_RENDER_FOLLOW_DRAWN_POSITIONS) writeonly buffer Dra
 layout(std430, binding = CSM_RENDER_FOLLOW_HEAD) readonly buffer Head { vec4 head[]; };
 layout(std430, binding = CSM_RENDER_FOLLOW_PUSHED) buffer Pushed { uint pushed; };
 
-uniform int uHeadShape;  // 0: nothing, 1: the field in head[], 2: uSpheres spheres in head[]
+// The body's parts, each 0: nothing, 1: a field, 2: spheres, in head[]: the head's from 0, the
+// torso's from uTorsoFirst (its field's nodes, or its uTorsoSpheres spheres), at its own pose.
+uniform int uHeadShape;
 uniform ivec3 uFieldDims;
 uniform vec3 uFieldOrigin;
 uniform float uFieldCell;
 uniform int uSpheres;
+uniform int uTorsoShape;
+uniform ivec3 uTorsoFieldDims;
+uniform vec3 uTorsoFieldOrigin;
+uniform float uTorsoFieldCell;
+uniform int uTorsoFirst;
+uniform int uTorsoSpheres;
+uniform vec4 uTorsoRotation;
+uniform vec3 uTorsoTranslation;
 
 // The field's gradient (xyz) and distance (w) at p (head frame): the solver's sample
 // (shaders/sim/head_field_sample.glsl) of the nodes in head[].
 #define headFieldNode(i) head[i]
 #include "sim/head_field_sample.glsl"
-vec4 fieldAt(vec3 p) {
-  return headFieldAt(uFieldDims, uFieldOrigin, uFieldCell, p, 0);
+
+// Moves world point x CSM_FOLLOWER_PUSH_MARGIN out of one part (shape, its field's grid or its
+// spheres from `first`, at pose rotation/translation); true when it moved.
+bool pushOutOfPart(inout vec3 x, int shape, ivec3 dims, vec3 origin, float cell, int first,
+                   int spheres, vec4 rotation, vec3 translation) {
+  if (shape == 0) return false;
+  vec3 local = turn(vec4(-rotation.xyz, rotation.w), x - translation);
+  bool moved = false;
+  if (shape == 1) {
+    vec4 v = headFieldAt(dims, origin, cell, local, first);
+    if (v.w < 0.0 && dot(v.xyz, v.xyz) > 0.0) {
+      local -= normalize(v.xyz) * (v.w - CSM_FOLLOWER_PUSH_MARGIN);
+      moved = true;
+    }
+  } else {
+    for (int k = first; k < first + spheres; ++k) {
+      vec3 r = local - head[k].xyz;
+      float l = length(r);
+      if (l < head[k].w && l > 0.0) {
+        local = head[k].xyz + r * ((head[k].w + CSM_FOLLOWER_PUSH_MARGIN) / l);
+        moved = true;
+      }
+    }
+  }
+  if (moved) x = turn(rotation, local) + translation;
+  return moved;
 }
 
 void main() {
@@ -161,38 +195,21 @@ void main() {
     vec3 turned = blend(turn(ta, offset), turn(tb, offset), t);
     sum += w * (blend(guidePositions[gNow + j].xyz, guidePositions[gNow + j + 1u].xyz, t) + turned);
   }
-  if (i != first && uHeadShape != 0) {
-    vec4 inverse = vec4(-uHeadRotation.xyz, uHeadRotation.w);
-    vec3 local = turn(inverse, sum - uHeadTranslation);
+  if (i != first && (uHeadShape != 0 || uTorsoShape != 0)) {
     bool moved = false;
-    // A few rounds, each putting the point CSM_FOLLOWER_PUSH_MARGIN out of the surface: the
-    // field is no exact distance, and a sphere's surface may lie in another (followers.cpp does
-    // the same).
+    // A few rounds, each putting the point CSM_FOLLOWER_PUSH_MARGIN out of each part in turn: the
+    // field is no exact distance, a sphere's surface may lie in another, and a push out of one
+    // part may end in the other (followers.cpp does the same).
     for (int round = 0; round < CSM_FOLLOWER_PUSH_ROUNDS; ++round) {
-      bool again = false;
-      if (uHeadShape == 1) {
-        vec4 v = fieldAt(local);
-        if (v.w < 0.0 && dot(v.xyz, v.xyz) > 0.0) {
-          local -= normalize(v.xyz) * (v.w - CSM_FOLLOWER_PUSH_MARGIN);
-          again = true;
-        }
-      } else {
-        for (int k = 0; k < uSpheres; ++k) {
-          vec3 r = local - head[k].xyz;
-          float l = length(r);
-          if (l < head[k].w && l > 0.0) {
-            local = head[k].xyz + r * ((head[k].w + CSM_FOLLOWER_PUSH_MARGIN) / l);
-            again = true;
-          }
-        }
-      }
+      bool again = pushOutOfPart(sum, uHeadShape, uFieldDims, uFieldOrigin, uFieldCell, 0,
+                                 uSpheres, uHeadRotation, uHeadTranslation);
+      again = pushOutOfPart(sum, uTorsoShape, uTorsoFieldDims, uTorsoFieldOrigin,
+                            uTorsoFieldCell, uTorsoFirst, uTorsoSpheres, uTorsoRotation,
+                            uTorsoTranslation) || again;
       moved = moved || again;
       if (!again) break;
     }
-    if (moved) {
-      sum = turn(uHeadRotation, local) + uHeadTranslation;
-      atomicAdd(pushed, 1u);
-    }
+    if (moved) atomicAdd(pushed, 1u);
   }
   drawnPositions[i] = vec4(sum, 1.0);
 }

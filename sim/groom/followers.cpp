@@ -33,11 +33,43 @@ glm::quat shortestTurn(const glm::vec3& a, const glm::vec3& b) {
   return glm::normalize(glm::quat(1.0f + c, v.x, v.y, v.z));
 }
 
-// How deep a point (head frame) lies inside the head: 0 outside.
-double depthInside(const SceneHead& collider, const glm::dvec3& local) {
-  glm::dvec3 normal;
-  return std::max(0.0, -GrowthHead{collider.spheres, collider.field}.distance(local, normal));
-}
+// One part of the body: its field, else its spheres (its own frame), at its pose.
+struct Part {
+  const DistanceGrid* field;
+  const std::vector<Sphere>& spheres;
+  Pose pose;
+  bool empty() const { return !field && spheres.empty(); }
+  // How deep a world point lies inside: 0 outside.
+  double depth(const glm::dvec3& world) const {
+    glm::dvec3 normal;
+    return std::max(0.0, -GrowthHead{spheres, field}.distance(inverse(pose).apply(world), normal));
+  }
+  // Moves a world point CSM_FOLLOWER_PUSH_MARGIN out of the surface; true when it moved.
+  bool push(glm::dvec3& world) const {
+    if (empty()) return false;
+    glm::dvec3 local = inverse(pose).apply(world);
+    bool moved = false;
+    if (field) {
+      glm::dvec3 gradient;
+      const double d = field->sample(local, &gradient);
+      if (d < 0.0 && glm::length(gradient) > 0.0) {
+        local -= glm::normalize(gradient) * (d - CSM_FOLLOWER_PUSH_MARGIN);
+        moved = true;
+      }
+    } else {
+      for (const Sphere& sp : spheres) {
+        const glm::dvec3 r = local - glm::dvec3(sp.center);
+        const double l = glm::length(r);
+        if (l < sp.radius && l > 0.0) {
+          local = glm::dvec3(sp.center) + r * ((sp.radius + CSM_FOLLOWER_PUSH_MARGIN) / l);
+          moved = true;
+        }
+      }
+    }
+    if (moved) world = pose.apply(local);
+    return moved;
+  }
+};
 
 glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
   const float l = glm::length(v);
@@ -69,6 +101,13 @@ std::vector<glm::quat> guideTurns(const FollowerBinding& b,
 FollowerStats makeFollowers(const FollowerBinding& b, const std::vector<glm::vec3>& guidePositions,
                             const Pose& head, const SceneHead& collider,
                             std::vector<glm::vec3>& out) {
+  return makeFollowers(b, guidePositions, BodyPose{head, head}, collider, out);
+}
+
+FollowerStats makeFollowers(const FollowerBinding& b, const std::vector<glm::vec3>& guidePositions,
+                            const BodyPose& body, const SceneHead& collider,
+                            std::vector<glm::vec3>& out) {
+  const Pose& head = body.head;
   const Groom& g = b.drawn;
   out.assign(g.pointCount(), glm::vec3(0.0f));
   const std::vector<glm::quat> turns = guideTurns(b, guidePositions, head);
@@ -77,7 +116,8 @@ FollowerStats makeFollowers(const FollowerBinding& b, const std::vector<glm::vec
     guideFirst[k + 1] = guideFirst[k] + g.strandSize(b.guideStrand[k]);
   if (guideFirst.back() != guidePositions.size()) return {};
   const glm::quat h(head.rotation);
-  const Pose toHead = inverse(head);
+  const Part parts[2] = {{collider.field, collider.spheres, head},
+                         {collider.torsoField, collider.torsoSpheres, body.torso}};
   FollowerStats stats;
   for (std::size_t s = 0; s < g.strandCount(); ++s) {
     const std::uint32_t first = g.first[s], n = g.strandSize(s);
@@ -112,37 +152,24 @@ FollowerStats makeFollowers(const FollowerBinding& b, const std::vector<glm::vec
       }
       out[first + i] = sum;
     }
-    // Out of the head: the field's surface, else the spheres'.
+    // Out of the body: each part's field's surface, else its spheres', in its own frame, in
+    // turn, a few rounds (the field is no exact distance, a sphere's surface may lie in another
+    // and a push out of one part may end in the other).
     for (std::uint32_t i = 1; i < n; ++i) {
-      glm::dvec3 local = toHead.apply(glm::dvec3(out[first + i]));
+      glm::dvec3 x(out[first + i]);
       bool moved = false;
       for (int round = 0; round < CSM_FOLLOWER_PUSH_ROUNDS; ++round) {
         bool again = false;
-        if (collider.field) {
-          glm::dvec3 gradient;
-          const double d = collider.field->sample(local, &gradient);
-          if (d < 0.0 && glm::length(gradient) > 0.0) {
-            local -= glm::normalize(gradient) * (d - CSM_FOLLOWER_PUSH_MARGIN);
-            again = true;
-          }
-        } else {
-          for (const Sphere& sp : collider.spheres) {
-            const glm::dvec3 r = local - glm::dvec3(sp.center);
-            const double l = glm::length(r);
-            if (l < sp.radius && l > 0.0) {
-              local = glm::dvec3(sp.center) + r * ((sp.radius + CSM_FOLLOWER_PUSH_MARGIN) / l);
-              again = true;
-            }
-          }
-        }
+        for (const Part& part : parts) again = part.push(x) || again;
         moved = moved || again;
         if (!again) break;
       }
       if (moved) {
-        out[first + i] = glm::vec3(head.apply(local));
+        out[first + i] = glm::vec3(x);
         ++stats.pushed;
       }
-      stats.deepest = std::max(stats.deepest, depthInside(collider, local));
+      for (const Part& part : parts)
+        if (!part.empty()) stats.deepest = std::max(stats.deepest, part.depth(x));
     }
   }
   return stats;

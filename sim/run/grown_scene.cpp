@@ -46,7 +46,7 @@ bool growScene(const Config& config, const std::string& baseDir, const HeadModel
 }
 
 FollowerStats drawnPositions(const GrownScene& scene, const std::vector<glm::vec4>& simulated,
-                             const Pose& head, std::vector<glm::vec4>& out) {
+                             const BodyPose& body, std::vector<glm::vec4>& out) {
   if (!scene.followers) {
     out = simulated;
     return {};
@@ -54,8 +54,7 @@ FollowerStats drawnPositions(const GrownScene& scene, const std::vector<glm::vec
   std::vector<glm::vec3> guides(simulated.size()), drawn;
   for (size_t i = 0; i < simulated.size(); ++i) guides[i] = glm::vec3(simulated[i]);
   const FollowerStats stats =
-      makeFollowers(*scene.followers, guides, head,
-                    SceneHead{scene.head->field(), scene.head->spheres(), nullptr, {}}, drawn);
+      makeFollowers(*scene.followers, guides, body, scene.head->collider(), drawn);
   out.resize(drawn.size());
   for (size_t i = 0; i < drawn.size(); ++i) out[i] = glm::vec4(drawn[i], 1.0f);
   return stats;

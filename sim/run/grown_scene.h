@@ -40,11 +40,11 @@ struct GrownScene {
 bool growScene(const Config& config, const std::string& baseDir, const HeadModel* known,
                const ImportProgress& progress, GrownScene& out, std::string* error);
 
-// The drawn strands' positions (world, a vec4 a point) from the simulated ones with the head at
-// `head`: the followers made on the CPU, or the simulated positions as they are. Returns what
-// keeping the followers out of the head took (nothing without them).
+// The drawn strands' positions (world, a vec4 a point) from the simulated ones with the body at
+// `body`: the followers made on the CPU, or the simulated positions as they are. Returns what
+// keeping the followers out of the body's parts took (nothing without them).
 FollowerStats drawnPositions(const GrownScene& scene, const std::vector<glm::vec4>& simulated,
-                             const Pose& head, std::vector<glm::vec4>& out);
+                             const BodyPose& body, std::vector<glm::vec4>& out);
 
 // A hash of what the groom is (its strands, rest points, pins, colours, weights and, guided, the
 // drawn strands and their binding): two scenes with one hash draw the same cached frames alike.

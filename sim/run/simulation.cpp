@@ -42,7 +42,7 @@ bool Simulation::regrow(const Config& config, const std::string& baseDir, std::s
 
 FollowerStats Simulation::drawnPositions(const std::vector<glm::vec4>& simulated,
                                          std::vector<glm::vec4>& out) const {
-  return csm::drawnPositions(scene_, simulated, headPose(), out);
+  return csm::drawnPositions(scene_, simulated, BodyPose{headPose(), torsoPose()}, out);
 }
 
 bool Simulation::setConfig(const Config& config, std::string* error) {

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "sim/groom/followers.h"
 #include "sim/head/head_model.h"
 #include "sim/head/mannequin.h"
 #include "sim/motion/clip.h"
@@ -208,6 +209,43 @@ TEST_CASE("a clip turns the head 80 degrees on still shoulders, the hair kept ou
   CHECK(a.headPenetrations == 0);
   CHECK(a.torsoPenetrations == 0);
   CHECK(a.maxStrain < 0.11);
+}
+
+TEST_CASE("drawn strands are kept out of each part at its own pose as the head turns") {
+  // Long hair drawn about 40 guides under the clip's 80-degree turn: the followers made on the
+  // CPU stay out of the torso where it stands, not where it would be had it turned with the
+  // head.
+  Config c = sdfConfig();
+  c.hairstyle.strands = 400;
+  c.hairstyle.guides = 40;
+  c.hairstyle.lengthMin = 0.35f;
+  c.hairstyle.lengthMax = 0.45f;
+  c.motion.clip = "turn_mixed.bvh";
+  Simulation sim(std::make_unique<CpuSolver>());
+  std::string error;
+  REQUIRE(sim.load(c, CSM_CLIP_DIR, &error));
+  REQUIRE(sim.followers());
+  for (int f = 0; f < 150; ++f) sim.stepFrame();
+  const BodyPose body{sim.headPose(), sim.torsoPose()};
+  REQUIRE(glm::degrees(glm::angle(compose(body.head, inverse(body.torso)).rotation)) > 70.0);
+  std::vector<glm::vec4> guides, drawn;
+  sim.readPositions(guides);
+  const FollowerStats stats = sim.drawnPositions(guides, drawn);
+  const SceneHead parts = sim.head().collider();
+  REQUIRE(parts.torsoField);
+  const Groom& g = sim.followers()->drawn;
+  size_t inTorso = 0, nearTorso = 0;
+  for (size_t s = 0; s < g.strandCount(); ++s)
+    for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
+      const double d = partDistance(*parts.torsoField, body.torso, glm::dvec3(glm::vec3(drawn[i])));
+      inTorso += d < -1e-4;
+      nearTorso += d < 0.01;
+    }
+  INFO(stats.pushed << " pushed, " << nearTorso << " drawn points within 1 cm of the torso, "
+                    << inTorso << " inside it");
+  CHECK(nearTorso > 100);  // the hair lies on the shoulders
+  CHECK(inTorso == 0);
+  CHECK(stats.deepest < 1e-4);
 }
 
 }  // namespace
