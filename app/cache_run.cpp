@@ -276,6 +276,7 @@ int runFromCache(const Options& options) {
                  drawnStrandCount(grown.drawnStrands(), scene.preset.view.render), m.strands,
                  capture ? " on " : "", capture ? context->renderer().c_str() : "");
   FrameRecording::Shown frame;
+  Pose torso;  // the torso under the frame's head
   std::vector<glm::vec4> positions;
   long drawn = 0;
   for (long f = first; f <= last; ++f) {
@@ -285,7 +286,7 @@ int runFromCache(const Options& options) {
       return 2;
     }
     positions = asVec4(frame.positions);
-    const Pose torso = torsoPoseAt(scene.preset.scene, grown.clip.get(), frame.time, frame.head);
+    torso = torsoPoseAt(scene.preset.scene, grown.clip.get(), frame.time, frame.head);
     if (!hair.writeFrame(keptIndex(options, f), grown, positions, BodyPose{frame.head, torso}))
       return 1;
     if (!capture) continue;
@@ -301,9 +302,7 @@ int runFromCache(const Options& options) {
     ++drawn;
   }
   if (hair.on() && !positions.empty() &&
-      !hair.finish(grown, positions,
-                   BodyPose{frame.head, torsoPoseAt(scene.preset.scene, grown.clip.get(),
-                                                    frame.time, frame.head)}))
+      !hair.finish(grown, positions, BodyPose{frame.head, torso}))
     return 1;
   if (video.on() && !video.close(capture->framesReadBack())) return 1;
   if (!options.quiet)

@@ -72,8 +72,7 @@ Pose torsoUnder(const Pose& head, const Pose& body, const glm::dvec3& pivot) {
   // Swing after twist: the twist about the torso's up, the swing the rest.
   const glm::dvec3 v(q.x, q.y, q.z);
   glm::dquat twist(q.w, glm::dot(v, up) * up);
-  const double twistNorm = glm::length(glm::dvec4(twist.x, twist.y, twist.z, twist.w));
-  twist = twistNorm > 1e-12 ? twist / twistNorm : glm::dquat(1.0, 0.0, 0.0, 0.0);
+  twist = glm::length(twist) > 1e-12 ? glm::normalize(twist) : glm::dquat(1.0, 0.0, 0.0, 0.0);
   const glm::dquat swing = glm::normalize(q * glm::inverse(twist));
   const double twistAngle =
       2.0 * std::atan2(glm::dot(glm::dvec3(twist.x, twist.y, twist.z), up), twist.w);

@@ -154,8 +154,7 @@ Pose Simulation::headPoseAt(double t) const {
 BodyPose Simulation::bodyPoseAt(double t) const {
   if (!scene_.clip) {
     const Pose head = headPoseAt(t);
-    return {head,
-            torsoUnder(head, csm::torsoPose(config_.head, t), glm::dvec3(config_.head.pivot))};
+    return {head, torsoPoseAt(config_, nullptr, t, head)};
   }
   BodyPose body = scene_.clip->sample(t, config_.motion.loop, config_.motion.inPlace);
   body.head = compose(userPose_, body.head);
@@ -170,10 +169,9 @@ long Simulation::clipFrames() const {
 FramePath Simulation::framePath(double next) {
   if (!scene_.clip) {
     const Pose to = headPoseAt(next);
-    const glm::dvec3 pivot(config_.head.pivot);
-    return FramePath{{lastPose_, to},
-                     {torsoUnder(lastPose_, csm::torsoPose(config_.head, time_), pivot),
-                      torsoUnder(to, csm::torsoPose(config_.head, next), pivot)}};
+    return FramePath{
+        {lastPose_, to},
+        {torsoPoseAt(config_, nullptr, time_, lastPose_), torsoPoseAt(config_, nullptr, next, to)}};
   }
   // The clip where each substep may end: as many keys as the most steps a frame.
   const int keys = std::clamp(std::max(config_.sim.substeps, config_.sim.maxSubsteps), 2, 64);
