@@ -39,7 +39,7 @@ bool parseFrameRange(const std::string& text, long& first, long& last, std::stri
 std::string usageText() {
   return R"(csmhair: every strand of a head of hair, simulated with Chain Shape Matching.
 
-usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx | GROOM.obj] [options]
+usage: csmhair [PRESET.json | GROOM.hair|.tfx|.tfxproj|.obj|.data|.bin|.ply] [options]
 
   --headless             no window: simulate (and render, when a renderer is built) off-screen
   --frames N | A-B       frames to run (headless default 60; from 1), or the frames A..B alone
@@ -55,9 +55,10 @@ usage: csmhair [PRESET.json | GROOM.hair | GROOM.tfx | GROOM.obj] [options]
   --size WxH             image size (default 1280x720)
   --no-render            headless: simulate only
   --video FILE.mp4       headless: pipe frames to ffmpeg
-  --export-hair FILE     write the final strands as a cyHair .hair file, or as OBJ curves
-                         (metres, y up, one \"l i j\" an edge, as Blender reads them) when
-                         FILE ends in .obj
+  --export-hair FILE     write the final strands (metres, y up) by FILE's extension: cyHair
+                         .hair, OBJ curves .obj (one \"l i j\" an edge, as Blender reads
+                         them), USC-HairSalon .data, CT2Hair .bin, strand PLY .ply (binary;
+                         ASCII when FILE ends in _ascii.ply)
   --export-hair-sequence DIR
                          headless: write every kept frame (--every) as DIR/frame_00001.hair,
                          ... (cyHair, the same strands in each)
@@ -176,7 +177,8 @@ std::optional<Options> parseCommandLine(int argc, char** argv, std::string* erro
       // Said before anything is simulated, not after the run.
       if (!io::isWritableGroomName(o.exportHair))
         return fail("--export-hair " + o.exportHair +
-                    ": the name must end in .hair (cyHair) or .obj (OBJ curves)");
+                    ": the name must end in .hair (cyHair), .obj (OBJ curves), .data "
+                    "(USC-HairSalon), .bin (CT2Hair) or .ply (strand PLY)");
     } else if (arg == "--export-guides") {
       o.exportGuides = true;
     } else if (arg == "--screenshot") {

@@ -11,8 +11,9 @@
 namespace csm {
 
 bool isGroomFile(const std::string& path) {
-  return io::hasExtension(path, ".hair") || io::hasExtension(path, ".tfx") ||
-         io::hasExtension(path, ".obj");
+  for (const char* ext : {".hair", ".tfx", ".tfxproj", ".obj", ".data", ".bin", ".ply"})
+    if (io::hasExtension(path, ext)) return true;
+  return false;
 }
 
 bool setupScene(const Options& options, SceneSetup& out, std::string* errors) {

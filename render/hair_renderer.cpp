@@ -349,9 +349,12 @@ void HairRenderer::render(const FrameView& frame) {
       .update(*groom, frame.generation, subdivision, frame.head->spheres());
   // The scalp is painted where the whole picture's hair grows.
   const Groom* grown = bound ? &bound->drawn : frame.groom;
-  if (scalpKey_ != std::make_pair(grown, frame.generation)) {
-    scalp_ = makeScalpMap(*grown, scalpSpheres(*frame.head));
-    scalpKey_ = {grown, frame.generation};
+  // Each strand drawn with its children (the full picture's, whatever interactive quality
+  // draws), the guides alone without.
+  const float perRoot = look.showGuides ? 1.0f : float(1 + std::max(0, look.children));
+  if (scalpKey_ != std::make_tuple(grown, frame.generation, perRoot)) {
+    scalp_ = makeScalpMap(*grown, scalpSpheres(*frame.head), perRoot);
+    scalpKey_ = {grown, frame.generation, perRoot};
   }
   // Interactive quality may draw a smaller image; the post pass scales it up to the frame.
   const float scale = std::clamp(amount.resolution, 0.05f, 1.0f);

@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -100,7 +101,8 @@ class HairRenderer final {
   HeadMesh head_;
   FollowerPass followers_;
   gl::Texture scalp_{gl::NoCreate};  // RGBA8 octahedral map per sphere: root colour, coverage
-  std::pair<const Groom*, long> scalpKey_{nullptr, -1};  // the groom it was made for
+  // The groom, generation and strands a root it was made for.
+  std::tuple<const Groom*, long, float> scalpKey_{nullptr, -1, 0.0f};
   gl::Buffer frameUniforms_{gl::NoCreate};
   gl::VertexArray emptyVao_{gl::NoCreate};
 

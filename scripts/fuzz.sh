@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the readers of everything csmhair takes from outside (tests/fuzz: presets, cyHair,
-# TressFX, OBJ heads, OBJ hair curves) with libFuzzer under ASan, LeakSanitizer and UBSan, in build-fuzz/
+# TressFX, OBJ heads, OBJ hair curves, the research formats and PLY heads) with libFuzzer under
+# ASan, LeakSanitizer and UBSan, in build-fuzz/
 # (clang; configured and built here when needed, clang and libFuzzer installed when missing).
 #   scripts/fuzz.sh short [SECONDS]          CI: every target SECONDS (12) on a copy of its
 #                                            seeds, after every regression input once; as many
@@ -21,7 +22,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build-fuzz"
 fuzz="$root/tests/fuzz"
 mode=${1:-short}
-targets=(${FUZZ_TARGETS:-preset cyhair tressfx obj curves})
+targets=(${FUZZ_TARGETS:-preset cyhair tressfx obj curves research})
 
 case "$mode" in
   short)

@@ -277,6 +277,25 @@ bool limitToward(inout vec3 x, inout vec3 v, vec3 anchor, float restLength, floa
   return true;
 }
 
+// The point nearest x in both balls (a, ra) and (b, rb) (intoBothBalls in
+// sim/solver/cpu_steps.cpp).
+vec3 intoBothBalls(vec3 x, vec3 a, float ra, vec3 b, float rb) {
+  vec3 pa = length(x - a) > ra ? a + (x - a) * (ra / length(x - a)) : x;
+  if (length(pa - b) <= rb * (1.0 + 1e-6)) return pa;
+  vec3 pb = length(x - b) > rb ? b + (x - b) * (rb / length(x - b)) : x;
+  if (length(pb - a) <= ra * (1.0 + 1e-6)) return pb;
+  vec3 ab = b - a;
+  float d = length(ab);
+  if (!(d > 0.0) || d >= ra + rb) return a + ab * (ra / max(ra + rb, 1e-30));
+  vec3 u = ab / d;
+  float along = (d * d + ra * ra - rb * rb) / (2.0 * d);
+  float ring = sqrt(max(0.0, ra * ra - along * along));
+  vec3 w = (x - a) - dot(x - a, u) * u;
+  if (length(w) < 1e-30) w = abs(u.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+  w -= dot(w, u) * u;
+  return a + along * u + ring * normalize(w);
+}
+
 void sweepParticle(vec3 restHere, vec3 restPrev, bool contacts, vec4 c, vec3 xPrev, bool prevFree,
                    Substep st, uint sphereBase, inout vec3 x, inout vec3 v, inout vec3 vPrev) {
   float h = st.h;

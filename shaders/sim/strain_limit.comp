@@ -83,6 +83,25 @@ void limitStrainStrand(uint s) {
       tied = moved;
     }
   }
+  // What the sweeps left: one more from the root, each particle within reach of its parent and
+  // of the held tip (limitStrainStrand's last sweep).
+  if (P.strainLimiting == 0u || end >= n) return;
+  float grow = 1.0 + P.strainLimit, reach = 0.0;
+  for (int i = first - 1; i < end; ++i)
+    reach += grow * length(texelFetch(restTex, int(a) + i + 1).xyz -
+                           texelFetch(restTex, int(a) + i).xyz);
+  vec3 tip = pos[a + uint(end)].xyz;
+  vec3 parent = pos[a + uint(first - 1)].xyz;
+  for (int i = first; i < end; ++i) {
+    uint p = a + uint(i);
+    float segment = grow * length(texelFetch(restTex, int(p)).xyz - texelFetch(restTex, int(p) - 1).xyz);
+    reach -= segment;
+    vec3 x = pos[p].xyz;
+    vec3 to = intoBothBalls(x, parent, segment, tip, reach);
+    vel[p] = vec4(vel[p].xyz + (to - x) / st.h, 0.0);
+    pos[p] = vec4(to, 1.0);
+    parent = to;
+  }
 }
 
 void main() {

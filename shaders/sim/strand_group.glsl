@@ -149,6 +149,24 @@ void sweepStrands(Slot o, uint substep) {
           tied = moved;
         }
       }
+      // What the sweeps left: one more from the root, within reach of the parent and the tip.
+      if (P.strainLimiting != 0u && end < o.n) {
+        float grow = 1.0 + P.strainLimit, reach = 0.0;
+        for (int i = first - 1; i < end; ++i)
+          reach += grow * length(shC[r + uint(i + 1)].xyz - shC[r + uint(i)].xyz);
+        vec3 tip = shA[r + uint(end)].xyz;
+        vec3 parent = shA[r + uint(first - 1)].xyz;
+        for (int i = first; i < end; ++i) {
+          uint k = r + uint(i);
+          float segment = grow * length(shC[k].xyz - shC[k - 1u].xyz);
+          reach -= segment;
+          vec3 x = shA[k].xyz;
+          vec3 to = intoBothBalls(x, parent, segment, tip, reach);
+          shB[k] = vec4(shB[k].xyz + (to - x) / st.h, 0.0);
+          shA[k] = vec4(to, 1.0);
+          parent = to;
+        }
+      }
     }
   }
   barrier();

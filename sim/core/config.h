@@ -62,6 +62,10 @@ enum class Parting : int { None = 0, Centre = 1, Left = 2, Right = 3 };
 // mass; each step pulls by alpha = min(1, k h^2), so the hair is the same at any step size,
 // resolution and density.
 enum class StiffnessModel : int { Paper = 0, Calibrated = 1 };
+// Which way a groom file's face looks in the file's own axes: auto takes TressFX (DirectX's
+// left-handed frame, the face toward -z) as -z and every other format as +z; -z mirrors the
+// file's z into the head frame (face +z, right-handed), +z keeps it.
+enum class ImportFacing : int { Auto = 0, PlusZ = 1, MinusZ = 2 };
 
 struct HairstyleConfig {
   std::string file;  // a groom file (.hair, .tfx); empty = the generator below
@@ -95,6 +99,7 @@ struct HairstyleConfig {
   float importScale = 0.0f;  // 0 = fit to the head automatically
   glm::vec3 importRotation{0.0f};
   glm::vec3 importOffset{0.0f};
+  ImportFacing importFacing = ImportFacing::Auto;
   float resampleTolerance = 0.002f;  // metres; 0 keeps the file's points
 };
 

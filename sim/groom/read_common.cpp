@@ -1,5 +1,7 @@
 #include "sim/groom/read_common.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -35,6 +37,14 @@ std::string checkGroomStructure(const Groom& groom) {
            std::to_string(groom.strandCount()) + " strands";
   }
   return {};
+}
+
+bool hasExtension(std::string_view path, std::string_view ext) {
+  if (path.size() < ext.size()) return false;
+  return std::equal(ext.begin(), ext.end(), path.end() - ext.size(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) ==
+           std::tolower(static_cast<unsigned char>(b));
+  });
 }
 
 namespace detail {

@@ -28,6 +28,12 @@ struct GroomReadResult {
   GroomRepair repair;
   // False when the format does not say which end of a strand is its root (OBJ curves).
   bool rootsKnown = true;
+  // True when the format's face looks toward -z in a left-handed frame (TressFX: DirectX): the
+  // scene mirrors z into the head frame unless hairstyle.import_facing says otherwise.
+  bool facesMinusZ = false;
+  // What the file holds that csmhair has no use for, or uses in its own way (a TressFX project's
+  // follow-hair counts, collision spheres, simulation values), one line each, for the report.
+  std::vector<std::string> unused;
 
   explicit operator bool() const { return groom.has_value(); }
 };
@@ -45,6 +51,9 @@ inline constexpr uint64_t kMaxFileBytes = uint64_t{512} << 20;
 // decrease, end at points.size(); every strand has >= 2 points; optional arrays are empty
 // or one entry per strand), otherwise what is wrong. Used by writers before touching disk.
 std::string checkGroomStructure(const Groom& groom);
+
+// True when `path` ends in `ext` (".obj"), in any case.
+bool hasExtension(std::string_view path, std::string_view ext);
 
 namespace detail {
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <Eigen/Dense>
 #include <glm/geometric.hpp>
@@ -131,6 +132,29 @@ size_t turnRootsFirst(Groom& g) {
   return turned;
 }
 
+// The facing checked once the groom is on the head: hair falls behind and down from its roots
+// (a fringe forward, the rest back). When the free strands' tips lie on the whole before their
+// roots by more than a fifth of their reach, the groom's front may have landed behind: said,
+// with the setting that turns it.
+std::string facingCheck(const Groom& g) {
+  double forward = 0.0, reach = 0.0;
+  size_t counted = 0;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    if (g.holdsTip(s)) continue;
+    const glm::vec3 d = g.points[g.first[s + 1] - 1] - g.points[g.first[s]];
+    forward += double(d.z);
+    reach += double(glm::length(d));
+    ++counted;
+  }
+  if (counted == 0 || !(forward > 0.2 * reach)) return {};
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the hair falls toward the face (its tips %.0f mm before their roots on the "
+                "whole): if the groom's front is behind, set hairstyle.import_facing",
+                1000.0 * forward / double(counted));
+  return text;
+}
+
 // Keeps `count` strands spread evenly over the file's order (all when count covers them).
 void keepStrands(Groom& g, size_t count) {
   const size_t total = g.strandCount();
@@ -170,9 +194,17 @@ bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseD
     if (error) *error = read.error;
     return false;
   }
+  // Into the head frame's handedness: TressFX's face looks toward -z in DirectX's left-handed
+  // axes; mirroring z turns it to +z and keeps its left at the character's left.
+  const bool mirror = h.importFacing == ImportFacing::MinusZ ||
+                      (h.importFacing == ImportFacing::Auto && read.facesMinusZ);
+  if (mirror)
+    for (glm::vec3& p : read.groom->points) p.z = -p.z;
   if (!fitFileGroom(c, head, std::move(*read.groom), path, out, error, &r, !read.rootsKnown,
                     progress))
     return false;
+  r.mirrored = mirror;
+  r.unused = read.unused;
   // The file's strands and repairs: those the reader dropped, then those the scene did.
   r.fileStrands += read.repair.droppedStrands;
   io::GroomRepair both = read.repair;
@@ -263,9 +295,10 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
   // Each particle on its own: in chunks of strands on the cores, the counts summed after.
   const double margin = double(c.collision.radius);
   at("placing", 0.7);
-  std::vector<size_t> pushedIn(coreCount(), 0);
+  std::vector<size_t> pushedIn(coreCount(), 0), tiedMoved(coreCount(), 0);
   parallelChunks(g.strandCount(), 256, [&](size_t begin, size_t end, size_t chunk) {
-    for (size_t s = begin; s < end; ++s)
+    for (size_t s = begin; s < end; ++s) {
+      const size_t before = pushedIn[chunk];
       for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i) {
         glm::dvec3 p(g.points[i]), normal;
         // Only a particle inside: one the hair radius from the surface is where a simulation
@@ -279,8 +312,13 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
           ++pushedIn[chunk];
         }
       }
+      // A tied strand's rest shape is where the simulation starts it: the fitted one, its ends
+      // as far apart as the moved strand's length allows.
+      if (g.holdsTip(s) && pushedIn[chunk] > before) ++tiedMoved[chunk];
+    }
   });
   for (const size_t n : pushedIn) r.pushedParticles += n;
+  for (const size_t n : tiedMoved) r.refitTied += n;
   at("placing", 1.0);
   if (r.pushedParticles > 0) {
     // Particles pushed from inside land on the surface nearest each: a run of them (a strand
@@ -298,6 +336,7 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
   }
   r.simulatedPoints = g.pointCount();
   r.heldTips = size_t(std::count(g.tipHeld.begin(), g.tipHeld.end(), uint8_t(1)));
+  r.facingNote = facingCheck(g);
   out = std::move(g);
   return true;
 }
@@ -313,9 +352,22 @@ std::string groomReportText(const GroomReport& r) {
   add(r.pushedParticles, " particle moved out of the head", " particles moved out of the head");
   add(r.heldTips, " strand held by the head at both ends",
       " strands held by the head at both ends");
-  if (parts.empty()) return {};
-  std::string text = "the groom file: " + parts;
+  add(r.refitTied, " tied strand moved by the fit: it rests in its fitted shape",
+      " tied strands moved by the fit: they rest in their fitted shape");
+  if (r.mirrored) {
+    if (!parts.empty()) parts += "; ";
+    parts +=
+        "z mirrored into the head frame (a left-handed file, face -z: "
+        "hairstyle.import_facing)";
+  }
+  if (!r.facingNote.empty()) {
+    if (!parts.empty()) parts += "; ";
+    parts += r.facingNote;
+  }
+  if (parts.empty() && r.unused.empty()) return {};
+  std::string text = "the groom file: " + (parts.empty() ? std::string("read") : parts);
   for (const std::string& n : r.repair.notes) text += "\n  " + n;
+  for (const std::string& n : r.unused) text += "\n  not used: " + n;
   return text;
 }
 

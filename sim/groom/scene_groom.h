@@ -24,6 +24,10 @@ struct GroomReport {
   size_t turnedStrands = 0;    // strands read tip first (OBJ curves), turned root first
   size_t pushedParticles = 0;  // particles moved out of the head when the groom was fitted
   size_t heldTips = 0;         // strands the head holds at both ends (Groom::tipHeld)
+  size_t refitTied = 0;        // of those, strands the fit moved: they rest in their fitted shape
+  bool mirrored = false;       // z mirrored into the head frame (hairstyle.import_facing)
+  std::string facingNote;      // the groom's hair falls toward the face: its front may be behind
+  std::vector<std::string> unused;  // what the file holds that csmhair does not use (a project's)
   size_t savedPoints() const {
     return filePoints > simulatedPoints ? filePoints - simulatedPoints : 0;
   }

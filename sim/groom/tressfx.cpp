@@ -360,7 +360,15 @@ bool isTressFxText(std::span<const std::byte> bytes) {
   return word("version") || word("numStrands");
 }
 
+GroomReadResult readTressFxLayout(std::span<const std::byte> bytes, std::string_view name);
+
 GroomReadResult readTressFx(std::span<const std::byte> bytes, std::string_view name) {
+  GroomReadResult r = readTressFxLayout(bytes, name);
+  r.facesMinusZ = true;  // every version: DirectX's left-handed axes, the face toward -z
+  return r;
+}
+
+GroomReadResult readTressFxLayout(std::span<const std::byte> bytes, std::string_view name) {
   if (isTressFxText(bytes)) return readText(bytes, name);
   if (bytes.size() < 4) {
     GroomReadResult result;

@@ -63,8 +63,12 @@ inline constexpr size_t kTressFxHeaderBytes = 160;  // 4.x
 // units, as for cyHair); per-vertex colours are averaged over the strand (rgb, clamped to 0..1;
 // alpha dropped). UVs and guide flags are bounds-checked but not kept. Errors name the byte
 // offset (binary) or the line (text); the flaws io/repair.h repairs are repaired and counted.
+// Every version is read as AMD's tools write it, in DirectX's left-handed axes with the face
+// toward -z (GroomReadResult::facesMinusZ): the scene mirrors z into the head frame.
 GroomReadResult readTressFx(std::span<const std::byte> bytes,
                             std::string_view name = "TressFX data");
+// The same without the facing said (what the layout alone gives).
+GroomReadResult readTressFxLayout(std::span<const std::byte> bytes, std::string_view name);
 GroomReadResult readTressFx(const std::string& path);
 
 // Whether the bytes are a text .tfx (TressFX 1.x/2.x): the first word is "version" or

@@ -37,7 +37,7 @@ std::shared_ptr<const DistanceGrid> unionGrid(const DistanceGrid& a, const Dista
 }  // namespace
 
 std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::string* error) {
-  io::ObjReadResult read = io::readObjMesh(path);
+  io::ObjReadResult read = io::readHeadMeshFile(path);
   if (!read.mesh) {
     if (error) *error = read.error;
     return nullptr;

@@ -11,6 +11,7 @@
 
 #include "sim/base/file_io.h"
 #include "sim/base/obj_text.h"
+#include "sim/base/ply.h"
 
 namespace csm::io {
 namespace {
@@ -116,7 +117,13 @@ ObjReadResult readObjMesh(const std::string& path) {
 
 ObjReadResult parseObjMesh(std::string_view data, const std::string& path) {
   ObjReadResult r;
-  const std::string text(data);
+  // NUL bytes after the last line are padding (ZBrush ends its files with one): not text, and
+  // not the file's; one anywhere else is refused below.
+  size_t end = data.size();
+  while (end > 0 && (data[end - 1] == '\0' || data[end - 1] == '\n' || data[end - 1] == '\r' ||
+                     data[end - 1] == ' ' || data[end - 1] == '\t'))
+    --end;
+  const std::string text = std::string(data.substr(0, end)) + "\n";
   std::vector<size_t> faceLines;
   r.error = checkLines(text, path, faceLines);
   if (!r.error.empty()) return r;
@@ -133,56 +140,80 @@ ObjReadResult parseObjMesh(std::string_view data, const std::string& path) {
   }
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
 
-  // One vertex per position: exporters repeat positions where texture coordinates change.
-  SurfaceMesh m;
-  std::vector<uint32_t> welded(attrib.vertices.size() / 3);
-  std::map<std::array<float, 3>, uint32_t> byPosition;
-  for (size_t v = 0; v < welded.size(); ++v) {
-    const std::array<float, 3> p{attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
-                                 attrib.vertices[3 * v + 2]};
-    auto [it, added] = byPosition.try_emplace(p, uint32_t(m.positions.size()));
-    if (added) m.positions.emplace_back(p[0], p[1], p[2]);
-    welded[v] = it->second;
-  }
+  std::vector<glm::vec3> positions;
+  for (size_t v = 0; v + 2 < attrib.vertices.size(); v += 3)
+    positions.emplace_back(attrib.vertices[v], attrib.vertices[v + 1], attrib.vertices[v + 2]);
   size_t faces = 0;
   for (const tinyobj::shape_t& s : reader.GetShapes()) {
     faces += s.mesh.num_face_vertices.size();
     // Our checks above saw every index in range; tinyobjloader must agree before we index.
     for (const tinyobj::index_t& i : s.mesh.indices)
-      if (i.vertex_index < 0 || size_t(i.vertex_index) >= welded.size()) {
+      if (i.vertex_index < 0 || size_t(i.vertex_index) >= positions.size()) {
         r.error = path + ": a face refers to vertex " + std::to_string(i.vertex_index + 1) +
-                  " of the " + std::to_string(welded.size()) +
+                  " of the " + std::to_string(positions.size()) +
                   " tinyobjloader read; the file's lines are not plain OBJ";
         return r;
       }
   }
   const bool linesKnown = faces == faceLines.size();
-  std::vector<size_t> triangleLine;
+  std::vector<uint32_t> triangles;
+  std::vector<std::string> triangleWhere;
   size_t face = 0;
   for (const tinyobj::shape_t& s : reader.GetShapes()) {
     size_t first = 0;
     for (const unsigned char n : s.mesh.num_face_vertices) {
       for (size_t k = 1; k + 1 < n; ++k) {
-        const uint32_t a = welded[size_t(s.mesh.indices[first].vertex_index)],
-                       b = welded[size_t(s.mesh.indices[first + k].vertex_index)],
-                       c = welded[size_t(s.mesh.indices[first + k + 1].vertex_index)];
-        if (a == b || b == c || c == a) continue;  // no area, no edges
-        m.indices.insert(m.indices.end(), {a, b, c});
-        triangleLine.push_back(linesKnown ? faceLines[face] : 0);
+        triangles.insert(triangles.end(), {uint32_t(s.mesh.indices[first].vertex_index),
+                                           uint32_t(s.mesh.indices[first + k].vertex_index),
+                                           uint32_t(s.mesh.indices[first + k + 1].vertex_index)});
+        triangleWhere.push_back(linesKnown ? ":" + std::to_string(faceLines[face]) : "");
       }
       first += n;
       ++face;
     }
   }
+  return finishHeadMesh(std::move(positions), triangles, triangleWhere, path);
+}
+
+ObjReadResult finishHeadMesh(std::vector<glm::vec3> positions,
+                             const std::vector<uint32_t>& triangles,
+                             const std::vector<std::string>& triangleWhere,
+                             const std::string& path) {
+  ObjReadResult r;
+  // One vertex per position: exporters repeat positions where texture coordinates change.
+  SurfaceMesh m;
+  std::vector<uint32_t> welded(positions.size());
+  std::map<std::array<float, 3>, uint32_t> byPosition;
+  for (size_t v = 0; v < welded.size(); ++v) {
+    const std::array<float, 3> p{positions[v].x, positions[v].y, positions[v].z};
+    auto [it, added] = byPosition.try_emplace(p, uint32_t(m.positions.size()));
+    if (added) m.positions.emplace_back(p[0], p[1], p[2]);
+    welded[v] = it->second;
+  }
+  std::vector<std::string> triangleLine;
+  for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
+    const uint32_t a = welded[triangles[t]], b = welded[triangles[t + 1]],
+                   c = welded[triangles[t + 2]];
+    if (a == b || b == c || c == a) continue;  // no area, no edges
+    m.indices.insert(m.indices.end(), {a, b, c});
+    triangleLine.push_back(t / 3 < triangleWhere.size() ? triangleWhere[t / 3] : "");
+  }
   auto at = [&](size_t triangle, const std::string& message) {
-    const size_t line = triangle < triangleLine.size() ? triangleLine[triangle] : 0;
-    return path + (line ? ":" + std::to_string(line) : std::string()) + ": " + message;
+    return path + (triangle < triangleLine.size() ? triangleLine[triangle] : std::string()) + ": " +
+           message;
   };
   if (m.indices.empty()) {
     r.error = path + ": no faces with area (every face repeats a vertex)";
     return r;
   }
 
+  // A scan open at the neck (or anywhere): each hole closed by a fan, so that the surface has an
+  // inside; what still does not close is refused below.
+  if (openEdges(m) > 0) {
+    const size_t before = m.indices.size() / 3;
+    r.cappedHoles = capHoles(m);
+    for (size_t t = before; t < m.indices.size() / 3; ++t) triangleLine.push_back("");
+  }
   if (const size_t open = openEdges(m); open > 0) {
     // The first face with an edge not met once the other way round.
     std::unordered_map<uint64_t, int> directed;
@@ -254,6 +285,77 @@ ObjReadResult parseObjMesh(std::string_view data, const std::string& path) {
     m.normals.emplace_back(glm::length(n) > 1e-30 ? glm::normalize(n) : glm::dvec3(0, 1, 0));
   r.mesh = std::move(m);
   return r;
+}
+
+ObjReadResult parsePlyMesh(std::span<const std::byte> bytes, const std::string& path) {
+  ObjReadResult r;
+  std::optional<PlyData> d = readPly(
+      bytes, path, {"vertex.x", "vertex.y", "vertex.z", "face.vertex_indices", "face.vertex_index"},
+      &r.error);
+  if (!d) return r;
+  const PlyColumn* xyz[3] = {d->column("vertex", "x"), d->column("vertex", "y"),
+                             d->column("vertex", "z")};
+  if (!xyz[0] || !xyz[1] || !xyz[2] || d->header.element("vertex")->property("x")->list) {
+    r.error = path + ": no element \"vertex\" with properties x, y and z";
+    return r;
+  }
+  const PlyColumn* faces = d->column("face", "vertex_indices");
+  if (!faces) faces = d->column("face", "vertex_index");
+  if (!faces || faces->first.empty()) {
+    r.error = path +
+              ": no element \"face\" with a list vertex_indices: a head is a surface (strands "
+              "go in hairstyle.file)";
+    return r;
+  }
+  const size_t vertices = xyz[0]->values.size();
+  if (vertices == 0) {
+    r.error = path + ": no vertices";
+    return r;
+  }
+  std::vector<glm::vec3> positions;
+  for (size_t v = 0; v < vertices; ++v) {
+    const glm::vec3 p(float(xyz[0]->values[v]), float(xyz[1]->values[v]), float(xyz[2]->values[v]));
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      r.error =
+          path + ": " + d->where("vertex", v) + ": vertex " + std::to_string(v) + " is not finite";
+      return r;
+    }
+    positions.push_back(p);
+  }
+  std::vector<uint32_t> triangles;
+  std::vector<std::string> where;
+  for (size_t f = 0; f + 1 < faces->first.size(); ++f) {
+    const uint64_t a = faces->first[f], b = faces->first[f + 1];
+    const std::string at = ": face " + std::to_string(f) + " (" + d->where("face", f) + ")";
+    if (b - a < 3) {
+      r.error =
+          path + at + ": a face needs at least 3 vertices, this one has " + std::to_string(b - a);
+      return r;
+    }
+    for (uint64_t k = a; k < b; ++k) {
+      const double i = faces->values[k];
+      if (!(i >= 0.0 && i < double(vertices))) {
+        r.error = path + at + ": vertex index " + std::to_string(int64_t(i)) +
+                  " is out of range: " + std::to_string(vertices) + " vertices (counted from 0)";
+        return r;
+      }
+    }
+    for (uint64_t k = a + 1; k + 1 < b; ++k) {
+      triangles.insert(triangles.end(), {uint32_t(faces->values[a]), uint32_t(faces->values[k]),
+                                         uint32_t(faces->values[k + 1])});
+      where.push_back(at);
+    }
+  }
+  return finishHeadMesh(std::move(positions), triangles, where, path);
+}
+
+ObjReadResult readHeadMeshFile(const std::string& path) {
+  std::string error;
+  const auto bytes = detail::readFileBytes(path, kMaxBytes, &error);
+  if (!bytes) return {std::nullopt, error};
+  if (isPly(*bytes)) return parsePlyMesh(*bytes, path);
+  return parseObjMesh(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
+                      path);
 }
 
 }  // namespace csm::io

@@ -166,4 +166,51 @@ size_t openEdges(const SurfaceMesh& m) {
   return open;
 }
 
+size_t capHoles(SurfaceMesh& m) {
+  const uint64_t n = m.positions.size();
+  std::unordered_map<uint64_t, int> directed;
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
+    for (int e = 0; e < 3; ++e) ++directed[m.indices[t + e] * n + m.indices[t + (e + 1) % 3]];
+  // Each boundary vertex's one boundary edge out of it.
+  std::unordered_map<uint32_t, uint32_t> next;
+  std::vector<uint32_t> starts;
+  for (const auto& [key, count] : directed) {
+    const uint32_t a = uint32_t(key / n), b = uint32_t(key % n);
+    if (count != 1 || directed.count(uint64_t(b) * n + a)) continue;
+    if (!next.emplace(a, b).second) return 0;  // two loops meet at a: not simple
+    starts.push_back(a);
+  }
+  if (next.empty()) return 0;
+  std::sort(starts.begin(), starts.end());  // the same caps whatever the map's order
+  std::vector<std::vector<uint32_t>> loops;
+  std::unordered_map<uint32_t, bool> seen;
+  for (const uint32_t start : starts) {
+    if (seen[start]) continue;
+    std::vector<uint32_t> loop;
+    uint32_t v = start;
+    while (!seen[v]) {
+      seen[v] = true;
+      loop.push_back(v);
+      auto it = next.find(v);
+      if (it == next.end()) return 0;  // the boundary stops: not a loop
+      v = it->second;
+    }
+    if (v != start || loop.size() < 3) return 0;
+    loops.push_back(std::move(loop));
+  }
+  for (const std::vector<uint32_t>& loop : loops) {
+    glm::dvec3 mean(0.0), normal(0.0);
+    for (const uint32_t v : loop) mean += glm::dvec3(m.positions[v]);
+    mean /= double(loop.size());
+    const auto c = uint32_t(m.positions.size());
+    m.positions.emplace_back(mean);
+    if (!m.normals.empty()) m.normals.emplace_back(0.0f, 1.0f, 0.0f);
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const uint32_t a = loop[k], b = loop[(k + 1) % loop.size()];
+      m.indices.insert(m.indices.end(), {b, a, c});  // b->a against the face's a->b
+    }
+  }
+  return loops.size();
+}
+
 }  // namespace csm

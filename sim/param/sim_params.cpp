@@ -148,6 +148,13 @@ std::vector<Param<Config>> build() {
       param("hairstyle.import_offset", "Import offset", "Hairstyle|Import", &Config::hairstyle,
             &HairstyleConfig::importOffset, -10, 10,
             "Offset (m) applied to a groom file after fitting.", Effect::Rebuild),
+      param("hairstyle.import_facing", "Import facing", "Hairstyle|Import", &Config::hairstyle,
+            &HairstyleConfig::importFacing, 0, 0,
+            "Which way the groom file's face looks in its own axes: auto takes TressFX "
+            "(left-handed, DirectX) as -z and mirrors its z into the head frame (face +z), every "
+            "other format as +z; -z mirrors any file, +z none.",
+            Effect::Rebuild)
+          .choices({"auto", "+z", "-z"}),
       param(
           "hairstyle.resample_tolerance", "Resample tolerance", "Hairstyle|Import",
           &Config::hairstyle, &HairstyleConfig::resampleTolerance, 0.0, 0.05,

@@ -459,6 +459,33 @@ void sweepParticle(StepHair& hair, const HeadCollider& head, const SweepSettings
   if (settings.dftl > 0.0 && parentFree) v[i - 1] -= settings.dftl * (strained - start) / h;
 }
 
+glm::dvec3 intoBothBalls(const glm::dvec3& x, const glm::dvec3& a, double ra, const glm::dvec3& b,
+                         double rb) {
+  auto into = [&](const glm::dvec3& c, double r) {
+    const double len = glm::length(x - c);
+    return len > r ? c + (x - c) * (r / len) : x;
+  };
+  auto inside = [](const glm::dvec3& p, const glm::dvec3& c, double r) {
+    return glm::length(p - c) <= r * (1.0 + 1e-12);
+  };
+  const glm::dvec3 pa = into(a, ra);
+  if (inside(pa, b, rb)) return pa;
+  const glm::dvec3 pb = into(b, rb);
+  if (inside(pb, a, ra)) return pb;
+  // Neither ball's nearest point is in the other: the nearest point of both is on the circle
+  // where their spheres meet.
+  const glm::dvec3 ab = b - a;
+  const double d = glm::length(ab);
+  if (!(d > 0.0) || d >= ra + rb) return a + ab * (ra / std::max(ra + rb, 1e-300));
+  const glm::dvec3 u = ab / d;
+  const double along = (d * d + ra * ra - rb * rb) / (2.0 * d);
+  const double ring = std::sqrt(std::max(0.0, ra * ra - along * along));
+  glm::dvec3 w = (x - a) - glm::dot(x - a, u) * u;
+  if (glm::length(w) < 1e-300) w = std::abs(u.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  w -= glm::dot(w, u) * u;
+  return a + along * u + ring * glm::normalize(w);
+}
+
 void limitStrainStrand(StepHair& hair, const std::vector<glm::dvec4>& correction,
                        const HeadCollider& head, const SweepSettings& settings, size_t s,
                        double h) {
@@ -490,6 +517,20 @@ void limitStrainStrand(StepHair& hair, const std::vector<glm::dvec4>& correction
     for (uint32_t i = first; i < end; ++i)
       moved = limitToward(x[i], v[i], x[i - 1], hair.restLength[i - 1], limit, h) || moved;
     if (!moved) break;
+  }
+  // What the sweeps left: one more from the root, each particle within its segment's reach of
+  // its final parent and within the rest of the strand's reach of the held tip. While the root
+  // is within the whole strand's reach of the tip (the rest shape is the fitted one, so it is
+  // while the head holds both), the two reaches meet, and the last segment ends at the tip
+  // within the limit.
+  double reach = 0.0;
+  for (uint32_t i = first - 1; i < end; ++i) reach += (1.0 + limit) * hair.restLength[i];
+  for (uint32_t i = first; i < end; ++i) {
+    reach -= (1.0 + limit) * hair.restLength[i - 1];
+    const glm::dvec3 to =
+        intoBothBalls(x[i], x[i - 1], (1.0 + limit) * hair.restLength[i - 1], x[end], reach);
+    v[i] += (to - x[i]) / h;
+    x[i] = to;
   }
 }
 

@@ -180,10 +180,17 @@ struct SweepSettings {
 void sweepParticle(StepHair& hair, const HeadCollider& head, const SweepSettings& settings,
                    uint32_t i, bool contacts, const glm::dvec3& moved, bool parentFree, double h);
 
+// The point nearest x in both balls (centre a, radius ra) and (b, rb); where they do not meet,
+// the point between their centres that divides the gap in their radii's ratio.
+glm::dvec3 intoBothBalls(const glm::dvec3& x, const glm::dvec3& a, double ra, const glm::dvec3& b,
+                         double rb);
+
 // Strand s: the sweep from its first free particle to its tip (a held tip stays), then, held
 // at both ends, the stretch shared out by sweeps back from the tip and forth from the root
-// (CSM_TIED_SWEEPS pairs at most, until one moves nothing). `correction`: the strand contacts'
-// corrections of this step, 2 per segment (empty: none).
+// (CSM_TIED_SWEEPS pairs at most, until one moves nothing), and a last sweep from the root that
+// keeps each particle within reach of its parent and of the tip (intoBothBalls): every segment
+// within the limit. `correction`: the strand contacts' corrections of this step, 2 per segment
+// (empty: none).
 void limitStrainStrand(StepHair& hair, const std::vector<glm::dvec4>& correction,
                        const HeadCollider& head, const SweepSettings& settings, size_t s, double h);
 

@@ -32,6 +32,6 @@ expect 0 "gains energy unless sim.dftl is at least 0.9" -- --headless --no-rende
 expect 2 "unknown option --frobnicate" -- --frobnicate
 expect 2 "--frames -3: needs N (a whole number >= 0) or A-B" -- --frames -3
 # An export name that no writer takes is refused before anything runs.
-expect 2 "--export-hair out.tfx: the name must end in .hair (cyHair) or .obj (OBJ curves)" -- --headless --solver cpu --export-hair out.tfx
+expect 2 "--export-hair out.tfx: the name must end in .hair (cyHair), .obj (OBJ curves), .data" -- --headless --solver cpu --export-hair out.tfx
 expect 0 "ok" -- --validate "$src"/presets/*.json
 exit $fail

@@ -190,3 +190,11 @@ TEST_CASE(
     test::checkHeldEnds(cpu, 1e-6, version);
   }
 }
+
+TEST_CASE(
+    "Import: a ponytail's back tied at both ends, fitted through a larger head, stays within the "
+    "strain limit while nodding, CPU",
+    "[import][cpu][quick]") {
+  CpuSolver cpu;
+  test::checkTiedPonytail(cpu, 1e-9, 1e-6);
+}

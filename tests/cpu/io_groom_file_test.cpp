@@ -178,6 +178,16 @@ TEST_CASE("Groom files: OBJ curves written as Blender reads them, read back to t
   CHECK(csm::io::isWritableGroomName("A.OBJ"));
   CHECK(csm::io::isWritableGroomName("a.Hair"));
   CHECK_FALSE(csm::io::isWritableGroomName("a.tfx"));
-  CHECK_FALSE(csm::io::writeGroom(dir.file("out.ply"), groom, &error));
-  CHECK_THAT(error, Catch::Contains("out.ply: can only write cyHair groom files (.hair) and OBJ"));
+  CHECK_FALSE(csm::io::writeGroom(dir.file("out.abc"), groom, &error));
+  CHECK_THAT(error, Catch::Contains("out.abc: can only write cyHair (.hair), OBJ curves (.obj)"));
+  // Each research format through the file: written whole, read back by its name.
+  for (const char* name : {"out.data", "out.bin", "out.ply", "out_ascii.ply"}) {
+    INFO(name);
+    REQUIRE(csm::io::writeGroom(dir.file(name), groom, &error));
+    const auto r = csm::io::readGroom(dir.file(name));
+    INFO(r.error);
+    REQUIRE(r.groom);
+    CHECK(r.groom->first == groom.first);
+    CHECK(r.groom->points == groom.points);
+  }
 }

@@ -132,6 +132,61 @@ def curves(ss, edges=True):
     return text
 
 
+def research(reader, payload):
+    """A seed of the research target: its first byte picks the reader."""
+    return bytes([reader]) + (payload if isinstance(payload, bytes) else payload.encode())
+
+
+def strand_arrays(ss, floats):
+    data = struct.pack("<i", len(ss))
+    for s in ss:
+        data += struct.pack("<i", len(s))
+        for p in s:
+            data += struct.pack("<3f", *p) + struct.pack("<f", 0.5) * (floats - 3)
+    return data
+
+
+def ply_strands(ss, fmt="ascii", edges=False):
+    npts = sum(len(s) for s in ss)
+    head = "ply\nformat %s 1.0\nelement vertex %d\nproperty float z\nproperty float y\n" \
+        "property float x\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n" % \
+        (fmt, npts)
+    if edges:
+        nedges = sum(len(s) - 1 for s in ss)
+        head += "element edge %d\nproperty int vertex1\nproperty int vertex2\n" % nedges
+    else:
+        head += "element strand %d\nproperty ushort nsegs\n" % len(ss)
+    head += "end_header\n"
+    pts = [p for s in ss for p in s]
+    if fmt == "ascii":
+        body = "".join("%g %g %g 100 50 25\n" % (p[2], p[1], p[0]) for p in pts)
+        if edges:
+            first = 0
+            for s in ss:
+                body += "".join("%d %d\n" % (first + i, first + i + 1) for i in range(len(s) - 1))
+                first += len(s)
+        else:
+            body += "".join("%d\n" % (len(s) - 1) for s in ss)
+        return (head + body).encode()
+    e = "<" if fmt == "binary_little_endian" else ">"
+    body = b"".join(struct.pack(e + "3f3B", p[2], p[1], p[0], 100, 50, 25) for p in pts)
+    body += b"".join(struct.pack(e + "H", len(s) - 1) for s in ss)
+    return head.encode() + body
+
+
+def ply_mesh(vertices, faces, fmt="ascii"):
+    head = "ply\nformat %s 1.0\nelement vertex %d\nproperty float x\nproperty float y\n" \
+        "property float z\nelement face %d\nproperty list uchar int vertex_indices\n" \
+        "end_header\n" % (fmt, len(vertices), len(faces))
+    if fmt == "ascii":
+        body = "".join("%g %g %g\n" % v for v in vertices)
+        body += "".join("%d %s\n" % (len(f), " ".join(str(i - 1) for i in f)) for f in faces)
+        return (head + body).encode()
+    body = b"".join(struct.pack("<3f", *v) for v in vertices)
+    body += b"".join(struct.pack("<B%di" % len(f), len(f), *[i - 1 for i in f]) for f in faces)
+    return head.encode() + body
+
+
 def obj(vertices, faces, extra=""):
     text = "# fuzz seed\n" + extra
     text += "".join("v %.5f %.5f %.5f\n" % v for v in vertices)
@@ -183,8 +238,22 @@ def main():
         curves(strands(2, 4)) + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n")
     out("curves", "branch.obj", curves(strands(2, 4)) + "l 2 7\n")
 
+    out("research", "salon.data", research(0, strand_arrays(strands(3, 5), 3)))
+    out("research", "bald_root.data", research(0, strand_arrays([[(0, 0, 0)]] + strands(2, 4), 3)))
+    out("research", "ct2hair.bin", research(1, strand_arrays(strands(2, 6, curl=1.0), 7)))
+    out("research", "truncated.data", research(0, strand_arrays(strands(2, 4), 3)[:40]))
+    out("research", "strands_ascii.ply", research(2, ply_strands(strands(3, 4))))
+    out("research", "strands_edges.ply", research(2, ply_strands(strands(2, 5), edges=True)))
+    out("research", "strands_le.ply",
+        research(2, ply_strands(strands(2, 4), "binary_little_endian")))
+    out("research", "strands_be.ply", research(2, ply_strands(strands(2, 4), "binary_big_endian")))
+
     r = 0.1
     tet = [(r, r, r), (r, -r, -r), (-r, r, -r), (-r, -r, r)]
+    out("research", "head_ascii.ply",
+        research(3, ply_mesh(tet, [(1, 2, 3), (1, 4, 2), (1, 3, 4), (2, 4, 3)])))
+    out("research", "head_open.ply",
+        research(3, ply_mesh(tet, [(1, 2, 3), (1, 4, 2), (1, 3, 4)], "binary_little_endian")))
     out("obj", "tetrahedron.obj", obj(tet, [(1, 2, 3), (1, 4, 2), (1, 3, 4), (2, 4, 3)]))
     cube = [(x * r, y * r, z * r) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
     quads = [(1, 2, 4, 3), (5, 7, 8, 6), (1, 5, 6, 2), (3, 4, 8, 7), (1, 3, 7, 5), (2, 6, 8, 4)]

@@ -30,6 +30,14 @@ TEST_CASE("GPU: TressFX 3.x and 4.x strands tied at both ends keep both with the
   }
 }
 
+TEST_CASE(
+    "GPU: a ponytail's back tied at both ends, fitted through a larger head, stays within the "
+    "strain limit while nodding",
+    "[gpu][import][quick]") {
+  auto gpu = csm::test::gpuSolver();
+  csm::test::checkTiedPonytail(*gpu, 1e-4, 1e-6);
+}
+
 namespace {
 
 // A fur-like TressFX 3.x file, as the bear fur of AMD's samples has it: `strands` short strands
