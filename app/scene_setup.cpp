@@ -4,7 +4,7 @@
 
 #include "app/params.h"
 #include "app/preset.h"
-#include "sim/groom/groom_file.h"
+#include "sim/groom/read_common.h"
 #include "sim/motion/clip.h"
 #include "sim/run/scene_checks.h"
 

@@ -5,6 +5,7 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <set>
 
@@ -233,8 +234,9 @@ std::optional<PlyHeader> readPlyHeader(std::span<const std::byte> bytes, std::st
       format = true;
     } else if (t[0] == "element") {
       long count = 0;
-      if (t.size() != 3 || !detail::parseIndex(t[2], count) || count < 0)
-        return fail(line, "expected \"element NAME COUNT\" with a count of 0 or more");
+      if (t.size() != 3 || !detail::parseIndex(t[2], count) || count < 0 ||
+          count > long(UINT32_MAX))
+        return fail(line, "expected \"element NAME COUNT\" with a count from 0 to 4294967295");
       for (const PlyElement& e : h.elements)
         if (e.name == t[1]) return fail(line, "a second element \"" + std::string(t[1]) + "\"");
       h.elements.push_back({std::string(t[1]), uint64_t(count), {}, line});
@@ -300,6 +302,11 @@ std::optional<PlyData> readPly(std::span<const std::byte> bytes, std::string_vie
       uint64_t row = 0;
       for (const PlyProperty& p : e.properties)
         row += ascii ? 2 : sizeOf(p.list ? p.countType : p.type);
+      // Rows of nothing are nothing to read: an element of rows without a property is a
+      // header's mistake (and millions of empty rows would be read one at a time).
+      if (row == 0 && e.count > 0)
+        return failLine(e.line, "element \"" + e.name + "\" has " + std::to_string(e.count) +
+                                    " rows but no property");
       if (row > 0 && e.count > (size - d.header.bodyAt) / row + 1)
         return failLine(e.line, "element \"" + e.name + "\" has " + std::to_string(e.count) +
                                     " rows, more than the " +

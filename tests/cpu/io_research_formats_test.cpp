@@ -220,6 +220,12 @@ TEST_CASE("Strand PLY: what is not strands is refused with its line or byte",
   f.put(1.0f);
   CHECK_THAT(errorOf(readPlyStrands(f.b, "big.ply")),
              Catch::Contains("big.ply:3: element \"vertex\" has 4000000000 rows"));
+  // Rows without a property, and a count no PLY file holds (a fuzzed header read each empty row).
+  CHECK_THAT(errorOf(read("ply\nformat binary_little_endian 1.0\nelement vertex 800000000\n"
+                          "end_header\n")),
+             Catch::Contains("s.ply:3: element \"vertex\" has 800000000 rows but no property"));
+  CHECK_THAT(errorOf(read("ply\nformat ascii 1.0\nelement vertex 80000000000000000000000\n")),
+             Catch::Contains("s.ply:3: expected \"element NAME COUNT\" with a count from 0"));
   // Trailing bytes after the last element.
   Bytes t;
   t.text(
