@@ -66,6 +66,8 @@ void sayScene(const Options& options, const SceneSetup& scene, const Simulation&
         scene.source.c_str(), sim.counts().strands, sim.counts().particles,
         std::string(sim.solverName()).c_str(), variant.empty() ? "" : " (", variant.c_str(),
         variant.empty() ? "" : ")", frames, stiffnessText(stiffness).c_str());
+  if (const std::string head = sim.head().summary(); !head.empty() && !options.quiet)
+    std::fprintf(stderr, "csmhair: %s\n", head.c_str());
   if (sim.clip() && !options.quiet)
     std::fprintf(stderr, "csmhair: motion: %s\n", sim.clip()->summary().c_str());
   if (const std::string groom = groomReportText(sim.groomReport()); !groom.empty())

@@ -251,6 +251,10 @@ bool ViewerSession::applyConfig(const Preset& next) {
 
 void ViewerSession::checkStiffness() {
   if (!frame_->loaded) return;
+  if (frame_->head && frame_->head->summary() != headSummary_) {
+    headSummary_ = frame_->head->summary();
+    if (!headSummary_.empty()) log(MessageLevel::Info, headSummary_);
+  }
   if (const std::string groom = groomReportText(frame_->groomReport); groom != groomWarning_) {
     groomWarning_ = groom;
     if (!groom.empty()) log(MessageLevel::Warning, groom);

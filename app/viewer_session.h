@@ -147,6 +147,7 @@ class ViewerSession {
   mutable std::mutex inboxMutex_;
   std::vector<ViewerMessage> inbox_;  // from other threads
   std::string stiffnessWarning_;      // the last one logged, so a slider does not repeat it
+  std::string headSummary_;           // what was said of head.mesh's fit
   std::string groomWarning_;          // likewise what the groom's import repaired
   Pose userPose_;
 };

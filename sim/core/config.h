@@ -117,7 +117,14 @@ inline std::size_t guideCount(int setting, std::size_t strands) {
 }
 
 struct HeadConfig {
-  std::string mesh;  // an OBJ head (head frame, metres); empty = the built-in mannequin
+  std::string mesh;  // an OBJ or PLY head; empty = the built-in mannequin
+  // How `mesh` comes into the head frame (sim/head/head_fit.h): metres per file unit (0 infers
+  // it), its up and facing axes (auto infers them), and whether its cranium is moved onto the
+  // mannequin's (false keeps the file's place).
+  float meshScale = 0.0f;
+  ClipUp meshUp = ClipUp::Auto;
+  ClipFacing meshFacing = ClipFacing::Auto;
+  bool meshPlace = true;
   // With `mesh`, an OBJ torso (the same frame, at rest) that moves with the chest's pose while
   // `mesh` moves with the head's; empty: `mesh` is the whole body, moving with the head.
   std::string torsoMesh;

@@ -13,6 +13,7 @@
 #include "sim/core/config.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/mannequin.h"
+#include "sim/head/scalp_marks.h"
 
 namespace csm {
 
@@ -37,6 +38,10 @@ inline bool pushOutOfSpheres(glm::dvec3& p, const std::vector<Sphere>& head, dou
 struct GrowthHead {
   const std::vector<Sphere>& spheres;
   const DistanceGrid* field;
+  // Where the field's scalp ends (null: the spheres, or the mannequin's).
+  const ScalpMarks* marks = nullptr;
+
+  double browY() const { return marks ? marks->browY : mannequinScalpMarks().browY; }
 
   // The scalp point in direction dir (a unit vector from the scalp's centre).
   glm::dvec3 root(const glm::dvec3& dir) const {
@@ -68,13 +73,14 @@ struct GrowthHead {
   bool pushOut(glm::dvec3& p, double margin) const {
     return field ? pushOutOfField(*field, p, margin) : pushOutOfSpheres(p, spheres, margin);
   }
-  // The face is left open: on the mannequin, hair that comes down beside the face (below the
-  // hairline's height, within the head's width, in front of the ears) turns back behind the
-  // ears. A turn of the growing direction, not a move of the point, so that strands keep
-  // their own paths instead of being pressed onto one surface.
+  // The face is left open: on a field, hair that comes down beside the face (below 18 mm over
+  // the brow, within the head's width, in front of the ears) turns back behind the ears. A turn
+  // of the growing direction, not a move of the point, so that strands keep their own paths
+  // instead of being pressed onto one surface.
   glm::dvec3 steer(const glm::dvec3& p, const glm::dvec3& want) const {
-    if (!field || p.y > 0.03 || std::abs(p.x) > 0.11 || p.z < -0.03) return want;
-    const double depth = std::min(1.0, (p.z + 0.03) / 0.03 + (0.03 - p.y) / 0.03);
+    const double top = browY() + 0.018;
+    if (!field || p.y > top || std::abs(p.x) > 0.11 || p.z < -0.03) return want;
+    const double depth = std::min(1.0, (p.z + 0.03) / 0.03 + (top - p.y) / 0.03);
     return glm::normalize(want + glm::dvec3(0.0, 0.0, -3.0 * depth));
   }
 };

@@ -21,7 +21,8 @@ namespace {
 
 // Landmarks of the head frame the groom is laid out by (METHOD.md section 9: y up, the face
 // towards +z): the crown's depth, a side parting's offset from the middle, the brow's height.
-constexpr double kCrownZ = -0.02, kSideParting = 0.035, kBrowY = 0.012;
+// (The brow's is the head's own: ScalpMarks.)
+constexpr double kCrownZ = -0.02, kSideParting = 0.035;
 
 // SplitMix64: a small, well-mixed hash; strand s's random numbers come from hash(seed, s, k).
 uint64_t mix(uint64_t x) {
@@ -40,13 +41,13 @@ double random01(uint64_t seed, uint64_t strand, uint64_t k) {
 // for any prefix, so 10,000 strands are the first 10,000 of 20,000 and still cover the scalp.
 struct RootSampler {
   const HairstyleConfig& h;
-  bool mannequin;
+  const ScalpMarks* marks;
   uint64_t index = 0;
   double offsetU, offsetV;
 
-  RootSampler(const HairstyleConfig& cfg, bool onMannequin)
+  RootSampler(const HairstyleConfig& cfg, const ScalpMarks* scalp)
       : h(cfg),
-        mannequin(onMannequin),
+        marks(scalp),
         offsetU(random01(cfg.seed, ~0ull, 1)),
         offsetV(random01(cfg.seed, ~0ull, 2)) {}
 
@@ -61,7 +62,7 @@ struct RootSampler {
       const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
       const double phi = 2.0 * glm::pi<double>() * v;
       glm::dvec3 d(sinTheta * std::sin(phi), cosTheta, sinTheta * std::cos(phi));
-      if (onScalp(h, d, mannequin)) return d;
+      if (onScalp(h, d, marks)) return d;
     }
   }
 };
@@ -98,7 +99,7 @@ std::vector<glm::dvec3> growStrand(const HairstyleConfig& h, const GrowthHead& h
   const bool fringe = inFringe(h, dir);
   // A fringe hanging straight from its root ends at the brow.
   const double length =
-      fringe ? std::max(0.02, root.y - kBrowY)
+      fringe ? std::max(0.02, root.y - head.browY())
              : glm::mix(double(h.lengthMin), double(h.lengthMax), random01(h.seed, s, 3));
   // Hair from higher roots lies further out, over the hair from lower roots: layers by root
   // height, so that strands draped over the head pass over each other instead of through.
@@ -263,21 +264,24 @@ void separateStrands(Groom& g, const GrowthHead& head, double radius, int passes
 }  // namespace
 
 Groom growHairstyle(const Config& c, const HeadModel& head) {
-  return growHairstyle(c.hairstyle, head.spheres(), c.collision.radius, head.field());
+  return growHairstyle(c.hairstyle, head.spheres(), c.collision.radius, head.field(),
+                       &head.scalpMarks());
 }
 
-bool onScalp(const HairstyleConfig& h, const glm::dvec3& d, bool mannequin) {
+bool onScalp(const HairstyleConfig& h, const glm::dvec3& d, const ScalpMarks* marks) {
   const double theta = std::acos(std::clamp(d.y, -1.0, 1.0));
   const double horizontal = std::hypot(d.x, d.z);
   const double front = horizontal > 1e-9 ? std::max(0.0, d.z / horizontal) : 0.0;
   // The hairline comes lower at the back and sides than at the forehead (+z is the face).
+  // On a head of its own the forehead's line moves with that head's brow.
+  const double hairline = double(h.hairlineFront) + (marks ? marks->hairlineShift : 0.0);
   const double limit = glm::radians(glm::mix(
-      double(h.scalpAngle), double(std::min(h.scalpAngle, h.hairlineFront)), std::pow(front, 1.5)));
+      double(h.scalpAngle), std::min(double(h.scalpAngle), hairline), std::pow(front, 1.5)));
   if (theta > limit) return false;
-  if (!mannequin) return true;
+  if (!marks) return true;
   // Above and behind the ears: no roots within 30 degrees of either ear's direction, so the
   // hairline runs over them and the hair can fall behind them.
-  const glm::dvec3 ear = glm::normalize(glm::dvec3(0.074, -0.025, -0.002));
+  const glm::dvec3 ear = glm::normalize(marks->ear);
   return glm::dot(glm::dvec3(std::abs(d.x), d.y, d.z), ear) < std::cos(glm::radians(30.0));
 }
 
@@ -288,12 +292,14 @@ int particlesForLength(const HairstyleConfig& h, double arcLength) {
 }
 
 Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& spheres,
-                    float collisionRadius, const DistanceGrid* field) {
+                    float collisionRadius, const DistanceGrid* field, const ScalpMarks* marks) {
   Groom g;
   if ((spheres.empty() && !field) || h.strands <= 0) return g;
   const double margin = 2.0 * collisionRadius;
-  const GrowthHead head{spheres, field};
-  RootSampler roots(h, field != nullptr);
+  static const ScalpMarks mannequin = mannequinScalpMarks();
+  const ScalpMarks* scalp = field ? (marks ? marks : &mannequin) : nullptr;
+  const GrowthHead head{spheres, field, scalp};
+  RootSampler roots(h, scalp);
   std::vector<glm::vec3> strand;
   for (int s = 0; s < h.strands; ++s) {
     const glm::dvec3 dir = roots.next();

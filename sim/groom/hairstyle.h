@@ -21,16 +21,18 @@ struct DistanceGrid;
 int particlesForLength(const HairstyleConfig& h, double arcLength);
 
 // Grows on the spheres (the first is the scalp), or, given a field, on its surface with roots
-// seen from kMannequinScalpCentre (sim/head/mannequin.h).
+// seen from kMannequinScalpCentre (sim/head/mannequin.h), its hairline by `marks` (null: the
+// mannequin's).
 Groom growHairstyle(const HairstyleConfig& h, const std::vector<Sphere>& head,
-                    float collisionRadius, const DistanceGrid* field = nullptr);
+                    float collisionRadius, const DistanceGrid* field = nullptr,
+                    const ScalpMarks* marks = nullptr);
 
 // The scene's hairstyle on the scene's head (its field when collision.head_shape is sdf).
 Groom growHairstyle(const Config& c, const HeadModel& head);
 
 // Whether hair grows in direction dir (a unit vector from the scalp's centre, head frame): the
-// cap of hairstyle.scalp_angle about the crown, lower at the back than at the forehead, and on
-// the mannequin not over its ears.
-bool onScalp(const HairstyleConfig& h, const glm::dvec3& dir, bool mannequin);
+// cap of hairstyle.scalp_angle about the crown, lower at the back than at the forehead, and on a
+// field (`marks`: its brow and ears; null: the spheres) not over the ears.
+bool onScalp(const HairstyleConfig& h, const glm::dvec3& dir, const ScalpMarks* marks);
 
 }  // namespace csm

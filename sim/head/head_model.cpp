@@ -1,6 +1,7 @@
 #include "sim/head/head_model.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 #include <glm/common.hpp>
@@ -24,6 +25,8 @@ std::string torsoMeshPath(const Config& c) {
 
 namespace {
 
+constexpr double kMaxHeadSize = 1.0;  // m
+
 // The field of two parts at rest: the nearer of their fields, sampled on their boxes' union.
 std::shared_ptr<const DistanceGrid> unionGrid(const DistanceGrid& a, const DistanceGrid& b) {
   const glm::dvec3 lo = glm::min(glm::dvec3(a.origin), glm::dvec3(b.origin));
@@ -36,7 +39,18 @@ std::shared_ptr<const DistanceGrid> unionGrid(const DistanceGrid& a, const Dista
 
 }  // namespace
 
-std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::string* error) {
+HeadFitOptions headFitOptions(const Config& c) {
+  HeadFitOptions o;
+  o.scale = c.head.meshScale;
+  o.up = c.head.meshUp;
+  o.facing = c.head.meshFacing;
+  o.place = c.head.meshPlace;
+  return o;
+}
+
+std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::string* error,
+                                               const HeadFitOptions& options,
+                                               const HeadFit* given) {
   io::ObjReadResult read = io::readHeadMeshFile(path);
   if (!read.mesh) {
     if (error) *error = read.error;
@@ -44,6 +58,30 @@ std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::str
   }
   auto head = std::make_shared<LoadedHead>();
   head->mesh = std::move(*read.mesh);
+  head->cappedHoles = read.cappedHoles;
+  if (given) {
+    head->fit = *given;
+    for (glm::vec3& p : head->mesh.positions) p = given->apply(p);
+    for (glm::vec3& n : head->mesh.normals) n = glm::vec3(given->rotation * glm::dvec3(n));
+  } else {
+    head->fit = fitHead(head->mesh, read.holes, options);
+  }
+  // A head and shoulders is well under a metre: more, once fitted, is not a head (or not in the
+  // unit given), and its field would not fit in memory at 4 mm.
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::vec3& p : head->mesh.positions) {
+    lo = glm::min(lo, glm::dvec3(p));
+    hi = glm::max(hi, glm::dvec3(p));
+  }
+  const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  if (!(size <= kMaxHeadSize)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f m", size);
+    if (error)
+      *error = path + ": the mesh is " + text + " across once in the head frame (" +
+               head->fit.text() + "); a head and shoulders is under 1 m";
+    return nullptr;
+  }
   head->grid = meshDistanceGrid(head->mesh, 0.004, 0.02);
   return head;
 }
@@ -53,27 +91,32 @@ std::shared_ptr<const HeadModel> HeadModel::build(const Config& c, std::string* 
   auto model = std::make_shared<HeadModel>();
   model->sdf_ = c.collision.headShape == HeadShape::Sdf;
   model->meshPath_ = c.head.mesh.empty() ? std::string() : headMeshPath(c);
+  model->fitOptions_ = headFitOptions(c);
+  const bool sameMesh = previous && previous->meshPath_ == model->meshPath_ &&
+                        previous->fitOptions_ == model->fitOptions_;
   if (!model->meshPath_.empty()) {
-    if (previous && previous->meshPath_ == model->meshPath_) {
+    if (sameMesh) {
       model->mesh_ = previous->mesh_;
+      model->marks_ = previous->marks_;
     } else {
       std::string why;
-      model->mesh_ = loadHeadMesh(model->meshPath_, &why);
+      model->mesh_ = loadHeadMesh(model->meshPath_, &why, model->fitOptions_);
       if (!model->mesh_) {
         if (error) *error = "head.mesh: " + why;
         return nullptr;
       }
+      model->marks_ = measureScalpMarks(model->mesh_->grid);
     }
     model->torsoPath_ = torsoMeshPath(c);
   }
   if (!model->torsoPath_.empty()) {
-    if (previous && previous->meshPath_ == model->meshPath_ &&
-        previous->torsoPath_ == model->torsoPath_) {
+    if (sameMesh && previous->torsoPath_ == model->torsoPath_) {
       model->torso_ = previous->torso_;
       model->whole_ = previous->whole_;
     } else {
       std::string why;
-      model->torso_ = loadHeadMesh(model->torsoPath_, &why);
+      // The torso is in the head's file frame: the head's fit brings it in.
+      model->torso_ = loadHeadMesh(model->torsoPath_, &why, {}, &model->mesh_->fit);
       if (!model->torso_) {
         if (error) *error = "head.torso_mesh: " + why;
         return nullptr;
@@ -98,6 +141,7 @@ std::shared_ptr<const HeadModel> HeadModel::build(const Config& c, std::string* 
   for (const Sphere& s : spheres)
     if (!torso(s)) model->spheres_.push_back(s);
   model->headSpheres_ = model->spheres_.size();
+  model->summary_ = model->describe();
   for (const Sphere& s : spheres)
     if (torso(s)) model->spheres_.push_back(s);
   return model;
@@ -108,6 +152,15 @@ std::shared_ptr<const HeadModel> HeadModel::require(const Config& c) {
   std::shared_ptr<const HeadModel> model = build(c, &error);
   if (!model) throw std::runtime_error(error);
   return model;
+}
+
+std::string HeadModel::describe() const {
+  if (!mesh_) return {};
+  std::string s = "head.mesh: " + mesh_->fit.text();
+  if (mesh_->cappedHoles > 0)
+    s += "; " + std::to_string(mesh_->cappedHoles) +
+         (mesh_->cappedHoles == 1 ? " opening capped" : " openings capped");
+  return s + "; " + marks_.text;
 }
 
 const DistanceGrid& HeadModel::shapeField() const {

@@ -11,6 +11,8 @@
 
 #include "sim/core/config.h"
 #include "sim/head/distance_grid.h"
+#include "sim/head/head_fit.h"
+#include "sim/head/scalp_marks.h"
 #include "sim/head/surface_mesh.h"
 
 namespace csm {
@@ -26,13 +28,22 @@ struct SceneHead {
   bool hasTorso() const { return torsoField != nullptr || !torsoSpheres.empty(); }
 };
 
-// A head read from an OBJ (head.mesh, or head.torso_mesh) and its field (4 mm, a 2 cm margin).
+// A head read from an OBJ or PLY (head.mesh, or head.torso_mesh), brought into the head frame, and
+// its field (4 mm, a 2 cm margin).
 struct LoadedHead {
   SurfaceMesh mesh;
   DistanceGrid grid;
+  HeadFit fit;             // what brought the file into the head frame
+  size_t cappedHoles = 0;  // openings closed (a scan open at the neck)
 };
-// Reads, checks and samples the OBJ at `path`. Null with a message naming the file and line.
-std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::string* error);
+// Reads, checks, fits (`options`; or `given`, the head's own fit, for its torso) and samples the
+// mesh at `path`. Null with a message naming the file and line, or the size it has once fitted
+// (over 1 m: not a head).
+std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::string* error,
+                                               const HeadFitOptions& options = {},
+                                               const HeadFit* given = nullptr);
+// head.mesh_scale, mesh_up, mesh_facing and mesh_place.
+HeadFitOptions headFitOptions(const Config& c);
 // head.mesh, and head.torso_mesh, resolved against the folder of the preset it came from
 // (empty: the mannequin; no torso of the user's).
 std::string headMeshPath(const Config& c);
@@ -74,6 +85,13 @@ class HeadModel {
   bool mannequin() const { return !mesh_; }
   // The head.mesh file it was read from, resolved (headMeshPath); empty for the mannequin.
   const std::string& meshPath() const { return meshPath_; }
+  // How head.mesh came into the head frame (null: the mannequin).
+  const HeadFit* meshFit() const { return mesh_ ? &mesh_->fit : nullptr; }
+  // The landmarks the scalp is laid out by: the mannequin's, or those found on head.mesh.
+  const ScalpMarks& scalpMarks() const { return marks_; }
+  // What the scene says of its head when it loads: head.mesh's fit and landmarks; empty for the
+  // mannequin.
+  const std::string& summary() const { return summary_; }
   // What a solver reads every step: each part's field or spheres, in its own frame.
   SceneHead collider() const;
 
@@ -81,7 +99,11 @@ class HeadModel {
   bool sdf_ = true;
   std::string meshPath_;                    // empty: the mannequin
   std::shared_ptr<const LoadedHead> mesh_;  // null: the mannequin
-  std::string torsoPath_;                   // empty: no torso of the user's
+  HeadFitOptions fitOptions_;
+  ScalpMarks marks_ = mannequinScalpMarks();
+  std::string summary_;
+  std::string describe() const;
+  std::string torsoPath_;  // empty: no torso of the user's
   std::shared_ptr<const LoadedHead> torso_;
   std::shared_ptr<const DistanceGrid> whole_;  // head.mesh and head.torso_mesh at rest
   bool articulated_ = false;

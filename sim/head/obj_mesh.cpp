@@ -22,7 +22,6 @@ using detail::parseIndex;
 using detail::parseNumber;
 
 constexpr uint64_t kMaxBytes = uint64_t(512) << 20;
-constexpr double kMaxSize = 1.0;  // m: a head and shoulders is well under this
 
 // Our pass over the lines: every number and index is checked here, with its line, so that
 // tinyobjloader (which skips or clamps some of them) only sees what it reads correctly.
@@ -110,7 +109,7 @@ std::string checkLines(std::string_view text, const std::string& path,
 ObjReadResult readObjMesh(const std::string& path) {
   std::string error;
   const auto bytes = detail::readFileBytes(path, kMaxBytes, &error);
-  if (!bytes) return {std::nullopt, error};
+  if (!bytes) return {std::nullopt, error, 0, {}};
   return parseObjMesh(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
                       path);
 }
@@ -211,7 +210,7 @@ ObjReadResult finishHeadMesh(std::vector<glm::vec3> positions,
   // inside; what still does not close is refused below.
   if (openEdges(m) > 0) {
     const size_t before = m.indices.size() / 3;
-    r.cappedHoles = capHoles(m);
+    r.cappedHoles = capHoles(m, &r.holes);
     for (size_t t = before; t < m.indices.size() / 3; ++t) triangleLine.push_back("");
   }
   if (const size_t open = openEdges(m); open > 0) {
@@ -238,18 +237,6 @@ ObjReadResult finishHeadMesh(std::vector<glm::vec3> positions,
     return r;
   }
 
-  glm::dvec3 lo(1e300), hi(-1e300);
-  for (const glm::vec3& p : m.positions) {
-    lo = glm::min(lo, glm::dvec3(p));
-    hi = glm::max(hi, glm::dvec3(p));
-  }
-  const double size = std::max(hi.x - lo.x, std::max(hi.y - lo.y, hi.z - lo.z));
-  if (size > kMaxSize) {
-    r.error = path + ": the mesh is " + std::to_string(size) +
-              " m across; head.mesh is read in metres in the head frame (y up, face +z, crown "
-              "about 0.1 m above the origin), where a head and shoulders is under 1 m";
-    return r;
-  }
   double volume = 0.0;
   for (size_t t = 0; t < m.indices.size(); t += 3)
     volume += glm::dot(glm::dvec3(m.positions[m.indices[t]]),
@@ -352,7 +339,7 @@ ObjReadResult parsePlyMesh(std::span<const std::byte> bytes, const std::string& 
 ObjReadResult readHeadMeshFile(const std::string& path) {
   std::string error;
   const auto bytes = detail::readFileBytes(path, kMaxBytes, &error);
-  if (!bytes) return {std::nullopt, error};
+  if (!bytes) return {std::nullopt, error, 0, {}};
   if (isPly(*bytes)) return parsePlyMesh(*bytes, path);
   return parseObjMesh(std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
                       path);

@@ -23,19 +23,20 @@ struct ObjReadResult {
   std::optional<SurfaceMesh> mesh;  // set on success
   std::string error;                // "path:line: message" or "path: message" on failure
   size_t cappedHoles = 0;           // holes closed (a scan open at the neck: capHoles)
+  std::vector<glm::vec3> holes;     // their centres, in the file's units
 };
 
-// Reads the OBJ at `path` as a closed surface in metres, in the head frame (METHOD.md
-// section 9). Polygons are split into fans; vertices at the same position are merged (exporters
-// split them at texture seams); the surface is turned outwards when it faces in; normals are
-// the angle-weighted normals of the triangles (the file's are not used); each hole is capped (a
-// scan open at the neck collides as if closed there). CRLF line ends, NUL padding after the last
-// line (as ZBrush writes), `mtllib`, `usemtl`, `vt`, `vn`, `s`, `g` and `o` lines, quads, n-gons
-// and negative indices are read. Refused: a missing file; a vertex coordinate that is not a
-// finite number; a NUL byte before the last line; a face with fewer than three vertices or an
-// index out of range (0, or beyond the vertices); no vertices; no faces; a surface that is not
-// consistently oriented or whose holes do not close (an open surface has no inside to give the
-// field its sign); a mesh over 1 m across (not in metres).
+// Reads the OBJ at `path` as a closed surface, in the file's units and axes (the scene brings it
+// into the head frame: sim/head/head_fit.h). Polygons are split into fans; vertices at the same
+// position are merged (exporters split them at texture seams); the surface is turned outwards when
+// it faces in; normals are the angle-weighted normals of the triangles (the file's are not used);
+// each hole is capped (a scan open at the neck collides as if closed there). CRLF line ends, NUL
+// padding after the last line (as ZBrush writes), `mtllib`, `usemtl`, `vt`, `vn`, `s`, `g` and `o`
+// lines, quads, n-gons and negative indices are read. Refused: a missing file; a vertex coordinate
+// that is not a finite number; a NUL byte before the last line; a face with fewer than three
+// vertices or an index out of range (0, or beyond the vertices); no vertices; no faces; a surface
+// that is not consistently oriented or whose holes do not close (an open surface has no inside to
+// give the field its sign).
 ObjReadResult readObjMesh(const std::string& path);
 // The same from the file's text in memory; `name` stands for the path in messages.
 ObjReadResult parseObjMesh(std::string_view text, const std::string& name);

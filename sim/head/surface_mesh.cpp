@@ -166,7 +166,7 @@ size_t openEdges(const SurfaceMesh& m) {
   return open;
 }
 
-size_t capHoles(SurfaceMesh& m) {
+size_t capHoles(SurfaceMesh& m, std::vector<glm::vec3>* centres) {
   const uint64_t n = m.positions.size();
   std::unordered_map<uint64_t, int> directed;
   for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
@@ -204,6 +204,7 @@ size_t capHoles(SurfaceMesh& m) {
     mean /= double(loop.size());
     const auto c = uint32_t(m.positions.size());
     m.positions.emplace_back(mean);
+    if (centres) centres->emplace_back(mean);
     if (!m.normals.empty()) m.normals.emplace_back(0.0f, 1.0f, 0.0f);
     for (size_t k = 0; k < loop.size(); ++k) {
       const uint32_t a = loop[k], b = loop[(k + 1) % loop.size()];

@@ -36,8 +36,9 @@ size_t openEdges(const SurfaceMesh& m);
 
 // Closes each hole of a consistently oriented surface (a scan open at the neck): a boundary loop
 // (edges met in one direction only, each vertex on it starting one) gets a fan of triangles to a
-// new vertex at the loop's mean, turned as its neighbours are. Returns the holes capped; a
-// boundary that is not a set of simple loops (two loops through one vertex) is left as it is.
-size_t capHoles(SurfaceMesh& m);
+// new vertex at the loop's mean, turned as its neighbours are. Returns the holes capped (their
+// centres in `centres` when given); a boundary that is not a set of simple loops (two loops
+// through one vertex) is left as it is.
+size_t capHoles(SurfaceMesh& m, std::vector<glm::vec3>* centres = nullptr);
 
 }  // namespace csm

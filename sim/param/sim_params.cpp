@@ -162,12 +162,35 @@ std::vector<Param<Config>> build() {
           "file's points.",
           Effect::Rebuild),
       param("head.mesh", "Head mesh", "Head", &Config::head, &HeadConfig::mesh, 0, 0,
-            "A Wavefront OBJ head (metres, head frame: y up, face +z, crown about 0.1 m above the "
-            "origin; closed) to collide with and draw when collision.head_shape is sdf; empty = "
-            "the built-in mannequin. Relative paths are relative to the preset.",
+            "A Wavefront OBJ or PLY head to collide with and draw when collision.head_shape is "
+            "sdf (a scan open at the neck is capped), brought into the head frame (y up, face "
+            "+z) by head.mesh_scale, mesh_up, mesh_facing and mesh_place; empty = the built-in "
+            "mannequin. Relative paths are relative to the preset.",
             Effect::Rebuild),
+      param("head.mesh_scale", "Mesh scale", "Head", &Config::head, &HeadConfig::meshScale, 0.0,
+            1000.0,
+            "Metres per head.mesh unit (0.01 for centimetres); 0 infers the unit from the "
+            "cranium's size (m, dm, cm, mm or inches).",
+            Effect::Rebuild)
+          .onlyWhen([](const Config& c) { return !c.head.mesh.empty(); }),
+      param("head.mesh_up", "Mesh up axis", "Head", &Config::head, &HeadConfig::meshUp, 0, 0,
+            "head.mesh's up axis; auto takes the way away from the opening at the neck, or y.",
+            Effect::Rebuild)
+          .choices({"auto", "y", "z", "x"})
+          .onlyWhen([](const Config& c) { return !c.head.mesh.empty(); }),
+      param("head.mesh_facing", "Mesh facing", "Head", &Config::head, &HeadConfig::meshFacing, 0, 0,
+            "Where head.mesh's face looks in its own axes; auto takes the side with the face's "
+            "detail (nose, eyes, lips), or +z (-y for z up).",
+            Effect::Rebuild)
+          .choices({"auto", "+z", "-z", "+x", "-x", "+y", "-y"})
+          .onlyWhen([](const Config& c) { return !c.head.mesh.empty(); }),
+      param("head.mesh_place", "Mesh placed", "Head", &Config::head, &HeadConfig::meshPlace, 0, 1,
+            "Move head.mesh's cranium onto the mannequin's, so that the scalp, the neck and "
+            "head.pivot meet it as they meet the mannequin; off keeps the file's place.",
+            Effect::Rebuild)
+          .onlyWhen([](const Config& c) { return !c.head.mesh.empty(); }),
       param("head.torso_mesh", "Torso mesh", "Head", &Config::head, &HeadConfig::torsoMesh, 0, 0,
-            "With head.mesh, a Wavefront OBJ torso (the same frame, at rest; closed) that moves "
+            "With head.mesh, an OBJ or PLY torso (the same file frame, at rest; closed) that moves "
             "with the chest while head.mesh moves with the head; empty: head.mesh is the whole "
             "body. Relative paths are relative to the preset.",
             Effect::Rebuild)

@@ -101,6 +101,9 @@ TEST_CASE("Import: roots land on the scalp of every head, and no particle starts
       c.collision.headShape = head == "spheres" ? HeadShape::Spheres : HeadShape::Sdf;
       if (head == "obj") {
         c.head.mesh = dir.write("octahedron.obj", octahedron());
+        // In the head frame already, in metres (no cranium to infer a unit from).
+        c.head.meshScale = 1.0f;
+        c.head.meshPlace = false;
         REQUIRE(HeadModel::require(c)->field() != &mannequinGrid());
       }
       GroomReport report;

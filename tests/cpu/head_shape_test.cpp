@@ -158,11 +158,12 @@ TEST_CASE("Mannequin: a grown groom roots on the scalp and leaves the face open"
   const Groom g = test::growFor(c);
   REQUIRE(g.strandCount() == 3000);
   const DistanceGrid& field = mannequinGrid();
+  const ScalpMarks marks = mannequinScalpMarks();
   size_t offSurface = 0, offScalp = 0, onFace = 0, onEars = 0, overFace = 0;
   for (size_t s = 0; s < g.strandCount(); ++s) {
     const glm::dvec3 root(g.points[g.first[s]]);
     if (std::abs(field.sample(root)) > 1e-3) ++offSurface;
-    if (!onScalp(c.hairstyle, glm::normalize(root - kMannequinScalpCentre), true)) ++offScalp;
+    if (!onScalp(c.hairstyle, glm::normalize(root - kMannequinScalpCentre), &marks)) ++offScalp;
     // The face: between the temples, below the forehead.
     if (root.z > 0.03 && root.y < 0.035 && std::abs(root.x) < 0.045) ++onFace;
     if (glm::length(glm::dvec3(std::abs(root.x), root.y, root.z) -
