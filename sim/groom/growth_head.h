@@ -41,7 +41,7 @@ struct GrowthHead {
   // Where the field's scalp ends (null: the spheres, or the mannequin's).
   const ScalpMarks* marks = nullptr;
 
-  double browY() const { return marks ? marks->browY : mannequinScalpMarks().browY; }
+  double browY() const { return marks ? marks->browY : kMannequinBrowY; }
 
   // The scalp point in direction dir (a unit vector from the scalp's centre).
   glm::dvec3 root(const glm::dvec3& dir) const {

@@ -125,6 +125,11 @@ glm::vec3 HeadFit::apply(const glm::vec3& p) const {
   return glm::vec3(rotation * (scale * glm::dvec3(p)) + translation);
 }
 
+void HeadFit::applyTo(SurfaceMesh& mesh) const {
+  for (glm::vec3& p : mesh.positions) p = apply(p);
+  for (glm::vec3& n : mesh.normals) n = glm::vec3(rotation * glm::dvec3(n));
+}
+
 std::string HeadFit::text() const {
   char size[64];
   std::snprintf(size, sizeof size, "%.1f cm", craniumRadius * 100.0);
@@ -250,8 +255,7 @@ HeadFit fitHead(SurfaceMesh& m, const std::vector<glm::vec3>& holes, const HeadF
   } else {
     fit.placeWhy = "in place: the cranium within 4 cm of the mannequin's";
   }
-  for (glm::vec3& p : m.positions) p = fit.apply(p);
-  for (glm::vec3& nrm : m.normals) nrm = glm::vec3(fit.rotation * glm::dvec3(nrm));
+  fit.applyTo(m);
   return fit;
 }
 

@@ -37,6 +37,7 @@ struct HeadFit {
   double craniumRadius = 0.0;  // metres, the sphere fitted to the top of the head
   bool changed() const;        // anything other than the identity
   glm::vec3 apply(const glm::vec3& p) const;
+  void applyTo(SurfaceMesh& mesh) const;  // positions and normals
   // One sentence for the log: what was inferred or given, why, and which setting overrides it.
   std::string text() const;
 };

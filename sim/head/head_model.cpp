@@ -61,8 +61,7 @@ std::shared_ptr<const LoadedHead> loadHeadMesh(const std::string& path, std::str
   head->cappedHoles = read.cappedHoles;
   if (given) {
     head->fit = *given;
-    for (glm::vec3& p : head->mesh.positions) p = given->apply(p);
-    for (glm::vec3& n : head->mesh.normals) n = glm::vec3(given->rotation * glm::dvec3(n));
+    given->applyTo(head->mesh);
   } else {
     head->fit = fitHead(head->mesh, read.holes, options);
   }

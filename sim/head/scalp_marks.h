@@ -13,8 +13,10 @@
 
 namespace csm {
 
+inline constexpr double kMannequinBrowY = 0.012;
+
 struct ScalpMarks {
-  double browY = 0.012;  // the brow's height (head frame, m): a fringe hangs to it
+  double browY = kMannequinBrowY;  // the brow's height (head frame, m): a fringe hangs to it
   // The outer point of the ear on the +x side (head frame, m): no root within 30 degrees of it,
   // seen from the scalp centre.
   glm::dvec3 ear{0.074, -0.025, -0.002};
