@@ -254,6 +254,10 @@ nlohmann::json describeRun(const RunDescription& r) {
         {"turned_strands", r.groom.turnedStrands},
         {"pushed_particles", r.groom.pushedParticles},
         {"held_tips", r.groom.heldTips},
+        {"kept_on_head", r.groom.keptOnHead},
+        {"file_guides", r.groom.fileGuides.size()},
+        {"follow_hairs", r.groom.followHairs},
+        {"file_spheres", r.groom.fileSpheres.size()},
         {"repairs", r.groom.repair.notes}}},
       {"device", r.device},
   };

@@ -66,6 +66,11 @@ enum class StiffnessModel : int { Paper = 0, Calibrated = 1 };
 // left-handed frame, the face toward -z) as -z and every other format as +z; -z mirrors the
 // file's z into the head frame (face +z, right-handed), +z keeps it.
 enum class ImportFacing : int { Auto = 0, PlusZ = 1, MinusZ = 2 };
+// Where a groom file goes: fitted onto the scene's head (Fit); kept where the file put it on
+// head.mesh, the head's own fit applied to both (Head: a data set's groom beside its head); or
+// Head when head.mesh is set and the file's roots lie on its surface once in the head frame, else
+// Fit (Auto).
+enum class ImportPlace : int { Auto = 0, Fit = 1, Head = 2 };
 
 struct HairstyleConfig {
   std::string file;  // a groom file (.hair, .tfx); empty = the generator below
@@ -100,6 +105,7 @@ struct HairstyleConfig {
   glm::vec3 importRotation{0.0f};
   glm::vec3 importOffset{0.0f};
   ImportFacing importFacing = ImportFacing::Auto;
+  ImportPlace importPlace = ImportPlace::Auto;
   float resampleTolerance = 0.002f;  // metres; 0 keeps the file's points
 };
 

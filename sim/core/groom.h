@@ -29,6 +29,15 @@ struct Groom {
   // its followers' binding weights, FollowerBinding::guideGroom); empty when each strand stands
   // for itself. The volume mode splats each strand this many times over (sim/solver/volume.h).
   std::vector<float> weight;
+  // Per strand: the follow hairs a file asks to be drawn about it (a TressFX project's pieces);
+  // empty when it asks for none. The scene makes them (sim/groom/follow_hairs.h) and simulates the
+  // file's strands as their guides.
+  struct FollowHairs {
+    uint32_t count = 0;          // follow hairs about this strand
+    float radius = 0.0f;         // their roots lie within this of the strand's root (groom units)
+    float tipSeparation = 0.0f;  // how much further from the strand they are at the tip: 1 = twice
+  };
+  std::vector<FollowHairs> follow;
 
   size_t strandCount() const { return first.size() - 1; }
   size_t pointCount() const { return points.size(); }
@@ -47,6 +56,7 @@ struct Groom {
     if (s < from.thickness.size()) thickness.push_back(from.thickness[s]);
     if (s < from.tipHeld.size()) tipHeld.push_back(from.tipHeld[s]);
     if (s < from.weight.size()) weight.push_back(from.weight[s]);
+    if (s < from.follow.size()) follow.push_back(from.follow[s]);
   }
 };
 

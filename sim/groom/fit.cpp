@@ -163,10 +163,12 @@ FitReport fitToHead(Groom& groom, const FitOptions& options) {
   }
   translation += options.offset;
   report.scale = scale;
+  report.rotation = rotation;
   report.translation = translation;
 
   for (glm::vec3& p : groom.points) p = scale * (rotation * p) + translation;
   for (float& t : groom.thickness) t *= scale;
+  for (Groom::FollowHairs& f : groom.follow) f.radius *= scale;
 
   if (options.snapRoots && options.headField) {
     // The nearest point of the field's surface.

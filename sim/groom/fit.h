@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include "sim/core/config.h"
@@ -43,10 +44,14 @@ struct FitOptions {
 // What fitToHead() did, for logs and the UI.
 struct FitReport {
   float scale = 1.0f;               // the scale applied (automatic or given)
+  glm::mat3 rotation{1.0f};         // import_rotation's
   glm::vec3 translation{0.0f};      // added after rotation and scale, offset included
   float rootBoundingRadius = 0.0f;  // roots' bounding sphere before scaling, file units
   size_t snappedStrands = 0;        // strands moved by snapRoots
   float maxSnapDistance = 0.0f;     // the largest such move, metres
+  // A point of the file (in its units, before the fit) where the fit put the groom's: for what
+  // comes in the groom's frame beside it (a TressFX project's collision spheres).
+  glm::vec3 apply(const glm::vec3& p) const { return scale * (rotation * p) + translation; }
 };
 
 // Transforms every point: p' = scale * R * p + translation, then snaps roots if asked.

@@ -9,6 +9,7 @@
 #include <glm/trigonometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "sim/base/random.h"
 #include "sim/core/segment_pairs.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_model.h"
@@ -23,19 +24,6 @@ namespace {
 // towards +z): the crown's depth, a side parting's offset from the middle, the brow's height.
 // (The brow's is the head's own: ScalpMarks.)
 constexpr double kCrownZ = -0.02, kSideParting = 0.035;
-
-// SplitMix64: a small, well-mixed hash; strand s's random numbers come from hash(seed, s, k).
-uint64_t mix(uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
-
-double random01(uint64_t seed, uint64_t strand, uint64_t k) {
-  uint64_t h = mix(mix(mix(seed) ^ strand) ^ (k * 0x632be59bd9b4e019ull));
-  return double(h >> 11) * (1.0 / 9007199254740992.0);
-}
 
 // Roots follow the R2 low-discrepancy sequence (Roberts 2018) over the scalp cap: evenly spread
 // for any prefix, so 10,000 strands are the first 10,000 of 20,000 and still cover the scalp.

@@ -36,6 +36,10 @@ std::string checkGroomStructure(const Groom& groom) {
     return "tipHeld has " + std::to_string(groom.tipHeld.size()) + " entries for " +
            std::to_string(groom.strandCount()) + " strands";
   }
+  if (!groom.follow.empty() && groom.follow.size() != groom.strandCount()) {
+    return "follow has " + std::to_string(groom.follow.size()) + " entries for " +
+           std::to_string(groom.strandCount()) + " strands";
+  }
   return {};
 }
 

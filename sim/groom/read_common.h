@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "sim/base/file_io.h"
+#include "sim/core/config.h"
 #include "sim/core/groom.h"
 #include "sim/groom/repair.h"
 
@@ -34,6 +35,8 @@ struct GroomReadResult {
   // What the file holds that csmhair has no use for, or uses in its own way (a TressFX project's
   // follow-hair counts, collision spheres, simulation values), one line each, for the report.
   std::vector<std::string> unused;
+  // Collision spheres the file comes with, in its units and frame (a TressFX project's).
+  std::vector<Sphere> spheres;
 
   explicit operator bool() const { return groom.has_value(); }
 };

@@ -9,8 +9,11 @@
 
 #include "sim/base/file_io.h"
 #include "sim/base/parallel.h"
+#include "sim/head/distance_grid.h"
+#include "sim/head/head_fit.h"
 #include "sim/head/head_model.h"
 #include "sim/groom/fit.h"
+#include "sim/groom/follow_hairs.h"
 #include "sim/groom/groom_file.h"
 #include "sim/groom/growth_head.h"
 #include "sim/groom/hairstyle.h"
@@ -170,6 +173,66 @@ void keepStrands(Groom& g, size_t count) {
   g = std::move(out);
 }
 
+// How far the groom's roots lie from head.mesh's surface once the head's fit has brought both into
+// the head frame: the median and the 90th percentile of the roots' distances (with unknown roots,
+// the nearer end's), in metres, over at most 4,000 strands spread over the file.
+struct RootGap {
+  double median = 1e30, high = 1e30;
+};
+
+RootGap rootGap(const Groom& g, const HeadFit& fit, const DistanceGrid& field, bool eitherEnd) {
+  std::vector<double> gaps;
+  const size_t n = g.strandCount(), step = std::max<size_t>(1, n / 4000);
+  for (size_t s = 0; s < n; s += step) {
+    auto gap = [&](uint32_t i) {
+      return std::abs(field.sample(glm::dvec3(fit.apply(g.points[i]))));
+    };
+    double d = gap(g.first[s]);
+    if (eitherEnd) d = std::min(d, gap(g.first[s + 1] - 1));
+    gaps.push_back(d);
+  }
+  if (gaps.empty()) return {};
+  std::sort(gaps.begin(), gaps.end());
+  return {gaps[gaps.size() / 2], gaps[std::min(gaps.size() - 1, gaps.size() * 9 / 10)]};
+}
+
+// A groom is on its own head when most of its roots lie within this of the head's surface (a
+// data set's roots sit on or a little inside its scalp), and nine in ten within kOwnHeadHigh.
+inline constexpr double kOwnHeadMedian = 0.005, kOwnHeadHigh = 0.02;
+
+// The file's groom kept where it lies on head.mesh: the head's fit applied to its points (and its
+// strands' thickness, in the same units). Says so in `note`; false, with the reason in `note`,
+// when hairstyle.import_place is auto and the roots are not on that head.
+bool keepOnOwnHead(const Config& c, const HeadModel& head, Groom& g, bool eitherEnd,
+                   std::string& note) {
+  const HeadFit* fit = head.meshFit();
+  const ImportPlace place = c.hairstyle.importPlace;
+  if (place == ImportPlace::Fit || !fit) return false;
+  // Auto keeps only what the preset has not placed by hand.
+  const HairstyleConfig& h = c.hairstyle;
+  const bool placedByHand = h.importScale > 0.0f || h.importFacing == ImportFacing::MinusZ;
+  if (place == ImportPlace::Auto && placedByHand) return false;
+  const RootGap gap = rootGap(g, *fit, head.shapeField(), eitherEnd);
+  char text[320];
+  const bool on = gap.median < kOwnHeadMedian && gap.high < kOwnHeadHigh;
+  if (place == ImportPlace::Auto && !on) {
+    std::snprintf(text, sizeof text,
+                  "fitted to the head: its roots lie %.1f mm from head.mesh's surface (the "
+                  "median, in the head's frame), not on it (hairstyle.import_place)",
+                  1000.0 * std::min(gap.median, 9.99e5));
+    note = text;
+    return false;
+  }
+  for (glm::vec3& p : g.points) p = fit->apply(p);
+  for (float& t : g.thickness) t = float(double(t) * fit->scale);
+  std::snprintf(text, sizeof text,
+                "kept where the file put it on head.mesh (its roots %.1f mm from the surface, "
+                "the median), brought into the head frame with the head (hairstyle.import_place)",
+                1000.0 * std::min(gap.median, 9.99e5));
+  note = text;
+  return true;
+}
+
 }  // namespace
 
 bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseDir, Groom& out,
@@ -187,6 +250,13 @@ bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseD
     r.filePoints = r.simulatedPoints = out.pointCount();
     return true;
   }
+  if (h.importPlace == ImportPlace::Head && !head.meshFit()) {
+    if (error)
+      *error =
+          "hairstyle.import_place: \"head\" keeps a groom where its file put it on head.mesh, "
+          "but head.mesh is empty";
+    return false;
+  }
   const std::string path = resolveRelative(baseDir, h.file);
   if (progress) progress("reading", 0.0);
   io::GroomReadResult read = io::readGroom(path);
@@ -194,16 +264,40 @@ bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseD
     if (error) *error = read.error;
     return false;
   }
+  // On its own head (a data set's groom beside its head mesh): where the file put it, in the
+  // head's frame. The head's fit turned the head, so the groom shares its axes and is not
+  // mirrored; the fit below keeps its scale and place.
+  std::string placeNote;
+  const bool kept = keepOnOwnHead(c, head, *read.groom, !read.rootsKnown, placeNote);
+  Config placed = c;
+  if (kept) {
+    placed.hairstyle.importScale = 1.0f;
+    if (h.importScale > 0.0f) placeNote += "; hairstyle.import_scale is not used: the head's is";
+  }
   // Into the head frame's handedness: TressFX's face looks toward -z in DirectX's left-handed
   // axes; mirroring z turns it to +z and keeps its left at the character's left.
-  const bool mirror = h.importFacing == ImportFacing::MinusZ ||
-                      (h.importFacing == ImportFacing::Auto && read.facesMinusZ);
+  const bool mirror = !kept && (h.importFacing == ImportFacing::MinusZ ||
+                                (h.importFacing == ImportFacing::Auto && read.facesMinusZ));
   if (mirror)
     for (glm::vec3& p : read.groom->points) p.z = -p.z;
-  if (!fitFileGroom(c, head, std::move(*read.groom), path, out, error, &r, !read.rootsKnown,
+  if (!fitFileGroom(placed, head, std::move(*read.groom), path, out, error, &r, !read.rootsKnown,
                     progress))
     return false;
+  r.keptOnHead = kept;
+  r.placeNote = placeNote;
   r.mirrored = mirror;
+  // The project's collision spheres where the fit put the groom (mirrored with it first).
+  for (Sphere sphere : read.spheres) {
+    if (mirror) sphere.center.z = -sphere.center.z;
+    r.fileSpheres.push_back({r.fit.apply(sphere.center), sphere.radius * r.fit.scale});
+  }
+  // The follow hairs the file asks for, beside their guides on the head as it is now.
+  if (!out.follow.empty()) {
+    const size_t before = out.strandCount();
+    const GrowthHead growth{head.spheres(), head.field()};
+    r.fileGuides = addFollowHairs(out, growth, double(c.collision.radius), uint64_t(h.seed));
+    r.followHairs = out.strandCount() - before;
+  }
   r.unused = read.unused;
   // The file's strands and repairs: those the reader dropped, then those the scene did.
   r.fileStrands += read.repair.droppedStrands;
@@ -238,6 +332,7 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
   const GrowthHead head{fit.headSpheres, fit.headField};
   if (findRoots) r.turnedStrands = turnRootsFirst(g);
   const io::FitReport fitted = io::fitToHead(g, fit);
+  r.fit = fitted;
   // The reader checked that the file's points are finite and its strands go somewhere, but the
   // fit can undo both: points near float's limit rotated or scaled past it, a tiny spread of
   // roots scaled up to the head's size, or a tiny import scale that collapses a strand.
@@ -354,16 +449,29 @@ std::string groomReportText(const GroomReport& r) {
       " strands held by the head at both ends");
   add(r.refitTied, " tied strand moved by the fit: it rests in its fitted shape",
       " tied strands moved by the fit: they rest in their fitted shape");
+  if (r.followHairs > 0) {
+    if (!parts.empty()) parts += "; ";
+    parts += std::to_string(r.followHairs) + " follow hairs drawn from " +
+             std::to_string(r.fileGuides.size()) +
+             " guides, as the file asks (hairstyle.guides -1 simulates the guides)";
+  }
+  if (!r.fileSpheres.empty()) {
+    if (!parts.empty()) parts += "; ";
+    parts += std::to_string(r.fileSpheres.size()) +
+             (r.fileSpheres.size() == 1 ? " collision sphere" : " collision spheres") +
+             ", the head's when collision.head_shape is spheres";
+  }
   if (r.mirrored) {
     if (!parts.empty()) parts += "; ";
     parts +=
         "z mirrored into the head frame (a left-handed file, face -z: "
         "hairstyle.import_facing)";
   }
-  if (!r.facingNote.empty()) {
-    if (!parts.empty()) parts += "; ";
-    parts += r.facingNote;
-  }
+  for (const std::string* note : {&r.placeNote, &r.facingNote})
+    if (!note->empty()) {
+      if (!parts.empty()) parts += "; ";
+      parts += *note;
+    }
   if (parts.empty() && r.unused.empty()) return {};
   std::string text = "the groom file: " + (parts.empty() ? std::string("read") : parts);
   for (const std::string& n : r.repair.notes) text += "\n  " + n;

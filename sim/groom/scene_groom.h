@@ -10,6 +10,7 @@
 
 #include "sim/core/config.h"
 #include "sim/core/groom.h"
+#include "sim/groom/fit.h"
 #include "sim/groom/repair.h"
 #include "sim/head/head_model.h"
 
@@ -26,8 +27,18 @@ struct GroomReport {
   size_t heldTips = 0;         // strands the head holds at both ends (Groom::tipHeld)
   size_t refitTied = 0;        // of those, strands the fit moved: they rest in their fitted shape
   bool mirrored = false;       // z mirrored into the head frame (hairstyle.import_facing)
+  bool keptOnHead = false;     // kept where the file put it on head.mesh (import_place)
+  std::string placeNote;       // why it was kept there, or fitted though head.mesh is set
   std::string facingNote;      // the groom's hair falls toward the face: its front may be behind
   std::vector<std::string> unused;  // what the file holds that csmhair does not use (a project's)
+  io::FitReport fit;                // how the file's points came onto the head
+  // The file's own guides and follow hairs (a TressFX project's, sim/groom/follow_hairs.h): the
+  // strands that are the guides, and how many follow hairs were made beside them.
+  std::vector<uint32_t> fileGuides;
+  size_t followHairs = 0;
+  // The file's collision spheres (a TressFX project's), in the head frame where the fit put the
+  // groom: the head's spheres when collision.head_shape is spheres (sim/run/grown_scene.h).
+  std::vector<Sphere> fileSpheres;
   size_t savedPoints() const {
     return filePoints > simulatedPoints ? filePoints - simulatedPoints : 0;
   }

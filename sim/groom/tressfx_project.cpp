@@ -1,5 +1,7 @@
 #include "sim/groom/tressfx_project.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string_view>
 #include <vector>
@@ -26,6 +28,20 @@ std::string simValues(const std::string& path) {
     values += (values.empty() ? "" : ", ") + std::string(t[0]) + " " + std::string(t[1]);
   }
   return values;
+}
+
+bool parseCount(std::string_view text, uint32_t& out) {
+  long value = 0;
+  if (!detail::parseIndex(text, value) || value < 0 || value > long(kMaxFollowHairs)) return false;
+  out = uint32_t(value);
+  return true;
+}
+
+bool parseNonNegative(std::string_view text, float& out) {
+  double value = 0.0;
+  if (!detail::parseNumber(text, value) || !std::isfinite(value) || value < 0.0) return false;
+  out = float(value);
+  return true;
 }
 
 }  // namespace
@@ -56,6 +72,19 @@ GroomReadResult readTressFxProject(std::span<const std::byte> bytes, const std::
       const std::string piece = (dir / word).string();
       GroomReadResult r = readTressFx(piece);
       if (!r.groom) return fail(line, "piece " + word + ": " + r.error);
+      // The follow hairs a guide, their roots' radius and tip separation (TressFX's defaults
+      // where the line stops short).
+      Groom::FollowHairs follow;
+      if (t.size() > 1 && !parseCount(t[1], follow.count))
+        return fail(line, "the follow-hair count \"" + std::string(t[1]) +
+                              "\" is not a whole number from 0 to " +
+                              std::to_string(kMaxFollowHairs));
+      if (t.size() > 2 && !parseNonNegative(t[2], follow.radius))
+        return fail(line, "the follow hairs' radius \"" + std::string(t[2]) +
+                              "\" is not a number of at least 0");
+      if (t.size() > 3 && !parseNonNegative(t[3], follow.tipSeparation))
+        return fail(line, "the follow hairs' tip separation \"" + std::string(t[3]) +
+                              "\" is not a number of at least 0");
       for (size_t s = 0; s < r.groom->strandCount(); ++s) {
         const Groom& g = *r.groom;
         groom.addStrand(std::vector<glm::vec3>(g.points.begin() + g.first[s],
@@ -63,15 +92,10 @@ GroomReadResult readTressFxProject(std::span<const std::byte> bytes, const std::
         groom.addStrandData(g, s);
         // A piece without held tips among pieces with them: its strands' tips are free.
         if (g.tipHeld.empty()) groom.tipHeld.push_back(0);
+        groom.follow.push_back(follow);
       }
       result.repair.add(r.repair);
       ++pieces;
-      std::string note = word + ": ";
-      note += t.size() > 1 ? std::string(t[1]) + " follow hairs a guide" : "no follow hairs";
-      if (t.size() > 3)
-        note += " (radius " + std::string(t[2]) + ", tip separation " + std::string(t[3]) + ")";
-      note += ": csmhair draws hairstyle.guides' followers and render.children instead";
-      unused.push_back(note);
       if (t.size() > 4) {
         const std::string values = simValues((dir / std::string(t[4])).string());
         unused.push_back(std::string(t[4]) + ": " +
@@ -79,13 +103,23 @@ GroomReadResult readTressFxProject(std::span<const std::byte> bytes, const std::
                                          : values + " (csmhair's sim.* stiffness and damping "
                                                     "have their own meaning)"));
       }
-    } else if (word == "collision_sphere" || word == "collision_capsule") {
+    } else if (word == "collision_sphere") {
+      double v[4];
+      for (int k = 0; k < 4; ++k)
+        if (t.size() != 5 || !detail::parseNumber(t[size_t(k) + 1], v[k]) || !std::isfinite(v[k]))
+          return fail(line, "collision_sphere wants four numbers: x y z radius");
+      if (!(v[3] > 0.0)) return fail(line, "the collision sphere's radius is not above 0");
+      result.spheres.push_back({glm::vec3(float(v[0]), float(v[1]), float(v[2])), float(v[3])});
+    } else if (word == "collision_capsule") {
       ++shapes;
     } else if (word != "version" && word != "project_name") {
       unused.push_back("line " + std::to_string(line) + ": " + std::string(raw.substr(0, 80)));
     }
   }
   if (pieces == 0) return fail(lines.lastNonBlank(), "no piece (a line naming a .tfx file)");
+  if (std::none_of(groom.follow.begin(), groom.follow.end(),
+                   [](const Groom::FollowHairs& f) { return f.count > 0; }))
+    groom.follow.clear();
   // Tips held in some pieces only: a flag a strand for all of them, none when no piece holds any.
   if (groom.tipHeld.size() != groom.strandCount()) groom.tipHeld.clear();
   bool anyHeld = false;
@@ -93,8 +127,9 @@ GroomReadResult readTressFxProject(std::span<const std::byte> bytes, const std::
   if (!anyHeld) groom.tipHeld.clear();
   if (shapes > 0)
     unused.push_back(std::to_string(shapes) +
-                     " collision shapes (in the files' units): the head's shape is csmhair's own "
-                     "(collision.head_shape, head.spheres)");
+                     (shapes == 1 ? " collision capsule" : " collision capsules") +
+                     ": csmhair's head is spheres or a shape "
+                     "(collision.head_shape), the project's spheres are taken as its spheres");
   result.unused = std::move(unused);
   result.facesMinusZ = true;
   result.groom = std::move(groom);

@@ -21,12 +21,16 @@
 
 namespace csm::io {
 
+// More follow hairs a guide than this is taken for a corrupt line (TressFX's own tools go to 16).
+inline constexpr uint32_t kMaxFollowHairs = 64;
+
 // The project as one groom: every piece's strands (TressFX, any version, read with
 // readTressFx) in the project's order, in one frame, so that the scene fits them together; the
-// pieces' held tips kept. What csmhair does not use (the follow-hair counts: csmhair draws
-// hairstyle.guides' followers and render.children; the .tfxsim values; the collision shapes; the
-// meshes, textures and settings) is listed in GroomReadResult::unused. Errors name the project's
-// line, then the piece's own error.
+// pieces' held tips kept, each strand's follow hairs (its piece's count, radius and tip
+// separation: Groom::follow) and the collision spheres (GroomReadResult::spheres, in the files'
+// units). What csmhair does not use (the .tfxsim values; capsules; the meshes, textures and
+// settings) is listed in GroomReadResult::unused. Errors name the project's line, then the
+// piece's own error.
 GroomReadResult readTressFxProject(std::span<const std::byte> bytes, const std::string& path);
 
 }  // namespace csm::io

@@ -155,6 +155,14 @@ std::vector<Param<Config>> build() {
             "other format as +z; -z mirrors any file, +z none.",
             Effect::Rebuild)
           .choices({"auto", "+z", "-z"}),
+      param("hairstyle.import_place", "Import place", "Hairstyle|Import", &Config::hairstyle,
+            &HairstyleConfig::importPlace, 0, 0,
+            "Where a groom file goes: fit scales and places it onto the scene's head; head keeps "
+            "it where the file put it on head.mesh (a data set's groom beside its own head), "
+            "brought into the head frame with the head; auto keeps it when head.mesh is set and "
+            "the file's roots lie on that head's surface, else fits it.",
+            Effect::Rebuild)
+          .choices({"auto", "fit", "head"}),
       param(
           "hairstyle.resample_tolerance", "Resample tolerance", "Hairstyle|Import",
           &Config::hairstyle, &HairstyleConfig::resampleTolerance, 0.0, 0.05,

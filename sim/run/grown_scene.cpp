@@ -27,12 +27,33 @@ bool growScene(const Config& config, const std::string& baseDir, const HeadModel
   Groom groom;
   GroomReport report;
   if (!buildGroom(config, *head, baseDir, groom, error, &report, progress)) return false;
+  // A project's collision spheres, where the preset asks for spheres: the head is made of them,
+  // and the groom placed again as the fit placed it, its roots snapped to them.
+  if (!report.fileSpheres.empty() && config.collision.headShape == HeadShape::Spheres) {
+    Config onSpheres = config;
+    onSpheres.head.spheres = report.fileSpheres;
+    onSpheres.head.fitSpheres = false;
+    onSpheres.hairstyle.importScale = report.fit.scale;
+    onSpheres.hairstyle.importOffset = report.fit.translation;
+    onSpheres.hairstyle.importPlace = ImportPlace::Fit;
+    head = HeadModel::build(onSpheres, &headError, head.get());
+    if (!head) {
+      if (error) *error = headError;
+      return false;
+    }
+    const std::vector<Sphere> spheres = report.fileSpheres;
+    if (!buildGroom(onSpheres, *head, baseDir, groom, error, &report, progress)) return false;
+    report.fileSpheres = spheres;
+  }
   // The guides, when fewer than every strand are simulated: the followers are bound once here.
+  // The file's own guides (a project's, with its follow hairs) when hairstyle.guides is -1.
   std::shared_ptr<const FollowerBinding> followers;
-  const size_t guides = guideCount(config.hairstyle.guides, groom.strandCount());
+  const bool fileGuides = !report.fileGuides.empty() && config.hairstyle.guides < 0;
+  const size_t guides = fileGuides ? report.fileGuides.size()
+                                   : guideCount(config.hairstyle.guides, groom.strandCount());
   if (guides < groom.strandCount()) {
     if (progress) progress("choosing guides", 1.0);
-    std::vector<uint32_t> chosen = chooseGuides(groom, guides);
+    std::vector<uint32_t> chosen = fileGuides ? report.fileGuides : chooseGuides(groom, guides);
     followers =
         std::make_shared<const FollowerBinding>(bindFollowers(std::move(groom), std::move(chosen)));
     groom = followers->guideGroom();

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -14,6 +16,8 @@
 #include "sim/head/distance_grid.h"
 #include "sim/head/mannequin.h"
 #include "sim/head/head_model.h"
+#include "sim/groom/groom_file.h"
+#include "sim/groom/hairstyle.h"
 #include "sim/solver/stiffness.h"
 #include "tests/import_cases.h"
 #include "sim/verify/solver_head.h"
@@ -51,7 +55,93 @@ std::string octahedron() {
          "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
 }
 
+// A data set's frame: y up, the face toward +x, in centimetres, the head 1.5 m up.
+glm::vec3 toDataSet(const glm::vec3& metres) {
+  const glm::dmat3 facePlusX(glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0));
+  return glm::vec3(facePlusX * glm::dvec3(metres) * 100.0 + glm::dvec3(3.0, 150.0, -7.0));
+}
+
+// The mannequin's head as a data set ships it beside its grooms, in toDataSet's frame.
+std::string dataSetHead() {
+  const SurfaceMesh& m = mannequinHeadMesh();
+  std::ostringstream s;
+  s.precision(9);
+  for (const glm::vec3& p : m.positions) {
+    const glm::vec3 q = toDataSet(p);
+    s << "v " << q.x << " " << q.y << " " << q.z << "\n";
+  }
+  for (size_t i = 0; i < m.indices.size(); i += 3)
+    s << "f " << m.indices[i] + 1 << " " << m.indices[i + 1] + 1 << " " << m.indices[i + 2] + 1
+      << "\n";
+  return s.str();
+}
+
 }  // namespace
+
+TEST_CASE(
+    "Import: a data set's groom beside its own head is kept where the file put it on that head",
+    "[import][head_fit][quick]") {
+  TempDir dir;
+  Config c;
+  c.hairstyle.strands = 200;
+  c.collision.headShape = HeadShape::Sdf;
+  // Grown on the mannequin, then written in the data set's frame with the head beside it.
+  const Groom grown = growHairstyle(c, *HeadModel::require(c));
+  Groom file = grown;
+  for (glm::vec3& p : file.points) p = toDataSet(p);
+  const std::string groomPath = (dir.path / "groom.data").string();
+  REQUIRE(io::writeGroom(groomPath, file));
+  Config scene = c;
+  scene.head.mesh = dir.write("head.obj", dataSetHead());
+  scene.hairstyle.file = groomPath;
+  const std::shared_ptr<const HeadModel> head = HeadModel::require(scene);
+  REQUIRE(head->meshFit());
+  INFO(head->meshFit()->text());
+  REQUIRE(head->meshFit()->unit == "cm");
+
+  auto build = [&](const Config& s, GroomReport& report) {
+    Groom g;
+    std::string error;
+    REQUIRE(buildGroom(s, *head, "", g, &error, &report));
+    REQUIRE(g.strandCount() == grown.strandCount());
+    double far = 0.0;
+    for (size_t k = 0; k < g.strandCount(); ++k)
+      far = std::max(far, double(glm::length(g.points[g.first[k]] - grown.points[grown.first[k]])));
+    return far;
+  };
+  GroomReport report;
+  const double kept = build(scene, report);
+  INFO(groomReportText(report));
+  CHECK(report.keptOnHead);
+  CHECK_THAT(report.placeNote, Catch::Contains("kept where the file put it"));
+  // Every root where it grew, to the head fit's accuracy (tests/cpu/head_fit_test.cpp: 3 mm).
+  CHECK(kept < 4e-3);
+
+  // Fitted onto the head as any groom is, when the preset says so.
+  Config fitted = scene;
+  fitted.hairstyle.importPlace = ImportPlace::Fit;
+  GroomReport fitReport;
+  build(fitted, fitReport);
+  CHECK_FALSE(fitReport.keptOnHead);
+  CHECK(fitReport.placeNote.empty());
+
+  // A groom 10 cm off the head is not its own: fitted, and said.
+  for (glm::vec3& p : file.points) p.z += 10.0f;
+  REQUIRE(io::writeGroom(groomPath, file));
+  GroomReport offReport;
+  build(scene, offReport);
+  CHECK_FALSE(offReport.keptOnHead);
+  CHECK_THAT(offReport.placeNote, Catch::Contains("not on it"));
+
+  // Kept on a head there is not: refused, with the setting named.
+  Config noHead = c;
+  noHead.hairstyle.file = groomPath;
+  noHead.hairstyle.importPlace = ImportPlace::Head;
+  Groom g;
+  std::string error;
+  CHECK_FALSE(buildGroom(noHead, *HeadModel::require(noHead), "", g, &error));
+  CHECK_THAT(error, Catch::Contains("hairstyle.import_place") && Catch::Contains("head.mesh"));
+}
 
 TEST_CASE(
     "Import: a groom of normal strands and three degenerate ones runs at the normal "

@@ -10,7 +10,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <glm/geometric.hpp>
+
 #include "sim/groom/groom_file.h"
+#include "sim/run/grown_scene.h"
 #include "tests/import_cases.h"
 
 using namespace csm;
@@ -87,7 +90,8 @@ TEST_CASE(
     project += std::string(kNames[p]) + " 4 0.5 1 piece" + std::to_string(p) + ".tfxsim Piece\r\n";
   }
   dir.write("piece0.tfxsim", "version 3.0\nstiffnessForLocalShapeMatching 0.9\ndamping 0.08\n");
-  project += "collision_sphere 0 160 0 11\ncollision_capsule 0 140 0 0 130 0 6\n";
+  // A sphere about the head's centre as the files have it (z turned, centimetres, 1.5 m up).
+  project += "collision_sphere 3 150 -2 10\ncollision_capsule 0 140 0 0 130 0 6\n";
   dir.write("ours.tfxproj", project);
 
   c.hairstyle.file = (dir.path / "ours.tfxproj").string();
@@ -99,7 +103,10 @@ TEST_CASE(
   INFO(error);
   size_t total = 0;
   for (const Groom& p : parts) total += p.strandCount();
-  REQUIRE(g.strandCount() == total);
+  // The file's strands are the guides, each with its piece's 4 follow hairs after them all.
+  REQUIRE(report.fileGuides.size() == total);
+  REQUIRE(report.followHairs == 4 * total);
+  REQUIRE(g.strandCount() == 5 * total);
   CHECK(report.mirrored);
   CHECK(report.facingNote.empty());
 
@@ -116,11 +123,60 @@ TEST_CASE(
   // Fitted together: the pieces keep their places against each other (one scale for all).
   CHECK(mean[Front].y > mean[Tail].y);
 
+  // A follow hair's root lies within the piece's radius (0.5 file units) of its guide's, its
+  // tip within twice that (tip separation 1), and it is not its guide.
+  const double radius = 0.5 * double(report.fit.scale);
+  double farRoot = 0.0, farTip = 0.0, nearTip = 1e30;
+  for (size_t s = 0; s < total; ++s)
+    for (size_t k = 0; k < 4; ++k) {
+      const size_t f = total + 4 * s + k;
+      farRoot = std::max(farRoot, double(glm::length(g.points[g.first[f]] - g.points[g.first[s]])));
+      const double tip = glm::length(g.points[g.first[f + 1] - 1] - g.points[g.first[s + 1] - 1]);
+      farTip = std::max(farTip, tip);
+      nearTip = std::min(nearTip, tip);
+    }
+  INFO("radius " << radius << " m: roots up to " << farRoot << ", tips " << nearTip << " to "
+                 << farTip);
+  CHECK(farRoot < 1.1 * radius);
+  CHECK(farTip < 2.2 * radius);
+  CHECK(farTip > 0.5 * radius);
+
+  // The project's sphere, where the fit put the groom: about the head's centre (as near as the fit
+  // puts the groom where it was grown), 10 cm at the fit's scale.
+  REQUIRE(report.fileSpheres.size() == 1);
+  const Sphere sphere = report.fileSpheres[0];
+  INFO("the sphere at " << sphere.center.x << " " << sphere.center.y << " " << sphere.center.z
+                        << ", radius " << sphere.radius);
+  CHECK(glm::length(sphere.center) < 0.04f);
+  CHECK(std::abs(sphere.radius - 10.0f * report.fit.scale) < 1e-5f);
+  CHECK(std::abs(sphere.radius - 0.1f) < 0.02f);
+
   const std::string text = groomReportText(report);
   CHECK(text.find("z mirrored") != std::string::npos);
-  CHECK(text.find("4 follow hairs a guide") != std::string::npos);
+  CHECK(text.find("follow hairs drawn from") != std::string::npos);
   CHECK(text.find("stiffnessForLocalShapeMatching 0.9") != std::string::npos);
-  CHECK(text.find("2 collision shapes") != std::string::npos);
+  CHECK(text.find("1 collision sphere,") != std::string::npos);
+  CHECK(text.find("1 collision capsule:") != std::string::npos);
+
+  SECTION("the scene simulates the file's guides and, on spheres, collides with its sphere") {
+    c.collision.headShape = HeadShape::Spheres;
+    GrownScene scene;
+    REQUIRE(growScene(c, "", nullptr, {}, scene, &error));
+    REQUIRE(scene.followers);
+    CHECK(scene.followers->guideCount() == total);
+    CHECK(scene.followers->drawn.strandCount() == 5 * total);
+    REQUIRE(scene.head->spheres().size() == 1);
+    const Sphere head = scene.head->spheres()[0];
+    CHECK(glm::length(head.center - sphere.center) < 1e-4f);
+    double worst = 0.0;
+    for (size_t s = 0; s < scene.groom->strandCount(); ++s)
+      worst = std::max(
+          worst,
+          std::abs(double(glm::length(scene.groom->points[scene.groom->first[s]] - head.center)) -
+                   double(head.radius)));
+    INFO("roots up to " << worst << " m from the project's sphere");
+    CHECK(worst < 1e-3);
+  }
 }
 
 TEST_CASE("TressFX project: a missing piece is named with the project's line",
@@ -134,4 +190,28 @@ TEST_CASE("TressFX project: a missing piece is named with the project's line",
   const io::GroomReadResult e = io::readGroom((dir.path / "empty.tfxproj").string());
   CHECK_FALSE(e.groom);
   CHECK(e.error.find("no piece") != std::string::npos);
+  dir.write("sphere.tfxproj", "version 3.0\nnowhere.tfx 4 0.5 1\ncollision_sphere 0 1 2\n");
+  const io::GroomReadResult sphere = io::readGroom((dir.path / "sphere.tfxproj").string());
+  CHECK_FALSE(sphere.groom);
+  CHECK(sphere.error.find("piece nowhere.tfx") != std::string::npos);
+}
+
+TEST_CASE("TressFX project: a bad follow-hair count or collision sphere is named with its line",
+          "[io][tressfx][quick]") {
+  Config c;
+  c.hairstyle.strands = 60;
+  ProjectDir dir;
+  dir.write("front.tfx", test::tiedTressFx(pieces(c)[Front], 3, 12, false));
+  for (const auto& [line, says] : std::vector<std::pair<std::string, std::string>>{
+           {"front.tfx four 0.5 1", ":2: the follow-hair count \"four\""},
+           {"front.tfx 65 0.5 1", ":2: the follow-hair count \"65\""},
+           {"front.tfx 4 -1 1", ":2: the follow hairs' radius"},
+           {"front.tfx 4 0.5 1\ncollision_sphere 0 1 2", ":3: collision_sphere wants four"},
+           {"front.tfx 4 0.5 1\ncollision_sphere 0 1 2 0", ":3: the collision sphere's radius"}}) {
+    dir.write("bad.tfxproj", "version 3.0\n" + line + "\n");
+    const io::GroomReadResult r = io::readGroom((dir.path / "bad.tfxproj").string());
+    INFO(line << " -> " << r.error);
+    CHECK_FALSE(r.groom);
+    CHECK(r.error.find("bad.tfxproj" + says) != std::string::npos);
+  }
 }
