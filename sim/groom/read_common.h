@@ -35,6 +35,9 @@ struct GroomReadResult {
   // What the file holds that csmhair has no use for, or uses in its own way (a TressFX project's
   // follow-hair counts, collision spheres, simulation values), one line each, for the report.
   std::vector<std::string> unused;
+  // What the file sets that csmhair has a meaning for, said in csmhair's terms (a TressFX
+  // project's damping as sim.damping), one line each.
+  std::vector<std::string> mapped;
   // Collision spheres the file comes with, in its units and frame (a TressFX project's).
   std::vector<Sphere> spheres;
 

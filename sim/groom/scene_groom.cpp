@@ -299,6 +299,7 @@ bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseD
     r.followHairs = out.strandCount() - before;
   }
   r.unused = read.unused;
+  r.mapped = read.mapped;
   // The file's strands and repairs: those the reader dropped, then those the scene did.
   r.fileStrands += read.repair.droppedStrands;
   io::GroomRepair both = read.repair;
@@ -472,9 +473,10 @@ std::string groomReportText(const GroomReport& r) {
       if (!parts.empty()) parts += "; ";
       parts += *note;
     }
-  if (parts.empty() && r.unused.empty()) return {};
+  if (parts.empty() && r.unused.empty() && r.mapped.empty()) return {};
   std::string text = "the groom file: " + (parts.empty() ? std::string("read") : parts);
   for (const std::string& n : r.repair.notes) text += "\n  " + n;
+  for (const std::string& n : r.mapped) text += "\n  " + n;
   for (const std::string& n : r.unused) text += "\n  not used: " + n;
   return text;
 }

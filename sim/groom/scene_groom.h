@@ -31,6 +31,7 @@ struct GroomReport {
   std::string placeNote;       // why it was kept there, or fitted though head.mesh is set
   std::string facingNote;      // the groom's hair falls toward the face: its front may be behind
   std::vector<std::string> unused;  // what the file holds that csmhair does not use (a project's)
+  std::vector<std::string> mapped;  // what it sets, in csmhair's terms (a project's damping)
   io::FitReport fit;                // how the file's points came onto the head
   // The file's own guides and follow hairs (a TressFX project's, sim/groom/follow_hairs.h): the
   // strands that are the guides, and how many follow hairs were made beside them.

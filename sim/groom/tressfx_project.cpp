@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string_view>
 #include <vector>
@@ -12,22 +13,44 @@
 namespace csm::io {
 namespace {
 
-// A .tfxsim file's "key value" lines, as one line of the report ("" when it cannot be read).
-std::string simValues(const std::string& path) {
+// TressFX integrates once a frame at 60 Hz, keeping (1 - damping) of each particle's velocity.
+inline constexpr double kTressFxStep = 1.0 / 60.0;
+
+// A .tfxsim file's "key value" lines for the report: those csmhair has a meaning for, in its own
+// terms (damping as sim.damping's rate), and the rest as they are. Both empty when the file
+// cannot be read.
+struct SimValues {
+  std::vector<std::string> mapped;
+  std::string unused;
+  bool read = false;
+};
+
+SimValues simValues(const std::string& path) {
+  SimValues out;
   std::string error;
   const auto bytes = detail::readFileBytes(path, 1 << 20, &error);
-  if (!bytes) return {};
+  if (!bytes) return out;
+  out.read = true;
   const std::string_view text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
   detail::LineCursor lines(text);
   size_t line = 0;
   std::string_view raw;
-  std::string values;
   while (lines.next(line, raw)) {
     const auto t = detail::objTokens(raw, 3);
     if (t.size() < 2 || t[0] == "version") continue;
-    values += (values.empty() ? "" : ", ") + std::string(t[0]) + " " + std::string(t[1]);
+    double value = 0.0;
+    if (t[0] == "damping" && detail::parseNumber(t[1], value) && value >= 0.0 && value < 1.0) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "damping %s is sim.damping %.2f /s in csmhair's terms (%.3f of the velocity "
+                    "kept a 60 Hz step); the preset's sim.damping is used",
+                    std::string(t[1]).c_str(), -std::log(1.0 - value) / kTressFxStep, 1.0 - value);
+      out.mapped.push_back(text);
+      continue;
+    }
+    out.unused += (out.unused.empty() ? "" : ", ") + std::string(t[0]) + " " + std::string(t[1]);
   }
-  return values;
+  return out;
 }
 
 bool parseCount(std::string_view text, uint32_t& out) {
@@ -97,11 +120,14 @@ GroomReadResult readTressFxProject(std::span<const std::byte> bytes, const std::
       result.repair.add(r.repair);
       ++pieces;
       if (t.size() > 4) {
-        const std::string values = simValues((dir / std::string(t[4])).string());
-        unused.push_back(std::string(t[4]) + ": " +
-                         (values.empty() ? std::string("not found")
-                                         : values + " (csmhair's sim.* stiffness and damping "
-                                                    "have their own meaning)"));
+        const std::string sim(t[4]);
+        const SimValues values = simValues((dir / sim).string());
+        for (const std::string& m : values.mapped) result.mapped.push_back(sim + ": " + m);
+        if (!values.read)
+          unused.push_back(sim + ": not found");
+        else if (!values.unused.empty())
+          unused.push_back(sim + ": " + values.unused +
+                           " (csmhair's sim.* stiffness has its own meaning)");
       }
     } else if (word == "collision_sphere") {
       double v[4];

@@ -155,6 +155,8 @@ TEST_CASE(
   CHECK(text.find("z mirrored") != std::string::npos);
   CHECK(text.find("follow hairs drawn from") != std::string::npos);
   CHECK(text.find("stiffnessForLocalShapeMatching 0.9") != std::string::npos);
+  // TressFX keeps 0.92 of the velocity a 60 Hz step: a rate of -60 ln 0.92 = 5.00 /s.
+  CHECK(text.find("piece0.tfxsim: damping 0.08 is sim.damping 5.00 /s") != std::string::npos);
   CHECK(text.find("1 collision sphere,") != std::string::npos);
   CHECK(text.find("1 collision capsule:") != std::string::npos);
 
