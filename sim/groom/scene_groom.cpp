@@ -233,6 +233,38 @@ bool keepOnOwnHead(const Config& c, const HeadModel& head, Groom& g, bool either
   return true;
 }
 
+// The scale the fit inferred from the roots' size, with the unit it is nearest (the file's unit
+// as far as a head's size tells it); "" when it is within 10 % of metres (nothing to say).
+std::string inferredScaleText(double scale) {
+  if (!(scale > 0.0) || std::abs(std::log(scale)) < std::log(1.1)) return {};
+  struct Unit {
+    const char* name;
+    double metres;
+  };
+  const Unit units[] = {{"metres", 1.0},
+                        {"decimetres", 0.1},
+                        {"centimetres", 0.01},
+                        {"millimetres", 1e-3},
+                        {"inches", 0.0254}};
+  const Unit* nearest = &units[0];
+  for (const Unit& u : units)
+    if (std::abs(std::log(scale / u.metres)) < std::abs(std::log(scale / nearest->metres)))
+      nearest = &u;
+  char text[240];
+  const double off = scale / nearest->metres;
+  if (off > 1.0 / 1.5 && off < 1.5)
+    std::snprintf(text, sizeof text,
+                  "scaled by %.4g to the head's size, inferred from the roots' (the file in about "
+                  "%s; hairstyle.import_scale overrides)",
+                  scale, nearest->name);
+  else
+    std::snprintf(text, sizeof text,
+                  "scaled by %.4g to the head's size, inferred from the roots' "
+                  "(hairstyle.import_scale overrides)",
+                  scale);
+  return text;
+}
+
 }  // namespace
 
 bool buildGroom(const Config& c, const HeadModel& head, const std::string& baseDir, Groom& out,
@@ -334,6 +366,7 @@ bool fitFileGroom(const Config& c, const HeadModel& model, Groom g, const std::s
   if (findRoots) r.turnedStrands = turnRootsFirst(g);
   const io::FitReport fitted = io::fitToHead(g, fit);
   r.fit = fitted;
+  r.scaleInferred = fit.autoFit;
   // The reader checked that the file's points are finite and its strands go somewhere, but the
   // fit can undo both: points near float's limit rotated or scaled past it, a tiny spread of
   // roots scaled up to the head's size, or a tiny import scale that collapses a strand.
@@ -461,6 +494,12 @@ std::string groomReportText(const GroomReport& r) {
     parts += std::to_string(r.fileSpheres.size()) +
              (r.fileSpheres.size() == 1 ? " collision sphere" : " collision spheres") +
              ", the head's when collision.head_shape is spheres";
+  }
+  if (r.scaleInferred) {
+    if (const std::string scale = inferredScaleText(r.fit.scale); !scale.empty()) {
+      if (!parts.empty()) parts += "; ";
+      parts += scale;
+    }
   }
   if (r.mirrored) {
     if (!parts.empty()) parts += "; ";

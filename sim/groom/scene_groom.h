@@ -33,6 +33,7 @@ struct GroomReport {
   std::vector<std::string> unused;  // what the file holds that csmhair does not use (a project's)
   std::vector<std::string> mapped;  // what it sets, in csmhair's terms (a project's damping)
   io::FitReport fit;                // how the file's points came onto the head
+  bool scaleInferred = false;       // fit.scale from the roots' size (hairstyle.import_scale 0)
   // The file's own guides and follow hairs (a TressFX project's, sim/groom/follow_hairs.h): the
   // strands that are the guides, and how many follow hairs were made beside them.
   std::vector<uint32_t> fileGuides;

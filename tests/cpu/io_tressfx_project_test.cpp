@@ -153,6 +153,8 @@ TEST_CASE(
 
   const std::string text = groomReportText(report);
   CHECK(text.find("z mirrored") != std::string::npos);
+  // The unit as the roots' size tells it: the pieces are in centimetres.
+  CHECK(text.find("the file in about centimetres") != std::string::npos);
   CHECK(text.find("follow hairs drawn from") != std::string::npos);
   CHECK(text.find("stiffnessForLocalShapeMatching 0.9") != std::string::npos);
   // TressFX keeps 0.92 of the velocity a 60 Hz step: a rate of -60 ln 0.92 = 5.00 /s.
