@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "sim/base/file_io.h"
+#include "sim/base/format.h"
 #include "sim/base/parallel.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_fit.h"
@@ -201,8 +202,8 @@ RootGap rootGap(const Groom& g, const HeadFit& fit, const DistanceGrid& field, b
 inline constexpr double kOwnHeadMedian = 0.005, kOwnHeadHigh = 0.02;
 
 // The file's groom kept where it lies on head.mesh: the head's fit applied to its points (and its
-// strands' thickness, in the same units). Says so in `note`; false, with the reason in `note`,
-// when hairstyle.import_place is auto and the roots are not on that head.
+// strands' thickness and follow hairs' radius, in the same units). Says so in `note`; false, with
+// the reason in `note`, when hairstyle.import_place is auto and the roots are not on that head.
 bool keepOnOwnHead(const Config& c, const HeadModel& head, Groom& g, bool eitherEnd,
                    std::string& note) {
   const HeadFit* fit = head.meshFit();
@@ -213,23 +214,21 @@ bool keepOnOwnHead(const Config& c, const HeadModel& head, Groom& g, bool either
   const bool placedByHand = h.importScale > 0.0f || h.importFacing == ImportFacing::MinusZ;
   if (place == ImportPlace::Auto && placedByHand) return false;
   const RootGap gap = rootGap(g, *fit, head.shapeField(), eitherEnd);
-  char text[320];
-  const bool on = gap.median < kOwnHeadMedian && gap.high < kOwnHeadHigh;
-  if (place == ImportPlace::Auto && !on) {
-    std::snprintf(text, sizeof text,
-                  "fitted to the head: its roots lie %.1f mm from head.mesh's surface (the "
-                  "median, in the head's frame), not on it (hairstyle.import_place)",
-                  1000.0 * std::min(gap.median, 9.99e5));
-    note = text;
+  const double mm = 1000.0 * std::min(gap.median, 9.99e5);
+  if (place == ImportPlace::Auto && !(gap.median < kOwnHeadMedian && gap.high < kOwnHeadHigh)) {
+    note = format(
+        "fitted to the head: its roots lie %.1f mm from head.mesh's surface (the median, in the "
+        "head's frame), not on it (hairstyle.import_place)",
+        mm);
     return false;
   }
   for (glm::vec3& p : g.points) p = fit->apply(p);
   for (float& t : g.thickness) t = float(double(t) * fit->scale);
-  std::snprintf(text, sizeof text,
-                "kept where the file put it on head.mesh (its roots %.1f mm from the surface, "
-                "the median), brought into the head frame with the head (hairstyle.import_place)",
-                1000.0 * std::min(gap.median, 9.99e5));
-  note = text;
+  for (Groom::FollowHairs& f : g.follow) f.radius = float(double(f.radius) * fit->scale);
+  note = format(
+      "kept where the file put it on head.mesh (its roots %.1f mm from the surface, the median), "
+      "brought into the head frame with the head (hairstyle.import_place)",
+      mm);
   return true;
 }
 
