@@ -4,9 +4,9 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include "sim/base/random.h"
+#include "sim/base/shortest_turn.h"
 
 namespace csm {
 
@@ -36,16 +36,12 @@ std::vector<glm::vec3> followHair(const Groom& g, size_t s, uint32_t k, const Gr
   std::vector<glm::vec3> out(end - begin);
   for (uint32_t i = begin; i < end; ++i) {
     if (i > begin && i + 1 < end) {
-      // Turned as the strand turns at this point, so the offset stays across it.
+      // Turned as the strand turns at this point, so the offset stays across it (not at a
+      // hairpin: no one shortest turn).
       const glm::dvec3 next = glm::dvec3(g.points[i + 1] - g.points[i]);
       if (glm::length(next) > 0.0) {
         const glm::dvec3 turned = glm::normalize(next);
-        // The shortest turn from the last tangent to this one (none for a hairpin).
-        const double c = glm::dot(tangent, turned);
-        if (c > -0.9999) {
-          const glm::dvec3 axis = glm::cross(tangent, turned);
-          offset = glm::normalize(glm::dquat(1.0 + c, axis.x, axis.y, axis.z)) * offset;
-        }
+        offset = shortestTurn(tangent, turned) * offset;
         tangent = turned;
       }
     }

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "sim/base/shortest_turn.h"
 #include "sim/groom/growth_head.h"
 #include "sim/head/distance_grid.h"
 #include "shaders/sim/shared_constants.glsl"
@@ -23,14 +24,6 @@ glm::vec3 blend(const glm::vec3& a, const glm::vec3& b, float t) {
 glm::vec3 tangentAt(const glm::vec3* p, std::uint32_t n, std::uint32_t j) {
   const std::uint32_t lo = j > 0 ? j - 1 : 0, hi = std::min(j + 1, n - 1);
   return p[hi] - p[lo];
-}
-
-// The shortest rotation taking unit a to unit b; none where they are opposed.
-glm::quat shortestTurn(const glm::vec3& a, const glm::vec3& b) {
-  const float c = glm::dot(a, b);
-  if (!(c > -0.9999f)) return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
-  const glm::vec3 v = glm::cross(a, b);
-  return glm::normalize(glm::quat(1.0f + c, v.x, v.y, v.z));
 }
 
 // One part of the body: its field, else its spheres (its own frame), at its pose.

@@ -4,12 +4,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include <Eigen/Dense>
 #include <glm/geometric.hpp>
 
 #include "sim/base/file_io.h"
 #include "sim/base/format.h"
 #include "sim/base/parallel.h"
+#include "sim/base/units.h"
+#include "sim/core/sphere_fit.h"
 #include "sim/head/distance_grid.h"
 #include "sim/head/head_fit.h"
 #include "sim/head/head_model.h"
@@ -66,10 +67,8 @@ double medianSpread(const std::vector<glm::dvec3>& points) {
   return d[d.size() / 2];
 }
 
-// The sphere through points by least squares (|p|^2 = 2 c.p + k is linear in c and k), in units
-// of their spread so that the system is well scaled whatever the file's units. A flat set has
-// no finite sphere: then the nearest of large ones is as good a surface, and a radius of 100
-// spreads stands for it.
+// The sphere through points by least squares (fitSphere). A flat set has no finite sphere: then
+// the nearest of large ones is as good a surface, and a radius of 100 spreads stands for it.
 Sphere sphereThrough(const std::vector<glm::dvec3>& points) {
   glm::dvec3 mean(0.0);
   for (const glm::dvec3& p : points) mean += p;
@@ -77,22 +76,12 @@ Sphere sphereThrough(const std::vector<glm::dvec3>& points) {
   double spread = 0.0;
   for (const glm::dvec3& p : points) spread = std::max(spread, glm::length(p - mean));
   if (points.size() < 4 || !(spread > 0.0)) return {glm::vec3(mean), float(spread)};
-  Eigen::MatrixXd m(points.size(), 4);
-  Eigen::VectorXd rhs(points.size());
-  for (size_t i = 0; i < points.size(); ++i) {
-    const glm::dvec3 q = (points[i] - mean) / spread;
-    m.row(Eigen::Index(i)) << 2.0 * q.x, 2.0 * q.y, 2.0 * q.z, 1.0;
-    rhs(Eigen::Index(i)) = glm::dot(q, q);
-  }
-  const Eigen::Vector4d x = m.colPivHouseholderQr().solve(rhs);
-  glm::dvec3 c(x(0), x(1), x(2));
-  double r = std::sqrt(std::max(0.0, x(3) + glm::dot(c, c)));
-  if (!std::isfinite(r) || r > 100.0) {
-    c = glm::length(c) > 0.0 && std::isfinite(glm::length(c)) ? glm::normalize(c) * 100.0
-                                                              : glm::dvec3(0.0, -100.0, 0.0);
-    r = 100.0;
-  }
-  return {glm::vec3(mean + spread * c), float(spread * r)};
+  const std::optional<SphereFit> fit = fitSphere(points);
+  if (fit && fit->radius <= 100.0 * spread) return {glm::vec3(fit->centre), float(fit->radius)};
+  const glm::dvec3 away = fit ? fit->centre - mean : glm::dvec3(0.0);
+  const double far = glm::length(away);
+  const glm::dvec3 dir = far > 0.0 && std::isfinite(far) ? away / far : glm::dvec3(0.0, -1.0, 0.0);
+  return {glm::vec3(mean + 100.0 * spread * dir), float(100.0 * spread)};
 }
 
 // For a groom whose format does not say which end is the root: turns the strands so that each
@@ -236,32 +225,17 @@ bool keepOnOwnHead(const Config& c, const HeadModel& head, Groom& g, bool either
 // as far as a head's size tells it); "" when it is within 10 % of metres (nothing to say).
 std::string inferredScaleText(double scale) {
   if (!(scale > 0.0) || std::abs(std::log(scale)) < std::log(1.1)) return {};
-  struct Unit {
-    const char* name;
-    double metres;
-  };
-  const Unit units[] = {{"metres", 1.0},
-                        {"decimetres", 0.1},
-                        {"centimetres", 0.01},
-                        {"millimetres", 1e-3},
-                        {"inches", 0.0254}};
-  const Unit* nearest = &units[0];
-  for (const Unit& u : units)
-    if (std::abs(std::log(scale / u.metres)) < std::abs(std::log(scale / nearest->metres)))
-      nearest = &u;
-  char text[240];
-  const double off = scale / nearest->metres;
+  const LengthUnit& nearest = nearestUnit(scale);
+  const double off = scale / nearest.metres;
   if (off > 1.0 / 1.5 && off < 1.5)
-    std::snprintf(text, sizeof text,
-                  "scaled by %.4g to the head's size, inferred from the roots' (the file in about "
-                  "%s; hairstyle.import_scale overrides)",
-                  scale, nearest->name);
-  else
-    std::snprintf(text, sizeof text,
-                  "scaled by %.4g to the head's size, inferred from the roots' "
-                  "(hairstyle.import_scale overrides)",
-                  scale);
-  return text;
+    return format(
+        "scaled by %.4g to the head's size, inferred from the roots' (the file in about %s; "
+        "hairstyle.import_scale overrides)",
+        scale, nearest.name);
+  return format(
+      "scaled by %.4g to the head's size, inferred from the roots' (hairstyle.import_scale "
+      "overrides)",
+      scale);
 }
 
 }  // namespace

@@ -7,9 +7,11 @@
 #include <cstdio>
 #include <unordered_map>
 
-#include <Eigen/Dense>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+
+#include "sim/base/units.h"
+#include "sim/core/sphere_fit.h"
 
 namespace csm {
 namespace {
@@ -87,33 +89,19 @@ Cap craniumCap(const SurfaceMesh& m, const glm::dvec3& up, double depth) {
   Cap cap;
   if (m.positions.empty()) return cap;
   double top = -1e300;
-  glm::dvec3 mean(0.0);
   for (const glm::vec3& p : m.positions) top = std::max(top, glm::dot(glm::dvec3(p), up));
   const std::vector<double> area = vertexAreas(m);
-  double total = 0.0;
+  std::vector<glm::dvec3> points;
+  std::vector<double> weights;
   for (size_t v = 0; v < m.positions.size(); ++v)
     if (glm::dot(glm::dvec3(m.positions[v]), up) >= top - depth) {
-      mean += area[v] * glm::dvec3(m.positions[v]);
-      total += area[v];
+      points.emplace_back(m.positions[v]);
+      weights.push_back(area[v]);
     }
-  if (!(total > 0.0)) return cap;
-  mean /= total;
-  // |p|^2 = 2 c.p + k for every point of a sphere about c (k = r^2 - |c|^2), about the mean.
-  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
-  Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
-  for (size_t v = 0; v < m.positions.size(); ++v) {
-    const glm::dvec3 p = glm::dvec3(m.positions[v]) - mean;
-    if (glm::dot(glm::dvec3(m.positions[v]), up) < top - depth) continue;
-    const Eigen::Vector4d row(2.0 * p.x, 2.0 * p.y, 2.0 * p.z, 1.0);
-    normal += area[v] * row * row.transpose();
-    rhs += area[v] * row * glm::dot(p, p);
+  if (const std::optional<SphereFit> fit = fitSphere(points, weights)) {
+    cap.centre = fit->centre;
+    cap.radius = fit->radius;
   }
-  const Eigen::Vector4d x = normal.ldlt().solve(rhs);
-  const glm::dvec3 c(x[0], x[1], x[2]);
-  const double r2 = x[3] + glm::dot(c, c);
-  if (!std::isfinite(r2) || r2 <= 0.0) return cap;
-  cap.centre = mean + c;
-  cap.radius = std::sqrt(r2);
   return cap;
 }
 
@@ -184,31 +172,29 @@ HeadFit fitHead(SurfaceMesh& m, const std::vector<glm::vec3>& holes, const HeadF
 
   // The unit: the one that makes the cranium's sphere nearest the mannequin's (8.1 cm by this
   // measure), from metres to millimetres and inches.
-  struct Unit {
-    const char* name;
-    double metres;
-  };
-  const std::array<Unit, 5> units{
-      {{"m", 1.0}, {"dm", 0.1}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}}};
   double scale = o.scale > 0.0f ? double(o.scale) : 1.0;
+  Cap cap;
   if (o.scale > 0.0f) {
-    fit.craniumRadius = craniumCap(m, up, kCapDepth / scale).radius * scale;
+    cap = craniumCap(m, up, kCapDepth / scale);
   } else {
     double bestScore = 1e300;
-    for (const Unit& u : units) {
-      const double r = craniumCap(m, up, kCapDepth / u.metres).radius * u.metres;
+    for (const LengthUnit& u : kLengthUnits) {
+      const Cap c = craniumCap(m, up, kCapDepth / u.metres);
+      const double r = c.radius * u.metres;
       if (!(r > 0.0)) continue;
       const double score = std::abs(std::log(r / kMannequinCraniumRadius));
-      if (score < bestScore)
-        bestScore = score, scale = u.metres, fit.unit = u.name, fit.craniumRadius = r;
+      if (score < bestScore) bestScore = score, scale = u.metres, fit.unit = u.symbol, cap = c;
     }
-    if (fit.unit.empty()) fit.unit = "m";
+    if (fit.unit.empty()) {
+      fit.unit = "m";
+      cap = craniumCap(m, up, kCapDepth);
+    }
   }
+  fit.craniumRadius = cap.radius * scale;
   fit.scale = scale;
 
   // Facing: of the two horizontal axes, the one whose two sides differ most in detail (the ears
   // are alike on either side), toward its more detailed side, when that is clearly so.
-  const Cap cap = craniumCap(m, up, kCapDepth / scale);
   int faceAxis = upAxis == 4 ? 3 : 4;  // the convention: +z, or -y for z up (Blender's front)
   fit.facingWhy = "the convention for " + fit.up + " up";
   if (o.facing != ClipFacing::Auto) {

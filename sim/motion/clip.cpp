@@ -9,6 +9,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "sim/base/file_io.h"
+#include "sim/base/units.h"
 
 namespace csm {
 namespace {
@@ -104,14 +105,12 @@ bool jumps(const Frame& a, const Frame& b, double ft) {
   return speed > kCutSpeed || turnSpeed > kCutTurnSpeed;
 }
 
-struct Unit {
-  const char* name;
-  double metres;
-};
 // The units clips come in; the one that makes the skeleton a standing adult's height is taken.
-constexpr Unit kUnits[] = {{"m", 1.0},     {"cm", 0.01},          {"mm", 0.001}, {"inch", 0.0254},
-                           {"ft", 0.3048}, {"CMU unit", 0.056444}};  // CMU's: (1 / 0.45) inches
-constexpr double kAdultHeight = 1.65;                                // m, toes to the crown
+constexpr LengthUnit kClipUnits[] = {
+    {"m", "metres", 1.0},         {"cm", "centimetres", 0.01},
+    {"mm", "millimetres", 0.001}, {"inch", "inches", 0.0254},
+    {"ft", "feet", 0.3048},       {"CMU unit", "CMU units", 0.056444}};  // (1 / 0.45) inches
+constexpr double kAdultHeight = 1.65;                                    // m, toes to the crown
 
 std::string fixed(double v, int digits) {
   char buf[64];
@@ -225,15 +224,9 @@ std::shared_ptr<const MotionClip> MotionClip::make(const BvhClip& bvh, const Mot
     f.unit = "set";
   } else {
     if (!(heightUnits > 0.0)) return fail("the skeleton has no height at the first frame");
-    double best = 1e30;
-    for (const Unit& u : kUnits) {
-      const double miss = std::abs(std::log(heightUnits * u.metres / kAdultHeight));
-      if (miss < best) {
-        best = miss;
-        f.scale = u.metres;
-        f.unit = u.name;
-      }
-    }
+    const LengthUnit& u = nearestUnit(kAdultHeight / heightUnits, kClipUnits);
+    f.scale = u.metres;
+    f.unit = u.symbol;
   }
   f.height = heightUnits * f.scale;
 
