@@ -127,6 +127,7 @@ class MetricsOutput {
     meta["head_carried_frames"] = sim.carriedFrames();
     meta["root_peak_speed"] = sim.peakRootSpeed();
     meta["rigid_peak_speed"] = sim.peakRigidSpeed();
+    meta["explained_peak_speed"] = sim.explainedPeakSpeed();
     if (const MotionClip* clip = sim.clip()) {
       const ClipFacts& f = clip->facts();
       meta["motion"] = {{"clip", scene.preset.scene.motion.clip},

@@ -9,6 +9,16 @@
 #include "sim/head_field.glsl"
 #endif
 
+// Whether p lies within reach of prev, len = |p - prev| against the segment's limit maxLength,
+// give or take the rounding of a length (CSM_REACH_SLACK_FLOAT) and of the positions themselves
+// (CSM_REACH_ROUNDING_FLOAT: metres from the origin a float position rounds by more than 1e-5
+// of a segment).
+bool withinReach(float len, float maxLength, vec3 p, vec3 prev) {
+  vec3 size = max(abs(p), abs(prev));
+  float largest = max(size.x, max(size.y, size.z));
+  return len <= maxLength * (1.0 + CSM_REACH_SLACK_FLOAT) + CSM_REACH_ROUNDING_FLOAT * largest;
+}
+
 #ifdef CSM_HEAD_FIELD
 // A push's point whose depth it did not read (the circle's).
 const float kUnknownClearance = -1e30;
@@ -133,7 +143,7 @@ bool pushOutOfFieldHead(inout vec3 p, vec3 prev, Substep st, float r, float maxL
     // A pass, as in pushOutOfHead below: within reach and outside, done; else toward prev.
     if (checkReach) {
       len = length(p - prev);
-      reach = len <= maxLength * (1.0 + CSM_REACH_SLACK_FLOAT);
+      reach = withinReach(len, maxLength, p, prev);
       if (clearance != kUnknownClearance) {
         depth = clearance;
         checkDepth = true;
@@ -238,7 +248,7 @@ bool pushOutOfHead(inout vec3 p, vec3 prev, uint sphereBase, float r, float maxL
   float level = 1e30;  // min(0, how far prev lies outside), read once when needed
   for (int pass = 0;; ++pass) {
     float len = length(p - prev);
-    bool reach = len <= maxLength * (1.0 + CSM_REACH_SLACK_FLOAT);
+    bool reach = withinReach(len, maxLength, p, prev);
     float depth = outsideHead(p, sphereBase);
     if (reach && depth >= 0.0) return true;
     if (level == 1e30) level = min(0.0, outsideHead(prev, sphereBase));

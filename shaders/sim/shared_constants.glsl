@@ -64,6 +64,12 @@
 // centimetres rounds by ~1e-7 relative and the push and the clamp each add some: 1e-5.
 #define CSM_REACH_SLACK_DOUBLE 1e-6
 #define CSM_REACH_SLACK_FLOAT 1e-5
+// ... and, in float, give or take this much of the larger coordinate of the two: a float position
+// rounds by up to 2^-24 of its size (6e-8 m at a head 1 m from the origin, 5e-7 m at a character
+// that walked 8 m), each push and clamp adding some, which a length of 2 cm would not cover
+// (without it, a travelling character's particles on the head fell through to the last resort of
+// the push and were flung: docs/BENCHMARKS.md, "Hair on a moving character").
+#define CSM_REACH_ROUNDING_FLOAT 1e-6
 
 // ---- The clamp's field -------------------------------------------------------------------------
 // Behind the clamp the field keeps its value deeper than this many fit reaches (tau):

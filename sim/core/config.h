@@ -154,6 +154,10 @@ struct MotionConfig {
   std::string chestJoint;  // empty: Chest, Spine2, Spine1, ...
   bool loop = true;        // past its end the clip starts again; else it holds its last frame
   bool inPlace = false;    // the clip's horizontal travel removed
+  // The least DFTL while the clip drives the character (dftlOf): a clip's starts, stops and
+  // landings swing strands far harder than head.motion, and without it the strain limit's sweep
+  // whips their tips (docs/BENCHMARKS.md, "Hair on a moving character").
+  float dftl = 0.9f;
 };
 
 struct SimConfig {
@@ -244,5 +248,11 @@ struct Config {
   CollisionConfig collision;
   WindConfig wind;
 };
+
+// The DFTL correction the solvers apply: sim.dftl, and at least motion.dftl while a clip drives
+// the character.
+inline float dftlOf(const Config& c) {
+  return c.motion.clip.empty() ? c.sim.dftl : std::max(c.sim.dftl, c.motion.dftl);
+}
 
 }  // namespace csm

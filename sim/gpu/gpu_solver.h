@@ -88,7 +88,9 @@ class GpuSolver final : public Solver, public SolverState, public SolverDiagnost
   void dropSamples() override { samples_.drop(); }
   void setContactMeasures(bool always) override;
   std::vector<StageTime> stageTimes() override { return timer_.times(); }
-  StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
+  StiffnessInfo stiffness() const override {
+    return describeStiffness(regions_, config_.sim, dftlOf(config_));
+  }
   MemoryUse memoryUse() const override;
 
  private:

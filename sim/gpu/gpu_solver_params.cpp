@@ -38,7 +38,7 @@ void GpuSolver::writeStepParams(gpu::SimParams& p) const {
   p.turbulenceScale = wind.turbulenceScale;
   p.alpha = sim.stiffness;
   p.strainLimit = sim.strainLimit;
-  p.dftl = sim.dftl;
+  p.dftl = dftlOf(config_);
   p.windDrag = wind.drag;
   static_assert(int(StiffnessModel::Paper) == CSM_STIFFNESS_PAPER &&
                 int(StiffnessModel::Calibrated) == CSM_STIFFNESS_CALIBRATED);

@@ -256,6 +256,14 @@ std::vector<Param<Config>> build() {
       param("motion.in_place", "In place", "Motion", &Config::motion, &MotionConfig::inPlace, 0, 1,
             "Removes the clip's horizontal travel: the character moves on the spot.", Effect::Live)
           .onlyWhen(hasClip),
+      param("motion.dftl", "Least DFTL", "Motion", &Config::motion, &MotionConfig::dftl, 0.0, 1.0,
+            "The least DFTL correction (sim.dftl) while the clip drives the character: its "
+            "starts, stops, landings and jerks swing strands far harder than head.motion, and "
+            "without it the strain-limiting sweep whips their tips several times faster than the "
+            "head moved (0.9 keeps them within what the motion and gravity explain); 0 leaves "
+            "sim.dftl alone.",
+            Effect::Live)
+          .onlyWhen(hasClip),
       param("sim.dt", "Frame time step", "Simulation", &Config::sim, &SimConfig::dt, 1e-4, 0.1,
             "Simulated seconds per frame; each frame is split into substeps.", Effect::Live)
           .logScale(),

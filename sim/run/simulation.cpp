@@ -86,6 +86,25 @@ void Simulation::boundRoots() {
   hairRadius_ = rootRadius_;
   for (const glm::vec3& p : g.points)
     hairRadius_ = std::max(hairRadius_, glm::length(glm::dvec3(p) - rootCentre_));
+  longestStrand_ = 0.0;
+  for (size_t s = 0; s < g.strandCount(); ++s) {
+    double length = 0.0;
+    for (uint32_t i = g.first[s] + 1; i < g.first[s + 1]; ++i)
+      length += glm::length(glm::dvec3(g.points[i]) - glm::dvec3(g.points[i - 1]));
+    longestStrand_ = std::max(longestStrand_, length);
+  }
+}
+
+double Simulation::explainedPeakSpeed() const {
+  const double g = glm::length(glm::dvec3(config_.sim.gravity));
+  const WindConfig& w = config_.wind;
+  // windField: strength (1 + gusts x at most 1) plus 0.5 turbulence strength x a swirl of at
+  // most 2 sqrt(3).
+  const double wind =
+      w.strength > 0.0f
+          ? double(w.strength) * (1.0 + double(w.gusts) + std::sqrt(3.0) * double(w.turbulence))
+          : 0.0;
+  return peakRigidSpeed_ + std::sqrt(2.0 * g * longestStrand_) + wind;
 }
 
 double Simulation::rootReach(const Pose& from, const Pose& to, double radius) const {

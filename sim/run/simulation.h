@@ -127,6 +127,10 @@ class Simulation {
   // The fastest any particle would have moved were the hair fixed rigidly to the head (m/s):
   // the speed the head's motion explains, beyond which a particle is flung by the simulation.
   double peakRigidSpeed() const { return peakRigidSpeed_; }
+  // The fastest a particle may move for the motion to explain it (m/s): the rigid hair's peak,
+  // plus what gravity gives a strand falling its own length from rest, sqrt(2 g L) with L the
+  // longest strand, plus the wind's fastest (its strength with full gusts and turbulence).
+  double explainedPeakSpeed() const;
   Pose headPose() const { return headPoseAt(time_); }
   Pose torsoPose() const { return bodyPoseAt(time_).torso; }
 
@@ -214,7 +218,8 @@ class Simulation {
   // The roots' bounding sphere in the head frame, for their speed.
   glm::dvec3 rootCentre_{0.0};
   double rootRadius_ = 0.0;
-  double hairRadius_ = 0.0;  // every rest particle's, about the same centre
+  double hairRadius_ = 0.0;     // every rest particle's, about the same centre
+  double longestStrand_ = 0.0;  // the longest strand's rest length (m)
   long carried_ = 0;
   long cuts_ = 0;
   double peakRootSpeed_ = 0.0;

@@ -228,7 +228,7 @@ void CpuSolver::limitStrain(double h, const std::vector<Sphere>& spheres, const 
   settings.strainLimit = config_.sim.strainLimit;
   settings.headCollide = collidesWithHead(config_.collision.mode);
   settings.friction = config_.collision.headFriction;
-  settings.dftl = config_.sim.dftl;
+  settings.dftl = dftlOf(config_);
   settings.before = &before;
   settings.torsoBefore = &torsoBefore;
   const HeadCollider collider{shape_.field,

@@ -40,7 +40,9 @@ class CpuSolver final : public HostSolver {
   void requestSample(long frame) override;
   std::vector<StageTime> stageTimes() override { return stages_; }
   void setContactMeasures(bool always) override;
-  StiffnessInfo stiffness() const override { return describeStiffness(regions_, config_.sim); }
+  StiffnessInfo stiffness() const override {
+    return describeStiffness(regions_, config_.sim, dftlOf(config_));
+  }
 
  private:
   // Tests and tools read the double state and take single steps through it (cpu_probe.h).

@@ -370,6 +370,12 @@ FramePlan planFrame(const SimConfig& sim, double maxRate) {
   return p;
 }
 
+StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim, double dftl) {
+  StiffnessInfo info = describeStiffness(regions, sim);
+  info.dftl = dftl;
+  return info;
+}
+
 StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim) {
   StiffnessInfo info;
   info.model = sim.stiffnessModel;

@@ -202,6 +202,8 @@ inline double twistStepOf(const SimConfig& sim, double h, int iterations) {
 }
 
 StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim);
+// The same, with the DFTL the solver applies (dftlOf: sim.dftl, or more under a clip).
+StiffnessInfo describeStiffness(const Regions& regions, const SimConfig& sim, double dftl);
 
 // "4 steps of 4.17 ms, alpha 0.71-1, 2-3 particles per side" and the like, for logs.
 std::string stiffnessText(const StiffnessInfo& info);
