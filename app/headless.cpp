@@ -69,7 +69,11 @@ void sayScene(const Options& options, const SceneSetup& scene, const Simulation&
   if (const std::string head = sim.head().summary(); !head.empty() && !options.quiet)
     std::fprintf(stderr, "csmhair: %s\n", head.c_str());
   if (sim.clip() && !options.quiet)
-    std::fprintf(stderr, "csmhair: motion: %s\n", sim.clip()->summary().c_str());
+    std::fprintf(stderr,
+                 "csmhair: motion: %s; DFTL %.2g while it drives (sim.dftl %.2g, "
+                 "motion.dftl %.2g)\n",
+                 sim.clip()->summary().c_str(), dftlOf(scene.preset.scene),
+                 scene.preset.scene.sim.dftl, scene.preset.scene.motion.dftl);
   if (const std::string groom = groomReportText(sim.groomReport()); !groom.empty())
     std::fprintf(stderr, "csmhair: warning: %s\n", groom.c_str());
   if (const std::string warning = stiffnessWarning(stiffness); !warning.empty())
