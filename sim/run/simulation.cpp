@@ -8,6 +8,7 @@
 
 #include "sim/groom/scene_groom.h"
 #include "sim/param/sim_params.h"
+#include "sim/solver/wind.h"
 
 namespace csm {
 
@@ -97,14 +98,7 @@ void Simulation::boundRoots() {
 
 double Simulation::explainedPeakSpeed() const {
   const double g = glm::length(glm::dvec3(config_.sim.gravity));
-  const WindConfig& w = config_.wind;
-  // windField: strength (1 + gusts x at most 1) plus 0.5 turbulence strength x a swirl of at
-  // most 2 sqrt(3).
-  const double wind =
-      w.strength > 0.0f
-          ? double(w.strength) * (1.0 + double(w.gusts) + std::sqrt(3.0) * double(w.turbulence))
-          : 0.0;
-  return peakRigidSpeed_ + std::sqrt(2.0 * g * longestStrand_) + wind;
+  return peakRigidSpeed_ + std::sqrt(2.0 * g * longestStrand_) + windPeakSpeed(config_.wind);
 }
 
 double Simulation::rootReach(const Pose& from, const Pose& to, double radius) const {

@@ -10,5 +10,8 @@
 namespace csm {
 
 glm::dvec3 windVelocity(const WindConfig& wind, const glm::dvec3& x, double t);
+// The fastest the field blows anywhere (m/s): strength x (1 + gusts) with the gusts at their
+// peak, plus the turbulence's swirl at most 0.5 turbulence strength x 2 sqrt(3).
+double windPeakSpeed(const WindConfig& wind);
 
 }  // namespace csm
