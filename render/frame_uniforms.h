@@ -19,6 +19,6 @@ using ivec4 = glm::ivec4;
 struct FrameUniforms {
   CSM_FRAME_UNIFORMS(CSM_CPP_FIELD)
 };
-static_assert(sizeof(FrameUniforms) == 3 * 64 + 16 * 16);
+static_assert(sizeof(FrameUniforms) == 3 * 64 + 21 * 16);
 
 }  // namespace csm::render_block

@@ -19,6 +19,7 @@
 #include "render/hair_color.h"
 #include "render/scalp_map.h"
 #include "sim/head/head_model.h"
+#include "sim/head/mannequin.h"
 
 namespace csm {
 namespace {
@@ -314,6 +315,13 @@ void HairRenderer::updateUniforms(const FrameView& frame, int children, int draw
   u.counts = glm::ivec4(geometry_->subdivision(), children, geometry_->childStride(),
                         geometry_->strandFlags() & (highlightGuides ? ~1 : ~0));
   u.counts2 = glm::ivec4(int(geometry_->splinePoints()), head_.sphereCount(), 0, 0);
+  // The mannequin's eyes and lips, from the scalp centre its mesh is drawn about.
+  const MannequinFace& face = kMannequinFace;
+  u.faceEye = glm::vec4(glm::vec3(face.eye - kMannequinScalpCentre), head_.paintsFace() ? 1 : 0);
+  u.faceEyeSizes = glm::vec4(face.ball, face.corneaOffset, face.cornea, face.iris);
+  u.faceMouth = glm::vec4(glm::vec3(face.mouth - kMannequinScalpCentre), face.pupil);
+  u.faceLips = glm::vec4(face.lipsHalfWidth, face.lipsHalfHeight, 0.0f, 0.0f);
+  u.irisColor = glm::vec4(srgbToLinear(r.irisColor), 1.0f);
   // A width in metres: pixels per metre at view depth 1 from the projection's vertical scale
   // (1 / tan(fov / 2) for the orbit camera), so a strand narrows with distance as it would.
   const float widthM = std::max(r.strandWidthM, 0.0f);

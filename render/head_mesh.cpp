@@ -78,6 +78,7 @@ void HeadMesh::update(const HeadModel& model, const Pose& head, const Pose& tors
   std::vector<glm::vec4> data;
   const SurfaceMesh* surface = model.headSurface();
   mannequin_ = surface != nullptr;
+  face_ = mannequin_ && model.mannequin();
   if (mannequin_) {
     uploadPart(surface, head_);
     uploadPart(model.torsoSurface(), torso_);

@@ -29,6 +29,8 @@ class HeadMesh {
   static constexpr size_t kCoarseTriangles = 30000;
   int sphereCount() const { return placements_; }
   bool isMannequin() const { return mannequin_; }
+  // Whether the head drawn is the built-in mannequin's, whose eyes and lips head.frag paints.
+  bool paintsFace() const { return face_; }
 
  private:
   struct Mesh {
@@ -51,6 +53,7 @@ class HeadMesh {
   gl::Buffer placementBuffer_{gl::NoCreate};
   int placements_ = 0;
   bool mannequin_ = false;
+  bool face_ = false;
 };
 
 }  // namespace csm

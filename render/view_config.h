@@ -41,6 +41,7 @@ struct RenderConfig {
   float layerSpacing = 0.01f;  // deep opacity map layer spacing, metres
   int shadowMapSize = 1024;
   glm::vec3 headColor{0.80f, 0.62f, 0.52f};
+  glm::vec3 irisColor{0.36f, 0.25f, 0.15f};  // the mannequin's eyes
   glm::vec3 background{0.55f, 0.60f, 0.66f};
   int samples = 4;  // multisampling
   // Interactive quality, while the camera moves or the hair simulates (the viewer; captures

@@ -127,6 +127,9 @@ std::vector<Param<ViewConfig>> build() {
       param("render.head_color", "Head colour", "Rendering|Colour", &ViewConfig::render,
             &RenderConfig::headColor, 0, 1, "Colour of the head.", Effect::Render)
           .asColor(),
+      param("render.iris_color", "Iris colour", "Rendering|Colour", &ViewConfig::render,
+            &RenderConfig::irisColor, 0, 1, "Colour of the mannequin's irises.", Effect::Render)
+          .asColor(),
       param("render.background", "Background", "Rendering|Colour", &ViewConfig::render,
             &RenderConfig::background, 0, 1, "Background colour.", Effect::Render)
           .asColor(),

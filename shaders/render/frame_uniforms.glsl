@@ -27,6 +27,13 @@
 //   counts2: x spline points; y head spheres
 //   width: x strand width on screen (m; 0: specStrength.z pixels instead); y pixels per metre at
 //     view depth 1; z the width (m) a strand stands for in the shadow maps
+//   faceEye: xyz the mannequin's right eyeball's centre from the head's placement centre (head
+//     frame; sim/head/mannequin.h kMannequinFace); w 1 when the mannequin's face is painted
+//   faceEyeSizes: x the ball's radius; y the cornea's offset along the gaze; z its radius; w the
+//     iris's radius
+//   faceMouth: xyz the middle of the lips' meeting line (as faceEye); w the pupil's radius
+//   faceLips: x, y the lips' red's half width and half height; z, w unused
+//   irisColor: rgb the iris's colour
 #ifndef CSM_RENDER_FRAME_UNIFORMS_GLSL
 #define CSM_RENDER_FRAME_UNIFORMS_GLSL
 
@@ -39,7 +46,8 @@
   F(vec4, background, uBackground) F(vec4, viewport, uViewport)                            \
   F(vec4, lightRange, uLightRange) F(vec4, children, uChildren)                            \
   F(vec4, children2, uChildren2) F(ivec4, counts, uCounts) F(ivec4, counts2, uCounts2)     \
-  F(vec4, width, uWidth)
+  F(vec4, width, uWidth) F(vec4, faceEye, uFaceEye) F(vec4, faceEyeSizes, uFaceEyeSizes)       \
+  F(vec4, faceMouth, uFaceMouth) F(vec4, faceLips, uFaceLips) F(vec4, irisColor, uIrisColor)
 
 // A field of the list as a member, by its GLSL name and by its C++ name.
 #define CSM_GLSL_FIELD(type, cppName, glslName) type glslName;

@@ -95,6 +95,8 @@ struct Frame {
 
 // Whether a group of shapes, each within `bound` of `centre` and blended with fillets of at
 // most k, can change the field d at p: never when p lies further from that ball than |d| + k.
+// A shape reaching out of the ball would end at its edge, its gradient pointing anywhere there
+// (a speck in the drawn mesh; tests/cpu/head_shape_test.cpp finds one).
 bool reaches(const glm::dvec3& p, const glm::dvec3& centre, double bound, double d, double k) {
   return glm::length(p - centre) - bound < std::abs(d) + k;
 }
@@ -145,26 +147,28 @@ double ear(const glm::dvec3& p) {
 // lids, each a shell over the ball ending at its lash line, the upper lid's lower and more
 // arched, the two meeting at the corners, where the opening narrows to nothing.
 double openEye(const glm::dvec3& p, double d) {
-  const glm::dvec3 c{0.0315, -0.0135, 0.0595};
-  const double ball = sphere(p, c, 0.0120);
-  const double cornea = sphere(p, c + glm::dvec3(0.0, 0.0, 0.0055), 0.0078);
+  const MannequinFace& face = kMannequinFace;
+  const glm::dvec3 c = face.eye;
+  const double ball = sphere(p, c, face.ball);
+  const double cornea = sphere(p, c + glm::dvec3(0.0, 0.0, face.corneaOffset), face.cornea);
   const double eye = smoothUnion(ball, cornea, 0.002);
-  // The lids: a shell 3-4 mm over the ball, cut along the opening, an almond whose half-height
-  // falls from 4.6 mm at its middle to nothing at its corners, 14.5 mm either side; the upper
-  // lid's edge a little proud of the lower's, its crease a shallow groove under the brow.
+  // The lids: a shell 2 mm over the ball, cut along the opening, an almond whose half-height
+  // falls from 5.2 mm at its middle to nothing at its corners, 15 mm either side, its margins
+  // rounded by 1.6 mm (the drawing grid's 2 mm keeps them whole); the upper lid's edge a little
+  // proud of the lower's, its crease a soft groove under the brow.
   const glm::dvec3 q = p - c;
-  const double across = std::clamp(q.x / 0.0145, -1.0, 1.0);
-  const double half = 0.0046 * (1.0 - across * across);
+  const double across = std::clamp(q.x / 0.0150, -1.0, 1.0);
+  const double half = 0.0052 * (1.0 - across * across);
   const double middle = 0.0008;  // the opening's middle, a little above the ball's centre
   const double opening = std::abs(q.y - middle) - half;
   const double shell =
-      ellipsoid(p, c + glm::dvec3(0.0, 0.0006, 0.0), glm::dvec3(0.0150, 0.0148, 0.0150));
-  const double lids = smoothIntersect(shell, -opening, 0.0010);
-  double outer = smoothUnion(eye, lids, 0.0005);
+      ellipsoid(p, c + glm::dvec3(0.0, 0.0006, 0.0), glm::dvec3(0.0142, 0.0140, 0.0142));
+  const double lids = smoothIntersect(shell, -opening, 0.0016);
+  double outer = smoothUnion(eye, lids, 0.0016);
   outer = smoothSubtract(outer,
                          capsule(p, c + glm::dvec3(-0.011, 0.0125, 0.0105),
-                                 c + glm::dvec3(0.011, 0.0115, 0.0095), 0.0011),
-                         0.0015);
+                                 c + glm::dvec3(0.011, 0.0115, 0.0095), 0.0020),
+                         0.0025);
   return smoothUnion(d, outer, 0.003);
 }
 
@@ -175,18 +179,18 @@ double mannequinHeadDistance(const glm::dvec3& q) {
   const glm::dvec3 p(std::abs(q.x), q.y, q.z);
   // Cranium and the face's mass below the forehead.
   double d = ellipsoid(p, {0.0, 0.005, -0.012}, {0.074, 0.095, 0.094});
-  d = smoothUnion(d, ellipsoid(p, {0.0, -0.045, 0.025}, {0.060, 0.075, 0.060}), 0.03);
+  d = smoothUnion(d, ellipsoid(p, {0.0, -0.045, 0.025}, {0.064, 0.075, 0.060}), 0.03);
   // The jaw: the mandible's body, its lower edge from the angle to the chin, and the chin.
-  if (reaches(p, {0.0, -0.085, 0.035}, 0.072, d, 0.02)) {
-    d = smoothUnion(d, ellipsoid(p, {0.0, -0.080, 0.030}, {0.050, 0.036, 0.052}), 0.02);
-    d = smoothUnion(d, capsule(p, {0.052, -0.076, -0.006}, {0.021, -0.113, 0.064}, 0.009), 0.02);
+  if (reaches(p, {0.0, -0.085, 0.035}, 0.080, d, 0.02)) {
+    d = smoothUnion(d, ellipsoid(p, {0.0, -0.080, 0.030}, {0.054, 0.036, 0.052}), 0.02);
+    d = smoothUnion(d, capsule(p, {0.055, -0.076, -0.006}, {0.022, -0.113, 0.064}, 0.009), 0.02);
     d = smoothUnion(d, ellipsoid(p, {0.0, -0.110, 0.068}, {0.020, 0.016, 0.015}), 0.014);
   }
   // The face's features.
-  if (reaches(p, {0.0, -0.040, 0.070}, 0.072, d, 0.02)) {
+  if (reaches(p, {0.0, -0.040, 0.070}, 0.082, d, 0.025)) {
     // Cheekbones and the brow's ridge.
-    d = smoothUnion(d, ellipsoid(p, {0.047, -0.027, 0.056}, {0.017, 0.012, 0.015}), 0.02);
-    d = smoothUnion(d, capsule(p, {0.0, 0.005, 0.077}, {0.040, 0.007, 0.070}, 0.0105), 0.015);
+    d = smoothUnion(d, ellipsoid(p, {0.048, -0.030, 0.046}, {0.016, 0.010, 0.022}), 0.025);
+    d = smoothUnion(d, capsule(p, {0.0, 0.005, 0.0745}, {0.040, 0.007, 0.068}, 0.0105), 0.015);
     // The eye sockets, each with its open eye.
     d = smoothSubtract(d, capsule(p, {0.025, -0.011, 0.083}, {0.038, -0.011, 0.081}, 0.0130),
                        0.008);
@@ -198,7 +202,7 @@ double mannequinHeadDistance(const glm::dvec3& q) {
     d = smoothUnion(d, ellipsoid(p, {0.0, -0.047, 0.100}, {0.0095, 0.0085, 0.0085}), 0.006);
     d = smoothUnion(d, capsule(p, {-0.009, -0.0515, 0.093}, {0.009, -0.0515, 0.093}, 0.0068),
                     0.005);
-    d = smoothUnion(d, sphere(p, {0.0125, -0.0515, 0.090}, 0.0055), 0.004);
+    d = smoothUnion(d, sphere(p, {0.0125, -0.0515, 0.090}, 0.0055), 0.006);
     d = smoothUnion(d, capsule(p, {0.0, -0.053, 0.100}, {0.0, -0.0565, 0.0905}, 0.0028), 0.004);
     d = smoothSubtract(d, capsule(p, {0.0068, -0.0585, 0.0915}, {0.0068, -0.0585, 0.0955}, 0.003),
                        0.002);
@@ -207,19 +211,19 @@ double mannequinHeadDistance(const glm::dvec3& q) {
     d = smoothUnion(d, ellipsoid(p, {0.0, -0.074, 0.066}, {0.030, 0.022, 0.021}), 0.012);
     d = smoothSubtract(d, capsule(p, {0.0, -0.060, 0.0925}, {0.0, -0.066, 0.0925}, 0.005), 0.003);
     const double upperLip = lip(p, {-0.004, -0.0744, 0.0868}, {0.012, -0.0752, 0.0840},
-                                {0.0235, -0.0772, 0.0760}, 0.0044, 0.0034, 0.0014);
+                                {0.0230, -0.0772, 0.0765}, 0.0044, 0.0034, 0.0024);
     const double lowerLip = lip(p, {-0.004, -0.0836, 0.0856}, {0.011, -0.0830, 0.0828},
-                                {0.0215, -0.0787, 0.0762}, 0.0050, 0.0040, 0.0014);
+                                {0.0210, -0.0787, 0.0765}, 0.0050, 0.0040, 0.0024);
     d = smoothUnion(d, smoothUnion(upperLip, lowerLip, 0.0006), 0.003);
     // The line where the lips meet, and the corners' small hollows.
-    d = smoothSubtract(d, capsule(p, {0.0, -0.0790, 0.0935}, {0.0225, -0.0784, 0.0800}, 0.0016),
-                       0.0012);
+    d = smoothSubtract(d, capsule(p, {0.0, -0.0790, 0.0945}, {0.0200, -0.0785, 0.0820}, 0.0024),
+                       0.0020);
   }
   // The ears.
   if (reaches(p, {0.074, -0.028, -0.012}, 0.040, d, 0.004)) d = smoothUnion(d, ear(p), 0.004);
   // The upper neck, narrowing into the torso's (mannequinTorsoDistance), the two crossing at
   // head.pivot.
-  d = smoothUnion(d, roundCone(p, kNeckTop, kHeadNeckEnd, kNeckRadius, kNeckRadius - 0.006), 0.03);
+  d = smoothUnion(d, roundCone(p, kNeckTop, kHeadNeckEnd, kNeckRadius, kNeckRadius - 0.006), 0.018);
   return d;
 }
 
@@ -279,12 +283,20 @@ const SurfaceMesh& mannequinHeadMesh() {
   static const DistanceGrid drawn =
       cachedSampleDistance("mannequin-head-drawn", mannequinHeadDistance, {-0.105, -0.285, -0.130},
                            {0.105, 0.115, 0.135}, 0.002);
-  static const SurfaceMesh mesh = meshZeroLevel(drawn, mannequinHeadDistance);
+  static const SurfaceMesh mesh = [] {
+    SurfaceMesh m = meshZeroLevel(drawn, mannequinHeadDistance);
+    relaxFolds(m, mannequinHeadDistance);
+    return m;
+  }();
   return mesh;
 }
 
 const SurfaceMesh& mannequinTorsoMesh() {
-  static const SurfaceMesh mesh = meshZeroLevel(mannequinTorsoGrid(), mannequinTorsoDistance);
+  static const SurfaceMesh mesh = [] {
+    SurfaceMesh m = meshZeroLevel(mannequinTorsoGrid(), mannequinTorsoDistance);
+    relaxFolds(m, mannequinTorsoDistance);
+    return m;
+  }();
   return mesh;
 }
 

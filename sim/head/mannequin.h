@@ -33,4 +33,21 @@ const SurfaceMesh& mannequinMesh();
 // Where the scalp is measured from on the mannequin: directions from here name scalp points.
 inline constexpr glm::dvec3 kMannequinScalpCentre{0.0, 0.0, -0.008};
 
+// The parts of the face the renderer paints (render/head.frag: the eyes' white, iris and pupil,
+// the lips' red), in the head frame, the right side (x > 0; the left mirrors it). The eye is
+// sculpted from the same numbers: a ball with its cornea proud of it along the gaze (+z).
+struct MannequinFace {
+  glm::dvec3 eye;        // the right eyeball's centre
+  double ball;           // its radius
+  double corneaOffset;   // the cornea's centre, in front of the ball's along the gaze
+  double cornea;         // the cornea's radius
+  double iris, pupil;    // their radii across the gaze
+  glm::dvec3 mouth;      // the middle of the line where the lips meet
+  double lipsHalfWidth;  // the lips' red: half its width and half its height about that line
+  double lipsHalfHeight;
+};
+inline constexpr MannequinFace kMannequinFace{
+    {0.0315, -0.0135, 0.0595}, 0.0120, 0.0055, 0.0078, 0.0056, 0.0021,
+    {0.0, -0.0790, 0.0890},    0.0225, 0.0085};
+
 }  // namespace csm

@@ -16,6 +16,28 @@ namespace {
 constexpr std::array<std::array<int, 4>, 6> kTetrahedra{
     {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}}};
 
+// p moved onto the zero level of f by Newton's steps along its gradient; n its normal there.
+void projectOnto(const DistanceFunction& f, glm::dvec3& p, glm::dvec3& n) {
+  for (int step = 0; step < 3; ++step) {
+    const double e = 1e-5, d = f(p);
+    const glm::dvec3 grad(f(p + glm::dvec3(e, 0, 0)) - f(p - glm::dvec3(e, 0, 0)),
+                          f(p + glm::dvec3(0, e, 0)) - f(p - glm::dvec3(0, e, 0)),
+                          f(p + glm::dvec3(0, 0, e)) - f(p - glm::dvec3(0, 0, e)));
+    n = grad / (2.0 * e);
+    const double len2 = glm::dot(n, n);
+    if (len2 < 1e-12) break;
+    p -= d * n / len2;
+  }
+}
+
+bool folded(const SurfaceMesh& m, size_t t) {
+  const glm::vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]],
+                  c = m.positions[m.indices[t + 2]];
+  const glm::vec3 n =
+      m.normals[m.indices[t]] + m.normals[m.indices[t + 1]] + m.normals[m.indices[t + 2]];
+  return glm::dot(glm::cross(b - a, c - a), n) < 0.0f;
+}
+
 }  // namespace
 
 SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact) {
@@ -36,18 +58,7 @@ SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact) 
       const double t = std::clamp(da / (da - db), 0.0, 1.0);
       glm::dvec3 p = glm::mix(position(a), position(b), t);
       glm::dvec3 n = glm::mix(glm::dvec3(g.nodes[a]), glm::dvec3(g.nodes[b]), t);
-      if (exact) {
-        for (int step = 0; step < 3; ++step) {
-          const double e = 1e-5, d = exact(p);
-          const glm::dvec3 grad(exact(p + glm::dvec3(e, 0, 0)) - exact(p - glm::dvec3(e, 0, 0)),
-                                exact(p + glm::dvec3(0, e, 0)) - exact(p - glm::dvec3(0, e, 0)),
-                                exact(p + glm::dvec3(0, 0, e)) - exact(p - glm::dvec3(0, 0, e)));
-          n = grad / (2.0 * e);
-          const double len2 = glm::dot(n, n);
-          if (len2 < 1e-12) break;
-          p -= d * n / len2;
-        }
-      }
+      if (exact) projectOnto(exact, p, n);
       m.positions.emplace_back(p);
       m.normals.emplace_back(glm::length(n) > 1e-12 ? glm::normalize(n) : glm::dvec3(0, 1, 0));
     }
@@ -102,6 +113,48 @@ SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact) 
         }
       }
   return m;
+}
+
+size_t foldedTriangles(const SurfaceMesh& m) {
+  size_t count = 0;
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3) count += folded(m, t);
+  return count;
+}
+
+size_t relaxFolds(SurfaceMesh& m, const DistanceFunction& exact, int rounds) {
+  std::vector<std::vector<uint32_t>> neighbours(m.positions.size());
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = m.indices[t + k], b = m.indices[t + (k + 1) % 3];
+      neighbours[a].push_back(b);
+      neighbours[b].push_back(a);
+    }
+  std::vector<char> moving(m.positions.size());
+  size_t left = foldedTriangles(m);
+  for (int round = 0; round < rounds && left > 0; ++round) {
+    std::fill(moving.begin(), moving.end(), 0);
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
+      if (folded(m, t))
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t v = m.indices[t + k];
+          moving[v] = 1;
+          for (uint32_t w : neighbours[v]) moving[w] = 1;
+        }
+    // Every moved vertex from its neighbours' places before this round, so that the result does
+    // not depend on the order the vertices are taken in.
+    const std::vector<glm::vec3> before = m.positions;
+    for (size_t v = 0; v < m.positions.size(); ++v) {
+      if (!moving[v] || neighbours[v].empty()) continue;
+      glm::dvec3 mean(0.0);
+      for (uint32_t w : neighbours[v]) mean += glm::dvec3(before[w]);
+      glm::dvec3 p = mean / double(neighbours[v].size()), n(m.normals[v]);
+      projectOnto(exact, p, n);
+      m.positions[v] = glm::vec3(p);
+      if (glm::length(n) > 1e-12) m.normals[v] = glm::vec3(glm::normalize(n));
+    }
+    left = foldedTriangles(m);
+  }
+  return left;
 }
 
 SurfaceMesh coarserMesh(const SurfaceMesh& m, size_t triangles) {

@@ -30,6 +30,16 @@ SurfaceMesh meshZeroLevel(const DistanceGrid& g, const DistanceFunction& exact =
 // triangles that collapse dropped. The surface moves by at most about a cell.
 SurfaceMesh coarserMesh(const SurfaceMesh& m, size_t triangles);
 
+// Triangles facing against the mean of their vertices' normals: where marching tetrahedra meet
+// a crease or a saddle finer than their grid, vertices projected onto the zero level can fold a
+// triangle over, which draws as a dark speck.
+size_t foldedTriangles(const SurfaceMesh& m);
+
+// Unfolds them: each vertex of a folded triangle, and its neighbours, moved to its neighbours'
+// mean and projected back onto `exact`'s zero level (its normal the gradient there), `rounds`
+// times or until none is folded. Returns the folded triangles left.
+size_t relaxFolds(SurfaceMesh& m, const DistanceFunction& exact, int rounds = 6);
+
 // Edges of a mesh used other than once in each direction (0 for a closed, consistently
 // oriented surface).
 size_t openEdges(const SurfaceMesh& m);

@@ -32,7 +32,7 @@ TEST_CASE("Render: FrameUniforms has the same layout in C++ and GLSL", "[gpu][re
 #define CSM_CHECK_FIELD(type, cppName, glslName) check(#glslName, offsetof(FrameUniforms, cppName));
   CSM_FRAME_UNIFORMS(CSM_CHECK_FIELD)
 #undef CSM_CHECK_FIELD
-  CHECK(checked == 19);
+  CHECK(checked == 24);
   const GLuint block = glGetProgramResourceIndex(program->id(), GL_UNIFORM_BLOCK, "FrameUniforms");
   REQUIRE(block != GL_INVALID_INDEX);
   const GLenum prop = GL_BUFFER_DATA_SIZE;
